@@ -1,0 +1,33 @@
+#include "app/device_options.h"
+
+namespace rc {
+
+std::vector<OptionSpec> device_option_specs() {
+    return {
+        {"--device", "", "SPEC",
+         "OpenCL device: P:D or part of its name (default: $RADCACHE_DEVICE, else the first GPU, "
+         "else the first CPU)"},
+        {"--kernel-dir", "", "DIR",
+         "read kernel sources from DIR instead of the embedded copies ($RADCACHE_KERNEL_DIR)"},
+        {"--dump-kernels", "", "DIR", "write the expanded kernel sources to DIR"},
+        {"--no-kernel-cache", "", "", "do not read or write the kernel binary cache"},
+        {"--local-size", "", "N", "work-group size of every launch (default: per kernel)"},
+        {"--max-chunk", "", "N", "largest number of work items in one launch (default 2^20)"},
+    };
+}
+
+ContextOptions context_options(const ParsedArguments& arguments) {
+    ContextOptions options;
+    options.device_spec = arguments.value("--device");
+    options.kernel_dir = arguments.value("--kernel-dir");
+    options.dump_kernels_dir = arguments.value("--dump-kernels");
+    if (arguments.has("--no-kernel-cache")) {
+        options.cache_dir.clear();
+    }
+    options.local_size = static_cast<size_t>(arguments.integer("--local-size", 0, 1, 1024));
+    options.max_chunk_items =
+        static_cast<size_t>(arguments.integer("--max-chunk", 0, 1, 1LL << 31));
+    return options;
+}
+
+}  // namespace rc

@@ -1,0 +1,14 @@
+// The options every device-using command shares (--device, kernel sources, chunking).
+#pragma once
+
+#include <vector>
+
+#include "app/cli.h"
+#include "device/context.h"
+
+namespace rc {
+
+std::vector<OptionSpec> device_option_specs();
+ContextOptions context_options(const ParsedArguments& arguments);
+
+}  // namespace rc

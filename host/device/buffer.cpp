@@ -1,0 +1,96 @@
+#include "device/buffer.h"
+
+#include <CL/cl.h>
+
+#include <cstdio>
+#include <utility>
+
+#include "device/cl_error.h"
+#include "device/context.h"
+#include "util/error.h"
+
+namespace rc {
+namespace {
+
+std::string format_bytes(uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
+    return text;
+}
+
+}  // namespace
+
+DeviceBuffer::DeviceBuffer(Context& context, size_t bytes, std::string name)
+    : context_(&context), bytes_(std::max<size_t>(bytes, 1)), name_(std::move(name)) {
+    const DeviceInfo& device = context.device();
+    if (bytes_ > device.max_allocation) {
+        throw Error("buffer '" + name_ + "' needs " + format_bytes(bytes_) +
+                    ", more than the largest allocation " + format_bytes(device.max_allocation) +
+                    " of " + device.name);
+    }
+    cl_int status = CL_SUCCESS;
+    handle_ = clCreateBuffer(context.cl_context(), CL_MEM_READ_WRITE, bytes_, nullptr, &status);
+    check_cl(status, "clCreateBuffer", name_ + ", " + format_bytes(bytes_));
+}
+
+DeviceBuffer::~DeviceBuffer() { release(); }
+
+void DeviceBuffer::release() {
+    if (handle_ != nullptr) {
+        clReleaseMemObject(handle_);
+        handle_ = nullptr;
+    }
+}
+
+DeviceBuffer::DeviceBuffer(DeviceBuffer&& other) noexcept
+    : context_(other.context_),
+      handle_(std::exchange(other.handle_, nullptr)),
+      bytes_(std::exchange(other.bytes_, 0)),
+      name_(std::move(other.name_)) {}
+
+DeviceBuffer& DeviceBuffer::operator=(DeviceBuffer&& other) noexcept {
+    if (this != &other) {
+        release();
+        context_ = other.context_;
+        handle_ = std::exchange(other.handle_, nullptr);
+        bytes_ = std::exchange(other.bytes_, 0);
+        name_ = std::move(other.name_);
+    }
+    return *this;
+}
+
+void DeviceBuffer::write(const void* data, size_t bytes, size_t offset) {
+    if (bytes == 0) {
+        return;
+    }
+    if (offset + bytes > bytes_) {
+        throw Error("write of " + std::to_string(bytes) + " bytes past the end of buffer '" +
+                    name_ + "'");
+    }
+    check_cl(clEnqueueWriteBuffer(context_->cl_queue(), handle_, CL_TRUE, offset, bytes, data, 0,
+                                  nullptr, nullptr),
+             "clEnqueueWriteBuffer", name_);
+}
+
+void DeviceBuffer::read(void* data, size_t bytes, size_t offset) const {
+    if (bytes == 0) {
+        return;
+    }
+    if (offset + bytes > bytes_) {
+        throw Error("read of " + std::to_string(bytes) + " bytes past the end of buffer '" +
+                    name_ + "'");
+    }
+    check_cl(clEnqueueReadBuffer(context_->cl_queue(), handle_, CL_TRUE, offset, bytes, data, 0,
+                                 nullptr, nullptr),
+             "clEnqueueReadBuffer", name_);
+}
+
+void DeviceBuffer::fill_zero() {
+    const unsigned char zero = 0;
+    check_cl(clEnqueueFillBuffer(context_->cl_queue(), handle_, &zero, 1, 0, bytes_, 0, nullptr,
+                                 nullptr),
+             "clEnqueueFillBuffer", name_);
+    check_cl(clFinish(context_->cl_queue()), "clFinish", name_);
+}
+
+}  // namespace rc

@@ -1,0 +1,161 @@
+#include "device/context.h"
+
+#include <CL/cl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+#include "device/cl_error.h"
+#include "util/error.h"
+
+namespace rc {
+namespace {
+
+constexpr size_t kDefaultMaxChunkItems = size_t{1} << 20;
+constexpr size_t kFirstChunkItems = size_t{1} << 16;
+constexpr size_t kPreferredLocalSize = 64;
+
+std::filesystem::path kernel_dir_option(const ContextOptions& options) {
+    if (!options.kernel_dir.empty()) {
+        return options.kernel_dir;
+    }
+    if (const char* dir = std::getenv("RADCACHE_KERNEL_DIR"); dir != nullptr && *dir != '\0') {
+        return dir;
+    }
+    return {};
+}
+
+size_t round_up(size_t value, size_t multiple) {
+    return (value + multiple - 1) / multiple * multiple;
+}
+
+}  // namespace
+
+Context::Context(const ContextOptions& options)
+    : options_(options),
+      device_(select_device(list_devices(), options.device_spec)),
+      sources_(kernel_dir_option(options)),
+      cache_(options.cache_dir) {
+    cl_int status = CL_SUCCESS;
+    const cl_context_properties properties[] = {
+        CL_CONTEXT_PLATFORM, reinterpret_cast<cl_context_properties>(device_.platform), 0};
+    context_ = clCreateContext(properties, 1, &device_.device, nullptr, nullptr, &status);
+    check_cl(status, "clCreateContext", device_.name);
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+    queue_ = clCreateCommandQueue(context_, device_.device, CL_QUEUE_PROFILING_ENABLE, &status);
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+    if (status != CL_SUCCESS) {
+        clReleaseContext(context_);
+        check_cl(status, "clCreateCommandQueue", device_.name);
+    }
+}
+
+Context::~Context() {
+    programs_.clear();
+    if (queue_ != nullptr) {
+        clFinish(queue_);
+        clReleaseCommandQueue(queue_);
+    }
+    if (context_ != nullptr) {
+        clReleaseContext(context_);
+    }
+}
+
+const Program& Context::program(const std::string& entry, const std::string& options) {
+    const std::string key = entry + "\n" + options;
+    auto found = programs_.find(key);
+    if (found == programs_.end()) {
+        auto program = std::make_unique<Program>(context_, device_, sources_, cache_, entry,
+                                                 options, options_.dump_kernels_dir);
+        builds_.push_back(program->report());
+        found = programs_.emplace(key, std::move(program)).first;
+    }
+    return *found->second;
+}
+
+Kernel Context::kernel(const std::string& entry, const std::string& name,
+                       const std::string& options) {
+    return program(entry, options).kernel(name);
+}
+
+size_t Context::local_size_for(const Kernel& kernel) const {
+    const size_t limit = kernel.max_work_group_size(device_.device);
+    if (options_.local_size != 0) {
+        if (options_.local_size > limit) {
+            throw Error("work-group size " + std::to_string(options_.local_size) +
+                            " exceeds the limit " + std::to_string(limit) + " of kernel " +
+                            kernel.name() + " on " + device_.name,
+                        kExitUsage);
+        }
+        return options_.local_size;
+    }
+    size_t local = std::min(kPreferredLocalSize, limit);
+    // Largest power of two not above the limit.
+    while ((local & (local - 1)) != 0) {
+        local &= local - 1;
+    }
+    return std::max<size_t>(local, 1);
+}
+
+void Context::run_chunked(Kernel& kernel, size_t count) {
+    if (count == 0) {
+        return;
+    }
+    if (count > std::numeric_limits<uint32_t>::max()) {
+        throw Error("kernel " + kernel.name() + ": " + std::to_string(count) +
+                    " work items exceed the 32-bit item range");
+    }
+    const size_t local = local_size_for(kernel);
+    const size_t max_chunk =
+        round_up(options_.max_chunk_items != 0 ? options_.max_chunk_items : kDefaultMaxChunkItems,
+                 local);
+    size_t chunk = std::min(max_chunk, round_up(kFirstChunkItems, local));
+    KernelTime& time = kernel_times_[kernel.name()];
+    for (size_t begin = 0; begin < count;) {
+        const size_t items = std::min(chunk, count - begin);
+        const cl_uint range[2] = {static_cast<cl_uint>(begin), static_cast<cl_uint>(begin + items)};
+        kernel.set_arg(0, sizeof range[0], &range[0]);
+        kernel.set_arg(1, sizeof range[1], &range[1]);
+        const size_t global = round_up(items, local);
+        cl_event event = nullptr;
+        check_cl(clEnqueueNDRangeKernel(queue_, kernel.handle(), 1, nullptr, &global, &local, 0,
+                                        nullptr, &event),
+                 "clEnqueueNDRangeKernel", kernel.name());
+        const cl_int waited = clWaitForEvents(1, &event);
+        cl_ulong started = 0;
+        cl_ulong ended = 0;
+        cl_int profiled = clGetEventProfilingInfo(event, CL_PROFILING_COMMAND_START,
+                                                  sizeof started, &started, nullptr);
+        if (profiled == CL_SUCCESS) {
+            profiled = clGetEventProfilingInfo(event, CL_PROFILING_COMMAND_END, sizeof ended,
+                                               &ended, nullptr);
+        }
+        clReleaseEvent(event);
+        check_cl(waited, "clWaitForEvents", kernel.name());
+        check_cl(profiled, "clGetEventProfilingInfo", kernel.name());
+        const double seconds = static_cast<double>(ended - started) * 1e-9;
+        time.seconds += seconds;
+        time.launches += 1;
+        time.items += items;
+        begin += items;
+        // Aim the next chunk at the target duration, within [local, max_chunk].
+        if (items == chunk && seconds > 0.0) {
+            const double scale =
+                std::clamp(options_.chunk_seconds / seconds, 0.25, 4.0);
+            chunk = std::clamp(round_up(static_cast<size_t>(static_cast<double>(chunk) * scale),
+                                        local),
+                               local, max_chunk);
+        }
+    }
+}
+
+void Context::finish() { check_cl(clFinish(queue_), "clFinish", device_.name); }
+
+}  // namespace rc

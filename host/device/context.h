@@ -1,0 +1,101 @@
+// One OpenCL device in use: its context and profiling queue, its programs (built once), and the
+// one kernel-launch function (DESIGN.md §3) with per-kernel timing and chunking.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "device/binary_cache.h"
+#include "device/buffer.h"
+#include "device/device_list.h"
+#include "device/kernel.h"
+#include "device/kernel_sources.h"
+#include "device/program.h"
+
+struct _cl_context;
+struct _cl_command_queue;
+
+namespace rc {
+
+struct ContextOptions {
+    std::string device_spec;                // --device; empty: $RADCACHE_DEVICE, then default
+    std::filesystem::path kernel_dir;       // override for the embedded kernel sources
+    std::filesystem::path cache_dir = BinaryCache::default_directory();  // empty: no cache
+    std::filesystem::path dump_kernels_dir;  // where to write expanded sources, if anywhere
+    size_t local_size = 0;                   // work-group size; 0: chosen per kernel
+    size_t max_chunk_items = 0;              // largest launch; 0: the default (2^20)
+    double chunk_seconds = 0.1;              // launches aim at this duration
+};
+
+// Accumulated device time of one kernel (from profiling events).
+struct KernelTime {
+    double seconds = 0.0;
+    size_t launches = 0;
+    size_t items = 0;
+};
+
+class Context {
+   public:
+    explicit Context(const ContextOptions& options = {});
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    const DeviceInfo& device() const { return device_; }
+    const ContextOptions& options() const { return options_; }
+
+    // The program built from `entry` (relative to kernels/) with -D `options`, built once.
+    const Program& program(const std::string& entry, const std::string& options = "");
+    Kernel kernel(const std::string& entry, const std::string& name,
+                  const std::string& options = "");
+    const std::vector<ProgramBuildReport>& program_builds() const { return builds_; }
+
+    // Runs `kernel` over items [0, count). The kernel's first two parameters are
+    // (uint begin, uint end) and it handles item begin + get_global_id(0) when below end; the
+    // remaining parameters are `args` (buffers or plain values). Large launches are split into
+    // chunks of bounded duration; an item's result never depends on the chunking.
+    template <class... Args>
+    void launch(Kernel& kernel, size_t count, const Args&... args) {
+        unsigned index = 2;
+        (set_kernel_arg(kernel, index++, args), ...);
+        run_chunked(kernel, count);
+    }
+
+    const std::map<std::string, KernelTime>& kernel_times() const { return kernel_times_; }
+    void reset_kernel_times() { kernel_times_.clear(); }
+
+    // The work-group size launches of `kernel` use.
+    size_t local_size_for(const Kernel& kernel) const;
+
+    void finish();
+    _cl_context* cl_context() const { return context_; }
+    _cl_command_queue* cl_queue() const { return queue_; }
+
+   private:
+    static void set_kernel_arg(Kernel& kernel, unsigned index, const DeviceBuffer& buffer) {
+        _cl_mem* handle = buffer.handle();
+        kernel.set_arg(index, sizeof handle, &handle);
+    }
+    template <class T>
+        requires(std::is_trivially_copyable_v<T> && !std::is_base_of_v<DeviceBuffer, T>)
+    static void set_kernel_arg(Kernel& kernel, unsigned index, const T& value) {
+        kernel.set_arg(index, sizeof(T), &value);
+    }
+    void run_chunked(Kernel& kernel, size_t count);
+
+    ContextOptions options_;
+    DeviceInfo device_;
+    KernelSources sources_;
+    BinaryCache cache_;
+    _cl_context* context_ = nullptr;
+    _cl_command_queue* queue_ = nullptr;
+    std::map<std::string, std::unique_ptr<Program>> programs_;
+    std::vector<ProgramBuildReport> builds_;
+    std::map<std::string, KernelTime> kernel_times_;
+};
+
+}  // namespace rc

@@ -1,0 +1,194 @@
+#include "device/device_list.h"
+
+#include <CL/cl.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <regex>
+
+#include "device/cl_error.h"
+#include "util/error.h"
+
+namespace rc {
+namespace {
+
+constexpr cl_int kPlatformNotFoundKhr = -1001;
+
+std::string platform_string(cl_platform_id platform, cl_platform_info what) {
+    size_t size = 0;
+    check_cl(clGetPlatformInfo(platform, what, 0, nullptr, &size), "clGetPlatformInfo");
+    std::string value(size, '\0');
+    check_cl(clGetPlatformInfo(platform, what, size, value.data(), nullptr), "clGetPlatformInfo");
+    value.resize(value.find('\0') == std::string::npos ? value.size() : value.find('\0'));
+    return value;
+}
+
+std::string device_string(cl_device_id device, cl_device_info what) {
+    size_t size = 0;
+    check_cl(clGetDeviceInfo(device, what, 0, nullptr, &size), "clGetDeviceInfo");
+    std::string value(size, '\0');
+    check_cl(clGetDeviceInfo(device, what, size, value.data(), nullptr), "clGetDeviceInfo");
+    value.resize(value.find('\0') == std::string::npos ? value.size() : value.find('\0'));
+    return value;
+}
+
+template <class T>
+T device_value(cl_device_id device, cl_device_info what) {
+    T value{};
+    check_cl(clGetDeviceInfo(device, what, sizeof value, &value, nullptr), "clGetDeviceInfo");
+    return value;
+}
+
+std::string lower(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+std::string no_platform_message() {
+    return "no OpenCL platform found: install an OpenCL driver, e.g. the Debian package "
+           "pocl-opencl-icd (CPU) or your GPU vendor's OpenCL ICD";
+}
+
+}  // namespace
+
+std::string DeviceInfo::spec() const {
+    return std::to_string(platform_index) + ":" + std::to_string(device_index);
+}
+
+std::vector<DeviceInfo> list_devices() {
+    cl_uint platform_count = 0;
+    const cl_int status = clGetPlatformIDs(0, nullptr, &platform_count);
+    if (status == kPlatformNotFoundKhr || (status == CL_SUCCESS && platform_count == 0)) {
+        throw Error(no_platform_message(), kExitUsage);
+    }
+    check_cl(status, "clGetPlatformIDs");
+    std::vector<cl_platform_id> platforms(platform_count);
+    check_cl(clGetPlatformIDs(platform_count, platforms.data(), nullptr), "clGetPlatformIDs");
+
+    std::vector<DeviceInfo> devices;
+    for (cl_uint p = 0; p < platform_count; ++p) {
+        cl_uint device_count = 0;
+        const cl_int found =
+            clGetDeviceIDs(platforms[p], CL_DEVICE_TYPE_ALL, 0, nullptr, &device_count);
+        if (found == CL_DEVICE_NOT_FOUND) {
+            continue;
+        }
+        check_cl(found, "clGetDeviceIDs");
+        std::vector<cl_device_id> ids(device_count);
+        check_cl(clGetDeviceIDs(platforms[p], CL_DEVICE_TYPE_ALL, device_count, ids.data(),
+                                nullptr),
+                 "clGetDeviceIDs");
+        for (cl_uint d = 0; d < device_count; ++d) {
+            DeviceInfo info;
+            info.platform_index = static_cast<int>(p);
+            info.device_index = static_cast<int>(d);
+            info.platform = platforms[p];
+            info.device = ids[d];
+            info.platform_name = platform_string(platforms[p], CL_PLATFORM_NAME);
+            info.platform_version = platform_string(platforms[p], CL_PLATFORM_VERSION);
+            info.name = device_string(ids[d], CL_DEVICE_NAME);
+            info.vendor = device_string(ids[d], CL_DEVICE_VENDOR);
+            const auto type = device_value<cl_device_type>(ids[d], CL_DEVICE_TYPE);
+            info.is_gpu = (type & CL_DEVICE_TYPE_GPU) != 0;
+            info.is_cpu = (type & CL_DEVICE_TYPE_CPU) != 0;
+            info.type = info.is_gpu                                  ? "GPU"
+                        : info.is_cpu                                ? "CPU"
+                        : (type & CL_DEVICE_TYPE_ACCELERATOR) != 0 ? "accelerator"
+                                                                     : "other";
+            info.compute_units = device_value<cl_uint>(ids[d], CL_DEVICE_MAX_COMPUTE_UNITS);
+            info.global_memory = device_value<cl_ulong>(ids[d], CL_DEVICE_GLOBAL_MEM_SIZE);
+            info.max_allocation = device_value<cl_ulong>(ids[d], CL_DEVICE_MAX_MEM_ALLOC_SIZE);
+            info.max_work_group_size = device_value<size_t>(ids[d], CL_DEVICE_MAX_WORK_GROUP_SIZE);
+            info.opencl_c_version = device_string(ids[d], CL_DEVICE_OPENCL_C_VERSION);
+            info.driver_version = device_string(ids[d], CL_DRIVER_VERSION);
+            const std::string extensions = device_string(ids[d], CL_DEVICE_EXTENSIONS);
+            info.has_fp64 = extensions.find("cl_khr_fp64") != std::string::npos;
+            devices.push_back(std::move(info));
+        }
+    }
+    if (devices.empty()) {
+        throw Error(no_platform_message(), kExitUsage);
+    }
+    return devices;
+}
+
+std::string format_device_table(const std::vector<DeviceInfo>& devices) {
+    std::vector<std::vector<std::string>> rows = {
+        {"index", "platform", "device", "type", "units", "memory", "OpenCL C"}};
+    for (const DeviceInfo& device : devices) {
+        char memory[32];
+        std::snprintf(memory, sizeof memory, "%.1f GiB",
+                      static_cast<double>(device.global_memory) / (1024.0 * 1024.0 * 1024.0));
+        rows.push_back({device.spec(), device.platform_name, device.name, device.type,
+                        std::to_string(device.compute_units), memory,
+                        device.opencl_c_version});
+    }
+    std::vector<size_t> widths(rows[0].size(), 0);
+    for (const auto& row : rows) {
+        for (size_t c = 0; c < row.size(); ++c) {
+            widths[c] = std::max(widths[c], row[c].size());
+        }
+    }
+    std::string table;
+    for (const auto& row : rows) {
+        std::string line;
+        for (size_t c = 0; c < row.size(); ++c) {
+            line += row[c];
+            if (c + 1 < row.size()) {
+                line += std::string(widths[c] - row[c].size() + 2, ' ');
+            }
+        }
+        table += line + "\n";
+    }
+    return table;
+}
+
+DeviceInfo select_device(const std::vector<DeviceInfo>& devices, const std::string& spec_option) {
+    std::string spec = spec_option;
+    std::string source = "--device";
+    if (spec.empty()) {
+        if (const char* env = std::getenv("RADCACHE_DEVICE"); env != nullptr && *env != '\0') {
+            spec = env;
+            source = "RADCACHE_DEVICE";
+        }
+    }
+    if (spec.empty()) {
+        for (const DeviceInfo& device : devices) {
+            if (device.is_gpu) {
+                return device;
+            }
+        }
+        for (const DeviceInfo& device : devices) {
+            if (device.is_cpu) {
+                return device;
+            }
+        }
+        return devices.front();
+    }
+    static const std::regex index_form(R"(^\s*(\d+)\s*:\s*(\d+)\s*$)");
+    std::smatch match;
+    if (std::regex_match(spec, match, index_form)) {
+        const int platform = std::stoi(match[1].str());
+        const int device = std::stoi(match[2].str());
+        for (const DeviceInfo& info : devices) {
+            if (info.platform_index == platform && info.device_index == device) {
+                return info;
+            }
+        }
+    } else {
+        const std::string needle = lower(spec);
+        for (const DeviceInfo& info : devices) {
+            if (lower(info.name).find(needle) != std::string::npos) {
+                return info;
+            }
+        }
+    }
+    throw Error("no OpenCL device matches " + source + " '" + spec +
+                    "'; the devices are:\n" + format_device_table(devices),
+                kExitUsage);
+}
+
+}  // namespace rc

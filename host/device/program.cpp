@@ -1,0 +1,139 @@
+#include "device/program.h"
+
+#include <CL/cl.h>
+
+#include <chrono>
+
+#include "device/cl_error.h"
+#include "device/device_list.h"
+#include "util/error.h"
+#include "util/file_io.h"
+#include "util/log.h"
+
+namespace rc {
+namespace {
+
+// OpenCL C 1.2 everywhere; no vendor flags and no -cl-fast-relaxed-math (DESIGN.md §3).
+constexpr const char* kBaseOptions = "-cl-std=CL1.2";
+
+std::string build_log(cl_program program, cl_device_id device) {
+    size_t size = 0;
+    if (clGetProgramBuildInfo(program, device, CL_PROGRAM_BUILD_LOG, 0, nullptr, &size) !=
+        CL_SUCCESS) {
+        return "(no build log available)";
+    }
+    std::string log(size, '\0');
+    if (clGetProgramBuildInfo(program, device, CL_PROGRAM_BUILD_LOG, size, log.data(), nullptr) !=
+        CL_SUCCESS) {
+        return "(no build log available)";
+    }
+    while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) {
+        log.pop_back();
+    }
+    return log;
+}
+
+// Builds from a binary; nullptr when the driver refuses it (treated like a corrupt entry).
+cl_program try_build_from_binary(cl_context context, cl_device_id device,
+                                 const std::vector<unsigned char>& binary,
+                                 const std::string& options) {
+    const size_t size = binary.size();
+    const unsigned char* data = binary.data();
+    cl_int binary_status = CL_SUCCESS;
+    cl_int status = CL_SUCCESS;
+    cl_program program =
+        clCreateProgramWithBinary(context, 1, &device, &size, &data, &binary_status, &status);
+    if (status != CL_SUCCESS || binary_status != CL_SUCCESS) {
+        if (program != nullptr) {
+            clReleaseProgram(program);
+        }
+        return nullptr;
+    }
+    if (clBuildProgram(program, 1, &device, options.c_str(), nullptr, nullptr) != CL_SUCCESS) {
+        clReleaseProgram(program);
+        return nullptr;
+    }
+    return program;
+}
+
+std::vector<unsigned char> program_binary(cl_program program, const std::string& entry) {
+    size_t size = 0;
+    check_cl(clGetProgramInfo(program, CL_PROGRAM_BINARY_SIZES, sizeof size, &size, nullptr),
+             "clGetProgramInfo", entry);
+    std::vector<unsigned char> binary(size);
+    unsigned char* data = binary.data();
+    check_cl(clGetProgramInfo(program, CL_PROGRAM_BINARIES, sizeof data, &data, nullptr),
+             "clGetProgramInfo", entry);
+    return binary;
+}
+
+}  // namespace
+
+Program::Program(_cl_context* context, const DeviceInfo& device, const KernelSources& sources,
+                 const BinaryCache& cache, const std::string& entry, const std::string& options,
+                 const std::filesystem::path& dump_dir)
+    : entry_(entry) {
+    const auto start = std::chrono::steady_clock::now();
+    report_.entry = entry;
+    const std::string source = sources.expand(entry);
+    const std::string all_options =
+        options.empty() ? std::string(kBaseOptions) : std::string(kBaseOptions) + " " + options;
+    if (!dump_dir.empty()) {
+        std::string flat = entry;
+        for (char& c : flat) {
+            c = (c == '/') ? '_' : c;
+        }
+        std::filesystem::create_directories(dump_dir);
+        write_file_atomically(dump_dir / flat, "// build options: " + all_options + "\n" + source);
+    }
+
+    const BinaryCacheKey key =
+        BinaryCacheKey::of(source, all_options, device.name, device.driver_version);
+    std::vector<unsigned char> binary;
+    const CacheLookup lookup = cache.load(key, binary);
+    if (lookup == CacheLookup::kHit) {
+        handle_ = try_build_from_binary(context, device.device, binary, all_options);
+        report_.from_cache = handle_ != nullptr;
+        report_.replaced_corrupt_entry = handle_ == nullptr;
+    } else if (lookup == CacheLookup::kCorrupt) {
+        report_.replaced_corrupt_entry = true;
+    }
+    if (report_.replaced_corrupt_entry) {
+        log_warning("ignoring corrupt kernel cache entry " + cache.entry_path(key).string() +
+                    "; rebuilding " + entry);
+    }
+
+    if (handle_ == nullptr) {
+        const char* text = source.c_str();
+        const size_t length = source.size();
+        cl_int status = CL_SUCCESS;
+        handle_ = clCreateProgramWithSource(context, 1, &text, &length, &status);
+        check_cl(status, "clCreateProgramWithSource", entry);
+        status = clBuildProgram(handle_, 1, &device.device, all_options.c_str(), nullptr, nullptr);
+        if (status != CL_SUCCESS) {
+            const std::string log = build_log(handle_, device.device);
+            clReleaseProgram(handle_);
+            handle_ = nullptr;
+            throw Error("clBuildProgram(" + entry + ") failed: " + cl_error_name(status) +
+                        " on " + device.name + "; build log:\n" + log);
+        }
+        cache.store(key, program_binary(handle_, entry));
+    }
+    report_.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Program::~Program() {
+    if (handle_ != nullptr) {
+        clReleaseProgram(handle_);
+    }
+}
+
+Kernel Program::kernel(const std::string& name) const {
+    cl_int status = CL_SUCCESS;
+    cl_kernel handle = clCreateKernel(handle_, name.c_str(), &status);
+    check_cl(status, "clCreateKernel", name + " in " + entry_);
+    return Kernel(handle, name);
+}
+
+}  // namespace rc

@@ -1,0 +1,137 @@
+#include "image/image_io.h"
+
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "util/error.h"
+#include "util/file_io.h"
+
+namespace rc {
+namespace {
+
+enum class Format { kExr, kHdr, kPfm, kPng };
+
+bool format_of(const std::filesystem::path& path, Format& format, std::string& plugin) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension == ".exr") {
+        format = Format::kExr;
+        plugin = "openexr";
+    } else if (extension == ".hdr") {
+        format = Format::kHdr;
+        plugin = "hdr";
+    } else if (extension == ".pfm") {
+        format = Format::kPfm;
+        plugin = "pnm";
+    } else if (extension == ".png") {
+        format = Format::kPng;
+        plugin = "png";
+    } else {
+        return false;
+    }
+    return true;
+}
+
+float srgb_encode(float linear) {
+    if (!(linear > 0.0f)) {
+        return 0.0f;
+    }
+    if (linear >= 1.0f) {
+        return 1.0f;
+    }
+    return linear <= 0.0031308f ? 12.92f * linear
+                                : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+}  // namespace
+
+void check_output_path(const std::filesystem::path& path) {
+    Format format;
+    std::string plugin;
+    if (!format_of(path, format, plugin)) {
+        throw Error(path.string() + ": unsupported output extension '" +
+                        path.extension().string() + "' (use .exr, .hdr, .pfm or .png)",
+                    kExitUsage);
+    }
+    std::filesystem::path directory = path.parent_path();
+    if (directory.empty()) {
+        directory = ".";
+    }
+    if (!std::filesystem::is_directory(directory)) {
+        throw Error(path.string() + ": output directory '" + directory.string() +
+                        "' does not exist",
+                    kExitUsage);
+    }
+    if (::access(directory.c_str(), W_OK) != 0) {
+        throw Error(path.string() + ": output directory '" + directory.string() +
+                        "' is not writable",
+                    kExitUsage);
+    }
+    if (std::filesystem::is_directory(path)) {
+        throw Error(path.string() + ": output path is a directory", kExitUsage);
+    }
+}
+
+void write_image(const std::filesystem::path& path, const Image& image,
+                 const ImageWriteOptions& options) {
+    Format format;
+    std::string plugin;
+    if (!format_of(path, format, plugin)) {
+        throw Error(path.string() + ": unsupported output extension '" +
+                    path.extension().string() + "' (use .exr, .hdr, .pfm or .png)");
+    }
+    int channels = image.channels;
+    if (format == Format::kHdr || format == Format::kPfm || format == Format::kPng) {
+        channels = std::min(channels, 3);  // RGB only
+    }
+    const size_t count = static_cast<size_t>(image.width) * image.height;
+    std::vector<float> data(count * channels);
+    for (size_t i = 0; i < count; ++i) {
+        for (int c = 0; c < channels; ++c) {
+            data[i * channels + c] = image.pixels[i * image.channels + c];
+        }
+    }
+    OIIO::ImageSpec spec(image.width, image.height, channels,
+                         format == Format::kPng ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
+    spec.channelnames.assign(image.channel_names.begin(), image.channel_names.begin() + channels);
+    if (format == Format::kPng) {
+        const float scale = std::exp2(options.exposure);
+        for (float& value : data) {
+            value = srgb_encode(value * scale);
+        }
+        spec.attribute("oiio:ColorSpace", "sRGB");
+    }
+    replace_file_atomically(path, [&](const std::filesystem::path& temporary) {
+        std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(plugin);
+        if (!out) {
+            throw Error(path.string() + ": OpenImageIO has no '" + plugin + "' writer");
+        }
+        if (!out->open(temporary.string(), spec) ||
+            !out->write_image(OIIO::TypeDesc::FLOAT, data.data()) || !out->close()) {
+            std::string message = out->geterror();
+            throw Error(path.string() + ": cannot write image: " + message);
+        }
+    });
+}
+
+Image read_image(const std::filesystem::path& path) {
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path.string());
+    if (!in) {
+        throw Error(path.string() + ": cannot read image: " + OIIO::geterror());
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    Image image(spec.width, spec.height, spec.nchannels);
+    image.channel_names.assign(spec.channelnames.begin(), spec.channelnames.end());
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
+        throw Error(path.string() + ": cannot read image: " + in->geterror());
+    }
+    in->close();
+    return image;
+}
+
+}  // namespace rc

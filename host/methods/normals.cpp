@@ -1,0 +1,38 @@
+#include "methods/normals.h"
+
+#include "scene/camera.h"
+#include "util/error.h"
+
+namespace rc {
+
+NormalsMethod::NormalsMethod(Context& context, const Scene& scene, const DeviceBvh& bvh)
+    : context_(context),
+      scene_(scene),
+      bvh_(bvh),
+      kernel_(context.kernel("normals.cl", "render_normals")) {}
+
+Image NormalsMethod::render(const NormalsOptions& options) {
+    const int width = options.width > 0 ? options.width : scene_.camera.width;
+    const int height = options.height > 0 ? options.height : scene_.camera.height;
+    if (options.samples_per_pixel == 0) {
+        throw Error("samples per pixel must be at least 1", kExitUsage);
+    }
+    const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
+    const shared::CameraParams camera = camera_params(scene_.camera, width, height);
+    Buffer<shared::float4> film(context_, pixels, "film");
+    const auto seed_lo = static_cast<unsigned>(options.seed);
+    const auto seed_hi = static_cast<unsigned>(options.seed >> 32);
+    context_.launch(kernel_, pixels, camera, bvh_.nodes, bvh_.triangles,
+                    bvh_.triangle_of_primitive, options.samples_per_pixel, seed_lo, seed_hi,
+                    film);
+    const std::vector<shared::float4> rgba = film.download();
+    Image image(width, height, 3);
+    for (size_t i = 0; i < pixels; ++i) {
+        image.pixels[3 * i + 0] = rgba[i].x;
+        image.pixels[3 * i + 1] = rgba[i].y;
+        image.pixels[3 * i + 2] = rgba[i].z;
+    }
+    return image;
+}
+
+}  // namespace rc

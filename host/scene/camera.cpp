@@ -1,0 +1,50 @@
+#include "scene/camera.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace rc {
+
+shared::CameraParams camera_params(const Camera& camera, int width, int height) {
+    const glm::vec3 forward = glm::normalize(camera.look_at - camera.position);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::vec3 up = glm::cross(right, forward);
+    const float w = static_cast<float>(width);
+    const float h = static_cast<float>(height);
+    const float tangent = std::tan(glm::radians(camera.fov_degrees) * 0.5f);
+    FovAxis axis = camera.fov_axis;
+    if (axis == FovAxis::kSmaller) {
+        axis = (w <= h) ? FovAxis::kX : FovAxis::kY;
+    } else if (axis == FovAxis::kLarger) {
+        axis = (w >= h) ? FovAxis::kX : FovAxis::kY;
+    }
+    float half_width = tangent;
+    float half_height = tangent;
+    switch (axis) {
+        case FovAxis::kX:
+            half_height = tangent * h / w;
+            break;
+        case FovAxis::kY:
+            half_width = tangent * w / h;
+            break;
+        default: {
+            const float diagonal = std::sqrt(w * w + h * h);
+            half_width = tangent * w / diagonal;
+            half_height = tangent * h / diagonal;
+            break;
+        }
+    }
+    const glm::vec3 top_left = forward - right * half_width + up * half_height;
+    const glm::vec3 across = right * (2.0f * half_width);
+    const glm::vec3 down = -up * (2.0f * half_height);
+    shared::CameraParams params{};
+    params.origin = {camera.position.x, camera.position.y, camera.position.z, 0.0f};
+    params.top_left = {top_left.x, top_left.y, top_left.z, 0.0f};
+    params.right = {across.x, across.y, across.z, 0.0f};
+    params.down = {down.x, down.y, down.z, 0.0f};
+    params.resolution = {width, height, 0, 0};
+    return params;
+}
+
+}  // namespace rc

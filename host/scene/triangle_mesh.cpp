@@ -1,0 +1,42 @@
+#include "scene/triangle_mesh.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+namespace rc {
+
+void TriangleMesh::append(const TriangleMesh& other) {
+    const auto offset = static_cast<unsigned>(positions.size());
+    positions.insert(positions.end(), other.positions.begin(), other.positions.end());
+    triangles.reserve(triangles.size() + other.triangles.size());
+    for (const glm::uvec3& t : other.triangles) {
+        triangles.push_back(t + glm::uvec3(offset));
+    }
+}
+
+size_t drop_degenerate_triangles(TriangleMesh& mesh, std::vector<size_t>* kept) {
+    std::vector<glm::uvec3> remaining;
+    remaining.reserve(mesh.triangles.size());
+    if (kept != nullptr) {
+        kept->clear();
+    }
+    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const glm::uvec3& t = mesh.triangles[i];
+        const glm::dvec3 a(mesh.positions[t.x]);
+        const glm::dvec3 b(mesh.positions[t.y]);
+        const glm::dvec3 c(mesh.positions[t.z]);
+        const glm::dvec3 normal = glm::cross(b - a, c - a);
+        if (normal.x == 0.0 && normal.y == 0.0 && normal.z == 0.0) {
+            continue;
+        }
+        remaining.push_back(t);
+        if (kept != nullptr) {
+            kept->push_back(i);
+        }
+    }
+    const size_t dropped = mesh.triangles.size() - remaining.size();
+    mesh.triangles = std::move(remaining);
+    return dropped;
+}
+
+}  // namespace rc

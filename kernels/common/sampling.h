@@ -1,0 +1,46 @@
+// Sampling of directions.
+#pragma once
+
+#include "shared/types.h"
+
+// Point on the unit disk from (u1, u2) in [0,1)^2, area-preserving: Shirley and Chiu, "A Low
+// Distortion Map Between Disk and Square", JGT 2(3), 1997 (the concentric map).
+RC_FUNC float2 rc_concentric_disk(float u1, float u2) {
+    const float a = 2.0f * u1 - 1.0f;
+    const float b = 2.0f * u2 - 1.0f;
+    if (a == 0.0f && b == 0.0f) {
+        return (float2)(0.0f, 0.0f);
+    }
+    const float kQuarterPi = 0.78539816339744831f;
+    if (fabs(a) > fabs(b)) {
+        const float phi = kQuarterPi * (b / a);
+        return (float2)(a * cos(phi), a * sin(phi));
+    }
+    const float phi = 2.0f * kQuarterPi - kQuarterPi * (a / b);
+    return (float2)(b * cos(phi), b * sin(phi));
+}
+
+// Cosine-distributed direction about +z (Malley's method: lift the disk point to the
+// hemisphere); pdf = cos(theta) / pi.
+RC_FUNC float3 rc_cosine_hemisphere(float u1, float u2) {
+    const float2 d = rc_concentric_disk(u1, u2);
+    const float z = sqrt(fmax(0.0f, 1.0f - d.x * d.x - d.y * d.y));
+    return (float3)(d.x, d.y, z);
+}
+
+// Orthonormal basis (t, b) completing the unit vector n: Duff et al., "Building an Orthonormal
+// Basis, Revisited", JCGT 6(1), 2017.
+RC_FUNC void rc_orthonormal_basis(float3 n, float3* t, float3* b) {
+    const float sign = copysign(1.0f, n.z);
+    const float a = -1.0f / (sign + n.z);
+    const float c = n.x * n.y * a;
+    *t = (float3)(1.0f + sign * n.x * n.x * a, sign * c, -sign * n.x);
+    *b = (float3)(c, sign + n.y * n.y * a, -n.y);
+}
+
+// `local` (in the frame whose z axis is n) in world coordinates.
+RC_FUNC float3 rc_to_world(float3 local, float3 n) {
+    float3 t, b;
+    rc_orthonormal_basis(n, &t, &b);
+    return local.x * t + local.y * b + local.z * n;
+}

@@ -1,0 +1,83 @@
+// Plain structs shared by the host (C++) and the kernels (OpenCL C). Only float, int, uint and
+// 4-wide vectors, explicitly padded: no float3, whose size differs between host and device.
+// tests/shared_layout_test.cpp compares every layout listed in RC_SHARED_LAYOUTS on the device.
+#pragma once
+
+#include "compat.h"
+
+// Leaf triangles in one BVH leaf at most; Embree's builder is told the same.
+#define RC_BVH_MAX_LEAF_SIZE 8
+// Depth bound given to Embree's builder; the traversal stack holds 3 entries per level.
+#define RC_BVH_MAX_DEPTH 32
+#define RC_BVH_STACK_SIZE (3 * RC_BVH_MAX_DEPTH + 1)
+// Hit.primitive of a ray that hit nothing.
+#define RC_NO_HIT 0xffffffffu
+
+RC_SHARED_BEGIN
+
+// A ray segment: points origin + t * direction for t in (tmin, tmax].
+typedef struct Ray {
+    float4 origin;     // xyz: origin, w: tmin
+    float4 direction;  // xyz: direction (any length), w: tmax
+} Ray;
+
+// Closest hit of a ray: t, the scene's primitive index, and the barycentrics of vertices 1 and 2.
+typedef struct Hit {
+    float t;
+    uint primitive;  // RC_NO_HIT when nothing was hit
+    float u;
+    float v;
+} Hit;
+
+// A 4-wide BVH node (docs/bvh.md): the bounds of its four children as float4 lanes, so one node
+// is tested with six float4 operations. Child lane i is
+//   child[i] >= 0: an inner node index;
+//   child[i] <  0: a leaf of count[i] triangles starting at triangle index ~child[i];
+// an unused lane has empty bounds (lower = +inf, upper = -inf), child 0 and count 0.
+typedef struct BvhNode {
+    float4 lower_x, upper_x;
+    float4 lower_y, upper_y;
+    float4 lower_z, upper_z;
+    int4 child;
+    int4 count;
+} BvhNode;
+
+// A triangle in BVH leaf order: its three vertices; v0.w holds the bits of its primitive index
+// in the scene (rc_as_uint).
+typedef struct Triangle {
+    float4 v0, v1, v2;
+} Triangle;
+
+// A pinhole camera. The ray through image position (x, y) in pixels, (0, 0) the top-left corner,
+// has direction top_left + right * x / width + down * y / height.
+typedef struct CameraParams {
+    float4 origin;    // xyz: eye
+    float4 top_left;  // xyz: from the eye to the top-left image corner
+    float4 right;     // xyz: the image's full width
+    float4 down;      // xyz: the image's full height, top to bottom
+    int4 resolution;  // x: width, y: height, in pixels
+} CameraParams;
+
+RC_SHARED_END
+
+// Every shared struct and field, for the host/device layout comparison.
+#define RC_SHARED_LAYOUTS(STRUCT, FIELD)                                                         \
+    STRUCT(Ray) FIELD(Ray, origin) FIELD(Ray, direction)                                         \
+    STRUCT(Hit) FIELD(Hit, t) FIELD(Hit, primitive) FIELD(Hit, u) FIELD(Hit, v)                  \
+    STRUCT(BvhNode) FIELD(BvhNode, lower_x) FIELD(BvhNode, upper_x) FIELD(BvhNode, lower_y)      \
+    FIELD(BvhNode, upper_y) FIELD(BvhNode, lower_z) FIELD(BvhNode, upper_z)                      \
+    FIELD(BvhNode, child) FIELD(BvhNode, count)                                                  \
+    STRUCT(Triangle) FIELD(Triangle, v0) FIELD(Triangle, v1) FIELD(Triangle, v2)                 \
+    STRUCT(CameraParams) FIELD(CameraParams, origin) FIELD(CameraParams, top_left)               \
+    FIELD(CameraParams, right) FIELD(CameraParams, down) FIELD(CameraParams, resolution)
+
+#ifndef __OPENCL_VERSION__
+static_assert(sizeof(rc::shared::float4) == 16 && alignof(rc::shared::float4) == 16);
+static_assert(sizeof(rc::shared::int4) == 16 && alignof(rc::shared::int4) == 16);
+static_assert(sizeof(rc::shared::Ray) == 32);
+static_assert(sizeof(rc::shared::Hit) == 16);
+static_assert(sizeof(rc::shared::BvhNode) == 128);
+static_assert(offsetof(rc::shared::BvhNode, child) == 96);
+static_assert(sizeof(rc::shared::Triangle) == 48);
+static_assert(sizeof(rc::shared::CameraParams) == 80);
+#endif
