@@ -40,6 +40,9 @@ RC_FUNC WatertightRay rc_watertight_ray(float3 origin, float3 direction) {
 // barycentric coordinates (u, v) of v1 and v2. Both sides of the triangle are hit.
 RC_FUNC bool rc_intersect_triangle(const WatertightRay* r, float4 v0, float4 v1, float4 v2,
                                    float tmin, float tmax, float* t, float* u, float* v) {
+    // A shared edge must give exactly opposite edge functions in its two triangles; a fused
+    // multiply-add would round the two products differently and open cracks.
+    RC_NO_FP_CONTRACT
     // Vertices relative to the origin, permuted so that z is the dominant ray axis.
     const float4 a = rc_shuffle(v0 - r->origin, r->permute);
     const float4 b = rc_shuffle(v1 - r->origin, r->permute);

@@ -38,9 +38,9 @@ RC_FUNC void rc_orthonormal_basis(float3 n, float3* t, float3* b) {
     *b = (float3)(c, sign + n.y * n.y * a, -n.y);
 }
 
-// `local` (in the frame whose z axis is n) in world coordinates.
-RC_FUNC float3 rc_to_world(float3 local, float3 n) {
+// v, given in the frame whose z axis is n, in world coordinates.
+RC_FUNC float3 rc_to_world(float3 v, float3 n) {
     float3 t, b;
     rc_orthonormal_basis(n, &t, &b);
-    return local.x * t + local.y * b + local.z * n;
+    return v.x * t + v.y * b + v.z * n;
 }

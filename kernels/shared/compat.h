@@ -21,6 +21,9 @@
 #define rc_as_int(x) as_int(x)
 #define rc_offsetof(type, field) __builtin_offsetof(type, field)
 #define rc_shuffle(v, mask) shuffle((v), (mask))
+// At the start of a block: no fused multiply-adds in it (needed where a computation must be
+// exactly antisymmetric, like the edge functions of the watertight triangle test).
+#define RC_NO_FP_CONTRACT _Pragma("OPENCL FP_CONTRACT OFF")
 
 #else  // C++ host
 
@@ -34,6 +37,7 @@
 #define RC_GLOBAL
 #define RC_CONSTANT
 #define rc_offsetof(type, field) offsetof(type, field)
+#define RC_NO_FP_CONTRACT _Pragma("STDC FP_CONTRACT OFF")
 
 namespace rc::shared {
 

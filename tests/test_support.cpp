@@ -1,0 +1,79 @@
+#include "test_support.h"
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <memory>
+
+#include "scene/scene_loader.h"
+
+namespace rc::test {
+
+ContextOptions default_context_options() {
+    ContextOptions options;
+    options.cache_dir = RADCACHE_TEST_CACHE_DIR;
+    return options;
+}
+
+Context& shared_context() {
+    static Context context(default_context_options());
+    return context;
+}
+
+std::filesystem::path source_dir() { return RADCACHE_SOURCE_DIR; }
+
+std::filesystem::path radcache_executable() { return RADCACHE_EXECUTABLE; }
+
+Scene load_cornell_box() { return load_scene(source_dir() / "scenes/cornell-box/scene.json"); }
+
+std::filesystem::path scratch_dir(const std::string& name) {
+    const std::filesystem::path dir = std::filesystem::path(RADCACHE_TEST_SCRATCH_DIR) / name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+namespace {
+
+std::string shell_quote(const std::string& word) {
+    std::string quoted = "'";
+    for (char c : word) {
+        if (c == '\'') {
+            quoted += "'\\''";
+        } else {
+            quoted += c;
+        }
+    }
+    return quoted + "'";
+}
+
+}  // namespace
+
+CommandResult run_radcache(const std::vector<std::string>& args,
+                           const std::vector<std::string>& environment) {
+    std::string command = "env RADCACHE_CACHE_DIR=" + shell_quote(RADCACHE_TEST_CACHE_DIR);
+    for (const std::string& assignment : environment) {
+        command += " " + shell_quote(assignment);
+    }
+    command += " " + shell_quote(radcache_executable().string());
+    for (const std::string& arg : args) {
+        command += " " + shell_quote(arg);
+    }
+    command += " 2>&1";
+    CommandResult result;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (pipe == nullptr) {
+        return result;
+    }
+    std::array<char, 4096> buffer;
+    size_t got = 0;
+    while ((got = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
+        result.output.append(buffer.data(), got);
+    }
+    const int status = ::pclose(pipe);
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+}  // namespace rc::test
