@@ -1,0 +1,119 @@
+// The radcache command line: what `render` and `bench rays` write, and a clear error with exit
+// status 2 and no output file for every bad option.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "image/image_io.h"
+#include "test_support.h"
+#include "util/file_io.h"
+
+namespace rc {
+namespace {
+
+std::string cornell_box() {
+    return (test::source_dir() / "scenes/cornell-box/scene.json").string();
+}
+
+TEST(Cli, RenderWritesEachImageFormatAndStats) {
+    const auto dir = test::scratch_dir("cli_render");
+    for (const char* name : {"out.png", "out.exr", "out.hdr", "out.pfm"}) {
+        const auto output = dir / name;
+        const test::CommandResult result = test::run_radcache(
+            {"render", cornell_box(), "-o", output.string(), "--width", "48", "--height", "32",
+             "--quiet", "--stats", (dir / "stats.json").string()});
+        ASSERT_EQ(result.exit_code, 0) << result.output;
+        EXPECT_EQ(result.output, "") << "--quiet prints nothing";
+        const Image image = read_image(output);
+        EXPECT_EQ(image.width, 48);
+        EXPECT_EQ(image.height, 32);
+        EXPECT_GE(image.channels, 3);
+    }
+    const nlohmann::json stats = nlohmann::json::parse(read_file(dir / "stats.json"));
+    EXPECT_EQ(stats["method"], "normals");
+    EXPECT_EQ(stats["resolution"][0], 48);
+    EXPECT_EQ(stats["triangles"], 38);
+    EXPECT_TRUE(stats["kernels"].contains("render_normals"));
+    EXPECT_GT(stats["seconds"]["total"].get<double>(), 0.0);
+    // No temporary files are left behind.
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+            << entry.path();
+    }
+}
+
+struct BadCommand {
+    std::vector<std::string> args;
+    int exit_code;
+    std::string expected;
+};
+
+TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
+    const auto dir = test::scratch_dir("cli_bad");
+    const std::string out = (dir / "out.png").string();
+    const std::vector<BadCommand> cases = {
+        {{"render", cornell_box(), "-o", (dir / "out.xyz").string()}, 2, "unsupported output"},
+        {{"render", cornell_box(), "-o", (dir / "missing/out.png").string()}, 2, "does not exist"},
+        {{"render", cornell_box(), "-o", out, "--method", "pt"}, 2, "unknown method 'pt'"},
+        {{"render", cornell_box(), "-o", out, "--bogus"}, 2, "unknown option '--bogus'"},
+        {{"render", cornell_box(), "-o", out, "--spp", "0"}, 2, "--spp"},
+        {{"render", cornell_box(), "-o", out, "--width", "abc"}, 2, "--width"},
+        {{"render", cornell_box(), "-o", out, "--width"}, 2, "needs a value"},
+        {{"render", (dir / "nope.json").string(), "-o", out}, 1, "not found"},
+        {{"render", "-o", out}, 2, "exactly one scene"},
+        {{"frobnicate"}, 2, "unknown command"},
+        {{"bench", "nothing"}, 2, "unknown benchmark"},
+        {{"devices", "extra"}, 2, "no arguments"},
+    };
+    for (const BadCommand& bad : cases) {
+        const test::CommandResult result = test::run_radcache(bad.args);
+        std::string joined;
+        for (const std::string& a : bad.args) {
+            joined += a + " ";
+        }
+        EXPECT_EQ(result.exit_code, bad.exit_code) << joined << "\n" << result.output;
+        EXPECT_NE(result.output.find(bad.expected), std::string::npos)
+            << joined << "\n" << result.output;
+        EXPECT_NE(result.output.find("radcache: error: "), std::string::npos) << result.output;
+    }
+    EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+TEST(Cli, HelpListsOptions) {
+    const test::CommandResult render = test::run_radcache({"render", "--help"});
+    EXPECT_EQ(render.exit_code, 0);
+    EXPECT_NE(render.output.find("--device"), std::string::npos);
+    EXPECT_NE(render.output.find("--spp"), std::string::npos);
+    const test::CommandResult top = test::run_radcache({"--help"});
+    EXPECT_EQ(top.exit_code, 0);
+    EXPECT_NE(top.output.find("bench rays"), std::string::npos);
+}
+
+TEST(Cli, BenchRaysWritesTheDocumentedJson) {
+    const auto dir = test::scratch_dir("cli_bench");
+    const auto json_path = dir / "rays.json";
+    const test::CommandResult result =
+        test::run_radcache({"bench", "rays", "--scene", cornell_box(), "--width", "64",
+                            "--repeat", "1", "--json", json_path.string()});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const nlohmann::json report = nlohmann::json::parse(read_file(json_path));
+    ASSERT_TRUE(report.is_array());
+    ASSERT_EQ(report.size(), 1u);
+    const nlohmann::json& entry = report[0];
+    for (const char* key : {"device", "scene", "triangles", "threads"}) {
+        EXPECT_TRUE(entry.contains(key)) << key;
+    }
+    EXPECT_EQ(entry["triangles"], 38);
+    for (const char* name :
+         {"coherent_closest", "coherent_any", "incoherent_closest", "incoherent_any"}) {
+        ASSERT_TRUE(entry.contains(name)) << name;
+        EXPECT_GT(entry[name]["device_mrays"].get<double>(), 0.0);
+        EXPECT_GT(entry[name]["embree_mrays"].get<double>(), 0.0);
+        EXPECT_GT(entry[name]["ratio"].get<double>(), 0.0);
+        // Both tracers answer (almost) every ray the same way; ties at edges are rare.
+        EXPECT_GT(entry[name]["agreement"].get<double>(), 0.99);
+    }
+}
+
+}  // namespace
+}  // namespace rc

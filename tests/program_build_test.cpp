@@ -1,0 +1,178 @@
+// Program builds: include expansion, the build log of a broken kernel, and the binary cache
+// (hits, header changes, corrupt entries).
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "device/binary_cache.h"
+#include "device/kernel_sources.h"
+#include "shared/rng.h"
+#include "test_support.h"
+#include "util/error.h"
+#include "util/file_io.h"
+
+namespace rc {
+namespace {
+
+size_t occurrences(const std::string& text, const std::string& needle) {
+    size_t count = 0;
+    for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) {
+        ++count;
+    }
+    return count;
+}
+
+// A copy of the source tree's kernels/ to edit.
+std::filesystem::path copy_of_kernels(const std::string& name) {
+    const std::filesystem::path dir = test::scratch_dir(name) / "kernels";
+    std::filesystem::copy(test::source_dir() / "kernels", dir,
+                          std::filesystem::copy_options::recursive);
+    return dir;
+}
+
+void append(const std::filesystem::path& file, const std::string& text) {
+    std::ofstream out(file, std::ios::app);
+    out << text;
+}
+
+TEST(ProgramBuild, ExpandsEveryIncludeOnceWithLineMarkers) {
+    const KernelSources sources;
+    const std::string text = sources.expand("normals.cl");
+    EXPECT_EQ(occurrences(text, "#line 1 \"shared/types.h\""), 1u);
+    EXPECT_EQ(occurrences(text, "#line 1 \"common/bvh_traversal.h\""), 1u);
+    EXPECT_EQ(occurrences(text, "#line 1 \"normals.cl\""), 1u);
+    EXPECT_EQ(occurrences(text, "#include \""), 0u);
+    EXPECT_EQ(occurrences(text, "#pragma once"), 0u);
+}
+
+TEST(ProgramBuild, OverrideDirectoryIsReadAndMissingIncludesAreNamed) {
+    const std::filesystem::path dir = copy_of_kernels("missing_include");
+    append(dir / "normals.h", "\n#include \"common/does_not_exist.h\"\n");
+    const KernelSources sources(dir);
+    try {
+        sources.expand("normals.cl");
+        FAIL() << "no error";
+    } catch (const Error& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("normals.h:"), std::string::npos) << message;
+        EXPECT_NE(message.find("common/does_not_exist.h"), std::string::npos) << message;
+    }
+}
+
+TEST(ProgramBuild, BrokenKernelReportsTheBuildLogWithFileAndLine) {
+    const std::filesystem::path dir = copy_of_kernels("broken_kernel");
+    append(dir / "normals.h", "\nthis_is_not_opencl_c broken;\n");
+    ContextOptions options = test::default_context_options();
+    options.kernel_dir = dir;
+    options.cache_dir.clear();
+    Context context(options);
+    try {
+        context.kernel("normals.cl", "render_normals");
+        FAIL() << "no error";
+    } catch (const Error& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("clBuildProgram(normals.cl) failed: CL_BUILD_PROGRAM_FAILURE"),
+                  std::string::npos)
+            << message;
+        EXPECT_NE(message.find("build log"), std::string::npos) << message;
+        EXPECT_NE(message.find("normals.h:"), std::string::npos) << message;
+        EXPECT_NE(message.find("this_is_not_opencl_c"), std::string::npos) << message;
+    }
+}
+
+TEST(ProgramBuild, BrokenKernelThroughTheCommandLineExitsNonZeroWithTheLog) {
+    const std::filesystem::path dir = copy_of_kernels("broken_kernel_cli");
+    append(dir / "normals.h", "\nthis_is_not_opencl_c broken;\n");
+    const auto output = dir.parent_path() / "out.png";
+    const test::CommandResult result = test::run_radcache(
+        {"render", (test::source_dir() / "scenes/cornell-box/scene.json").string(), "-o",
+         output.string(), "--kernel-dir", dir.string(), "--no-kernel-cache"});
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_NE(result.output.find("this_is_not_opencl_c"), std::string::npos) << result.output;
+    EXPECT_FALSE(std::filesystem::exists(output));
+}
+
+TEST(ProgramBuild, BinaryCacheHitsAndSeesHeaderChanges) {
+    ContextOptions options = test::default_context_options();
+    options.cache_dir = test::scratch_dir("cache_hits");
+    {
+        Context context(options);
+        EXPECT_FALSE(context.program("rng_probe.cl").report().from_cache);
+    }
+    {
+        Context context(options);
+        EXPECT_TRUE(context.program("rng_probe.cl").report().from_cache);
+    }
+    // A comment added to an included header changes the expanded source and so the key.
+    const std::filesystem::path dir = copy_of_kernels("cache_header_change");
+    append(dir / "shared/rng.h", "\n// a change\n");
+    options.kernel_dir = dir;
+    Context context(options);
+    EXPECT_FALSE(context.program("rng_probe.cl").report().from_cache);
+}
+
+TEST(ProgramBuild, CorruptCacheEntryIsIgnoredAndRebuilt) {
+    ContextOptions options = test::default_context_options();
+    options.cache_dir = test::scratch_dir("cache_corrupt");
+    {
+        Context context(options);
+        context.program("rng_probe.cl");
+    }
+    std::vector<std::filesystem::path> entries;
+    for (const auto& entry : std::filesystem::directory_iterator(options.cache_dir)) {
+        entries.push_back(entry.path());
+    }
+    ASSERT_EQ(entries.size(), 1u);
+    // Flip bytes in the middle of the stored binary.
+    std::string bytes = read_file(entries[0]);
+    ASSERT_GT(bytes.size(), 100u);
+    for (size_t i = bytes.size() / 2; i < bytes.size() / 2 + 16; ++i) {
+        bytes[i] = static_cast<char>(~bytes[i]);
+    }
+    write_file_atomically(entries[0], bytes);
+    {
+        Context context(options);
+        const ProgramBuildReport report = context.program("rng_probe.cl").report();
+        EXPECT_FALSE(report.from_cache);
+        EXPECT_TRUE(report.replaced_corrupt_entry);
+        // The rebuilt program works.
+        Kernel kernel = context.kernel("rng_probe.cl", "rng_stream_words");
+        Buffer<unsigned> out(context, 8, "words");
+        context.launch(kernel, 8, 1u, 2u, 3u, 1u, out);
+        EXPECT_EQ(out.download()[5], shared::rc_rng_word(1, 2, 5, 3, 0));
+    }
+    // A truncated entry too.
+    write_file_atomically(entries[0], read_file(entries[0]).substr(0, 40));
+    {
+        Context context(options);
+        EXPECT_TRUE(context.program("rng_probe.cl").report().replaced_corrupt_entry);
+    }
+    // An entry whose checksum is right but whose binary the driver refuses.
+    {
+        const DeviceInfo& device = test::shared_context().device();
+        const BinaryCacheKey key = BinaryCacheKey::of(KernelSources().expand("rng_probe.cl"),
+                                                      "-cl-std=CL1.2", device.name,
+                                                      device.driver_version);
+        const BinaryCache cache(options.cache_dir);
+        ASSERT_EQ(cache.entry_path(key), entries[0]);
+        cache.store(key, std::vector<unsigned char>(4096, 0x5a));
+        Context context(options);
+        EXPECT_TRUE(context.program("rng_probe.cl").report().replaced_corrupt_entry);
+    }
+    // The rebuilt entry is valid again.
+    Context context(options);
+    EXPECT_TRUE(context.program("rng_probe.cl").report().from_cache);
+}
+
+TEST(ProgramBuild, DumpKernelsWritesTheExpandedSource) {
+    ContextOptions options = test::default_context_options();
+    options.dump_kernels_dir = test::scratch_dir("dump");
+    Context context(options);
+    context.program("trace.cl");
+    const std::string dumped = read_file(options.dump_kernels_dir / "trace.cl");
+    EXPECT_NE(dumped.find("rc_trace_closest"), std::string::npos);
+    EXPECT_NE(dumped.find("-cl-std=CL1.2"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rc
