@@ -41,8 +41,8 @@ RC_FUNC float4 rc_normals_pixel(const CameraParams* camera, RC_GLOBAL const BvhN
             jx = rc_rng_next_float(&rng);
             jy = rc_rng_next_float(&rng);
         }
-        sum += rc_normals_sample(camera, nodes, triangles, triangle_of_primitive,
-                                 (float)px + jx, (float)py + jy);
+        sum += rc_normals_sample(camera, nodes, triangles, triangle_of_primitive, (float)px + jx,
+                                 (float)py + jy);
     }
     return (float4)(sum / (float)samples, 1.0f);
 }

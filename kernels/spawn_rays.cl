@@ -3,8 +3,7 @@
 #include "common/diffuse_bounce.h"
 
 // One centred camera ray per pixel, row by row from the top-left pixel.
-__kernel void spawn_camera_rays(uint begin, uint end, CameraParams camera,
-                                __global Ray* rays) {
+__kernel void spawn_camera_rays(uint begin, uint end, CameraParams camera, __global Ray* rays) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {
         return;

@@ -1,10 +1,11 @@
 // The flattened BVH4 (docs/bvh.md): every triangle in exactly one leaf, bounds that contain
 // what they bound, the depth bound the traversal stack relies on, and tiny trees.
+#include "bvh/bvh.h"
+
 #include <gtest/gtest.h>
 
 #include <limits>
 
-#include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "bvh/device_tracer.h"
 #include "ray_sets.h"
@@ -166,7 +167,7 @@ TEST(Bvh, RayIntervalIsOpenBelowAndClosedAbove) {
     const auto hits = tracer.trace_closest({test::make_ray({0, 0, 0}, {0, 0, 1}, 0.0f, 3.0f),
                                             test::make_ray({0, 0, 0}, {0, 0, 1}, 3.0f, 5.0f),
                                             test::make_ray({0, 0, 0}, {0, 0, 1}, 0.0f, 2.99f)});
-    EXPECT_EQ(hits[0].primitive, 0u);        // t = tmax counts
+    EXPECT_EQ(hits[0].primitive, 0u);         // t = tmax counts
     EXPECT_EQ(hits[1].primitive, RC_NO_HIT);  // t = tmin does not
     EXPECT_EQ(hits[2].primitive, RC_NO_HIT);
 }

@@ -1,13 +1,13 @@
 // The pinhole camera's image plane: the centre ray looks at look_at, the image edges lie at half
 // the field of view on the chosen axis, x grows to the camera's right and y downwards.
+#include "scene/camera.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
-
-#include "scene/camera.h"
 
 namespace rc {
 namespace {
@@ -20,7 +20,8 @@ glm::vec3 direction_at(const shared::CameraParams& p, float x, float y) {
 }
 
 float angle_degrees(glm::vec3 a, glm::vec3 b) {
-    return glm::degrees(std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0f, 1.0f)));
+    return glm::degrees(
+        std::acos(std::clamp(glm::dot(glm::normalize(a), glm::normalize(b)), -1.0f, 1.0f)));
 }
 
 TEST(Camera, CentreAndEdgesFollowTheFieldOfView) {

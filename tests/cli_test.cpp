@@ -72,8 +72,8 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
             joined += a + " ";
         }
         EXPECT_EQ(result.exit_code, bad.exit_code) << joined << "\n" << result.output;
-        EXPECT_NE(result.output.find(bad.expected), std::string::npos)
-            << joined << "\n" << result.output;
+        EXPECT_NE(result.output.find(bad.expected), std::string::npos) << joined << "\n"
+                                                                       << result.output;
         EXPECT_NE(result.output.find("radcache: error: "), std::string::npos) << result.output;
     }
     EXPECT_TRUE(std::filesystem::is_empty(dir));
@@ -93,8 +93,8 @@ TEST(Cli, BenchRaysWritesTheDocumentedJson) {
     const auto dir = test::scratch_dir("cli_bench");
     const auto json_path = dir / "rays.json";
     const test::CommandResult result =
-        test::run_radcache({"bench", "rays", "--scene", cornell_box(), "--width", "64",
-                            "--repeat", "1", "--json", json_path.string()});
+        test::run_radcache({"bench", "rays", "--scene", cornell_box(), "--width", "64", "--repeat",
+                            "1", "--json", json_path.string()});
     ASSERT_EQ(result.exit_code, 0) << result.output;
     const nlohmann::json report = nlohmann::json::parse(read_file(json_path));
     ASSERT_TRUE(report.is_array());

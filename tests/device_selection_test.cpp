@@ -49,8 +49,8 @@ TEST(DeviceSelection, SelectsByIndexAndByCaseInsensitiveSubstring) {
 TEST(DeviceSelection, DefaultPrefersAGpuThenACpu) {
     const auto devices = list_devices();
     const DeviceInfo chosen = select_device(devices, "");
-    const bool any_gpu = std::any_of(devices.begin(), devices.end(),
-                                     [](const DeviceInfo& d) { return d.is_gpu; });
+    const bool any_gpu =
+        std::any_of(devices.begin(), devices.end(), [](const DeviceInfo& d) { return d.is_gpu; });
     if (any_gpu) {
         EXPECT_TRUE(chosen.is_gpu);
     } else {
@@ -74,9 +74,9 @@ TEST(DeviceSelection, UnknownSpecThrowsWithTheDeviceList) {
 
 TEST(DeviceSelection, RenderWithBadDeviceExitsTwoListingDevicesAndWritesNothing) {
     const auto output = test::scratch_dir("device_selection") / "out.png";
-    const test::CommandResult result =
-        test::run_radcache({"render", (test::source_dir() / "scenes/cornell-box/scene.json").string(),
-                            "-o", output.string(), "--device", "no-such-device-xyz"});
+    const test::CommandResult result = test::run_radcache(
+        {"render", (test::source_dir() / "scenes/cornell-box/scene.json").string(), "-o",
+         output.string(), "--device", "no-such-device-xyz"});
     EXPECT_EQ(result.exit_code, 2) << result.output;
     EXPECT_NE(result.output.find("no-such-device-xyz"), std::string::npos);
     EXPECT_NE(result.output.find(list_devices()[0].name), std::string::npos);

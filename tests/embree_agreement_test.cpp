@@ -58,8 +58,8 @@ std::string describe(const shared::Ray& ray) {
 
 // Every ray: the device's answer against Embree's; where they differ, the device's answer must
 // be one that single-precision rounding allows (tests/reference_intersector.h).
-Agreement compare(Tracers& tracers, const TriangleMesh& mesh,
-                  const std::vector<shared::Ray>& rays, const char* label) {
+Agreement compare(Tracers& tracers, const TriangleMesh& mesh, const std::vector<shared::Ray>& rays,
+                  const char* label) {
     const std::vector<shared::Hit> device_hits = tracers.device.trace_closest(rays);
     const std::vector<unsigned> device_occluded = tracers.device.trace_any(rays);
     Agreement result;
@@ -90,9 +90,10 @@ Agreement compare(Tracers& tracers, const TriangleMesh& mesh,
             }
         }
     }
-    std::printf("%-18s %6zu rays %6zu hits: closest %zu differ (%zu ties), any %zu differ (%zu ties)\n",
-                label, result.rays, result.embree_hits, result.closest_disagreements,
-                result.closest_ties, result.any_disagreements, result.any_ties);
+    std::printf(
+        "%-18s %6zu rays %6zu hits: closest %zu differ (%zu ties), any %zu differ (%zu ties)\n",
+        label, result.rays, result.embree_hits, result.closest_disagreements, result.closest_ties,
+        result.any_disagreements, result.any_ties);
     return result;
 }
 

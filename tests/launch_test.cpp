@@ -61,9 +61,8 @@ TEST(Launch, ArgumentErrorsNameTheCallKernelAndStatus) {
     Kernel kernel = context.kernel("rng_probe.cl", "rng_stream_words");
     Buffer<unsigned> out(context, 16, "words");
     // A 64-bit value where the kernel takes a 32-bit uint.
-    const std::string message = error_of([&] {
-        context.launch(kernel, 16, uint64_t{5}, 6u, 7u, 1u, out);
-    });
+    const std::string message =
+        error_of([&] { context.launch(kernel, 16, uint64_t{5}, 6u, 7u, 1u, out); });
     EXPECT_NE(message.find("clSetKernelArg(rng_stream_words argument 2) failed: "
                            "CL_INVALID_ARG_SIZE"),
               std::string::npos)
@@ -85,8 +84,7 @@ TEST(Launch, OversizedWorkGroupIsRefusedByName) {
     Context context(options);
     Kernel kernel = context.kernel("rng_probe.cl", "rng_stream_words");
     Buffer<unsigned> out(context, 16, "words");
-    const std::string message =
-        error_of([&] { context.launch(kernel, 16, 1u, 2u, 3u, 1u, out); });
+    const std::string message = error_of([&] { context.launch(kernel, 16, 1u, 2u, 3u, 1u, out); });
     EXPECT_NE(message.find("rng_stream_words"), std::string::npos) << message;
     EXPECT_NE(message.find("work-group size"), std::string::npos) << message;
 }
@@ -94,9 +92,8 @@ TEST(Launch, OversizedWorkGroupIsRefusedByName) {
 TEST(Launch, BuffersBeyondTheDeviceLimitAreRefusedBeforeAllocation) {
     Context& context = test::shared_context();
     const uint64_t too_many = context.device().max_allocation / sizeof(float) + 1;
-    const std::string message = error_of([&] {
-        Buffer<float> huge(context, static_cast<size_t>(too_many), "huge_film");
-    });
+    const std::string message =
+        error_of([&] { Buffer<float> huge(context, static_cast<size_t>(too_many), "huge_film"); });
     EXPECT_NE(message.find("buffer 'huge_film'"), std::string::npos) << message;
     EXPECT_NE(message.find("largest allocation"), std::string::npos) << message;
 }

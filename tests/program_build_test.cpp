@@ -150,9 +150,9 @@ TEST(ProgramBuild, CorruptCacheEntryIsIgnoredAndRebuilt) {
     // An entry whose checksum is right but whose binary the driver refuses.
     {
         const DeviceInfo& device = test::shared_context().device();
-        const BinaryCacheKey key = BinaryCacheKey::of(KernelSources().expand("rng_probe.cl"),
-                                                      "-cl-std=CL1.2", device.name,
-                                                      device.driver_version);
+        const BinaryCacheKey key =
+            BinaryCacheKey::of(KernelSources().expand("rng_probe.cl"), "-cl-std=CL1.2", device.name,
+                               device.driver_version);
         const BinaryCache cache(options.cache_dir);
         ASSERT_EQ(cache.entry_path(key), entries[0]);
         cache.store(key, std::vector<unsigned char>(4096, 0x5a));

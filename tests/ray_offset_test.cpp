@@ -30,9 +30,8 @@ Setup tilted_quad(glm::vec3 centre, float size) {
     const glm::vec3 e2 = glm::normalize(glm::cross(glm::vec3(0.2f, 0.1f, 1.0f), e1)) * size;
     setup.mesh = make_quad(centre - 0.5f * (e1 + e2), e1, e2);
     const glm::vec3 normal = glm::normalize(glm::cross(e1, e2));
-    const std::vector<shared::Ray> random =
-        test::random_rays({centre - glm::vec3(size * 0.3f), centre + glm::vec3(size * 0.3f)},
-                          20000, 5, 0.0f);
+    const std::vector<shared::Ray> random = test::random_rays(
+        {centre - glm::vec3(size * 0.3f), centre + glm::vec3(size * 0.3f)}, 20000, 5, 0.0f);
     for (const shared::Ray& r : random) {
         // Origins above the plane, aimed at random points of the quad.
         glm::vec3 o(r.origin.x, r.origin.y, r.origin.z);
@@ -93,8 +92,8 @@ TEST(RayOffset, BouncesNeverHitTheSurfaceTheyLeaveAtAnyScale) {
         EXPECT_GT(hits.rays, 10000u);
         EXPECT_EQ(hits.offset, 0u) << "centre " << centre.x << " size " << size;
         raw_total += hits.raw;
-        std::printf("size %g: %zu rays, %zu self-hits from offset origins, %zu from raw points\n", size,
-                    hits.rays, hits.offset, hits.raw);
+        std::printf("size %g: %zu rays, %zu self-hits from offset origins, %zu from raw points\n",
+                    size, hits.rays, hits.offset, hits.raw);
     }
     // Without the offset, rounding puts many raw origins below the surface: the test can tell.
     EXPECT_GT(raw_total, 100u);

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <map>
 
 #include "shared/rng.h"
 
@@ -27,8 +27,9 @@ glm::vec3 point_in(const Bounds& bounds, float margin, shared::RngStream& rng) {
     const glm::vec3 grow = (bounds.upper - bounds.lower) * margin;
     glm::vec3 p;
     for (int k = 0; k < 3; ++k) {
-        p[k] = bounds.lower[k] - grow[k] +
-               (bounds.upper[k] - bounds.lower[k] + 2.0f * grow[k]) * shared::rc_rng_next_float(&rng);
+        p[k] =
+            bounds.lower[k] - grow[k] +
+            (bounds.upper[k] - bounds.lower[k] + 2.0f * grow[k]) * shared::rc_rng_next_float(&rng);
     }
     return p;
 }

@@ -68,10 +68,10 @@ ReferenceHit reference_intersect(const TriangleMesh& mesh, size_t triangle,
         inside_possible = inside_possible && b[k] >= -tolerance;
         inside_certain = inside_certain && b[k] >= tolerance;
     }
-    hit.possible = inside_possible && hit.t >= tmin - hit.tolerance_t &&
-                   hit.t <= tmax + hit.tolerance_t;
-    hit.certain = inside_certain && hit.t > tmin + hit.tolerance_t &&
-                  hit.t < tmax - hit.tolerance_t;
+    hit.possible =
+        inside_possible && hit.t >= tmin - hit.tolerance_t && hit.t <= tmax + hit.tolerance_t;
+    hit.certain =
+        inside_certain && hit.t > tmin + hit.tolerance_t && hit.t < tmax - hit.tolerance_t;
     return hit;
 }
 

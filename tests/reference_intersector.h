@@ -18,8 +18,7 @@ struct ReferenceHit {
 
 // The exact (double) intersection of the ray with one triangle, with tolerances derived from the
 // coordinates' magnitude and the ray's angle to the triangle (grazing rays get wider tolerances).
-ReferenceHit reference_intersect(const TriangleMesh& mesh, size_t triangle,
-                                 const shared::Ray& ray);
+ReferenceHit reference_intersect(const TriangleMesh& mesh, size_t triangle, const shared::Ray& ray);
 
 // Whether the device's closest-hit answer (primitive, or RC_NO_HIT) is one that rounding
 // allows: a possible hit with no certain hit clearly nearer, or a miss with no certain hit.

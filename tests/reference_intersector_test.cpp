@@ -1,10 +1,11 @@
 // The double-precision referee of the Embree agreement tests can fail: it rejects answers that
 // are wrong by more than rounding.
+#include "reference_intersector.h"
+
 #include <gtest/gtest.h>
 
 #include "bvh/embree_scene.h"
 #include "ray_sets.h"
-#include "reference_intersector.h"
 #include "test_support.h"
 
 namespace rc {

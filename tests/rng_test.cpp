@@ -1,10 +1,11 @@
 // The counter-based RNG: Random123's known answers for Philox4x32-10, the same words on host and
 // device, and uniformity by a chi-square test.
+#include "shared/rng.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "shared/rng.h"
 #include "test_support.h"
 
 namespace rc {
@@ -43,8 +44,8 @@ TEST(Rng, DevicePhiloxMatchesRandom123KnownAnswers) {
     Context& context = test::shared_context();
     std::vector<uint> inputs;
     for (const KnownAnswer& k : kKnownAnswers) {
-        inputs.insert(inputs.end(), {k.counter[0], k.counter[1], k.counter[2], k.counter[3],
-                                     k.key[0], k.key[1]});
+        inputs.insert(inputs.end(),
+                      {k.counter[0], k.counter[1], k.counter[2], k.counter[3], k.key[0], k.key[1]});
     }
     const Buffer<uint> in(context, inputs, "philox_inputs");
     Buffer<uint> out(context, 4 * std::size(kKnownAnswers), "philox_outputs");
@@ -120,7 +121,8 @@ TEST(Rng, NeighbouringStreamsAreUncorrelated) {
         sxy += x * y;
     }
     const double cov = sxy / n - (sx / n) * (sy / n);
-    const double r = cov / std::sqrt((sxx / n - (sx / n) * (sx / n)) * (syy / n - (sy / n) * (sy / n)));
+    const double r =
+        cov / std::sqrt((sxx / n - (sx / n) * (sx / n)) * (syy / n - (sy / n) * (sy / n)));
     EXPECT_LT(std::fabs(r), 5.0 / std::sqrt(static_cast<double>(n)));
 }
 

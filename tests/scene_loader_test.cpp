@@ -1,12 +1,13 @@
 // Scene and OBJ loading: what loads, what is dropped and counted, and a one-line error naming
 // the file and the key or line for each kind of bad input.
+#include "scene/scene_loader.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <glm/common.hpp>
 
 #include "scene/obj_loader.h"
-#include "scene/scene_loader.h"
 #include "test_support.h"
 #include "util/error.h"
 
@@ -50,7 +51,8 @@ TEST(ObjLoader, TriangulatesPolygonsAndResolvesNegativeIndices) {
 TEST(ObjLoader, RejectsNonFiniteVerticesWithFileAndLine) {
     const auto dir = test::scratch_dir("obj_nan");
     for (const std::string& bad : {"nan", "inf", "-inf", "1e39", "NaN"}) {
-        const auto file = write(dir / "bad.obj", "# comment\nv 0 0 0\nv 1 " + bad + " 0\nv 0 1 0\nf 1 2 3\n");
+        const auto file =
+            write(dir / "bad.obj", "# comment\nv 0 0 0\nv 1 " + bad + " 0\nv 0 1 0\nf 1 2 3\n");
         expect_contains(error_of([&] { load_obj(file); }),
                         {"bad.obj:3:", "'" + bad + "'", "not finite"});
     }
@@ -73,8 +75,7 @@ TEST(ObjLoader, RejectsOutOfRangeFaceIndicesWithFileAndLine) {
 }
 
 TEST(ObjLoader, MissingFileIsNamed) {
-    expect_contains(error_of([] { load_obj("/nonexistent/mesh.obj"); }),
-                    {"/nonexistent/mesh.obj"});
+    expect_contains(error_of([] { load_obj("/nonexistent/mesh.obj"); }), {"/nonexistent/mesh.obj"});
 }
 
 std::string scene_with(const std::string& camera, const std::string& shapes) {
@@ -127,22 +128,28 @@ TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
     const std::string shape = R"([{"type": "obj", "file": "ok.obj"}])";
     const std::vector<BadScene> cases = {
         {"malformed", "{\n  \"camera\": {\n    \"fov\": 40,,\n", {"malformed JSON", "line 3"}},
-        {"unknown_top", scene_with(kCamera, shape).replace(1, 0, "\"cameras\": {},"),
+        {"unknown_top",
+         scene_with(kCamera, shape).replace(1, 0, "\"cameras\": {},"),
          {"cameras", "unknown key"}},
-        {"unknown_shape", scene_with(kCamera, R"([{"type": "teapot"}])"),
+        {"unknown_shape",
+         scene_with(kCamera, R"([{"type": "teapot"}])"),
          {"shapes[0].type", "teapot"}},
-        {"missing_mesh", scene_with(kCamera, R"([{"type": "obj", "file": "nowhere.obj"}])"),
+        {"missing_mesh",
+         scene_with(kCamera, R"([{"type": "obj", "file": "nowhere.obj"}])"),
          {"shapes[0].file", "nowhere.obj"}},
         {"zero_resolution",
-         scene_with(R"({"position": [0,0,-5], "look_at": [0,0,0], "fov": 40, "resolution": [0, 48]})",
-                    shape),
+         scene_with(
+             R"({"position": [0,0,-5], "look_at": [0,0,0], "fov": 40, "resolution": [0, 48]})",
+             shape),
          {"camera.resolution", "positive"}},
         {"bad_fov",
          scene_with(R"({"position": [0,0,-5], "look_at": [0,0,0], "fov": "wide"})", shape),
          {"camera.fov", "number"}},
-        {"huge_fov", scene_with(R"({"position": [0,0,-5], "look_at": [0,0,0], "fov": 180})", shape),
+        {"huge_fov",
+         scene_with(R"({"position": [0,0,-5], "look_at": [0,0,0], "fov": 180})", shape),
          {"camera.fov"}},
-        {"look_at_eye", scene_with(R"({"position": [1,2,3], "look_at": [1,2,3], "fov": 40})", shape),
+        {"look_at_eye",
+         scene_with(R"({"position": [1,2,3], "look_at": [1,2,3], "fov": 40})", shape),
          {"camera.look_at"}},
         {"up_parallel",
          scene_with(R"({"position": [0,0,0], "look_at": [0,1,0], "up": [0,1,0], "fov": 40})",
@@ -163,8 +170,8 @@ TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
         EXPECT_FALSE(message.empty());
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
         for (const std::string& part : expected) {
-            EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: "
-                                                             << message;
+            EXPECT_NE(message.find(part), std::string::npos)
+                << "'" << part << "' not in: " << message;
         }
     }
     expect_contains(error_of([&] { load_scene(dir / "absent.json"); }),

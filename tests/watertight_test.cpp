@@ -34,7 +34,8 @@ std::vector<shared::Ray> rays_through_vertices_and_edges(const TriangleMesh& mes
     }
     for (const auto& [a, b] : edges) {
         for (float s : {0.25f, 0.5f, 0.6180339887f}) {
-            const glm::vec3 target = mesh.positions[a] + s * (mesh.positions[b] - mesh.positions[a]);
+            const glm::vec3 target =
+                mesh.positions[a] + s * (mesh.positions[b] - mesh.positions[a]);
             rays.push_back(test::make_ray(inside, target - inside, 0.0f, inf));
         }
     }
@@ -77,8 +78,8 @@ TEST(Watertight, CornellBoxClosedByAFrontWall) {
     TriangleMesh mesh = test::load_cornell_box().mesh;
     const TriangleMesh front = [] {
         TriangleMesh quad;
-        quad.positions = {{552.8f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f},
-                          {0.0f, 548.8f, 0.0f}, {556.0f, 548.8f, 0.0f}};
+        quad.positions = {
+            {552.8f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 548.8f, 0.0f}, {556.0f, 548.8f, 0.0f}};
         quad.triangles = {{0, 1, 2}, {0, 2, 3}};
         return quad;
     }();

@@ -21,4 +21,3 @@ int run_bench_command(const std::vector<std::string>& args) {
 }
 
 }  // namespace rc
-

@@ -1,8 +1,9 @@
 // `radcache bench compile`: cold and warm build time of every kernel program.
+#include <unistd.h>
+
 #include <cstdlib>
 #include <iostream>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 #include "app/cli.h"
 #include "app/commands.h"

@@ -68,8 +68,8 @@ class RayBench {
     std::vector<CaseResult> run(const std::vector<shared::Ray>& coherent,
                                 const std::vector<shared::Ray>& incoherent) {
         std::vector<CaseResult> results;
-        for (const auto& [name, rays] : {std::pair{"coherent", &coherent},
-                                         std::pair{"incoherent", &incoherent}}) {
+        for (const auto& [name, rays] :
+             {std::pair{"coherent", &coherent}, std::pair{"incoherent", &incoherent}}) {
             results.push_back(closest_case(std::string(name) + "_closest", *rays));
             results.push_back(any_case(std::string(name) + "_any", *rays));
         }
@@ -117,10 +117,11 @@ class RayBench {
     CaseResult closest_case(const std::string& name, const std::vector<shared::Ray>& rays) {
         const Buffer<shared::Ray> ray_buffer(context_, rays, "bench_rays");
         Buffer<shared::Hit> hit_buffer(context_, rays.size(), "bench_hits");
-        const double device_s = device_seconds(
-            "trace_closest", [&] { tracer_.trace_closest(ray_buffer, hit_buffer); });
+        const double device_s =
+            device_seconds("trace_closest", [&] { tracer_.trace_closest(ray_buffer, hit_buffer); });
         std::vector<shared::Hit> embree_hits;
-        const double embree_s = embree_seconds([&] { embree_.intersect(rays, embree_hits, threads_); });
+        const double embree_s =
+            embree_seconds([&] { embree_.intersect(rays, embree_hits, threads_); });
         const std::vector<shared::Hit> device_hits = hit_buffer.download();
         size_t agreeing = 0;
         for (size_t i = 0; i < rays.size(); ++i) {
@@ -175,8 +176,8 @@ std::vector<OptionSpec> bench_rays_specs() {
 }
 
 std::string default_cornell_box() {
-    for (const char* candidate : {"scenes/cornell-box/scene.json",
-                                  RADCACHE_SOURCE_DIR "/scenes/cornell-box/scene.json"}) {
+    for (const char* candidate :
+         {"scenes/cornell-box/scene.json", RADCACHE_SOURCE_DIR "/scenes/cornell-box/scene.json"}) {
         if (std::filesystem::is_regular_file(candidate)) {
             return candidate;
         }

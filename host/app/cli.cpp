@@ -75,17 +75,17 @@ ParsedArguments parse_arguments(const std::string& command, const std::vector<st
         }
         std::string inline_value;
         bool has_inline_value = false;
-        if (const size_t equals = word.find('='); word.rfind("--", 0) == 0 &&
-                                                  equals != std::string::npos) {
+        if (const size_t equals = word.find('=');
+            word.rfind("--", 0) == 0 && equals != std::string::npos) {
             inline_value = word.substr(equals + 1);
             word = word.substr(0, equals);
             has_inline_value = true;
         }
         const OptionSpec* spec = find(word);
         if (spec == nullptr) {
-            throw Error("unknown option '" + word + "' for '" + command + "' (see " + command +
-                            " --help)",
-                        kExitUsage);
+            throw Error(
+                "unknown option '" + word + "' for '" + command + "' (see " + command + " --help)",
+                kExitUsage);
         }
         if (!spec->repeatable && parsed.has(spec->name)) {
             throw Error("option " + spec->name + " given twice", kExitUsage);
@@ -127,8 +127,8 @@ std::string format_help(const std::string& usage, const std::string& description
         left.push_back(text);
     }
     for (size_t i = 0; i < specs.size(); ++i) {
-        help += "  " + left[i] + std::string(width - left[i].size() + 2, ' ') + specs[i].help +
-                "\n";
+        help +=
+            "  " + left[i] + std::string(width - left[i].size() + 2, ' ') + specs[i].help + "\n";
     }
     return help;
 }

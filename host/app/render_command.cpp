@@ -58,8 +58,7 @@ int run_render_command(const std::vector<std::string>& args) {
     set_quiet(arguments.has("--quiet"));
     const std::string method = arguments.value("--method", "normals");
     if (method != "normals") {
-        throw Error("--method: unknown method '" + method + "' (implemented: normals)",
-                    kExitUsage);
+        throw Error("--method: unknown method '" + method + "' (implemented: normals)", kExitUsage);
     }
     const std::filesystem::path output = arguments.value("--output", "out.png");
     check_output_path(output);
@@ -68,16 +67,14 @@ int run_render_command(const std::vector<std::string>& args) {
         const std::filesystem::path dir =
             stats_path.parent_path().empty() ? "." : stats_path.parent_path();
         if (!std::filesystem::is_directory(dir)) {
-            throw Error(stats_path.string() + ": directory '" + dir.string() +
-                            "' does not exist",
+            throw Error(stats_path.string() + ": directory '" + dir.string() + "' does not exist",
                         kExitUsage);
         }
     }
     NormalsOptions options;
     options.width = static_cast<int>(arguments.integer("--width", 0, 1, 1 << 15));
     options.height = static_cast<int>(arguments.integer("--height", 0, 1, 1 << 15));
-    options.samples_per_pixel =
-        static_cast<unsigned>(arguments.integer("--spp", 1, 1, 1 << 20));
+    options.samples_per_pixel = static_cast<unsigned>(arguments.integer("--spp", 1, 1, 1 << 20));
     options.seed = static_cast<uint64_t>(arguments.integer("--seed", 0, 0, (1LL << 62)));
     ImageWriteOptions write_options;
     write_options.exposure = static_cast<float>(arguments.number("--exposure", 0.0, -64.0, 64.0));
@@ -87,8 +84,7 @@ int run_render_command(const std::vector<std::string>& args) {
     const Scene scene = load_scene(arguments.positionals()[0]);
     const double load_seconds = seconds_since(start);
     if (scene.dropped_degenerate > 0) {
-        log_note("dropped " + std::to_string(scene.dropped_degenerate) +
-                 " degenerate triangles");
+        log_note("dropped " + std::to_string(scene.dropped_degenerate) + " degenerate triangles");
     }
 
     start = Clock::now();
@@ -131,9 +127,8 @@ int run_render_command(const std::vector<std::string>& args) {
                             {"write", write_seconds}};
         nlohmann::json kernels = nlohmann::json::object();
         for (const auto& [name, time] : context.kernel_times()) {
-            kernels[name] = {{"seconds", time.seconds},
-                             {"launches", time.launches},
-                             {"items", time.items}};
+            kernels[name] = {
+                {"seconds", time.seconds}, {"launches", time.launches}, {"items", time.items}};
         }
         stats["kernels"] = kernels;
         nlohmann::json builds = nlohmann::json::array();

@@ -154,8 +154,8 @@ size_t Bvh::device_bytes() const {
 Bvh build_bvh(const TriangleMesh& mesh, const BvhBuildOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     if (options.max_leaf_size < 1 || options.max_leaf_size > RC_BVH_MAX_LEAF_SIZE) {
-        throw Error("BVH leaf size " + std::to_string(options.max_leaf_size) +
-                    " outside [1, " + std::to_string(RC_BVH_MAX_LEAF_SIZE) + "]");
+        throw Error("BVH leaf size " + std::to_string(options.max_leaf_size) + " outside [1, " +
+                    std::to_string(RC_BVH_MAX_LEAF_SIZE) + "]");
     }
     if (mesh.triangles.size() > static_cast<size_t>(std::numeric_limits<int>::max())) {
         throw Error("too many triangles for the BVH: " + std::to_string(mesh.triangles.size()));
@@ -174,8 +174,8 @@ Bvh build_bvh(const TriangleMesh& mesh, const BvhBuildOptions& options) {
             glm::min(mesh.positions[t.x], glm::min(mesh.positions[t.y], mesh.positions[t.z]));
         const glm::vec3 upper =
             glm::max(mesh.positions[t.x], glm::max(mesh.positions[t.y], mesh.positions[t.z]));
-        primitives[i] = {lower.x, lower.y, lower.z, 0, upper.x, upper.y, upper.z,
-                         static_cast<unsigned>(i)};
+        primitives[i] = {lower.x, lower.y, lower.z, 0,
+                         upper.x, upper.y, upper.z, static_cast<unsigned>(i)};
     }
 
     EmbreeDevice device;

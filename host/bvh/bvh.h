@@ -16,10 +16,10 @@ struct BvhBuildOptions {
 };
 
 struct Bvh {
-    std::vector<shared::BvhNode> nodes;             // node 0 is the root
-    std::vector<shared::Triangle> triangles;        // in leaf order
-    std::vector<unsigned> triangle_of_primitive;    // primitive index -> index in `triangles`
-    unsigned depth = 0;                             // levels of inner nodes
+    std::vector<shared::BvhNode> nodes;           // node 0 is the root
+    std::vector<shared::Triangle> triangles;      // in leaf order
+    std::vector<unsigned> triangle_of_primitive;  // primitive index -> index in `triangles`
+    unsigned depth = 0;                           // levels of inner nodes
     size_t leaf_count = 0;
     double build_seconds = 0.0;
 

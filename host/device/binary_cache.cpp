@@ -68,8 +68,7 @@ std::filesystem::path BinaryCache::entry_path(const BinaryCacheKey& key) const {
     return directory_ / (key.hex() + ".clbin");
 }
 
-CacheLookup BinaryCache::load(const BinaryCacheKey& key,
-                              std::vector<unsigned char>& binary) const {
+CacheLookup BinaryCache::load(const BinaryCacheKey& key, std::vector<unsigned char>& binary) const {
     binary.clear();
     if (!enabled()) {
         return CacheLookup::kMiss;
@@ -103,8 +102,7 @@ CacheLookup BinaryCache::load(const BinaryCacheKey& key,
     return CacheLookup::kHit;
 }
 
-void BinaryCache::store(const BinaryCacheKey& key,
-                        const std::vector<unsigned char>& binary) const {
+void BinaryCache::store(const BinaryCacheKey& key, const std::vector<unsigned char>& binary) const {
     if (!enabled() || binary.empty()) {
         return;
     }

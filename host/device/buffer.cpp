@@ -77,8 +77,8 @@ void DeviceBuffer::read(void* data, size_t bytes, size_t offset) const {
         return;
     }
     if (offset + bytes > bytes_) {
-        throw Error("read of " + std::to_string(bytes) + " bytes past the end of buffer '" +
-                    name_ + "'");
+        throw Error("read of " + std::to_string(bytes) + " bytes past the end of buffer '" + name_ +
+                    "'");
     }
     check_cl(clEnqueueReadBuffer(context_->cl_queue(), handle_, CL_TRUE, offset, bytes, data, 0,
                                  nullptr, nullptr),

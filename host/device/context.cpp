@@ -113,9 +113,8 @@ void Context::run_chunked(Kernel& kernel, size_t count) {
                     " work items exceed the 32-bit item range");
     }
     const size_t local = local_size_for(kernel);
-    const size_t max_chunk =
-        round_up(options_.max_chunk_items != 0 ? options_.max_chunk_items : kDefaultMaxChunkItems,
-                 local);
+    const size_t max_chunk = round_up(
+        options_.max_chunk_items != 0 ? options_.max_chunk_items : kDefaultMaxChunkItems, local);
     size_t chunk = std::min(max_chunk, round_up(kFirstChunkItems, local));
     KernelTime& time = kernel_times_[kernel.name()];
     for (size_t begin = 0; begin < count;) {
@@ -131,8 +130,8 @@ void Context::run_chunked(Kernel& kernel, size_t count) {
         const cl_int waited = clWaitForEvents(1, &event);
         cl_ulong started = 0;
         cl_ulong ended = 0;
-        cl_int profiled = clGetEventProfilingInfo(event, CL_PROFILING_COMMAND_START,
-                                                  sizeof started, &started, nullptr);
+        cl_int profiled = clGetEventProfilingInfo(event, CL_PROFILING_COMMAND_START, sizeof started,
+                                                  &started, nullptr);
         if (profiled == CL_SUCCESS) {
             profiled = clGetEventProfilingInfo(event, CL_PROFILING_COMMAND_END, sizeof ended,
                                                &ended, nullptr);
@@ -147,11 +146,10 @@ void Context::run_chunked(Kernel& kernel, size_t count) {
         begin += items;
         // Aim the next chunk at the target duration, within [local, max_chunk].
         if (items == chunk && seconds > 0.0) {
-            const double scale =
-                std::clamp(options_.chunk_seconds / seconds, 0.25, 4.0);
-            chunk = std::clamp(round_up(static_cast<size_t>(static_cast<double>(chunk) * scale),
-                                        local),
-                               local, max_chunk);
+            const double scale = std::clamp(options_.chunk_seconds / seconds, 0.25, 4.0);
+            chunk =
+                std::clamp(round_up(static_cast<size_t>(static_cast<double>(chunk) * scale), local),
+                           local, max_chunk);
         }
     }
 }

@@ -22,8 +22,8 @@ struct _cl_command_queue;
 namespace rc {
 
 struct ContextOptions {
-    std::string device_spec;                // --device; empty: $RADCACHE_DEVICE, then default
-    std::filesystem::path kernel_dir;       // override for the embedded kernel sources
+    std::string device_spec;           // --device; empty: $RADCACHE_DEVICE, then default
+    std::filesystem::path kernel_dir;  // override for the embedded kernel sources
     std::filesystem::path cache_dir = BinaryCache::default_directory();  // empty: no cache
     std::filesystem::path dump_kernels_dir;  // where to write expanded sources, if anywhere
     size_t local_size = 0;                   // work-group size; 0: chosen per kernel
@@ -81,8 +81,10 @@ class Context {
         kernel.set_arg(index, sizeof handle, &handle);
     }
     template <class T>
-        requires(std::is_trivially_copyable_v<T> && !std::is_base_of_v<DeviceBuffer, T>)
-    static void set_kernel_arg(Kernel& kernel, unsigned index, const T& value) {
+    requires(std::is_trivially_copyable_v<T> &&
+             !std::is_base_of_v<DeviceBuffer, T>) static void set_kernel_arg(Kernel& kernel,
+                                                                             unsigned index,
+                                                                             const T& value) {
         kernel.set_arg(index, sizeof(T), &value);
     }
     void run_chunked(Kernel& kernel, size_t count);

@@ -78,9 +78,9 @@ std::vector<DeviceInfo> list_devices() {
         }
         check_cl(found, "clGetDeviceIDs");
         std::vector<cl_device_id> ids(device_count);
-        check_cl(clGetDeviceIDs(platforms[p], CL_DEVICE_TYPE_ALL, device_count, ids.data(),
-                                nullptr),
-                 "clGetDeviceIDs");
+        check_cl(
+            clGetDeviceIDs(platforms[p], CL_DEVICE_TYPE_ALL, device_count, ids.data(), nullptr),
+            "clGetDeviceIDs");
         for (cl_uint d = 0; d < device_count; ++d) {
             DeviceInfo info;
             info.platform_index = static_cast<int>(p);
@@ -94,10 +94,10 @@ std::vector<DeviceInfo> list_devices() {
             const auto type = device_value<cl_device_type>(ids[d], CL_DEVICE_TYPE);
             info.is_gpu = (type & CL_DEVICE_TYPE_GPU) != 0;
             info.is_cpu = (type & CL_DEVICE_TYPE_CPU) != 0;
-            info.type = info.is_gpu                                  ? "GPU"
-                        : info.is_cpu                                ? "CPU"
+            info.type = info.is_gpu                                ? "GPU"
+                        : info.is_cpu                              ? "CPU"
                         : (type & CL_DEVICE_TYPE_ACCELERATOR) != 0 ? "accelerator"
-                                                                     : "other";
+                                                                   : "other";
             info.compute_units = device_value<cl_uint>(ids[d], CL_DEVICE_MAX_COMPUTE_UNITS);
             info.global_memory = device_value<cl_ulong>(ids[d], CL_DEVICE_GLOBAL_MEM_SIZE);
             info.max_allocation = device_value<cl_ulong>(ids[d], CL_DEVICE_MAX_MEM_ALLOC_SIZE);
@@ -123,8 +123,7 @@ std::string format_device_table(const std::vector<DeviceInfo>& devices) {
         std::snprintf(memory, sizeof memory, "%.1f GiB",
                       static_cast<double>(device.global_memory) / (1024.0 * 1024.0 * 1024.0));
         rows.push_back({device.spec(), device.platform_name, device.name, device.type,
-                        std::to_string(device.compute_units), memory,
-                        device.opencl_c_version});
+                        std::to_string(device.compute_units), memory, device.opencl_c_version});
     }
     std::vector<size_t> widths(rows[0].size(), 0);
     for (const auto& row : rows) {
@@ -186,8 +185,8 @@ DeviceInfo select_device(const std::vector<DeviceInfo>& devices, const std::stri
             }
         }
     }
-    throw Error("no OpenCL device matches " + source + " '" + spec +
-                    "'; the devices are:\n" + format_device_table(devices),
+    throw Error("no OpenCL device matches " + source + " '" + spec + "'; the devices are:\n" +
+                    format_device_table(devices),
                 kExitUsage);
 }
 

@@ -29,8 +29,7 @@ std::string normalized(const std::filesystem::path& path) {
 KernelSources::KernelSources(std::filesystem::path override_dir)
     : override_dir_(std::move(override_dir)) {
     if (!override_dir_.empty() && !std::filesystem::is_directory(override_dir_)) {
-        throw Error("kernel override directory '" + override_dir_.string() +
-                        "' is not a directory",
+        throw Error("kernel override directory '" + override_dir_.string() + "' is not a directory",
                     kExitUsage);
     }
 }
@@ -77,8 +76,7 @@ void KernelSources::expand_into(const std::string& path, std::vector<std::string
         std::smatch match;
         if (std::regex_match(line, match, include_quoted)) {
             const std::string name = match[1].str();
-            const std::string beside =
-                normalized(std::filesystem::path(path).parent_path() / name);
+            const std::string beside = normalized(std::filesystem::path(path).parent_path() / name);
             const std::string from_root = normalized(name);
             std::string target;
             if (exists(beside)) {

@@ -114,8 +114,8 @@ Program::Program(_cl_context* context, const DeviceInfo& device, const KernelSou
             const std::string log = build_log(handle_, device.device);
             clReleaseProgram(handle_);
             handle_ = nullptr;
-            throw Error("clBuildProgram(" + entry + ") failed: " + cl_error_name(status) +
-                        " on " + device.name + "; build log:\n" + log);
+            throw Error("clBuildProgram(" + entry + ") failed: " + cl_error_name(status) + " on " +
+                        device.name + "; build log:\n" + log);
         }
         cache.store(key, program_binary(handle_, entry));
     }

@@ -16,7 +16,9 @@ struct Image {
     Image() = default;
     Image(int width, int height, int channels);
 
-    float& at(int x, int y, int c) { return pixels[(static_cast<size_t>(y) * width + x) * channels + c]; }
+    float& at(int x, int y, int c) {
+        return pixels[(static_cast<size_t>(y) * width + x) * channels + c];
+    }
     float at(int x, int y, int c) const {
         return pixels[(static_cast<size_t>(y) * width + x) * channels + c];
     }

@@ -44,8 +44,7 @@ float srgb_encode(float linear) {
     if (linear >= 1.0f) {
         return 1.0f;
     }
-    return linear <= 0.0031308f ? 12.92f * linear
-                                : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+    return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
 }
 
 }  // namespace
@@ -54,8 +53,8 @@ void check_output_path(const std::filesystem::path& path) {
     Format format;
     std::string plugin;
     if (!format_of(path, format, plugin)) {
-        throw Error(path.string() + ": unsupported output extension '" +
-                        path.extension().string() + "' (use .exr, .hdr, .pfm or .png)",
+        throw Error(path.string() + ": unsupported output extension '" + path.extension().string() +
+                        "' (use .exr, .hdr, .pfm or .png)",
                     kExitUsage);
     }
     std::filesystem::path directory = path.parent_path();
@@ -63,14 +62,14 @@ void check_output_path(const std::filesystem::path& path) {
         directory = ".";
     }
     if (!std::filesystem::is_directory(directory)) {
-        throw Error(path.string() + ": output directory '" + directory.string() +
-                        "' does not exist",
-                    kExitUsage);
+        throw Error(
+            path.string() + ": output directory '" + directory.string() + "' does not exist",
+            kExitUsage);
     }
     if (::access(directory.c_str(), W_OK) != 0) {
-        throw Error(path.string() + ": output directory '" + directory.string() +
-                        "' is not writable",
-                    kExitUsage);
+        throw Error(
+            path.string() + ": output directory '" + directory.string() + "' is not writable",
+            kExitUsage);
     }
     if (std::filesystem::is_directory(path)) {
         throw Error(path.string() + ": output path is a directory", kExitUsage);
@@ -82,8 +81,8 @@ void write_image(const std::filesystem::path& path, const Image& image,
     Format format;
     std::string plugin;
     if (!format_of(path, format, plugin)) {
-        throw Error(path.string() + ": unsupported output extension '" +
-                    path.extension().string() + "' (use .exr, .hdr, .pfm or .png)");
+        throw Error(path.string() + ": unsupported output extension '" + path.extension().string() +
+                    "' (use .exr, .hdr, .pfm or .png)");
     }
     int channels = image.channels;
     if (format == Format::kHdr || format == Format::kPfm || format == Format::kPng) {

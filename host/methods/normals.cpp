@@ -22,9 +22,8 @@ Image NormalsMethod::render(const NormalsOptions& options) {
     Buffer<shared::float4> film(context_, pixels, "film");
     const auto seed_lo = static_cast<unsigned>(options.seed);
     const auto seed_hi = static_cast<unsigned>(options.seed >> 32);
-    context_.launch(kernel_, pixels, camera, bvh_.nodes, bvh_.triangles,
-                    bvh_.triangle_of_primitive, options.samples_per_pixel, seed_lo, seed_hi,
-                    film);
+    context_.launch(kernel_, pixels, camera, bvh_.nodes, bvh_.triangles, bvh_.triangle_of_primitive,
+                    options.samples_per_pixel, seed_lo, seed_hi, film);
     const std::vector<shared::float4> rgba = film.download();
     Image image(width, height, 3);
     for (size_t i = 0; i < pixels; ++i) {

@@ -12,7 +12,7 @@
 namespace rc {
 
 struct NormalsOptions {
-    int width = 0;   // 0: the scene camera's resolution
+    int width = 0;  // 0: the scene camera's resolution
     int height = 0;
     unsigned samples_per_pixel = 1;  // >1: jittered samples, averaged
     uint64_t seed = 0;

@@ -1,8 +1,8 @@
 #include "scene/generated_meshes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <algorithm>
 #include <map>
 #include <utility>
 

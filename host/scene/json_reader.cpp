@@ -26,8 +26,7 @@ JsonReader::JsonReader(const nlohmann::json& value, std::string file, std::strin
 }
 
 void JsonReader::fail(const std::string& message) const {
-    throw Error(file_ + ": " + (path_.empty() ? std::string("top level") : path_) + ": " +
-                message);
+    throw Error(file_ + ": " + (path_.empty() ? std::string("top level") : path_) + ": " + message);
 }
 
 void JsonReader::fail(const std::string& key, const std::string& message) const {

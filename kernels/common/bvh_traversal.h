@@ -16,8 +16,8 @@ RC_FUNC bool rc_ray_is_traceable(Ray ray) {
     const float3 d = ray.direction.xyz;
     const float tmin = ray.origin.w;
     const float tmax = ray.direction.w;
-    return all(isfinite(o)) && all(isfinite(d)) && any(d != 0.0f) && tmin >= 0.0f &&
-           tmin <= tmax && !isnan(tmax);
+    return all(isfinite(o)) && all(isfinite(d)) && any(d != 0.0f) && tmin >= 0.0f && tmin <= tmax &&
+           !isnan(tmax);
 }
 
 // The per-ray part of the box test: origin, inverse direction and, per axis, whether the
@@ -45,26 +45,50 @@ RC_FUNC BoxRay rc_box_ray(float3 origin, float3 direction) {
 // of fmax/fmin.
 RC_FUNC int4 rc_intersect_node_boxes(RC_GLOBAL const BvhNode* node, const BoxRay* r, float tmin,
                                      float tmax, float4* t_enter) {
-    const float4 near_x = ((r->negative_x ? node->upper_x : node->lower_x) - r->origin.x) *
-                          r->inv_direction.x;
-    const float4 far_x = ((r->negative_x ? node->lower_x : node->upper_x) - r->origin.x) *
-                         r->inv_direction.x;
-    const float4 near_y = ((r->negative_y ? node->upper_y : node->lower_y) - r->origin.y) *
-                          r->inv_direction.y;
-    const float4 far_y = ((r->negative_y ? node->lower_y : node->upper_y) - r->origin.y) *
-                         r->inv_direction.y;
-    const float4 near_z = ((r->negative_z ? node->upper_z : node->lower_z) - r->origin.z) *
-                          r->inv_direction.z;
-    const float4 far_z = ((r->negative_z ? node->lower_z : node->upper_z) - r->origin.z) *
-                         r->inv_direction.z;
+    const float4 near_x =
+        ((r->negative_x ? node->upper_x : node->lower_x) - r->origin.x) * r->inv_direction.x;
+    const float4 far_x =
+        ((r->negative_x ? node->lower_x : node->upper_x) - r->origin.x) * r->inv_direction.x;
+    const float4 near_y =
+        ((r->negative_y ? node->upper_y : node->lower_y) - r->origin.y) * r->inv_direction.y;
+    const float4 far_y =
+        ((r->negative_y ? node->lower_y : node->upper_y) - r->origin.y) * r->inv_direction.y;
+    const float4 near_z =
+        ((r->negative_z ? node->upper_z : node->lower_z) - r->origin.z) * r->inv_direction.z;
+    const float4 far_z =
+        ((r->negative_z ? node->lower_z : node->upper_z) - r->origin.z) * r->inv_direction.z;
     const float4 near_t = fmax(fmax(near_x, near_y), fmax(near_z, (float4)(tmin)));
     const float4 far_t = fmin(fmin(far_x, far_y), fmin(far_z, (float4)(tmax))) * RC_BOX_FAR_SCALE;
     *t_enter = near_t;
     return near_t <= far_t;
 }
 
-// Traverses the BVH. With any_hit set, stops at the first hit in the interval and reports only
-// that something was hit. Returns whether anything was hit; *hit holds the closest hit.
+// Tests the `count` triangles from `first`, shrinking hit->t to the nearest hit; returns whether
+// any was hit (with any_hit set, stops at the first).
+RC_FUNC bool rc_intersect_leaf(RC_GLOBAL const Triangle* triangles, int first, int count,
+                               const WatertightRay* wray, float tmin, bool any_hit, Hit* hit,
+                               int* closest) {
+    bool found = false;
+    for (int i = first; i < first + count; ++i) {
+        float t, u, v;
+        if (rc_intersect_triangle(wray, triangles[i].v0, triangles[i].v1, triangles[i].v2, tmin,
+                                  hit->t, &t, &u, &v)) {
+            hit->t = t;
+            hit->u = u;
+            hit->v = v;
+            *closest = i;
+            found = true;
+            if (any_hit) {
+                break;
+            }
+        }
+    }
+    return found;
+}
+
+// Traverses the BVH, children near to far. With any_hit set, stops at the first hit in the
+// interval and reports only that something was hit. Returns whether anything was hit; *hit holds
+// the closest hit.
 RC_FUNC bool rc_traverse(RC_GLOBAL const BvhNode* nodes, RC_GLOBAL const Triangle* triangles,
                          Ray ray, bool any_hit, Hit* hit) {
     hit->t = ray.direction.w;
@@ -94,8 +118,7 @@ RC_FUNC bool rc_traverse(RC_GLOBAL const BvhNode* nodes, RC_GLOBAL const Triangl
             // push the others farthest first.
             RC_GLOBAL const BvhNode* node = nodes + child;
             float4 t_enter;
-            const int4 hit_lanes =
-                rc_intersect_node_boxes(node, &box_ray, tmin, hit->t, &t_enter);
+            const int4 hit_lanes = rc_intersect_node_boxes(node, &box_ray, tmin, hit->t, &t_enter);
             const int4 lane_child = node->child;
             const int4 lane_count = node->count;
             int hit_child[4];
@@ -133,23 +156,11 @@ RC_FUNC bool rc_traverse(RC_GLOBAL const BvhNode* nodes, RC_GLOBAL const Triangl
                 count = hit_count[hits - 1];
                 continue;
             }
-        } else {
-            // Leaf: test its triangles, shrinking the interval to the closest hit so far.
-            const int first = ~child;
-            for (int i = first; i < first + count; ++i) {
-                float t, u, v;
-                if (rc_intersect_triangle(&wray, triangles[i].v0, triangles[i].v1,
-                                          triangles[i].v2, tmin, hit->t, &t, &u, &v)) {
-                    hit->t = t;
-                    hit->u = u;
-                    hit->v = v;
-                    closest = i;
-                    if (any_hit) {
-                        hit->primitive = rc_as_uint(triangles[i].v0.w);
-                        return true;
-                    }
-                }
-            }
+        } else if (rc_intersect_leaf(triangles, ~child, count, &wray, tmin, any_hit, hit,
+                                     &closest) &&
+                   any_hit) {
+            hit->primitive = rc_as_uint(triangles[closest].v0.w);
+            return true;
         }
         // Pop the next entry still nearer than the closest hit.
         bool found = false;

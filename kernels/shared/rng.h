@@ -67,12 +67,8 @@ RC_FUNC uint rc_rng_next_uint(RngStream* s) {
 }
 
 // Uniform float in [0, 1): the top 24 bits scaled by 2^-24, so 1.0f is never returned.
-RC_FUNC float rc_uint_to_unit_float(uint word) {
-    return (float)(word >> 8) * (1.0f / 16777216.0f);
-}
+RC_FUNC float rc_uint_to_unit_float(uint word) { return (float)(word >> 8) * (1.0f / 16777216.0f); }
 
-RC_FUNC float rc_rng_next_float(RngStream* s) {
-    return rc_uint_to_unit_float(rc_rng_next_uint(s));
-}
+RC_FUNC float rc_rng_next_float(RngStream* s) { return rc_uint_to_unit_float(rc_rng_next_uint(s)); }
 
 RC_SHARED_END
