@@ -77,14 +77,14 @@ int run_bench_compile(const std::vector<std::string>& args) {
     const double warm = build_all(options, entries, warm_each);
     std::filesystem::remove_all(scratch_dir);
 
-    std::printf("%-20s %10s %10s\n", "program", "cold s", "warm s");
+    std::printf("%-24s %10s %10s\n", "program", "cold s", "warm s");
     nlohmann::json report;
     for (size_t i = 0; i < entries.size(); ++i) {
-        std::printf("%-20s %10.3f %10.3f\n", entries[i].c_str(), cold_each[i], warm_each[i]);
+        std::printf("%-24s %10.3f %10.3f\n", entries[i].c_str(), cold_each[i], warm_each[i]);
         report["programs"][entries[i]] = {{"cold_seconds", cold_each[i]},
                                           {"warm_seconds", warm_each[i]}};
     }
-    std::printf("%-20s %10.3f %10.3f\n", "all", cold, warm);
+    std::printf("%-24s %10.3f %10.3f\n", "all", cold, warm);
     report["cold_seconds"] = cold;
     report["warm_seconds"] = warm;
     if (arguments.has("--json")) {
