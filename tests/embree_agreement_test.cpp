@@ -28,17 +28,6 @@ struct Tracers {
     EmbreeScene embree;
 };
 
-// The criterion: the same triangle, or (two triangles tie) t equal within 1e-5 relative.
-bool same_closest_hit(const shared::Hit& a, const shared::Hit& b) {
-    if (a.primitive == b.primitive) {
-        return true;
-    }
-    if (a.primitive == RC_NO_HIT || b.primitive == RC_NO_HIT) {
-        return false;
-    }
-    return std::fabs(a.t - b.t) <= 1e-5f * std::max(std::fabs(a.t), std::fabs(b.t));
-}
-
 struct Agreement {
     size_t rays = 0;
     size_t embree_hits = 0;

@@ -42,16 +42,6 @@ double median(std::vector<double> values) {
     return values[values.size() / 2];
 }
 
-bool same_closest_hit(const shared::Hit& a, const shared::Hit& b) {
-    if (a.primitive == b.primitive) {
-        return true;
-    }
-    if (a.primitive == RC_NO_HIT || b.primitive == RC_NO_HIT) {
-        return false;
-    }
-    return std::fabs(a.t - b.t) <= 1e-5f * std::max(std::fabs(a.t), std::fabs(b.t));
-}
-
 class RayBench {
    public:
     RayBench(Context& context, const Scene& scene, unsigned embree_threads, int repeats)

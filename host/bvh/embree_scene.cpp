@@ -1,5 +1,7 @@
 #include "bvh/embree_scene.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <thread>
 
@@ -126,6 +128,16 @@ void EmbreeScene::occluded(const std::vector<shared::Ray>& rays, std::vector<uns
             result[i] = occluded(rays[i]) ? 1u : 0u;
         }
     });
+}
+
+bool same_closest_hit(const shared::Hit& a, const shared::Hit& b) {
+    if (a.primitive == b.primitive) {
+        return true;
+    }
+    if (a.primitive == RC_NO_HIT || b.primitive == RC_NO_HIT) {
+        return false;
+    }
+    return std::fabs(a.t - b.t) <= 1e-5f * std::max(std::fabs(a.t), std::fabs(b.t));
 }
 
 }  // namespace rc

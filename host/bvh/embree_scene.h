@@ -37,4 +37,8 @@ class EmbreeScene {
     RTCScene scene_ = nullptr;
 };
 
+// Whether two tracers found the same closest hit: the same primitive (both may have missed), or
+// two triangles tying at a shared edge or vertex: t equal within 1e-5 relative.
+bool same_closest_hit(const shared::Hit& a, const shared::Hit& b);
+
 }  // namespace rc
