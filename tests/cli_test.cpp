@@ -21,7 +21,7 @@ TEST(Cli, RenderWritesEachImageFormatAndStats) {
         const auto output = dir / name;
         const test::CommandResult result = test::run_radcache(
             {"render", cornell_box(), "-o", output.string(), "--width", "48", "--height", "32",
-             "--quiet", "--stats", (dir / "stats.json").string()});
+             "--spp", "2", "--quiet", "--stats", (dir / "stats.json").string()});
         ASSERT_EQ(result.exit_code, 0) << result.output;
         EXPECT_EQ(result.output, "") << "--quiet prints nothing";
         const Image image = read_image(output);
@@ -30,10 +30,13 @@ TEST(Cli, RenderWritesEachImageFormatAndStats) {
         EXPECT_GE(image.channels, 3);
     }
     const nlohmann::json stats = nlohmann::json::parse(read_file(dir / "stats.json"));
-    EXPECT_EQ(stats["method"], "normals");
+    EXPECT_EQ(stats["method"], "pt");
     EXPECT_EQ(stats["resolution"][0], 48);
+    EXPECT_EQ(stats["spp"], 2);
     EXPECT_EQ(stats["triangles"], 38);
-    EXPECT_TRUE(stats["kernels"].contains("render_normals"));
+    EXPECT_TRUE(stats["kernels"].contains("path_trace_pass"));
+    EXPECT_GT(stats["rays"].get<double>(), 48.0 * 32.0 * 2.0);
+    EXPECT_EQ(stats["nonfinite_samples"], 0);
     EXPECT_GT(stats["seconds"]["total"].get<double>(), 0.0);
     // No temporary files are left behind.
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
@@ -54,7 +57,7 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
     const std::vector<BadCommand> cases = {
         {{"render", cornell_box(), "-o", (dir / "out.xyz").string()}, 2, "unsupported output"},
         {{"render", cornell_box(), "-o", (dir / "missing/out.png").string()}, 2, "does not exist"},
-        {{"render", cornell_box(), "-o", out, "--method", "pt"}, 2, "unknown method 'pt'"},
+        {{"render", cornell_box(), "-o", out, "--method", "ic"}, 2, "unknown method 'ic'"},
         {{"render", cornell_box(), "-o", out, "--bogus"}, 2, "unknown option '--bogus'"},
         {{"render", cornell_box(), "-o", out, "--spp", "0"}, 2, "--spp"},
         {{"render", cornell_box(), "-o", out, "--width", "abc"}, 2, "--width"},

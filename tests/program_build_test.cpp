@@ -86,7 +86,8 @@ TEST(ProgramBuild, BrokenKernelThroughTheCommandLineExitsNonZeroWithTheLog) {
     const auto output = dir.parent_path() / "out.png";
     const test::CommandResult result = test::run_radcache(
         {"render", (test::source_dir() / "scenes/cornell-box/scene.json").string(), "-o",
-         output.string(), "--kernel-dir", dir.string(), "--no-kernel-cache"});
+         output.string(), "--method", "normals", "--kernel-dir", dir.string(),
+         "--no-kernel-cache"});
     EXPECT_EQ(result.exit_code, 1) << result.output;
     EXPECT_NE(result.output.find("this_is_not_opencl_c"), std::string::npos) << result.output;
     EXPECT_FALSE(std::filesystem::exists(output));

@@ -43,7 +43,7 @@ const char* kSquare = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 TEST(ObjLoader, TriangulatesPolygonsAndResolvesNegativeIndices) {
     const auto dir = test::scratch_dir("obj_ok");
     const TriangleMesh mesh =
-        load_obj(write(dir / "a.obj", std::string(kSquare) + "f 1 2 3 4\nf -4 -2 -1\n"));
+        load_obj(write(dir / "a.obj", std::string(kSquare) + "f 1 2 3 4\nf -4 -2 -1\n")).mesh;
     EXPECT_EQ(mesh.positions.size(), 4u);
     EXPECT_EQ(mesh.triangles.size(), 3u);
 }
@@ -61,7 +61,7 @@ TEST(ObjLoader, RejectsNonFiniteVerticesWithFileAndLine) {
 TEST(ObjLoader, RejectsMalformedVertices) {
     const auto dir = test::scratch_dir("obj_malformed");
     const auto file = write(dir / "bad.obj", "v 0 0\n");
-    expect_contains(error_of([&] { load_obj(file); }), {"bad.obj:1:", "three coordinates"});
+    expect_contains(error_of([&] { load_obj(file); }), {"bad.obj:1:", "fewer than 3 coordinates"});
     const auto word = write(dir / "word.obj", "v 0 zero 0\n");
     expect_contains(error_of([&] { load_obj(word); }), {"word.obj:1:", "'zero'"});
 }

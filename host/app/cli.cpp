@@ -82,6 +82,17 @@ ParsedArguments parse_arguments(const std::string& command, const std::vector<st
             has_inline_value = true;
         }
         const OptionSpec* spec = find(word);
+        if (spec == nullptr && !has_inline_value && word.size() > 2 && word[1] != '-') {
+            // A short option glued to its value: -Dkey=value.
+            spec = find(word.substr(0, 2));
+            if (spec != nullptr && !spec->value_name.empty()) {
+                inline_value = word.substr(2);
+                has_inline_value = true;
+                word = word.substr(0, 2);
+            } else {
+                spec = nullptr;
+            }
+        }
         if (spec == nullptr) {
             throw Error(
                 "unknown option '" + word + "' for '" + command + "' (see " + command + " --help)",

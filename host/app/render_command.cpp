@@ -1,14 +1,22 @@
+// `radcache render SCENE [options]`.
+#include <unistd.h>
+
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <regex>
 
 #include "app/cli.h"
 #include "app/commands.h"
 #include "app/device_options.h"
+#include "app/progress_bar.h"
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "image/image_io.h"
 #include "methods/normals.h"
+#include "methods/path_tracer.h"
+#include "scene/device_scene.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
 #include "util/file_io.h"
@@ -23,15 +31,26 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+constexpr const char* kMethods = "pt, normals";
+
 std::vector<OptionSpec> render_option_specs() {
     std::vector<OptionSpec> specs = {
-        {"--output", "-o", "FILE", "output image: .exr, .hdr, .pfm or .png (default out.png)"},
-        {"--method", "", "NAME", "rendering method: normals (the geometry preview; default)"},
-        {"--width", "", "N", "image width in pixels (default: the scene's)"},
-        {"--height", "", "N", "image height in pixels (default: the scene's)"},
-        {"--spp", "", "N", "samples per pixel (default 1)"},
+        {"--output", "-o", "FILE",
+         "output image: .exr (all AOVs), .hdr, .pfm or .png (default out.png); with --frames, "
+         "#### in the name becomes the frame number"},
+        {"--method", "", "NAME", std::string("rendering method: ") + kMethods + " (default pt)"},
+        {"--spp", "", "N", "samples per pixel (default: the scene's render.spp, else 16)"},
+        {"--time", "", "SECONDS", "render passes until this much time has passed, not to --spp"},
         {"--seed", "", "N", "random seed (default 0)"},
+        {"--width", "", "N", "image width in pixels (default: the scene camera's)"},
+        {"--height", "", "N", "image height in pixels (default: the scene camera's)"},
+        {"--frames", "", "A:B", "render frames A to B of an animated scene, one image each"},
+        {"-D", "", "KEY=VALUE",
+         "override a render default: method, spp, time, max_depth, rr_depth, seed, exposure", true},
+        {"--save-every-pow2", "", "",
+         "also write the image after 1, 2, 4, 8, ... samples per pixel (name.sppN.ext)"},
         {"--exposure", "", "STOPS", "exposure applied before 8-bit encoding (default 0)"},
+        {"--half", "", "", ".exr: store half floats"},
         {"--stats", "", "FILE", "write timings and counts as JSON"},
         {"--quiet", "-q", "", "print nothing but errors"},
     };
@@ -39,6 +58,67 @@ std::vector<OptionSpec> render_option_specs() {
         specs.push_back(std::move(spec));
     }
     return specs;
+}
+
+struct FrameRange {
+    int first = 0;
+    int last = 0;
+    bool given = false;
+};
+
+FrameRange parse_frames(const std::string& text) {
+    static const std::regex form(R"(^(-?\d+):(-?\d+)$)");
+    std::smatch match;
+    if (!std::regex_match(text, match, form)) {
+        throw Error("--frames: expected A:B, got '" + text + "'", kExitUsage);
+    }
+    FrameRange range;
+    range.first = std::stoi(match[1].str());
+    range.last = std::stoi(match[2].str());
+    range.given = true;
+    if (range.last < range.first) {
+        throw Error("--frames: " + text + " ends before it starts", kExitUsage);
+    }
+    return range;
+}
+
+// The output name of a frame: the run of '#' replaced by the zero-padded frame number.
+std::filesystem::path frame_path(const std::string& pattern, int frame) {
+    const size_t first = pattern.find('#');
+    if (first == std::string::npos) {
+        return pattern;
+    }
+    const size_t last = pattern.find_first_not_of('#', first);
+    const size_t width = (last == std::string::npos ? pattern.size() : last) - first;
+    char number[32];
+    std::snprintf(number, sizeof number, "%0*d", static_cast<int>(width), frame);
+    return pattern.substr(0, first) + number + pattern.substr(first + width);
+}
+
+// name.ext -> name.sppN.ext
+std::filesystem::path intermediate_path(const std::filesystem::path& output, int spp) {
+    std::filesystem::path path = output;
+    path.replace_filename(output.stem().string() + ".spp" + std::to_string(spp) +
+                          output.extension().string());
+    return path;
+}
+
+void check_writable_parent(const std::filesystem::path& file, const char* option) {
+    const std::filesystem::path dir = file.parent_path().empty() ? "." : file.parent_path();
+    if (!std::filesystem::is_directory(dir) || ::access(dir.c_str(), W_OK) != 0) {
+        throw Error(std::string(option) + " " + file.string() + ": directory '" + dir.string() +
+                        "' does not exist or is not writable",
+                    kExitUsage);
+    }
+}
+
+nlohmann::json kernel_times_json(const Context& context) {
+    nlohmann::json kernels = nlohmann::json::object();
+    for (const auto& [name, time] : context.kernel_times()) {
+        kernels[name] = {
+            {"seconds", time.seconds}, {"launches", time.launches}, {"items", time.items}};
+    }
+    return kernels;
 }
 
 }  // namespace
@@ -56,81 +136,182 @@ int run_render_command(const std::vector<std::string>& args) {
                     kExitUsage);
     }
     set_quiet(arguments.has("--quiet"));
-    const std::string method = arguments.value("--method", "normals");
-    if (method != "normals") {
-        throw Error("--method: unknown method '" + method + "' (implemented: normals)", kExitUsage);
+    const auto total_start = Clock::now();
+
+    // Everything that can be checked before any work.
+    const std::string output_pattern = arguments.value("--output", "out.png");
+    const FrameRange frames =
+        arguments.has("--frames") ? parse_frames(arguments.value("--frames")) : FrameRange{};
+    if (frames.given && frames.first != frames.last &&
+        output_pattern.find('#') == std::string::npos) {
+        throw Error(
+            "--output " + output_pattern + ": several frames need a #### pattern in the name",
+            kExitUsage);
     }
-    const std::filesystem::path output = arguments.value("--output", "out.png");
-    check_output_path(output);
+    check_output_path(frame_path(output_pattern, frames.first));
     const std::filesystem::path stats_path = arguments.value("--stats");
     if (!stats_path.empty()) {
-        const std::filesystem::path dir =
-            stats_path.parent_path().empty() ? "." : stats_path.parent_path();
-        if (!std::filesystem::is_directory(dir)) {
-            throw Error(stats_path.string() + ": directory '" + dir.string() + "' does not exist",
-                        kExitUsage);
-        }
+        check_writable_parent(stats_path, "--stats");
     }
-    NormalsOptions options;
-    options.width = static_cast<int>(arguments.integer("--width", 0, 1, 1 << 15));
-    options.height = static_cast<int>(arguments.integer("--height", 0, 1, 1 << 15));
-    options.samples_per_pixel = static_cast<unsigned>(arguments.integer("--spp", 1, 1, 1 << 20));
-    options.seed = static_cast<uint64_t>(arguments.integer("--seed", 0, 0, (1LL << 62)));
-    ImageWriteOptions write_options;
-    write_options.exposure = static_cast<float>(arguments.number("--exposure", 0.0, -64.0, 64.0));
+    RenderSettings overrides_only;
+    for (const std::string& assignment : arguments.values("-D")) {
+        overrides_only.apply_override(assignment);  // validates the keys before loading
+    }
 
-    const auto total_start = Clock::now();
-    auto start = Clock::now();
-    const Scene scene = load_scene(arguments.positionals()[0]);
-    const double load_seconds = seconds_since(start);
+    auto phase_start = Clock::now();
+    Scene scene = load_scene(arguments.positionals()[0]);
+    const double load_seconds = seconds_since(phase_start);
     if (scene.dropped_degenerate > 0) {
         log_note("dropped " + std::to_string(scene.dropped_degenerate) + " degenerate triangles");
     }
+    RenderSettings settings = scene.render;
+    for (const std::string& assignment : arguments.values("-D")) {
+        settings.apply_override(assignment);
+    }
+    if (arguments.has("--method")) {
+        settings.method = arguments.value("--method");
+    }
+    if (settings.method != "pt" && settings.method != "normals") {
+        throw Error(
+            "--method: unknown method '" + settings.method + "' (implemented: " + kMethods + ")",
+            kExitUsage);
+    }
+    settings.spp = static_cast<int>(arguments.integer("--spp", settings.spp, 1, 1 << 24));
+    settings.time = arguments.number("--time", settings.time, 0.0, 1e7);
+    settings.seed = static_cast<uint64_t>(
+        arguments.integer("--seed", static_cast<long long>(settings.seed), 0, 1LL << 62));
+    settings.exposure =
+        static_cast<float>(arguments.number("--exposure", settings.exposure, -64.0, 64.0));
+    const int width = static_cast<int>(arguments.integer("--width", 0, 1, 1 << 16));
+    const int height = static_cast<int>(arguments.integer("--height", 0, 1, 1 << 16));
+    ImageWriteOptions write_options;
+    write_options.exposure = settings.exposure;
+    write_options.half = arguments.has("--half");
 
-    start = Clock::now();
-    const Bvh bvh = build_bvh(scene.mesh);
-    const double bvh_seconds = seconds_since(start);
-
-    start = Clock::now();
+    phase_start = Clock::now();
     Context context(context_options(arguments));
-    const DeviceBvh device_bvh(context, bvh);
-    NormalsMethod renderer(context, scene, device_bvh);
-    const double setup_seconds = seconds_since(start);
+    const double device_seconds = seconds_since(phase_start);
     log_note("device " + context.device().name + "; " +
-             std::to_string(scene.mesh.triangle_count()) + " triangles");
+             std::to_string(scene.mesh.triangle_count()) + " triangles, " +
+             std::to_string(scene.lights.lights.size()) + " lights");
 
-    start = Clock::now();
-    const Image image = renderer.render(options);
-    const double render_seconds = seconds_since(start);
+    const int first_frame =
+        frames.given ? frames.first : static_cast<int>(scene.animation.frame_start);
+    const int last_frame = frames.given ? frames.last : first_frame;
+    nlohmann::json frame_stats = nlohmann::json::array();
+    double bvh_seconds = 0.0;
+    double upload_seconds = 0.0;
+    double render_seconds = 0.0;
+    double write_seconds = 0.0;
+    uint64_t rays = 0;
+    uint64_t nonfinite = 0;
+    int64_t first_nonfinite_pixel = -1;
+    int spp_done = 0;
+    int image_width = 0;
+    int image_height = 0;
+    Bvh bvh;
+    for (int frame = first_frame; frame <= last_frame; ++frame) {
+        if (static_cast<double>(frame) != scene.frame) {
+            scene.set_frame(frame);
+        }
+        const std::filesystem::path output = frame_path(output_pattern, frame);
+        phase_start = Clock::now();
+        bvh = build_bvh(scene.mesh);
+        bvh_seconds += seconds_since(phase_start);
+        phase_start = Clock::now();
+        const DeviceBvh device_bvh(context, bvh);
+        const DeviceScene device_scene(context, scene);
+        upload_seconds += seconds_since(phase_start);
 
-    start = Clock::now();
-    write_image(output, image, write_options);
-    const double write_seconds = seconds_since(start);
-    log_note("wrote " + output.string() + " (" + std::to_string(image.width) + "x" +
-             std::to_string(image.height) + ", " + std::to_string(options.samples_per_pixel) +
-             " spp) in " + std::to_string(seconds_since(total_start)) + " s");
+        phase_start = Clock::now();
+        Image image;
+        nlohmann::json this_frame = {{"frame", frame}, {"output", output.string()}};
+        ProgressBar progress(frames.given ? "frame " + std::to_string(frame) : "render", !quiet());
+        if (settings.method == "normals") {
+            NormalsMethod method(context, scene, device_bvh);
+            NormalsOptions options;
+            options.width = width;
+            options.height = height;
+            options.samples_per_pixel = static_cast<unsigned>(settings.spp);
+            options.seed = settings.seed;
+            image = method.render(options);
+            spp_done = settings.spp;
+        } else {
+            PathTracer tracer(context, scene, device_bvh, device_scene);
+            PathTracerOptions options;
+            options.width = width;
+            options.height = height;
+            options.spp = settings.spp;
+            options.time_limit = settings.time;
+            options.seed = settings.seed;
+            options.max_depth = settings.max_depth;
+            options.rr_depth = settings.rr_depth;
+            if (arguments.has("--save-every-pow2")) {
+                options.on_power_of_two = [&](int spp, const Image& partial) {
+                    write_image(intermediate_path(output, spp), partial, write_options);
+                };
+            }
+            options.on_progress = [&](double fraction, int spp) {
+                progress.update(fraction, std::to_string(spp) + " spp");
+            };
+            PathTracerStats stats;
+            image = tracer.render(options, &stats);
+            spp_done = stats.spp;
+            rays += stats.rays;
+            nonfinite += stats.nonfinite_samples;
+            if (first_nonfinite_pixel < 0) {
+                first_nonfinite_pixel = stats.first_nonfinite_pixel;
+            }
+            this_frame["spp"] = stats.spp;
+            this_frame["rays"] = stats.rays;
+            this_frame["seconds"] = stats.seconds;
+            if (stats.nonfinite_samples > 0) {
+                log_warning(std::to_string(stats.nonfinite_samples) +
+                            " samples were NaN or infinite and were dropped (first at pixel " +
+                            std::to_string(stats.first_nonfinite_pixel % image.width) + ", " +
+                            std::to_string(stats.first_nonfinite_pixel / image.width) + ")");
+            }
+        }
+        progress.finish();
+        render_seconds += seconds_since(phase_start);
+        image_width = image.width;
+        image_height = image.height;
+
+        phase_start = Clock::now();
+        write_image(output, image, write_options);
+        write_seconds += seconds_since(phase_start);
+        log_note("wrote " + output.string() + " (" + std::to_string(image.width) + "x" +
+                 std::to_string(image.height) + ", " + std::to_string(spp_done) + " spp)");
+        frame_stats.push_back(this_frame);
+    }
 
     if (!stats_path.empty()) {
+        const double total = seconds_since(total_start);
+        double kernel_seconds = 0.0;
+        for (const auto& [name, time] : context.kernel_times()) {
+            kernel_seconds += time.seconds;
+        }
         nlohmann::json stats;
-        stats["method"] = method;
+        stats["method"] = settings.method;
         stats["device"] = context.device().name;
         stats["scene"] = scene.path.string();
         stats["triangles"] = scene.mesh.triangle_count();
+        stats["lights"] = scene.lights.lights.size();
         stats["dropped_degenerate_triangles"] = scene.dropped_degenerate;
-        stats["resolution"] = {image.width, image.height};
-        stats["spp"] = options.samples_per_pixel;
-        stats["seconds"] = {{"total", seconds_since(total_start)},
-                            {"load", load_seconds},
-                            {"bvh", bvh_seconds},
-                            {"device_setup", setup_seconds},
-                            {"render", render_seconds},
+        stats["resolution"] = {image_width, image_height};
+        stats["spp"] = spp_done;
+        stats["seed"] = settings.seed;
+        stats["max_depth"] = settings.max_depth;
+        stats["frames"] = frame_stats;
+        stats["seconds"] = {{"total", total},           {"load", load_seconds},
+                            {"device", device_seconds}, {"bvh", bvh_seconds},
+                            {"upload", upload_seconds}, {"render", render_seconds},
                             {"write", write_seconds}};
-        nlohmann::json kernels = nlohmann::json::object();
-        for (const auto& [name, time] : context.kernel_times()) {
-            kernels[name] = {
-                {"seconds", time.seconds}, {"launches", time.launches}, {"items", time.items}};
-        }
-        stats["kernels"] = kernels;
+        stats["kernels"] = kernel_times_json(context);
+        stats["rays"] = rays;
+        stats["mrays_per_second"] = kernel_seconds > 0.0 ? rays / kernel_seconds * 1e-6 : 0.0;
+        stats["nonfinite_samples"] = nonfinite;
+        stats["first_nonfinite_pixel"] = first_nonfinite_pixel;
         nlohmann::json builds = nlohmann::json::array();
         for (const ProgramBuildReport& build : context.program_builds()) {
             builds.push_back({{"program", build.entry},

@@ -95,8 +95,14 @@ void write_image(const std::filesystem::path& path, const Image& image,
             data[i * channels + c] = image.pixels[i * image.channels + c];
         }
     }
-    OIIO::ImageSpec spec(image.width, image.height, channels,
-                         format == Format::kPng ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
+    const OIIO::TypeDesc stored = format == Format::kPng ? OIIO::TypeDesc::UINT8
+                                  : (format == Format::kExr && options.half)
+                                      ? OIIO::TypeDesc::HALF
+                                      : OIIO::TypeDesc::FLOAT;
+    OIIO::ImageSpec spec(image.width, image.height, channels, stored);
+    if (format == Format::kExr) {
+        spec.attribute("compression", "zip");
+    }
     spec.channelnames.assign(image.channel_names.begin(), image.channel_names.begin() + channels);
     if (format == Format::kPng) {
         const float scale = std::exp2(options.exposure);

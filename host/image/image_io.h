@@ -1,5 +1,7 @@
-// Image files through OpenImageIO: .exr (float), .hdr, .pfm, and .png (tone-mapped 8-bit sRGB).
-// Files are written to a temporary name and renamed, so a failed write leaves nothing behind.
+// Image files through OpenImageIO: .exr (float or half; every channel, AOVs as layers named
+// "layer.R"), .hdr and .pfm (the first three channels, float), and .png (the first three
+// channels, exposure, clamped, sRGB-encoded 8 bits). Files are written to a temporary name and
+// renamed, so a failed write leaves nothing behind.
 #pragma once
 
 #include <filesystem>
@@ -10,6 +12,7 @@ namespace rc {
 
 struct ImageWriteOptions {
     float exposure = 0.0f;  // stops applied before an 8-bit encoding
+    bool half = false;      // .exr: 16-bit half floats instead of 32-bit floats
 };
 
 // Throws Error (exit status 2) unless the extension is a supported output format and the

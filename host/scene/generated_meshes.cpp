@@ -94,6 +94,70 @@ TriangleMesh make_quad(glm::vec3 corner, glm::vec3 edge1, glm::vec3 edge2) {
     return mesh;
 }
 
+TriangleMesh make_rectangle() {
+    TriangleMesh mesh;
+    mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+    mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+    return mesh;
+}
+
+TriangleMesh make_cube() {
+    TriangleMesh mesh;
+    // Each face: its outward axis and two in-plane axes with cross(u, v) = outward.
+    const glm::vec3 axes[6][3] = {
+        {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+        {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}}, {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
+        {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}, {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}},
+    };
+    for (const auto& [out, u, v] : axes) {
+        const auto base = static_cast<unsigned>(mesh.positions.size());
+        mesh.positions.push_back(out - u - v);
+        mesh.positions.push_back(out + u - v);
+        mesh.positions.push_back(out + u + v);
+        mesh.positions.push_back(out - u + v);
+        mesh.uvs.insert(mesh.uvs.end(), {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+        mesh.triangles.push_back({base, base + 1, base + 2});
+        mesh.triangles.push_back({base, base + 2, base + 3});
+    }
+    return mesh;
+}
+
+TriangleMesh make_uv_sphere(glm::vec3 centre, float radius, int rings, int segments) {
+    TriangleMesh mesh;
+    const float pi = 3.14159265358979f;
+    for (int i = 0; i <= rings; ++i) {
+        const float theta = pi * static_cast<float>(i) / static_cast<float>(rings);
+        // Exact poles, so that every triangle of a pole fan shares the same point.
+        const float z = i == 0 ? -1.0f : (i == rings ? 1.0f : -std::cos(theta));
+        const float r = (i == 0 || i == rings) ? 0.0f : std::sin(theta);
+        for (int j = 0; j <= segments; ++j) {
+            // The seam column repeats column 0 bit for bit.
+            const int jj = j == segments ? 0 : j;
+            const float phi = 2.0f * pi * static_cast<float>(jj) / static_cast<float>(segments);
+            const glm::vec3 n(r * std::cos(phi), r * std::sin(phi), z);
+            mesh.positions.push_back(centre + radius * n);
+            mesh.normals.push_back(n);
+            mesh.uvs.emplace_back(static_cast<float>(j) / static_cast<float>(segments),
+                                  static_cast<float>(i) / static_cast<float>(rings));
+        }
+    }
+    const int row = segments + 1;
+    for (int i = 0; i < rings; ++i) {
+        for (int j = 0; j < segments; ++j) {
+            const auto a = static_cast<unsigned>(i * row + j);
+            const auto b = a + 1;
+            const auto c = static_cast<unsigned>((i + 1) * row + j + 1);
+            const auto d = c - 1;
+            // Outward winding (counter-clockwise seen from outside); pole rows give zero-area
+            // triangles, dropped by the scene.
+            mesh.triangles.push_back({a, b, c});
+            mesh.triangles.push_back({a, c, d});
+        }
+    }
+    return mesh;
+}
+
 Scene make_sphere_grid_scene(int side, int subdivisions) {
     Scene scene;
     scene.path = "generated:sphere-grid";
@@ -102,8 +166,9 @@ Scene make_sphere_grid_scene(int side, int subdivisions) {
     Shape ground;
     ground.name = "ground";
     ground.type = "generated";
-    scene.add_shape(ground, make_quad({-extent, 0.0f, -extent}, {0.0f, 0.0f, 2.0f * extent},
-                                      {2.0f * extent, 0.0f, 0.0f}));
+    ground.mesh = make_quad({-extent, 0.0f, -extent}, {0.0f, 0.0f, 2.0f * extent},
+                            {2.0f * extent, 0.0f, 0.0f});
+    scene.add_shape(std::move(ground));
     for (int i = 0; i < side; ++i) {
         for (int j = 0; j < side; ++j) {
             const glm::vec3 centre(spacing * (static_cast<float>(i) - 0.5f * (side - 1)), 1.0f,
@@ -111,15 +176,22 @@ Scene make_sphere_grid_scene(int side, int subdivisions) {
             Shape sphere;
             sphere.name = "sphere_" + std::to_string(i) + "_" + std::to_string(j);
             sphere.type = "generated";
-            scene.add_shape(sphere, make_icosphere(centre, 1.0f, subdivisions, 0.08f, 9.0f));
+            sphere.mesh = make_icosphere(centre, 1.0f, subdivisions, 0.08f, 9.0f);
+            scene.add_shape(std::move(sphere));
         }
     }
-    scene.camera.position = {0.0f, 0.6f * extent, -1.1f * extent};
-    scene.camera.look_at = {0.0f, 0.5f, 0.0f};
-    scene.camera.up = {0.0f, 1.0f, 0.0f};
-    scene.camera.fov_degrees = 50.0f;
-    scene.camera.width = 1024;
-    scene.camera.height = 768;
+    scene.base_camera.position = {0.0f, 0.6f * extent, -1.1f * extent};
+    scene.base_camera.look_at = {0.0f, 0.5f, 0.0f};
+    scene.base_camera.up = {0.0f, 1.0f, 0.0f};
+    scene.base_camera.fov_degrees = 50.0f;
+    scene.base_camera.width = 1024;
+    scene.base_camera.height = 768;
+    Emitter sky;
+    sky.name = "sky";
+    sky.kind = EmitterKind::kConstant;
+    sky.radiance = glm::vec3(1.0f);
+    scene.emitters.push_back(sky);
+    scene.set_frame(0.0);
     return scene;
 }
 

@@ -1,71 +1,457 @@
 #include "scene/scene_loader.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/trigonometric.hpp>
+#include <map>
+#include <set>
 
+#include "scene/generated_meshes.h"
 #include "scene/json_reader.h"
 #include "scene/obj_loader.h"
+#include "scene/transform.h"
 #include "util/error.h"
 #include "util/file_io.h"
+#include "util/log.h"
 
 namespace rc {
 namespace {
 
-FovAxis parse_fov_axis(const JsonReader& reader) {
-    const std::string axis = reader.string("fov_axis", "x");
-    if (axis == "x") return FovAxis::kX;
-    if (axis == "y") return FovAxis::kY;
-    if (axis == "diagonal") return FovAxis::kDiagonal;
-    if (axis == "smaller") return FovAxis::kSmaller;
-    if (axis == "larger") return FovAxis::kLarger;
-    reader.fail("fov_axis", "unknown value '" + axis + "' (x, y, diagonal, smaller, larger)");
+std::string format_vec3(glm::vec3 v) {
+    return "[" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) +
+           "]";
 }
 
-Camera parse_camera(const JsonReader& reader) {
-    reader.allow_only({"position", "look_at", "up", "fov", "fov_axis", "resolution"});
-    Camera camera;
-    camera.position = reader.vec3("position");
-    camera.look_at = reader.vec3("look_at");
-    camera.up = reader.vec3("up", glm::vec3(0.0f, 1.0f, 0.0f));
-    camera.fov_degrees = reader.number("fov");
-    camera.fov_axis = parse_fov_axis(reader);
-    const glm::ivec2 resolution = reader.ivec2("resolution", glm::ivec2(512, 512));
-    if (resolution.x <= 0 || resolution.y <= 0) {
-        reader.fail("resolution", "width and height must be positive, got " +
-                                      std::to_string(resolution.x) + "x" +
-                                      std::to_string(resolution.y));
+// A colour: one number (grey) or [r, g, b]; every component in [min, max].
+glm::vec3 parse_colour(const JsonReader& reader, const std::string& key, glm::vec3 fallback,
+                       float min, float max) {
+    if (!reader.has(key)) {
+        return fallback;
     }
-    camera.width = resolution.x;
-    camera.height = resolution.y;
-    if (!(camera.fov_degrees > 0.0f && camera.fov_degrees < 180.0f)) {
-        reader.fail("fov", "must lie strictly between 0 and 180 degrees, got " +
-                               std::to_string(camera.fov_degrees));
+    const glm::vec3 colour =
+        reader.value().at(key).is_number() ? glm::vec3(reader.number(key)) : reader.vec3(key);
+    for (int c = 0; c < 3; ++c) {
+        if (colour[c] < min || colour[c] > max) {
+            reader.fail(key, "component " + std::to_string(c) + " = " + std::to_string(colour[c]) +
+                                 " outside [" + std::to_string(min) + ", " + std::to_string(max) +
+                                 "]");
+        }
     }
-    const glm::vec3 forward = camera.look_at - camera.position;
-    if (glm::length(forward) == 0.0f) {
-        reader.fail("look_at", "coincides with position");
-    }
-    if (glm::length(glm::cross(forward, camera.up)) == 0.0f) {
-        reader.fail("up", "is parallel to the viewing direction");
-    }
-    return camera;
+    return colour;
 }
 
-void parse_shape(const JsonReader& reader, const std::filesystem::path& scene_dir, Scene& scene) {
-    const std::string type = reader.string("type");
-    if (type != "obj") {
-        reader.fail("type", "unknown shape type '" + type + "' (known: obj)");
+class SceneParser {
+   public:
+    SceneParser(const std::filesystem::path& path, Scene& scene)
+        : file_(path.string()), dir_(path.parent_path()), scene_(scene) {}
+
+    void parse(const JsonReader& root) {
+        root.allow_only({"camera", "materials", "shapes", "emitters", "animation", "render"});
+        scene_.base_camera = parse_camera(root.object("camera"));
+        if (root.has("materials")) {
+            const JsonReader materials = root.object("materials");
+            for (const auto& item : materials.value().items()) {
+                const JsonReader material = materials.object(item.key());
+                material_index_[item.key()] = static_cast<int>(scene_.materials.size());
+                scene_.materials.push_back(parse_material(material, item.key()));
+            }
+        }
+        for (const JsonReader& shape : root.array("shapes")) {
+            parse_shape(shape);
+        }
+        if (root.has("emitters")) {
+            for (const JsonReader& emitter : root.array("emitters")) {
+                parse_emitter(emitter);
+            }
+        }
+        if (root.has("animation")) {
+            parse_animation(root.object("animation"));
+        }
+        if (root.has("render")) {
+            const JsonReader render = root.object("render");
+            for (const auto& item : render.value().items()) {
+                scene_.render.set(item.key(), item.value(), file_ + ": render");
+            }
+        }
     }
-    reader.allow_only({"type", "name", "file"});
-    Shape shape;
-    shape.type = type;
-    shape.file = scene_dir / reader.string("file");
-    shape.name = reader.string("name", shape.file.stem().string());
-    if (!std::filesystem::is_regular_file(shape.file)) {
-        reader.fail("file", "mesh file '" + shape.file.string() + "' not found");
+
+   private:
+    FovAxis parse_fov_axis(const JsonReader& reader) {
+        const std::string axis = reader.string("fov_axis", "x");
+        if (axis == "x") return FovAxis::kX;
+        if (axis == "y") return FovAxis::kY;
+        if (axis == "diagonal") return FovAxis::kDiagonal;
+        if (axis == "smaller") return FovAxis::kSmaller;
+        if (axis == "larger") return FovAxis::kLarger;
+        reader.fail("fov_axis", "unknown value '" + axis + "' (x, y, diagonal, smaller, larger)");
     }
-    TriangleMesh mesh = load_obj(shape.file);
-    scene.add_shape(std::move(shape), std::move(mesh));
-}
+
+    Camera parse_camera(const JsonReader& reader) {
+        reader.allow_only({"position", "look_at", "up", "fov", "fov_axis", "resolution"});
+        Camera camera;
+        camera.position = reader.vec3("position");
+        camera.look_at = reader.vec3("look_at");
+        camera.up = reader.vec3("up", glm::vec3(0.0f, 1.0f, 0.0f));
+        camera.fov_degrees = reader.number("fov");
+        camera.fov_axis = parse_fov_axis(reader);
+        const glm::ivec2 resolution = reader.ivec2("resolution", glm::ivec2(512, 512));
+        if (resolution.x <= 0 || resolution.y <= 0) {
+            reader.fail("resolution", "width and height must be positive, got " +
+                                          std::to_string(resolution.x) + "x" +
+                                          std::to_string(resolution.y));
+        }
+        camera.width = resolution.x;
+        camera.height = resolution.y;
+        if (!(camera.fov_degrees > 0.0f && camera.fov_degrees < 180.0f)) {
+            reader.fail("fov", "must lie strictly between 0 and 180 degrees, got " +
+                                   std::to_string(camera.fov_degrees));
+        }
+        const glm::vec3 forward = camera.look_at - camera.position;
+        if (glm::length(forward) == 0.0f) {
+            reader.fail("look_at", "coincides with position");
+        }
+        if (glm::length(glm::cross(forward, camera.up)) == 0.0f) {
+            reader.fail("up", "is parallel to the viewing direction");
+        }
+        return camera;
+    }
+
+    int texture(const std::filesystem::path& path) {
+        const std::string key = path.lexically_normal().string();
+        const auto found = texture_index_.find(key);
+        if (found != texture_index_.end()) {
+            return found->second;
+        }
+        scene_.textures.push_back(load_texture(path));
+        texture_index_[key] = static_cast<int>(scene_.textures.size() - 1);
+        return texture_index_[key];
+    }
+
+    // A reflectance: a colour, or {"type": "bitmap", "filename": F} (a texture).
+    glm::vec3 parse_reflectance(const JsonReader& reader, const std::string& key,
+                                glm::vec3 fallback, int* texture_index) {
+        if (reader.has(key) && reader.value().at(key).is_object()) {
+            const JsonReader bitmap = reader.object(key);
+            bitmap.allow_only({"type", "filename"});
+            if (bitmap.string("type") != "bitmap") {
+                bitmap.fail("type",
+                            "unknown texture type '" + bitmap.string("type") + "' (known: bitmap)");
+            }
+            const std::filesystem::path image = dir_ / bitmap.string("filename");
+            if (!std::filesystem::is_regular_file(image)) {
+                bitmap.fail("filename", "texture file '" + image.string() + "' not found");
+            }
+            *texture_index = texture(image);
+            const Texture& t = scene_.textures[*texture_index];
+            if (t.max_value > 1.0f) {
+                bitmap.fail("filename", "texture values reach " + std::to_string(t.max_value) +
+                                            " (albedo > 1)");
+            }
+            return glm::vec3(1.0f);
+        }
+        return parse_colour(reader, key, fallback, 0.0f, 1.0f);
+    }
+
+    Material parse_material(const JsonReader& reader, const std::string& name) {
+        Material material;
+        material.name = name;
+        const std::string type = reader.string("type");
+        if (type == "diffuse") {
+            reader.allow_only({"type", "reflectance"});
+            material.kind = MaterialKind::kDiffuse;
+            material.diffuse = parse_reflectance(reader, "reflectance", glm::vec3(0.5f),
+                                                 &material.diffuse_texture);
+            return material;
+        }
+        if (type == "phong") {
+            reader.allow_only({"type", "diffuse", "specular", "exponent"});
+            material.kind = MaterialKind::kPhong;
+            material.exponent = reader.number("exponent", 30.0f);
+            if (material.exponent < 0.0f || material.exponent > 1e6f) {
+                reader.fail("exponent",
+                            "must lie in [0, 1e6], got " + std::to_string(material.exponent));
+            }
+        } else if (type == "ward") {
+            reader.allow_only({"type", "diffuse", "specular", "alpha_x", "alpha_y"});
+            material.kind = MaterialKind::kWard;
+            material.alpha_x = reader.number("alpha_x", 0.1f);
+            material.alpha_y = reader.number("alpha_y", 0.1f);
+            for (const char* key : {"alpha_x", "alpha_y"}) {
+                const float alpha = reader.number(key, 0.1f);
+                if (alpha < 0.001f || alpha > 1.0f) {
+                    reader.fail(key, "must lie in [0.001, 1], got " + std::to_string(alpha));
+                }
+            }
+        } else {
+            reader.fail("type", "unknown material type '" + type + "' (diffuse, phong, ward)");
+        }
+        material.diffuse =
+            parse_reflectance(reader, "diffuse", glm::vec3(0.5f), &material.diffuse_texture);
+        material.specular = parse_colour(reader, "specular", glm::vec3(0.2f), 0.0f, 1.0f);
+        const glm::vec3 total = material.diffuse + material.specular;
+        if (total.r > 1.0f || total.g > 1.0f || total.b > 1.0f) {
+            reader.fail("diffuse + specular = " + format_vec3(total) +
+                        " exceeds 1 (albedo > 1 breaks energy conservation)");
+        }
+        return material;
+    }
+
+    int material_named(const JsonReader& reader, const std::string& key) {
+        const std::string name = reader.string(key);
+        const auto found = material_index_.find(name);
+        if (found == material_index_.end()) {
+            reader.fail(key, "unknown material '" + name + "'");
+        }
+        return found->second;
+    }
+
+    // Materials of an OBJ's MTL library: Kd (or map_Kd), Ks with Ns (phong when Ks > 0).
+    int obj_material(const ObjMaterial& m, const JsonReader& reader) {
+        Material material;
+        material.name = m.name;
+        material.diffuse = m.kd;
+        if (!m.map_kd.empty()) {
+            material.diffuse_texture = texture(m.map_kd);
+            material.diffuse = glm::vec3(1.0f);
+        }
+        if (m.ks != glm::vec3(0.0f)) {
+            material.kind = MaterialKind::kPhong;
+            material.specular = m.ks;
+            material.exponent = m.ns;
+        }
+        const glm::vec3 total = material.diffuse + material.specular;
+        if (glm::any(glm::lessThan(material.diffuse, glm::vec3(0.0f))) ||
+            glm::any(glm::lessThan(material.specular, glm::vec3(0.0f))) || total.r > 1.0f ||
+            total.g > 1.0f || total.b > 1.0f) {
+            reader.fail("file", "MTL material '" + m.name + "': Kd + Ks = " + format_vec3(total) +
+                                    " is negative or exceeds 1");
+        }
+        scene_.materials.push_back(material);
+        return static_cast<int>(scene_.materials.size() - 1);
+    }
+
+    glm::vec3 parse_area_emitter(const JsonReader& reader) {
+        const JsonReader emitter = reader.object("emitter");
+        emitter.allow_only({"type", "radiance"});
+        if (emitter.string("type") != "area") {
+            emitter.fail("type",
+                         "unknown shape emitter '" + emitter.string("type") + "' (known: area)");
+        }
+        return parse_colour(emitter, "radiance", glm::vec3(1.0f), 0.0f, 1e9f);
+    }
+
+    void parse_shape(const JsonReader& reader) {
+        const std::string type = reader.string("type");
+        Shape shape;
+        shape.type = type;
+        std::vector<std::string> keys = {"type",      "name",         "material",
+                                         "transform", "flip_normals", "emitter"};
+        if (type == "obj") {
+            keys.push_back("file");
+        } else if (type == "sphere") {
+            keys.insert(keys.end(), {"center", "radius"});
+        } else if (type != "rectangle" && type != "cube") {
+            reader.fail("type", "unknown shape type '" + type + "' (obj, rectangle, cube, sphere)");
+        }
+        for (const auto& item : reader.value().items()) {
+            if (std::find(keys.begin(), keys.end(), item.key()) == keys.end()) {
+                std::string list;
+                for (const std::string& k : keys) {
+                    list += (list.empty() ? "" : ", ") + k;
+                }
+                reader.fail(item.key(),
+                            "unknown key for a " + type + " shape (known: " + list + ")");
+            }
+        }
+        const std::optional<int> material =
+            reader.has("material") ? std::optional<int>(material_named(reader, "material"))
+                                   : std::nullopt;
+        const std::optional<glm::vec3> emission =
+            reader.has("emitter") ? std::optional<glm::vec3>(parse_area_emitter(reader))
+                                  : std::nullopt;
+        if (type == "obj") {
+            shape.file = dir_ / reader.string("file");
+            if (!std::filesystem::is_regular_file(shape.file)) {
+                reader.fail("file", "mesh file '" + shape.file.string() + "' not found");
+            }
+            ObjData obj = load_obj(shape.file);
+            for (const std::string& warning : obj.warnings) {
+                log_warning(warning);
+            }
+            shape.mesh = std::move(obj.mesh);
+            // Slots: the MTL materials, then one for faces without a material.
+            const int unassigned = static_cast<int>(obj.materials.size());
+            for (int& slot : shape.mesh.materials) {
+                slot = slot < 0 ? unassigned : slot;
+            }
+            for (const ObjMaterial& m : obj.materials) {
+                shape.materials.push_back(material ? *material : obj_material(m, reader));
+                shape.emission.push_back(emission ? *emission : m.ke);
+            }
+            shape.materials.push_back(material ? *material : default_material(scene_));
+            shape.emission.push_back(emission ? *emission : glm::vec3(0.0f));
+            for (const ObjMaterial& m : obj.materials) {
+                if (glm::any(glm::lessThan(m.ke, glm::vec3(0.0f)))) {
+                    reader.fail("file", "MTL material '" + m.name + "': Ke " + format_vec3(m.ke) +
+                                            " is negative");
+                }
+            }
+        } else {
+            if (type == "rectangle") {
+                shape.mesh = make_rectangle();
+            } else if (type == "cube") {
+                shape.mesh = make_cube();
+            } else {
+                const float radius = reader.number("radius", 1.0f);
+                if (!(radius > 0.0f)) {
+                    reader.fail("radius", "must be positive, got " + std::to_string(radius));
+                }
+                shape.mesh = make_uv_sphere(reader.vec3("center", glm::vec3(0.0f)), radius);
+            }
+            shape.materials.push_back(material ? *material : default_material(scene_));
+            if (emission) {
+                shape.emission.push_back(*emission);
+            }
+        }
+        shape.name = reader.string("name", type == "obj"
+                                               ? shape.file.stem().string()
+                                               : type + "_" + std::to_string(scene_.shapes.size()));
+        if (!shape_names_.insert(shape.name).second) {
+            reader.fail("name", "a shape named '" + shape.name + "' already exists");
+        }
+        shape.transform = parse_transform(reader, "transform");
+        if (reader.has("flip_normals")) {
+            if (!reader.value().at("flip_normals").is_boolean()) {
+                reader.fail("flip_normals", "expected true or false");
+            }
+            shape.flip_normals = reader.value().at("flip_normals").get<bool>();
+        }
+        const size_t triangles_before = shape.mesh.triangle_count();
+        scene_.add_shape(std::move(shape));
+        const Shape& added = scene_.shapes.back();
+        if (added.mesh.triangle_count() == 0) {
+            reader.fail(triangles_before == 0 ? std::string("the shape has no triangles")
+                                              : "all " + std::to_string(triangles_before) +
+                                                    " triangles of the shape have zero area");
+        }
+    }
+
+    void parse_emitter(const JsonReader& reader) {
+        const std::string type = reader.string("type");
+        Emitter emitter;
+        if (type == "point") {
+            reader.allow_only({"type", "name", "position", "intensity"});
+            emitter.kind = EmitterKind::kPoint;
+            emitter.position = reader.vec3("position");
+            emitter.intensity = parse_colour(reader, "intensity", glm::vec3(1.0f), 0.0f, 1e12f);
+        } else if (type == "spot") {
+            reader.allow_only(
+                {"type", "name", "position", "look_at", "intensity", "cutoff_angle", "beam_width"});
+            emitter.kind = EmitterKind::kSpot;
+            emitter.position = reader.vec3("position");
+            emitter.look_at = reader.vec3("look_at");
+            if (glm::length(emitter.look_at - emitter.position) == 0.0f) {
+                reader.fail("look_at", "coincides with position");
+            }
+            emitter.intensity = parse_colour(reader, "intensity", glm::vec3(1.0f), 0.0f, 1e12f);
+            emitter.cutoff_angle = reader.number("cutoff_angle", 20.0f);
+            emitter.beam_width = reader.number("beam_width", emitter.cutoff_angle * 0.75f);
+            if (!(emitter.cutoff_angle > 0.0f && emitter.cutoff_angle < 90.0f)) {
+                reader.fail("cutoff_angle", "must lie in (0, 90) degrees");
+            }
+            if (!(emitter.beam_width > 0.0f && emitter.beam_width < emitter.cutoff_angle)) {
+                reader.fail("beam_width", "must lie in (0, cutoff_angle) degrees");
+            }
+        } else if (type == "constant") {
+            reader.allow_only({"type", "name", "radiance"});
+            emitter.kind = EmitterKind::kConstant;
+            emitter.radiance = parse_colour(reader, "radiance", glm::vec3(1.0f), 0.0f, 1e9f);
+            for (const Emitter& other : scene_.emitters) {
+                if (other.kind == EmitterKind::kConstant) {
+                    reader.fail("type", "a scene has at most one constant environment");
+                }
+            }
+        } else {
+            reader.fail("type", "unknown emitter type '" + type + "' (point, spot, constant)");
+        }
+        emitter.name = reader.string("name", type + "_" + std::to_string(scene_.emitters.size()));
+        if (!emitter_names_.insert(emitter.name).second) {
+            reader.fail("name", "an emitter named '" + emitter.name + "' already exists");
+        }
+        scene_.emitters.push_back(emitter);
+    }
+
+    void parse_animation(const JsonReader& reader) {
+        reader.allow_only({"frame_start", "frame_end", "fps", "tracks"});
+        Animation& animation = scene_.animation;
+        animation.frame_start = reader.integer("frame_start", 0);
+        animation.frame_end = reader.integer("frame_end", static_cast<int>(animation.frame_start));
+        animation.fps = reader.number("fps", 24.0f);
+        if (animation.frame_end < animation.frame_start) {
+            reader.fail("frame_end", "is before frame_start");
+        }
+        if (!(animation.fps > 0.0)) {
+            reader.fail("fps", "must be positive");
+        }
+        for (const JsonReader& track_reader : reader.array("tracks")) {
+            track_reader.allow_only({"target", "keyframes"});
+            AnimationTrack track;
+            const std::string target = track_reader.string("target");
+            if (target == "camera") {
+                track.target = TrackTarget::kCamera;
+            } else if (target.rfind("shape:", 0) == 0) {
+                track.target = TrackTarget::kShape;
+                track.name = target.substr(6);
+                if (shape_names_.count(track.name) == 0) {
+                    track_reader.fail("target", "no shape named '" + track.name + "'");
+                }
+            } else if (target.rfind("emitter:", 0) == 0) {
+                track.target = TrackTarget::kEmitter;
+                track.name = target.substr(8);
+                if (emitter_names_.count(track.name) == 0) {
+                    track_reader.fail("target", "no emitter named '" + track.name + "'");
+                }
+            } else {
+                track_reader.fail("target",
+                                  "expected \"camera\", \"shape:NAME\" or "
+                                  "\"emitter:NAME\", got '" +
+                                      target + "'");
+            }
+            for (const JsonReader& key_reader : track_reader.array("keyframes")) {
+                key_reader.allow_only({"frame", "translate", "rotate"});
+                Keyframe key;
+                key.frame = key_reader.number("frame");
+                key.translate = key_reader.vec3("translate", glm::vec3(0.0f));
+                if (key_reader.has("rotate")) {
+                    const JsonReader rotate = key_reader.object("rotate");
+                    rotate.allow_only({"axis", "angle"});
+                    const glm::vec3 axis = rotate.vec3("axis");
+                    if (glm::length(axis) == 0.0f) {
+                        rotate.fail("axis", "is the zero vector");
+                    }
+                    key.rotate =
+                        glm::angleAxis(glm::radians(rotate.number("angle")), glm::normalize(axis));
+                }
+                if (!track.keyframes.empty() && key.frame <= track.keyframes.back().frame) {
+                    key_reader.fail("frame", "keyframes must have increasing frames");
+                }
+                track.keyframes.push_back(key);
+            }
+            if (track.keyframes.empty()) {
+                track_reader.fail("keyframes", "needs at least one keyframe");
+            }
+            animation.tracks.push_back(std::move(track));
+        }
+    }
+
+    std::string file_;
+    std::filesystem::path dir_;
+    Scene& scene_;
+    std::map<std::string, int> material_index_;
+    std::map<std::string, int> texture_index_;
+    std::set<std::string> shape_names_;
+    std::set<std::string> emitter_names_;
+};
 
 }  // namespace
 
@@ -76,14 +462,16 @@ Scene load_scene(const std::filesystem::path& path) {
     const std::string file = path.string();
     const nlohmann::json document = parse_json(read_file(path), file);
     const JsonReader root(document, file);
-    root.allow_only({"camera", "shapes"});
-
     Scene scene;
     scene.path = path;
-    scene.camera = parse_camera(root.object("camera"));
-    const std::filesystem::path scene_dir = path.parent_path();
-    for (const JsonReader& shape : root.array("shapes")) {
-        parse_shape(shape, scene_dir, scene);
+    SceneParser(path, scene).parse(root);
+    if (scene.shapes.empty()) {
+        throw Error(file + ": the scene has no triangles");
+    }
+    try {
+        scene.set_frame(scene.animation.frame_start);
+    } catch (const Error& error) {
+        throw Error(file + ": " + error.what());
     }
     if (scene.mesh.triangle_count() == 0) {
         throw Error(file + ": the scene has no triangles");

@@ -6,16 +6,36 @@
 namespace rc {
 
 void TriangleMesh::append(const TriangleMesh& other) {
+    const bool keep_normals = (positions.empty() || !normals.empty()) && !other.normals.empty();
+    const bool keep_uvs = (positions.empty() || !uvs.empty()) && !other.uvs.empty();
+    const bool keep_materials =
+        (triangles.empty() || !materials.empty()) && !other.materials.empty();
     const auto offset = static_cast<unsigned>(positions.size());
     positions.insert(positions.end(), other.positions.begin(), other.positions.end());
     triangles.reserve(triangles.size() + other.triangles.size());
     for (const glm::uvec3& t : other.triangles) {
         triangles.push_back(t + glm::uvec3(offset));
     }
+    if (keep_normals) {
+        normals.insert(normals.end(), other.normals.begin(), other.normals.end());
+    } else {
+        normals.clear();
+    }
+    if (keep_uvs) {
+        uvs.insert(uvs.end(), other.uvs.begin(), other.uvs.end());
+    } else {
+        uvs.clear();
+    }
+    if (keep_materials) {
+        materials.insert(materials.end(), other.materials.begin(), other.materials.end());
+    } else {
+        materials.clear();
+    }
 }
 
 size_t drop_degenerate_triangles(TriangleMesh& mesh, std::vector<size_t>* kept) {
     std::vector<glm::uvec3> remaining;
+    std::vector<int> remaining_materials;
     remaining.reserve(mesh.triangles.size());
     if (kept != nullptr) {
         kept->clear();
@@ -30,12 +50,18 @@ size_t drop_degenerate_triangles(TriangleMesh& mesh, std::vector<size_t>* kept) 
             continue;
         }
         remaining.push_back(t);
+        if (!mesh.materials.empty()) {
+            remaining_materials.push_back(mesh.materials[i]);
+        }
         if (kept != nullptr) {
             kept->push_back(i);
         }
     }
     const size_t dropped = mesh.triangles.size() - remaining.size();
     mesh.triangles = std::move(remaining);
+    if (!mesh.materials.empty()) {
+        mesh.materials = std::move(remaining_materials);
+    }
     return dropped;
 }
 

@@ -58,18 +58,67 @@ typedef struct CameraParams {
     int4 resolution;  // x: width, y: height, in pixels
 } CameraParams;
 
+// Material models (Material.kind.x).
+#define RC_MATERIAL_DIFFUSE 0
+#define RC_MATERIAL_PHONG 1
+#define RC_MATERIAL_WARD 2
+
+// A surface material (docs/scene-format.md). Two-sided and reflective only.
+typedef struct Material {
+    float4 diffuse;   // rgb: diffuse reflectance (the Lambertian lobe)
+    float4 specular;  // rgb: specular reflectance; w: Phong exponent
+    float4 lobe;      // x, y: Ward alpha_x, alpha_y; z: probability of sampling the diffuse lobe
+    int4 kind;        // x: RC_MATERIAL_*; y: texture scaling the diffuse reflectance, or -1
+} Material;
+
+// Where a texture's texels (float4, linear RGB, rows top to bottom) lie in the texel array.
+typedef struct TextureInfo {
+    int4 layout;  // x: first texel, y: width, z: height
+} TextureInfo;
+
+// Shading data of a triangle, indexed by the scene primitive index.
+typedef struct TriangleShading {
+    int4 normals;  // xyz: vertex-normal indices (-1: the geometric normal); w: material index
+    int4 uvs;      // xyz: texture-coordinate indices (-1: none); w: area light index or -1
+} TriangleShading;
+
+// Light kinds (Light.info.x).
+#define RC_LIGHT_AREA 0
+#define RC_LIGHT_POINT 1
+#define RC_LIGHT_SPOT 2
+#define RC_LIGHT_CONSTANT 3
+
+typedef struct Light {
+    float4 position;  // point, spot: xyz position
+    float4 axis;      // spot: xyz unit axis, w: cosine of the cutoff angle
+    float4 radiance;  // rgb: radiance (area, constant) or intensity (point, spot);
+                      // w (spot): cosine of the beam width
+    float4 shape;     // area: x: total area; spot: y: cutoff angle, z: beam width (radians)
+    int4 info;        // x: RC_LIGHT_*; area: y: first entry in the light-triangle arrays,
+                      // z: number of triangles
+} Light;
+
+// Per-pass parameters of the path tracer.
+typedef struct PathTracerParams {
+    int4 image;  // x: width, y: height, z: index of the pass's sample, w: unused
+    int4 depth;  // x: maximum depth (bounces), y: depth where Russian roulette starts,
+                 // z: number of lights, w: index of the environment light or -1
+    uint4 seed;  // x, y: the 64-bit seed
+} PathTracerParams;
+
 RC_SHARED_END
 
 // Every shared struct and field, for the host/device layout comparison.
-#define RC_SHARED_LAYOUTS(STRUCT, FIELD)                                                           \
-    STRUCT(Ray)                                                                                    \
-    FIELD(Ray, origin) FIELD(Ray, direction) STRUCT(Hit) FIELD(Hit, t) FIELD(Hit, primitive)       \
-        FIELD(Hit, u) FIELD(Hit, v) STRUCT(BvhNode) FIELD(BvhNode, lower_x)                        \
-            FIELD(BvhNode, upper_x) FIELD(BvhNode, lower_y) FIELD(BvhNode, upper_y)                \
-                FIELD(BvhNode, lower_z) FIELD(BvhNode, upper_z) FIELD(BvhNode, child)              \
-                    FIELD(BvhNode, count) STRUCT(Triangle) FIELD(Triangle, v0) FIELD(Triangle, v1) \
-                        FIELD(Triangle, v2) STRUCT(CameraParams) FIELD(CameraParams, origin)       \
-                            FIELD(CameraParams, top_left) FIELD(CameraParams, right)               \
+#define RC_SHARED_LAYOUTS(STRUCT, FIELD)                                                         \
+    STRUCT(Ray)                                                                                  \
+    FIELD(Ray, origin)                                                                           \
+    FIELD(Ray, direction) STRUCT(Hit) FIELD(Hit, t) FIELD(Hit, primitive) FIELD(Hit, u)          \
+        FIELD(Hit, v) STRUCT(BvhNode) FIELD(BvhNode, lower_x) FIELD(BvhNode, upper_x)            \
+            FIELD(BvhNode, lower_y) FIELD(BvhNode, upper_y) FIELD(BvhNode, lower_z)              \
+                FIELD(BvhNode, upper_z) FIELD(BvhNode, child) FIELD(BvhNode, count)              \
+                    STRUCT(Triangle) FIELD(Triangle, v0) FIELD(Triangle, v1) FIELD(Triangle, v2) \
+                        STRUCT(CameraParams) FIELD(CameraParams, origin)                         \
+                            FIELD(CameraParams, top_left) FIELD(CameraParams, right)             \
                                 FIELD(CameraParams, down) FIELD(CameraParams, resolution)
 
 #ifndef __OPENCL_VERSION__
@@ -81,4 +130,9 @@ static_assert(sizeof(rc::shared::BvhNode) == 128);
 static_assert(offsetof(rc::shared::BvhNode, child) == 96);
 static_assert(sizeof(rc::shared::Triangle) == 48);
 static_assert(sizeof(rc::shared::CameraParams) == 80);
+static_assert(sizeof(rc::shared::Material) == 64);
+static_assert(sizeof(rc::shared::TextureInfo) == 16);
+static_assert(sizeof(rc::shared::TriangleShading) == 32);
+static_assert(sizeof(rc::shared::Light) == 80);
+static_assert(sizeof(rc::shared::PathTracerParams) == 48);
 #endif

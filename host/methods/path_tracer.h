@@ -1,0 +1,59 @@
+// The reference path tracer (DESIGN.md §6.1; kernels/path_tracer.h): progressive, one sample per
+// pixel per pass, to a sample count or a time budget. Owns the film; reports its statistics.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "bvh/device_bvh.h"
+#include "device/context.h"
+#include "image/image.h"
+#include "scene/device_scene.h"
+#include "scene/scene.h"
+
+namespace rc {
+
+struct PathTracerOptions {
+    int width = 0;  // 0: the scene camera's
+    int height = 0;
+    int spp = 16;
+    double time_limit = 0.0;  // > 0: render passes until this many seconds have passed
+    uint64_t seed = 0;
+    int max_depth = 64;
+    int rr_depth = 3;
+    // Called after passes 1, 2, 4, 8, ... with the image so far.
+    std::function<void(int spp, const Image& image)> on_power_of_two;
+    // Called after each pass with the fraction done (of spp or of the time limit).
+    std::function<void(double fraction, int spp)> on_progress;
+};
+
+struct PathTracerStats {
+    int spp = 0;
+    double seconds = 0.0;
+    uint64_t rays = 0;
+    uint64_t nonfinite_samples = 0;  // dropped; each names a bug
+    int64_t first_nonfinite_pixel = -1;
+};
+
+// The AOV layers of a path-traced image, in channel order (3 channels each): beauty (R, G, B),
+// then direct, indirect, albedo, normal and variance (of the beauty mean per pixel).
+extern const char* const kPathTracerAovs[6];
+
+class PathTracer {
+   public:
+    PathTracer(Context& context, const Scene& scene, const DeviceBvh& bvh,
+               const DeviceScene& device_scene);
+
+    Image render(const PathTracerOptions& options, PathTracerStats* stats = nullptr);
+
+   private:
+    Image resolve(const Buffer<shared::float4>& film, int width, int height) const;
+
+    Context& context_;
+    const Scene& scene_;
+    const DeviceBvh& bvh_;
+    const DeviceScene& device_scene_;
+    Kernel kernel_;
+};
+
+}  // namespace rc

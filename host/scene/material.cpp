@@ -1,0 +1,42 @@
+#include "scene/material.h"
+
+namespace rc {
+namespace {
+
+float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+}  // namespace
+
+const char* material_kind_name(MaterialKind kind) {
+    switch (kind) {
+        case MaterialKind::kDiffuse:
+            return "diffuse";
+        case MaterialKind::kPhong:
+            return "phong";
+        case MaterialKind::kWard:
+            return "ward";
+    }
+    return "?";
+}
+
+shared::Material to_device(const Material& material) {
+    shared::Material m{};
+    m.diffuse = {material.diffuse.r, material.diffuse.g, material.diffuse.b, 0.0f};
+    const bool specular = material.kind != MaterialKind::kDiffuse;
+    const glm::vec3 ks = specular ? material.specular : glm::vec3(0.0f);
+    m.specular = {ks.r, ks.g, ks.b, material.exponent};
+    const float kd_weight = luminance(material.diffuse);
+    const float ks_weight = luminance(ks);
+    float diffuse_probability = 1.0f;
+    if (specular && ks_weight > 0.0f) {
+        diffuse_probability = kd_weight / (kd_weight + ks_weight);
+    }
+    m.lobe = {material.alpha_x, material.alpha_y, diffuse_probability, 0.0f};
+    const int kind = material.kind == MaterialKind::kDiffuse ? RC_MATERIAL_DIFFUSE
+                     : material.kind == MaterialKind::kPhong ? RC_MATERIAL_PHONG
+                                                             : RC_MATERIAL_WARD;
+    m.kind = {kind, material.diffuse_texture, 0, 0};
+    return m;
+}
+
+}  // namespace rc

@@ -1,0 +1,31 @@
+// Surface materials (docs/scene-format.md): diffuse (Lambert), phong (energy-conserving modified
+// Phong) and ward (anisotropic Ward with bounded albedo), and their device form.
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <string>
+
+#include "shared/types.h"
+
+namespace rc {
+
+enum class MaterialKind { kDiffuse, kPhong, kWard };
+
+struct Material {
+    std::string name;
+    MaterialKind kind = MaterialKind::kDiffuse;
+    glm::vec3 diffuse{0.5f};   // diffuse reflectance; scales the texture when there is one
+    int diffuse_texture = -1;  // index into Scene::textures, or -1
+    glm::vec3 specular{0.0f};
+    float exponent = 0.0f;  // phong
+    float alpha_x = 0.1f;   // ward
+    float alpha_y = 0.1f;
+};
+
+// The device form; the diffuse lobe is sampled with probability lum(diffuse) / lum(diffuse +
+// specular).
+shared::Material to_device(const Material& material);
+
+const char* material_kind_name(MaterialKind kind);
+
+}  // namespace rc

@@ -1,0 +1,22 @@
+// Image textures, read with OpenImageIO into linear RGB.
+#pragma once
+
+#include <filesystem>
+#include <glm/vec4.hpp>
+#include <vector>
+
+namespace rc {
+
+struct Texture {
+    std::filesystem::path file;
+    int width = 0;
+    int height = 0;
+    std::vector<glm::vec4> texels;  // linear RGB (a = 1), rows top to bottom
+    float max_value = 0.0f;         // largest RGB component
+};
+
+// Reads the image; 8- and 16-bit integer images are taken as sRGB-encoded and decoded to
+// linear, float images as linear. Grey images are expanded to RGB. Throws Error naming the file.
+Texture load_texture(const std::filesystem::path& file);
+
+}  // namespace rc

@@ -1,0 +1,137 @@
+// Light sampling for next-event estimation, and the densities multiple importance sampling needs.
+// Area lights are sampled by area (a triangle chosen in proportion to its area, a uniform point
+// on it) and converted to solid angle; they emit on the side their winding faces.
+#pragma once
+
+#include "common/math.h"
+#include "common/ray_offset.h"
+#include "common/scene_data.h"
+#include "common/triangle_geometry.h"
+#include "shared/types.h"
+
+// Index i of the first cdf[i] > u in cdf[0, count), count >= 1 (cdf[count - 1] = 1).
+RC_FUNC int rc_sample_cdf(RC_GLOBAL const float* cdf, int count, float u) {
+    int low = 0;
+    int high = count - 1;
+    while (low < high) {
+        const int middle = (low + high) / 2;
+        if (cdf[middle] > u) {
+            high = middle;
+        } else {
+            low = middle + 1;
+        }
+    }
+    return low;
+}
+
+RC_FUNC float rc_cdf_probability(RC_GLOBAL const float* cdf, int i) {
+    return cdf[i] - (i > 0 ? cdf[i - 1] : 0.0f);
+}
+
+// A sampled light direction from a shading point.
+typedef struct LightSample {
+    float3 direction;  // unit, from the shading point to the light
+    float3 radiance;   // arriving radiance (intensity / distance^2 for point and spot lights)
+    float pdf;         // solid-angle density, light selection included; 1 for delta lights
+    float3 target;     // the end of the shadow ray (offset off an area light's surface)
+    bool delta;        // a point or spot light (not reachable by BRDF sampling)
+    bool infinite;     // the environment: the shadow ray has no end
+} LightSample;
+
+// Spot light falloff: 1 inside the beam, 0 outside the cutoff, linear in angle between.
+RC_FUNC float rc_spot_falloff(const Light* light, float3 from_light) {
+    const float cos_angle = dot(from_light, light->axis.xyz);
+    if (cos_angle >= light->radiance.w) {
+        return 1.0f;
+    }
+    if (cos_angle <= light->axis.w) {
+        return 0.0f;
+    }
+    const float angle = acos(clamp(cos_angle, -1.0f, 1.0f));
+    return (light->shape.y - angle) / (light->shape.y - light->shape.z);
+}
+
+// Samples light l (chosen with probability `selection`) from point p.
+RC_FUNC LightSample rc_sample_light(const SceneData* scene, int l, float selection, float3 p,
+                                    float u1, float u2, float u3) {
+    const Light light = scene->lights[l];
+    LightSample s;
+    s.delta = false;
+    s.infinite = false;
+    s.pdf = 0.0f;
+    s.radiance = (float3)(0.0f);
+    s.direction = (float3)(0.0f, 0.0f, 1.0f);
+    s.target = p;
+    const int kind = light.info.x;
+    if (kind == RC_LIGHT_AREA) {
+        const int first = light.info.y;
+        const int entry =
+            first + rc_sample_cdf(scene->light_triangle_cdf + first, light.info.z, u1);
+        const uint primitive = scene->light_triangles[entry];
+        RC_GLOBAL const Triangle* triangle =
+            scene->triangles + scene->triangle_of_primitive[primitive];
+        // Uniform point on the triangle (pbrt-v3 §13.6.5).
+        const float su = sqrt(u2);
+        const float b0 = 1.0f - su;
+        const float b1 = u3 * su;
+        const float3 q = rc_hit_point(triangle, b1, 1.0f - b0 - b1);
+        const float3 nl = rc_triangle_normal(triangle);
+        const float3 to_light = q - p;
+        const float distance2 = dot(to_light, to_light);
+        if (distance2 <= 0.0f) {
+            return s;
+        }
+        s.direction = to_light / sqrt(distance2);
+        const float cos_light = -dot(nl, s.direction);
+        if (cos_light <= 0.0f) {
+            return s;  // the back of a one-sided emitter
+        }
+        s.pdf = selection * distance2 / (light.shape.x * cos_light);
+        s.radiance = light.radiance.xyz;
+        s.target = rc_offset_ray_origin(q, nl);
+    } else if (kind == RC_LIGHT_POINT || kind == RC_LIGHT_SPOT) {
+        const float3 to_light = light.position.xyz - p;
+        const float distance2 = dot(to_light, to_light);
+        if (distance2 <= 0.0f) {
+            return s;
+        }
+        s.direction = to_light / sqrt(distance2);
+        s.delta = true;
+        s.pdf = selection;
+        s.radiance = light.radiance.xyz / distance2;
+        if (kind == RC_LIGHT_SPOT) {
+            s.radiance *= rc_spot_falloff(&light, -s.direction);
+        }
+        s.target = light.position.xyz;
+    } else {
+        // Constant environment: uniform directions on the sphere.
+        const float z = 1.0f - 2.0f * u1;
+        const float r = sqrt(fmax(0.0f, 1.0f - z * z));
+        const float phi = 2.0f * RC_PI * u2;
+        s.direction = (float3)(r * cos(phi), r * sin(phi), z);
+        s.pdf = selection * RC_INV_FOUR_PI;
+        s.radiance = light.radiance.xyz;
+        s.infinite = true;
+    }
+    return s;
+}
+
+// Density with which light sampling would have produced the direction towards point q on area
+// light l (q seen from p, nl the light's unit winding normal).
+RC_FUNC float rc_area_light_pdf(const SceneData* scene, int l, float3 p, float3 q, float3 nl) {
+    const float3 to_light = q - p;
+    const float distance2 = dot(to_light, to_light);
+    const float cos_light = fabs(dot(nl, to_light)) / sqrt(distance2);
+    if (cos_light <= 0.0f) {
+        return 0.0f;
+    }
+    return rc_cdf_probability(scene->light_cdf, l) * distance2 /
+           (scene->lights[l].shape.x * cos_light);
+}
+
+// Density of light sampling for a direction that leaves the scene (the environment).
+RC_FUNC float rc_environment_pdf(const SceneData* scene) {
+    return scene->environment >= 0
+               ? rc_cdf_probability(scene->light_cdf, scene->environment) * RC_INV_FOUR_PI
+               : 0.0f;
+}

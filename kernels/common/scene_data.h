@@ -1,0 +1,110 @@
+// The scene as the rendering kernels see it: the buffers of host/scene/device_scene.h, and the
+// shading point a closest hit describes.
+#pragma once
+
+#include "common/diffuse_bounce.h"
+#include "common/material.h"
+#include "common/math.h"
+#include "common/texture.h"
+#include "common/triangle_geometry.h"
+#include "shared/types.h"
+
+typedef struct SceneData {
+    RC_GLOBAL const BvhNode* nodes;
+    RC_GLOBAL const Triangle* triangles;
+    RC_GLOBAL const uint* triangle_of_primitive;
+    RC_GLOBAL const TriangleShading* shading;
+    RC_GLOBAL const float4* normals;
+    RC_GLOBAL const float2* uvs;
+    RC_GLOBAL const Material* materials;
+    RC_GLOBAL const TextureInfo* textures;
+    RC_GLOBAL const float4* texels;
+    RC_GLOBAL const Light* lights;
+    RC_GLOBAL const float* light_cdf;           // cumulative selection probability per light
+    RC_GLOBAL const uint* light_triangles;      // primitives of the area lights
+    RC_GLOBAL const float* light_triangle_cdf;  // cumulative area within each area light
+    int light_count;
+    int environment;  // index of the constant environment light, or -1
+} SceneData;
+
+// A surface point hit by a ray, oriented towards the side the ray came from.
+typedef struct SurfacePoint {
+    float3 position;
+    float3 geometric_normal;  // unit, facing the incoming ray
+    Frame shading;            // shading frame; n faces the incoming ray's side
+    float2 uv;
+    int material;
+    int light;   // area light index, or -1
+    bool front;  // the ray arrived on the side the geometric normal (winding) points to
+} SurfacePoint;
+
+RC_FUNC SurfacePoint rc_surface_point(const SceneData* scene, Ray ray, Hit hit) {
+    SurfacePoint sp;
+    RC_GLOBAL const Triangle* triangle =
+        scene->triangles + scene->triangle_of_primitive[hit.primitive];
+    const TriangleShading shading = scene->shading[hit.primitive];
+    sp.position = rc_hit_point(triangle, hit.u, hit.v);
+    float3 ng = rc_triangle_normal(triangle);
+    const float w = 1.0f - hit.u - hit.v;
+    float3 ns = ng;
+    if (shading.normals.x >= 0) {
+        ns = normalize(w * scene->normals[shading.normals.x].xyz +
+                       hit.u * scene->normals[shading.normals.y].xyz +
+                       hit.v * scene->normals[shading.normals.z].xyz);
+        if (dot(ns, ng) < 0.0f) {
+            ns = -ns;  // vertex normals on the other side than the winding
+        }
+    }
+    sp.front = dot(ng, ray.direction.xyz) < 0.0f;
+    if (!sp.front) {
+        ng = -ng;
+        ns = -ns;
+    }
+    sp.geometric_normal = ng;
+    sp.uv = (float2)(0.0f, 0.0f);
+    float3 tangent = (float3)(0.0f);
+    if (shading.uvs.x >= 0) {
+        const float2 t0 = scene->uvs[shading.uvs.x];
+        const float2 t1 = scene->uvs[shading.uvs.y];
+        const float2 t2 = scene->uvs[shading.uvs.z];
+        sp.uv = w * t0 + hit.u * t1 + hit.v * t2;
+        // dp/du from the triangle's texture mapping orients anisotropic lobes.
+        const float2 d1 = t1 - t0;
+        const float2 d2 = t2 - t0;
+        const float det = d1.x * d2.y - d1.y * d2.x;
+        if (det != 0.0f) {
+            const float3 e1 = triangle->v1.xyz - triangle->v0.xyz;
+            const float3 e2 = triangle->v2.xyz - triangle->v0.xyz;
+            tangent = (d2.y * e1 - d1.y * e2) / det;
+        }
+    }
+    tangent -= ns * dot(ns, tangent);
+    const float length_t = length(tangent);
+    sp.shading.n = ns;
+    if (length_t > 1e-12f) {
+        sp.shading.t = tangent / length_t;
+        sp.shading.b = cross(ns, sp.shading.t);
+    } else {
+        rc_orthonormal_basis(ns, &sp.shading.t, &sp.shading.b);
+    }
+    sp.material = shading.normals.w;
+    sp.light = shading.uvs.w;
+    return sp;
+}
+
+// The material at a surface point, its diffuse texture applied.
+RC_FUNC SurfaceMaterial rc_surface_material(const SceneData* scene, const SurfacePoint* sp) {
+    const Material material = scene->materials[sp->material];
+    SurfaceMaterial m;
+    m.kind = material.kind.x;
+    m.diffuse = material.diffuse.xyz;
+    if (material.kind.y >= 0) {
+        m.diffuse *= rc_texture_lookup(scene->texels, scene->textures[material.kind.y], sp->uv);
+    }
+    m.specular = material.specular.xyz;
+    m.exponent = material.specular.w;
+    m.alpha_x = material.lobe.x;
+    m.alpha_y = material.lobe.y;
+    m.diffuse_probability = material.lobe.z;
+    return m;
+}
