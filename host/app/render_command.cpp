@@ -6,6 +6,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <sstream>
 
 #include "app/cli.h"
 #include "app/commands.h"
@@ -51,6 +52,9 @@ std::vector<OptionSpec> render_option_specs() {
          "also write the image after 1, 2, 4, 8, ... samples per pixel (name.sppN.ext)"},
         {"--exposure", "", "STOPS", "exposure applied before 8-bit encoding (default 0)"},
         {"--half", "", "", ".exr: store half floats"},
+        {"--aovs", "", "LIST",
+         ".exr: the layers to write, comma-separated (default all: beauty, direct, indirect, "
+         "albedo, normal, variance)"},
         {"--stats", "", "FILE", "write timings and counts as JSON"},
         {"--quiet", "-q", "", "print nothing but errors"},
     };
@@ -158,6 +162,20 @@ int run_render_command(const std::vector<std::string>& args) {
         overrides_only.apply_override(assignment);  // validates the keys before loading
     }
 
+    ImageWriteOptions write_options;
+    write_options.half = arguments.has("--half");
+    std::vector<std::string> layers;
+    if (arguments.has("--aovs")) {
+        std::stringstream list(arguments.value("--aovs"));
+        for (std::string layer; std::getline(list, layer, ',');) {
+            if (!layer.empty()) {
+                layers.push_back(layer);
+            }
+        }
+        if (layers.empty()) {
+            throw Error("--aovs: expected a comma-separated list of layers", kExitUsage);
+        }
+    }
     auto phase_start = Clock::now();
     Scene scene = load_scene(arguments.positionals()[0]);
     const double load_seconds = seconds_since(phase_start);
@@ -176,17 +194,30 @@ int run_render_command(const std::vector<std::string>& args) {
             "--method: unknown method '" + settings.method + "' (implemented: " + kMethods + ")",
             kExitUsage);
     }
+    for (const std::string& layer : layers) {
+        bool known = layer == "beauty";
+        if (settings.method == "pt") {
+            for (const char* aov : kPathTracerAovs) {
+                known = known || layer == aov;
+            }
+        }
+        if (!known) {
+            throw Error("--aovs: method " + settings.method + " has no layer '" + layer + "'",
+                        kExitUsage);
+        }
+    }
     settings.spp = static_cast<int>(arguments.integer("--spp", settings.spp, 1, 1 << 24));
     settings.time = arguments.number("--time", settings.time, 0.0, 1e7);
     settings.seed = static_cast<uint64_t>(
         arguments.integer("--seed", static_cast<long long>(settings.seed), 0, 1LL << 62));
     settings.exposure =
         static_cast<float>(arguments.number("--exposure", settings.exposure, -64.0, 64.0));
+    write_options.exposure = settings.exposure;
     const int width = static_cast<int>(arguments.integer("--width", 0, 1, 1 << 16));
     const int height = static_cast<int>(arguments.integer("--height", 0, 1, 1 << 16));
-    ImageWriteOptions write_options;
-    write_options.exposure = settings.exposure;
-    write_options.half = arguments.has("--half");
+    auto written = [&](const Image& image) {
+        return layers.empty() ? image : select_layers(image, layers);
+    };
 
     phase_start = Clock::now();
     Context context(context_options(arguments));
@@ -248,7 +279,7 @@ int run_render_command(const std::vector<std::string>& args) {
             options.rr_depth = settings.rr_depth;
             if (arguments.has("--save-every-pow2")) {
                 options.on_power_of_two = [&](int spp, const Image& partial) {
-                    write_image(intermediate_path(output, spp), partial, write_options);
+                    write_image(intermediate_path(output, spp), written(partial), write_options);
                 };
             }
             options.on_progress = [&](double fraction, int spp) {
@@ -278,7 +309,7 @@ int run_render_command(const std::vector<std::string>& args) {
         image_height = image.height;
 
         phase_start = Clock::now();
-        write_image(output, image, write_options);
+        write_image(output, written(image), write_options);
         write_seconds += seconds_since(phase_start);
         log_note("wrote " + output.string() + " (" + std::to_string(image.width) + "x" +
                  std::to_string(image.height) + ", " + std::to_string(spp_done) + " spp)");

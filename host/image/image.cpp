@@ -1,5 +1,9 @@
 #include "image/image.h"
 
+#include <algorithm>
+
+#include "util/error.h"
+
 namespace rc {
 
 Image::Image(int w, int h, int c)
@@ -8,6 +12,57 @@ Image::Image(int w, int h, int c)
     for (int i = 0; i < c; ++i) {
         channel_names.push_back(i < 4 ? kNames[i] : "C" + std::to_string(i));
     }
+}
+
+namespace {
+
+std::string layer_of(const std::string& channel) {
+    const size_t dot = channel.rfind('.');
+    return dot == std::string::npos ? "beauty" : channel.substr(0, dot);
+}
+
+}  // namespace
+
+std::vector<std::string> layer_names(const Image& image) {
+    std::vector<std::string> names;
+    for (const std::string& channel : image.channel_names) {
+        const std::string layer = layer_of(channel);
+        if (std::find(names.begin(), names.end(), layer) == names.end()) {
+            names.push_back(layer);
+        }
+    }
+    return names;
+}
+
+Image select_layers(const Image& image, const std::vector<std::string>& layers) {
+    std::vector<int> channels;
+    for (const std::string& layer : layers) {
+        const size_t before = channels.size();
+        for (int c = 0; c < image.channels; ++c) {
+            if (layer_of(image.channel_names[c]) == layer) {
+                channels.push_back(c);
+            }
+        }
+        if (channels.size() == before) {
+            std::string known;
+            for (const std::string& name : layer_names(image)) {
+                known += (known.empty() ? "" : ", ") + name;
+            }
+            throw Error("the image has no layer '" + layer + "' (it has " + known + ")", 2);
+        }
+    }
+    Image selected(image.width, image.height, static_cast<int>(channels.size()));
+    selected.channel_names.clear();
+    for (int c : channels) {
+        selected.channel_names.push_back(image.channel_names[c]);
+    }
+    const size_t pixels = static_cast<size_t>(image.width) * image.height;
+    for (size_t p = 0; p < pixels; ++p) {
+        for (size_t k = 0; k < channels.size(); ++k) {
+            selected.pixels[p * channels.size() + k] = image.pixels[p * image.channels + channels[k]];
+        }
+    }
+    return selected;
 }
 
 }  // namespace rc

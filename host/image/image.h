@@ -24,4 +24,12 @@ struct Image {
     }
 };
 
+// The channels of the named layers, in the order given: "beauty" is the channels without a
+// layer prefix (R, G, B), any other name the channels "name.*". Throws Error for a layer the
+// image does not have.
+Image select_layers(const Image& image, const std::vector<std::string>& layers);
+
+// The layer names of an image, in channel order ("beauty" for unprefixed channels).
+std::vector<std::string> layer_names(const Image& image);
+
 }  // namespace rc

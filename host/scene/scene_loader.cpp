@@ -263,9 +263,7 @@ class SceneParser {
                             "unknown key for a " + type + " shape (known: " + list + ")");
             }
         }
-        const std::optional<int> material =
-            reader.has("material") ? std::optional<int>(material_named(reader, "material"))
-                                   : std::nullopt;
+        const int material = reader.has("material") ? material_named(reader, "material") : -1;
         const std::optional<glm::vec3> emission =
             reader.has("emitter") ? std::optional<glm::vec3>(parse_area_emitter(reader))
                                   : std::nullopt;
@@ -285,10 +283,10 @@ class SceneParser {
                 slot = slot < 0 ? unassigned : slot;
             }
             for (const ObjMaterial& m : obj.materials) {
-                shape.materials.push_back(material ? *material : obj_material(m, reader));
+                shape.materials.push_back(material >= 0 ? material : obj_material(m, reader));
                 shape.emission.push_back(emission ? *emission : m.ke);
             }
-            shape.materials.push_back(material ? *material : default_material(scene_));
+            shape.materials.push_back(material >= 0 ? material : default_material(scene_));
             shape.emission.push_back(emission ? *emission : glm::vec3(0.0f));
             for (const ObjMaterial& m : obj.materials) {
                 if (glm::any(glm::lessThan(m.ke, glm::vec3(0.0f)))) {
@@ -308,7 +306,7 @@ class SceneParser {
                 }
                 shape.mesh = make_uv_sphere(reader.vec3("center", glm::vec3(0.0f)), radius);
             }
-            shape.materials.push_back(material ? *material : default_material(scene_));
+            shape.materials.push_back(material >= 0 ? material : default_material(scene_));
             if (emission) {
                 shape.emission.push_back(*emission);
             }

@@ -19,6 +19,19 @@ typedef struct SurfaceMaterial {
     float diffuse_probability;
 } SurfaceMaterial;
 
+// The material's constant parameters (scene_data.h applies textures on top).
+RC_FUNC SurfaceMaterial rc_surface_material_of(const Material* material) {
+    SurfaceMaterial m;
+    m.kind = material->kind.x;
+    m.diffuse = material->diffuse.xyz;
+    m.specular = material->specular.xyz;
+    m.exponent = material->specular.w;
+    m.alpha_x = material->lobe.x;
+    m.alpha_y = material->lobe.y;
+    m.diffuse_probability = material->lobe.z;
+    return m;
+}
+
 // Modified Phong, specular lobe (Lafortune and Willems, "Using the Modified Phong Reflectance
 // Model for Physically Based Rendering", 1994): ks (n + 2) / (2 pi) cos^n(alpha), alpha the angle
 // between wi and the mirror direction of wo. Energy conserving for kd + ks <= 1.
@@ -85,7 +98,13 @@ RC_FUNC float3 rc_ward_sample(float alpha_x, float alpha_y, float3 wo, float u1,
     const float cos_theta = 1.0f / sqrt(1.0f + tan2_theta);
     const float sin_theta = sqrt(fmax(0.0f, 1.0f - cos_theta * cos_theta));
     const float3 h = (float3)(sin_theta * cos_phi, sin_theta * sin_phi, cos_theta);
-    return 2.0f * dot(wo, h) * h - wo;
+    const float wo_h = dot(wo, h);
+    if (wo_h <= 0.0f) {
+        // Mirroring about a half vector facing away from wo gives a direction whose half vector
+        // is -h, outside the density above: reject (below the surface, as far as callers know).
+        return (float3)(0.0f, 0.0f, -1.0f);
+    }
+    return 2.0f * wo_h * h - wo;
 }
 
 // The BRDF value f(wo, wi) (without the cosine).

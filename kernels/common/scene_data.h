@@ -95,16 +95,9 @@ RC_FUNC SurfacePoint rc_surface_point(const SceneData* scene, Ray ray, Hit hit) 
 // The material at a surface point, its diffuse texture applied.
 RC_FUNC SurfaceMaterial rc_surface_material(const SceneData* scene, const SurfacePoint* sp) {
     const Material material = scene->materials[sp->material];
-    SurfaceMaterial m;
-    m.kind = material.kind.x;
-    m.diffuse = material.diffuse.xyz;
+    SurfaceMaterial m = rc_surface_material_of(&material);
     if (material.kind.y >= 0) {
         m.diffuse *= rc_texture_lookup(scene->texels, scene->textures[material.kind.y], sp->uv);
     }
-    m.specular = material.specular.xyz;
-    m.exponent = material.specular.w;
-    m.alpha_x = material.lobe.x;
-    m.alpha_y = material.lobe.y;
-    m.diffuse_probability = material.lobe.z;
     return m;
 }

@@ -1,0 +1,193 @@
+// Light sampling for next-event estimation (kernels/common/light.h): lights chosen in
+// proportion to power, points uniform by area on area lights, pdfs that are the solid-angle
+// densities, and the radiance of point and spot lights.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "bvh/bvh.h"
+#include "bvh/device_bvh.h"
+#include "chi_square.h"
+#include "scene/device_scene.h"
+#include "scene/generated_meshes.h"
+#include "test_support.h"
+
+namespace rc {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A 2 x 1 quad light facing -z at z = 2 (radiance 4, 2, 1), a small triangle light, a point
+// light and a spot light.
+Scene light_scene() {
+    Scene scene;
+    scene.base_camera.position = {0, 0, -5};
+    scene.base_camera.look_at = {0, 0, 0};
+    Shape quad;
+    quad.name = "quad";
+    quad.type = "rectangle";
+    quad.mesh = make_rectangle();
+    // Scale to 2 x 1, turn to face -z, move to z = 2.
+    quad.transform = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 2.0f)) *
+                     glm::rotate(glm::mat4(1.0f), glm::radians(180.0f), glm::vec3(0, 1, 0)) *
+                     glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 0.5f, 1.0f));
+    quad.emission = {glm::vec3(4.0f, 2.0f, 1.0f)};
+    scene.add_shape(quad);
+    Shape small;
+    small.name = "triangle";
+    small.type = "generated";
+    small.mesh.positions = {{-2, 1, 1}, {-2, 1.2f, 1}, {-1.8f, 1, 1}};
+    small.mesh.triangles = {{0, 1, 2}};  // faces -z
+    small.emission = {glm::vec3(10.0f)};
+    scene.add_shape(small);
+    Emitter point;
+    point.name = "point";
+    point.kind = EmitterKind::kPoint;
+    point.position = {0, 3, 0};
+    point.intensity = glm::vec3(2.0f);
+    scene.emitters.push_back(point);
+    Emitter spot;
+    spot.name = "spot";
+    spot.kind = EmitterKind::kSpot;
+    spot.position = {0, 0, -3};
+    spot.look_at = {0, 0, 0};
+    spot.intensity = glm::vec3(5.0f);
+    spot.cutoff_angle = 30.0f;
+    spot.beam_width = 20.0f;
+    scene.emitters.push_back(spot);
+    scene.set_frame(0.0);
+    return scene;
+}
+
+struct ProbeResult {
+    std::vector<shared::float4> choice;    // x: light, y: pdf, z: delta, w: infinite
+    std::vector<shared::float4> geometry;  // direction, target per sample
+    std::vector<shared::float4> radiance;
+};
+
+ProbeResult probe(const Scene& scene, glm::vec3 p, size_t count, unsigned seed) {
+    Context& context = test::shared_context();
+    const Bvh bvh = build_bvh(scene.mesh);
+    const DeviceBvh device_bvh(context, bvh);
+    const DeviceScene device_scene(context, scene);
+    Kernel kernel = context.kernel("light_probe.cl", "light_sample_probe");
+    Buffer<shared::float4> choice(context, count, "choice");
+    Buffer<shared::float4> geometry(context, 2 * count, "geometry");
+    Buffer<shared::float4> radiance(context, count, "radiance");
+    const shared::float4 point = {p.x, p.y, p.z, 0.0f};
+    context.launch(kernel, count, point, seed, device_bvh.nodes, device_bvh.triangles,
+                   device_bvh.triangle_of_primitive, device_scene.lights, device_scene.light_cdf,
+                   device_scene.light_triangles, device_scene.light_triangle_cdf,
+                   device_scene.light_count, choice, geometry, radiance);
+    return {choice.download(), geometry.download(), radiance.download()};
+}
+
+float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+TEST(LightSampling, LightsAreChosenInProportionToPower) {
+    const Scene scene = light_scene();
+    ASSERT_EQ(scene.lights.lights.size(), 4u);
+    // Powers: area pi A lum(L); point 4 pi lum(I); spot 2 pi (1 - cos((cutoff + beam) / 2)) lum(I).
+    const double power[4] = {kPi * 2.0 * luminance({4, 2, 1}), kPi * 0.02 * 10.0,
+                             4.0 * kPi * 2.0,
+                             2.0 * kPi * (1.0 - std::cos(25.0 * kPi / 180.0)) * 5.0};
+    const double total = power[0] + power[1] + power[2] + power[3];
+    const size_t n = 1 << 20;
+    const ProbeResult r = probe(scene, {0.1f, 0.2f, 0.0f}, n, 3);
+    std::vector<double> observed(4, 0.0);
+    for (const shared::float4& c : r.choice) {
+        observed[static_cast<int>(c.x)] += 1.0;
+    }
+    std::vector<double> expected(4);
+    for (int l = 0; l < 4; ++l) {
+        expected[l] = n * power[l] / total;
+    }
+    const test::ChiSquareResult chi = test::chi_square_test(observed, expected);
+    EXPECT_GT(chi.p_value, 1e-4) << chi.summary();
+}
+
+TEST(LightSampling, AreaLightPointsAreUniformByAreaWithSolidAnglePdfs) {
+    const Scene scene = light_scene();
+    const glm::vec3 p(0.3f, -0.2f, 0.0f);
+    const size_t n = 1 << 20;
+    const ProbeResult r = probe(scene, p, n, 7);
+    // The quad light spans x in [-0.5, 1.5], y in [-0.5, 0.5] at z = 2, normal -z.
+    const int bins = 8;
+    std::vector<double> observed(bins * bins, 0.0);
+    size_t quad_samples = 0;
+    const double selection = scene.lights.cdf[0];
+    for (size_t i = 0; i < n; ++i) {
+        if (static_cast<int>(r.choice[i].x) != 0) {
+            continue;
+        }
+        ++quad_samples;
+        const shared::float4& q = r.geometry[2 * i + 1];
+        ASSERT_NEAR(q.z, 2.0f, 1e-4f);
+        const int bx = std::min(bins - 1, static_cast<int>((q.x + 0.5f) / 2.0f * bins));
+        const int by = std::min(bins - 1, static_cast<int>((q.y + 0.5f) * bins));
+        observed[by * bins + bx] += 1.0;
+        // pdf = P(select) * d^2 / (A cos(theta_light)), checked in double.
+        const glm::dvec3 to(q.x - p.x, q.y - p.y, q.z - p.z);
+        const double d2 = glm::dot(to, to);
+        const double cosine = to.z / std::sqrt(d2);
+        const double pdf = selection * d2 / (2.0 * cosine);
+        EXPECT_NEAR(r.choice[i].y, pdf, 1e-4 * pdf);
+        EXPECT_EQ(r.radiance[i].x, 4.0f);
+        const glm::dvec3 direction(r.geometry[2 * i].x, r.geometry[2 * i].y, r.geometry[2 * i].z);
+        EXPECT_NEAR(glm::dot(direction, to / std::sqrt(d2)), 1.0, 1e-5);
+        if (::testing::Test::HasFailure()) {
+            break;
+        }
+    }
+    std::vector<double> expected(bins * bins, static_cast<double>(quad_samples) / (bins * bins));
+    const test::ChiSquareResult chi = test::chi_square_test(observed, expected);
+    EXPECT_GT(chi.p_value, 1e-4) << chi.summary();
+}
+
+TEST(LightSampling, OneSidedAreaLightsGiveNothingBehind) {
+    const Scene scene = light_scene();
+    // Behind the quad (z > 2): every quad sample has zero pdf and radiance.
+    const ProbeResult r = probe(scene, {0.3f, 0.1f, 4.0f}, 4096, 11);
+    size_t quad = 0;
+    for (size_t i = 0; i < r.choice.size(); ++i) {
+        if (static_cast<int>(r.choice[i].x) == 0) {
+            ++quad;
+            EXPECT_EQ(r.choice[i].y, 0.0f);
+        }
+    }
+    EXPECT_GT(quad, 100u);
+}
+
+TEST(LightSampling, PointAndSpotLightRadiance) {
+    const Scene scene = light_scene();
+    const size_t n = 4096;
+    for (const glm::vec3& p : {glm::vec3(0.0f, 0.0f, 0.0f), glm::vec3(1.0f, 0.0f, 0.0f),
+                               glm::vec3(1.5f, 0.0f, 0.0f), glm::vec3(3.0f, 0.0f, 0.0f)}) {
+        const ProbeResult r = probe(scene, p, n, 5);
+        const double spot_angle = std::atan2(p.x, 3.0) * 180.0 / kPi;  // from the spot axis
+        const double spot_d2 = p.x * p.x + 9.0;
+        const double falloff =
+            spot_angle <= 20.0 ? 1.0 : (spot_angle >= 30.0 ? 0.0 : (30.0 - spot_angle) / 10.0);
+        const double point_d2 = p.x * p.x + 9.0 + p.z * p.z;
+        bool saw_point = false;
+        bool saw_spot = false;
+        for (size_t i = 0; i < n; ++i) {
+            const int l = static_cast<int>(r.choice[i].x);
+            if (l == 2) {
+                saw_point = true;
+                EXPECT_EQ(r.choice[i].z, 1.0f);  // delta
+                EXPECT_NEAR(r.radiance[i].x, 2.0 / point_d2, 1e-5);
+                EXPECT_NEAR(r.choice[i].y, scene.lights.cdf[2] - scene.lights.cdf[1], 1e-6);
+            } else if (l == 3) {
+                saw_spot = true;
+                EXPECT_NEAR(r.radiance[i].x, 5.0 * falloff / spot_d2, 1e-4) << "x = " << p.x;
+            }
+        }
+        EXPECT_TRUE(saw_point && saw_spot);
+    }
+}
+
+}  // namespace
+}  // namespace rc
