@@ -89,7 +89,7 @@ RC_FUNC PathSample rc_path_sample(const SceneData* scene, const CameraParams* ca
             break;
         }
         const float3 wo = rc_to_local(&sp.shading, -ray.direction.xyz);
-        const float3 origin = rc_offset_ray_origin(sp.position, sp.geometric_normal);
+        const float3 origin = sp.origin;
 
         // Next-event estimation: one light, chosen by power.
         if (scene->light_count > 0) {

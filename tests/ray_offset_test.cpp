@@ -17,26 +17,28 @@
 namespace rc {
 namespace {
 
-// A large tilted quad (two triangles) of size `size` centred at `centre`, and rays from above
-// that hit it at angles down to grazing; returns the bounce rays and the primary hits.
+// A tilted quad (two triangles) of size `size` centred at `centre`, and rays from above that hit
+// it, at angles down to grazing, within `spread` * size of the centre.
 struct Setup {
     TriangleMesh mesh;
     std::vector<shared::Ray> primary;
 };
 
-Setup tilted_quad(glm::vec3 centre, float size) {
+Setup tilted_quad(glm::vec3 centre, float size, float spread) {
     Setup setup;
     const glm::vec3 e1 = glm::normalize(glm::vec3(1.0f, 0.3f, 0.1f)) * size;
     const glm::vec3 e2 = glm::normalize(glm::cross(glm::vec3(0.2f, 0.1f, 1.0f), e1)) * size;
     setup.mesh = make_quad(centre - 0.5f * (e1 + e2), e1, e2);
     const glm::vec3 normal = glm::normalize(glm::cross(e1, e2));
-    const std::vector<shared::Ray> random = test::random_rays(
-        {centre - glm::vec3(size * 0.3f), centre + glm::vec3(size * 0.3f)}, 20000, 5, 0.0f);
+    const float reach = size * spread;
+    const std::vector<shared::Ray> random =
+        test::random_rays({centre - glm::vec3(reach), centre + glm::vec3(reach)}, 20000, 5, 0.0f);
     for (const shared::Ray& r : random) {
-        // Origins above the plane, aimed at random points of the quad.
+        // Origins above the plane, aimed at random points of the quad near its centre.
         glm::vec3 o(r.origin.x, r.origin.y, r.origin.z);
-        o += normal * (size * 0.01f + std::fabs(glm::dot(o - centre, normal)));
-        const glm::vec3 target = centre + 0.4f * (r.direction.x * e1 + r.direction.y * e2);
+        o += normal * (0.03f * reach + std::fabs(glm::dot(o - centre, normal)));
+        const glm::vec3 target =
+            centre + (spread * 1.3f) * (r.direction.x * e1 + r.direction.y * e2);
         setup.primary.push_back(
             test::make_ray(o, target - o, 0.0f, std::numeric_limits<float>::infinity()));
     }
@@ -83,17 +85,25 @@ SelfHits count_self_hits(const Setup& setup) {
 
 TEST(RayOffset, BouncesNeverHitTheSurfaceTheyLeaveAtAnyScale) {
     size_t raw_total = 0;
-    for (const auto& [centre, size] :
-         {std::pair{glm::vec3(0.0f), 1.0f}, std::pair{glm::vec3(0.01f, -0.02f, 0.0f), 0.05f},
-          std::pair{glm::vec3(1000.0f, 2000.0f, -500.0f), 300.0f},
-          std::pair{glm::vec3(-6.0e4f, 1.0e4f, 3.0e4f), 50.0f},
-          std::pair{glm::vec3(278.0f, 0.0f, 280.0f), 550.0f}}) {
-        const SelfHits hits = count_self_hits(tilted_quad(centre, size));
+    struct Case {
+        glm::vec3 centre;
+        float size;
+        float spread;
+    };
+    for (const Case& c : {Case{glm::vec3(0.0f), 1.0f, 0.3f},
+                          Case{glm::vec3(0.01f, -0.02f, 0.0f), 0.05f, 0.3f},
+                          Case{glm::vec3(1000.0f, 2000.0f, -500.0f), 300.0f, 0.3f},
+                          Case{glm::vec3(-6.0e4f, 1.0e4f, 3.0e4f), 50.0f, 0.3f},
+                          Case{glm::vec3(278.0f, 0.0f, 280.0f), 550.0f, 0.3f},
+                          // Hit points near the origin on a huge quad: the intersection error
+                          // follows the vertices' magnitude, not the hit point's.
+                          Case{glm::vec3(0.0f), 2000.0f, 0.001f}}) {
+        const SelfHits hits = count_self_hits(tilted_quad(c.centre, c.size, c.spread));
         EXPECT_GT(hits.rays, 10000u);
-        EXPECT_EQ(hits.offset, 0u) << "centre " << centre.x << " size " << size;
+        EXPECT_EQ(hits.offset, 0u) << "centre " << c.centre.x << " size " << c.size;
         raw_total += hits.raw;
         std::printf("size %g: %zu rays, %zu self-hits from offset origins, %zu from raw points\n",
-                    size, hits.rays, hits.offset, hits.raw);
+                    c.size, hits.rays, hits.offset, hits.raw);
     }
     // Without the offset, rounding puts many raw origins below the surface: the test can tell.
     EXPECT_GT(raw_total, 100u);

@@ -32,7 +32,7 @@ RC_FUNC Ray rc_diffuse_bounce_ray(Ray ray, Hit hit, RC_GLOBAL const Triangle* tr
     const float u1 = rc_rng_next_float(rng);
     const float u2 = rc_rng_next_float(rng);
     const float3 direction = rc_to_world(rc_cosine_hemisphere(u1, u2), n);
-    bounce.origin = (float4)(rc_offset_ray_origin(p, n), 0.0f);
+    bounce.origin = (float4)(rc_offset_surface_origin(p, n, triangle), 0.0f);
     bounce.direction = (float4)(direction, INFINITY);
     return bounce;
 }

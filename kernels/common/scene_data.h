@@ -30,6 +30,7 @@ typedef struct SceneData {
 // A surface point hit by a ray, oriented towards the side the ray came from.
 typedef struct SurfacePoint {
     float3 position;
+    float3 origin;            // where rays leaving the surface (on the normal's side) start
     float3 geometric_normal;  // unit, facing the incoming ray
     Frame shading;            // shading frame; n faces the incoming ray's side
     float2 uv;
@@ -61,6 +62,7 @@ RC_FUNC SurfacePoint rc_surface_point(const SceneData* scene, Ray ray, Hit hit) 
         ns = -ns;
     }
     sp.geometric_normal = ng;
+    sp.origin = rc_offset_surface_origin(sp.position, ng, triangle);
     sp.uv = (float2)(0.0f, 0.0f);
     float3 tangent = (float3)(0.0f);
     if (shading.uvs.x >= 0) {
