@@ -120,3 +120,96 @@ TEST(Cli, BenchRaysWritesTheDocumentedJson) {
 
 }  // namespace
 }  // namespace rc
+
+namespace rc {
+namespace {
+
+TEST(Cli, FramesWriteOneImagePerFrameThroughTheHashPattern) {
+    const auto dir = test::scratch_dir("cli_frames");
+    const std::string scene = (test::source_dir() / "scenes/moving-sphere/scene.json").string();
+    const test::CommandResult result =
+        test::run_radcache({"render", scene, "-o", (dir / "frame_####.png").string(), "--frames",
+                            "3:5", "--spp", "1", "--width", "24", "--height", "24", "--quiet"});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    for (const char* name : {"frame_0003.png", "frame_0004.png", "frame_0005.png"}) {
+        EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "frame_0002.png"));
+    // Several frames without a pattern is an error before any rendering.
+    const test::CommandResult bad = test::run_radcache(
+        {"render", scene, "-o", (dir / "one.png").string(), "--frames", "0:2", "--spp", "1"});
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_NE(bad.output.find("####"), std::string::npos) << bad.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "one.png"));
+}
+
+TEST(Cli, SaveEveryPowerOfTwoWritesIntermediateImages) {
+    const auto dir = test::scratch_dir("cli_pow2");
+    const test::CommandResult result =
+        test::run_radcache({"render", cornell_box(), "-o", (dir / "out.exr").string(), "--spp", "8",
+                            "--save-every-pow2", "--width", "16", "--height", "16", "--quiet"});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    for (const char* name :
+         {"out.spp1.exr", "out.spp2.exr", "out.spp4.exr", "out.spp8.exr", "out.exr"}) {
+        EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
+    }
+    // The last intermediate image is the final one.
+    const Image final_image = read_image(dir / "out.exr");
+    const Image at_8 = read_image(dir / "out.spp8.exr");
+    EXPECT_EQ(final_image.pixels, at_8.pixels);
+}
+
+TEST(Cli, DefinesOverrideRenderDefaultsAndStatsRecordThem) {
+    const auto dir = test::scratch_dir("cli_defines");
+    const test::CommandResult result =
+        test::run_radcache({"render", cornell_box(), "-o", (dir / "out.exr").string(), "-D",
+                            "spp=3", "-Dmax_depth=2", "-D", "seed=42", "--width", "16", "--height",
+                            "16", "--quiet", "--stats", (dir / "stats.json").string()});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const nlohmann::json stats = nlohmann::json::parse(read_file(dir / "stats.json"));
+    EXPECT_EQ(stats["spp"], 3);
+    EXPECT_EQ(stats["max_depth"], 2);
+    EXPECT_EQ(stats["seed"], 42);
+    // The command line's own options win over -D.
+    const test::CommandResult both = test::run_radcache(
+        {"render", cornell_box(), "-o", (dir / "out2.exr").string(), "-D", "spp=3", "--spp", "2",
+         "--width", "8", "--height", "8", "--quiet", "--stats", (dir / "stats2.json").string()});
+    ASSERT_EQ(both.exit_code, 0) << both.output;
+    EXPECT_EQ(nlohmann::json::parse(read_file(dir / "stats2.json"))["spp"], 2);
+}
+
+TEST(Cli, TimeBudgetRendersAtLeastOnePass) {
+    const auto dir = test::scratch_dir("cli_time");
+    const test::CommandResult result = test::run_radcache(
+        {"render", cornell_box(), "-o", (dir / "out.png").string(), "--time", "0.3", "--width",
+         "16", "--height", "16", "--quiet", "--stats", (dir / "stats.json").string()});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_GE(nlohmann::json::parse(read_file(dir / "stats.json"))["spp"].get<int>(), 1);
+}
+
+TEST(Cli, RenderBadInputsFailBeforeWritingAnything) {
+    const auto dir = test::scratch_dir("cli_render_bad");
+    const std::string out = (dir / "out.png").string();
+    const std::vector<BadCommand> cases = {
+        {{"render", cornell_box(), "-o", out, "--width", "60000", "--height", "60000"},
+         2,
+         "60000x60000"},
+        {{"render", cornell_box(), "-o", out, "-D", "samples=4"}, 2, "samples"},
+        {{"render", cornell_box(), "-o", out, "-D", "spp=lots"}, 2, "spp"},
+        {{"render", cornell_box(), "-o", out, "--frames", "5:1"}, 2, "--frames"},
+        {{"render", cornell_box(), "-o", out, "--aovs", "depth"}, 2, "depth"},
+        {{"render", cornell_box(), "-o", "/proc/nonexistent/out.png"}, 2, "/proc/nonexistent"},
+        {{"render", cornell_box(), "-o", out, "--stats", (dir / "no/such/dir.json").string()},
+         2,
+         "--stats"},
+    };
+    for (const BadCommand& bad : cases) {
+        const test::CommandResult result = test::run_radcache(bad.args);
+        EXPECT_EQ(result.exit_code, bad.exit_code) << result.output;
+        EXPECT_NE(result.output.find(bad.expected), std::string::npos) << result.output;
+    }
+    EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+}  // namespace
+}  // namespace rc

@@ -6,6 +6,7 @@
 
 #include <fstream>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "scene/obj_loader.h"
 #include "test_support.h"
@@ -50,7 +51,7 @@ TEST(ObjLoader, TriangulatesPolygonsAndResolvesNegativeIndices) {
 
 TEST(ObjLoader, RejectsNonFiniteVerticesWithFileAndLine) {
     const auto dir = test::scratch_dir("obj_nan");
-    for (const std::string& bad : {"nan", "inf", "-inf", "1e39", "NaN"}) {
+    for (const std::string bad : {"nan", "inf", "-inf", "1e39", "NaN"}) {
         const auto file =
             write(dir / "bad.obj", "# comment\nv 0 0 0\nv 1 " + bad + " 0\nv 0 1 0\nf 1 2 3\n");
         expect_contains(error_of([&] { load_obj(file); }),
@@ -68,7 +69,7 @@ TEST(ObjLoader, RejectsMalformedVertices) {
 
 TEST(ObjLoader, RejectsOutOfRangeFaceIndicesWithFileAndLine) {
     const auto dir = test::scratch_dir("obj_range");
-    for (const std::string& face : {"f 1 2 9", "f 0 1 2", "f -1 -2 -9", "f 1 2 x"}) {
+    for (const std::string face : {"f 1 2 9", "f 0 1 2", "f -1 -2 -9", "f 1 2 x"}) {
         const auto file = write(dir / "bad.obj", std::string(kSquare) + "\n" + face + "\n");
         expect_contains(error_of([&] { load_obj(file); }), {"bad.obj:6:"});
     }
@@ -125,6 +126,7 @@ struct BadScene {
 TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
     const auto dir = test::scratch_dir("scene_bad");
     write(dir / "ok.obj", std::string(kSquare) + "f 1 2 3\n");
+    write(dir / "flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
     const std::string shape = R"([{"type": "obj", "file": "ok.obj"}])";
     const std::vector<BadScene> cases = {
         {"malformed", "{\n  \"camera\": {\n    \"fov\": 40,,\n", {"malformed JSON", "line 3"}},
@@ -160,6 +162,63 @@ TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
         {"vector_size",
          scene_with(R"({"position": [0,0], "look_at": [0,0,0], "fov": 40})", shape),
          {"camera.position", "three numbers"}},
+        {"unknown_material_type",
+         scene_with(kCamera, shape).replace(1, 0, R"("materials": {"m": {"type": "plastic"}},)"),
+         {"materials.m.type", "plastic"}},
+        {"unknown_material_name",
+         scene_with(kCamera, R"([{"type": "obj", "file": "ok.obj", "material": "gold"}])"),
+         {"shapes[0].material", "gold"}},
+        {"albedo_above_one",
+         scene_with(kCamera, shape)
+             .replace(
+                 1, 0,
+                 R"("materials": {"m": {"type": "diffuse", "reflectance": [0.5, 1.2, 0.5]}},)"),
+         {"materials.m.reflectance", "1.2"}},
+        {"phong_albedo_above_one",
+         scene_with(kCamera, shape)
+             .replace(1, 0,
+                      R"("materials": {"m": {"type": "phong", "diffuse": 0.6, "specular": 0.5}},)"),
+         {"materials.m", "exceeds 1"}},
+        {"negative_albedo",
+         scene_with(kCamera, shape)
+             .replace(1, 0, R"("materials": {"m": {"type": "diffuse", "reflectance": -0.1}},)"),
+         {"materials.m.reflectance"}},
+        {"ward_alpha",
+         scene_with(kCamera, shape)
+             .replace(1, 0, R"("materials": {"m": {"type": "ward", "alpha_x": 0}},)"),
+         {"materials.m.alpha_x"}},
+        {"negative_radiance",
+         scene_with(kCamera, R"([{"type": "rectangle",
+                                  "emitter": {"type": "area", "radiance": [1, -2, 1]}}])"),
+         {"shapes[0].emitter.radiance", "-2"}},
+        {"zero_area_emitter",
+         scene_with(kCamera, R"([{"type": "obj", "file": "flat.obj",
+                                  "emitter": {"type": "area", "radiance": 5}}])"),
+         {"shapes[0]", "zero area"}},
+        {"singular_transform",
+         scene_with(kCamera, R"([{"type": "cube", "transform": [{"scale": [1, 0, 1]}]}])"),
+         {"shapes[0].transform", "not invertible"}},
+        {"bad_transform_step",
+         scene_with(kCamera, R"([{"type": "cube", "transform": [{"shear": 2}]}])"),
+         {"shapes[0].transform[0]", "shear"}},
+        {"unknown_emitter",
+         scene_with(kCamera, shape).replace(1, 0, R"("emitters": [{"type": "laser"}],)"),
+         {"emitters[0].type", "laser"}},
+        {"missing_texture",
+         scene_with(kCamera, shape)
+             .replace(
+                 1, 0,
+                 R"("materials": {"m": {"type": "diffuse", "reflectance": {"type": "bitmap", "filename": "wood.png"}}},)"),
+         {"materials.m.reflectance.filename", "wood.png"}},
+        {"unknown_render_key",
+         scene_with(kCamera, shape).replace(1, 0, R"("render": {"samples": 4},)"),
+         {"render", "samples"}},
+        {"animation_target",
+         scene_with(kCamera, shape)
+             .replace(
+                 1, 0,
+                 R"("animation": {"tracks": [{"target": "shape:nothing", "keyframes": [{"frame": 0}]}]},)"),
+         {"animation.tracks[0].target", "nothing"}},
     };
     for (const BadScene& bad : cases) {
         SCOPED_TRACE(bad.name);
@@ -176,6 +235,87 @@ TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
     }
     expect_contains(error_of([&] { load_scene(dir / "absent.json"); }),
                     {"absent.json", "not found"});
+}
+
+TEST(SceneLoader, MtlMaterialsMapToDiffusePhongAndAreaLights) {
+    const auto dir = test::scratch_dir("scene_mtl");
+    write(dir / "m.mtl",
+          "newmtl matte\nKd 0.5 0.4 0.3\n"
+          "newmtl shiny\nKd 0.2 0.2 0.2\nKs 0.5 0.5 0.5\nNs 40\n"
+          "newmtl lamp\nKd 0 0 0\nKe 3 2 1\n");
+    write(dir / "m.obj", "mtllib m.mtl\n" + std::string(kSquare) +
+                             "usemtl matte\nf 1 2 3\nusemtl shiny\nf 1 3 4\n"
+                             "v 0 0 1\nv 1 0 1\nv 0 1 1\nusemtl lamp\nf 5 6 7\n");
+    const Scene scene = load_scene(
+        write(dir / "scene.json", scene_with(kCamera, R"([{"type": "obj", "file": "m.obj"}])")));
+    ASSERT_EQ(scene.mesh.triangle_count(), 3u);
+    const auto material_of = [&](size_t t) { return scene.materials[scene.shading[t].normals.w]; };
+    EXPECT_EQ(material_of(0).kind, MaterialKind::kDiffuse);
+    EXPECT_EQ(material_of(0).diffuse, glm::vec3(0.5f, 0.4f, 0.3f));
+    EXPECT_EQ(material_of(1).kind, MaterialKind::kPhong);
+    EXPECT_EQ(material_of(1).specular, glm::vec3(0.5f));
+    EXPECT_EQ(material_of(1).exponent, 40.0f);
+    ASSERT_EQ(scene.lights.lights.size(), 1u);
+    EXPECT_EQ(scene.shading[2].uvs.w, 0);  // the Ke triangle is area light 0
+    EXPECT_EQ(scene.shading[0].uvs.w, -1);
+    EXPECT_EQ(scene.lights.lights[0].radiance.x, 3.0f);
+    EXPECT_NEAR(scene.lights.lights[0].shape.x, 0.5f, 1e-6f);  // its area
+}
+
+TEST(SceneLoader, BuiltInShapesAndTransforms) {
+    const auto dir = test::scratch_dir("scene_builtin");
+    const Scene scene = load_scene(write(dir / "scene.json", scene_with(kCamera, R"([
+        {"type": "rectangle", "name": "r",
+         "transform": [{"scale": [2, 3, 1]}, {"rotate": {"axis": [0, 0, 1], "angle": 90}},
+                       {"translate": [10, 0, 0]}]},
+        {"type": "cube", "name": "c", "flip_normals": true,
+         "transform": [{"matrix": [1, 0, 0, 5,  0, 1, 0, 6,  0, 0, 1, 7,  0, 0, 0, 1]}]},
+        {"type": "sphere", "name": "s", "center": [0, 0, 9], "radius": 2}
+    ])")));
+    ASSERT_EQ(scene.shapes.size(), 3u);
+    // Rectangle corner (1, 1, 0): scaled to (2, 3), turned 90 degrees about z to (-3, 2), moved.
+    const Shape& r = scene.shapes[0];
+    const glm::vec3 corner = scene.mesh.positions[scene.mesh.triangles[r.first_triangle].z];
+    EXPECT_NEAR(corner.x, 7.0f, 1e-5f);
+    EXPECT_NEAR(corner.y, 2.0f, 1e-5f);
+    // The cube is 12 triangles around (5, 6, 7), wound inwards.
+    const Shape& c = scene.shapes[1];
+    EXPECT_EQ(c.triangle_count, 12u);
+    const glm::uvec3 t = scene.mesh.triangles[c.first_triangle];
+    const glm::vec3 n = glm::cross(scene.mesh.positions[t.y] - scene.mesh.positions[t.x],
+                                   scene.mesh.positions[t.z] - scene.mesh.positions[t.x]);
+    const glm::vec3 to_centre = glm::vec3(5, 6, 7) - scene.mesh.positions[t.x];
+    EXPECT_GT(glm::dot(n, to_centre), 0.0f);
+    // Every sphere vertex is at the radius; it has smooth normals.
+    const Shape& s = scene.shapes[2];
+    for (size_t i = s.first_triangle; i < s.first_triangle + s.triangle_count; ++i) {
+        const glm::vec3 p = scene.mesh.positions[scene.mesh.triangles[i].x];
+        ASSERT_NEAR(glm::length(p - glm::vec3(0, 0, 9)), 2.0f, 1e-5f);
+        ASSERT_GE(scene.shading[i].normals.x, 0);
+    }
+}
+
+TEST(SceneLoader, RenderDefaultsAndOverrides) {
+    const auto dir = test::scratch_dir("scene_render");
+    write(dir / "ok.obj", std::string(kSquare) + "f 1 2 3\n");
+    const Scene scene = load_scene(
+        write(dir / "scene.json",
+              scene_with(kCamera, R"([{"type": "obj", "file": "ok.obj"}])")
+                  .replace(1, 0, R"("render": {"spp": 32, "max_depth": 5, "seed": 9},)")));
+    RenderSettings settings = scene.render;
+    EXPECT_EQ(settings.spp, 32);
+    EXPECT_EQ(settings.max_depth, 5);
+    settings.apply_override("spp=128");
+    settings.apply_override("method=normals");
+    settings.apply_override("exposure=-1.5");
+    EXPECT_EQ(settings.spp, 128);
+    EXPECT_EQ(settings.method, "normals");
+    EXPECT_EQ(settings.exposure, -1.5f);
+    EXPECT_EQ(settings.seed, 9u);
+    for (const char* bad : {"spp", "spp=0", "spp=many", "depth=3", "=4", "max_depth=-1"}) {
+        RenderSettings copy = settings;
+        EXPECT_THROW(copy.apply_override(bad), Error) << bad;
+    }
 }
 
 TEST(SceneLoader, BadSceneThroughTheCommandLineExitsNonZeroWithoutOutput) {

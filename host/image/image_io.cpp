@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -27,7 +28,7 @@ bool format_of(const std::filesystem::path& path, Format& format, std::string& p
         plugin = "hdr";
     } else if (extension == ".pfm") {
         format = Format::kPfm;
-        plugin = "pnm";
+        plugin = "";  // written here: OpenImageIO 2.4's pnm writer has no PFM output
     } else if (extension == ".png") {
         format = Format::kPng;
         plugin = "png";
@@ -45,6 +46,18 @@ float srgb_encode(float linear) {
         return 1.0f;
     }
     return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+// Portable float map: "PF", the size, -1 (little-endian), then RGB floats bottom row first.
+void write_pfm(const std::filesystem::path& path, int width, int height,
+               const std::vector<float>& rgb) {
+    static_assert(std::endian::native == std::endian::little, "PFM scale -1 means little-endian");
+    std::string bytes = "PF\n" + std::to_string(width) + " " + std::to_string(height) + "\n-1.0\n";
+    const size_t row = static_cast<size_t>(width) * 3;
+    for (int y = height - 1; y >= 0; --y) {
+        bytes.append(reinterpret_cast<const char*>(rgb.data() + y * row), row * sizeof(float));
+    }
+    write_file_atomically(path, bytes);
 }
 
 }  // namespace
@@ -110,6 +123,10 @@ void write_image(const std::filesystem::path& path, const Image& image,
             value = srgb_encode(value * scale);
         }
         spec.attribute("oiio:ColorSpace", "sRGB");
+    }
+    if (format == Format::kPfm) {
+        write_pfm(path, image.width, image.height, data);
+        return;
     }
     replace_file_atomically(path, [&](const std::filesystem::path& temporary) {
         std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(plugin);

@@ -1,5 +1,6 @@
 #include "scene/scene_loader.h"
 
+#include <algorithm>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/trigonometric.hpp>

@@ -1,0 +1,12 @@
+// Test kernel (tests/texture_test.cpp): texture lookups at given coordinates.
+#include "common/texture.h"
+
+__kernel void texture_lookup_probe(uint begin, uint end, TextureInfo info,
+                                   __global const float4* texels, __global const float2* uvs,
+                                   __global float4* out) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    out[i] = (float4)(rc_texture_lookup(texels, info, uvs[i]), 0.0f);
+}
