@@ -12,6 +12,7 @@
 #include "app/cli.h"
 #include "app/commands.h"
 #include "app/device_options.h"
+#include "app/ray_bench.h"
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "bvh/device_tracer.h"
@@ -27,123 +28,6 @@ namespace rc {
 namespace {
 
 constexpr const char* kDenseSceneName = "generated:sphere-grid";
-
-struct CaseResult {
-    std::string name;
-    size_t rays = 0;
-    double device_mrays = 0.0;
-    double embree_mrays = 0.0;
-    double ratio_per_thread = 0.0;
-    double agreement = 0.0;  // fraction of rays with the same answer
-};
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
-
-class RayBench {
-   public:
-    RayBench(Context& context, const Scene& scene, unsigned embree_threads, int repeats)
-        : context_(context),
-          bvh_(build_bvh(scene.mesh)),
-          device_bvh_(context, bvh_),
-          tracer_(context, device_bvh_),
-          embree_(scene.mesh),
-          threads_(embree_threads),
-          repeats_(repeats) {}
-
-    DeviceTracer& tracer() { return tracer_; }
-
-    std::vector<CaseResult> run(const std::vector<shared::Ray>& coherent,
-                                const std::vector<shared::Ray>& incoherent) {
-        std::vector<CaseResult> results;
-        for (const auto& [name, rays] :
-             {std::pair{"coherent", &coherent}, std::pair{"incoherent", &incoherent}}) {
-            results.push_back(closest_case(std::string(name) + "_closest", *rays));
-            results.push_back(any_case(std::string(name) + "_any", *rays));
-        }
-        return results;
-    }
-
-   private:
-    double device_seconds(const std::string& kernel, const std::function<void()>& launch) {
-        launch();  // warm-up: the first launch may generate code for the work-group size
-        std::vector<double> times;
-        for (int r = 0; r < repeats_; ++r) {
-            const double before = context_.kernel_times().at(kernel).seconds;
-            launch();
-            times.push_back(context_.kernel_times().at(kernel).seconds - before);
-        }
-        return median(times);
-    }
-
-    double embree_seconds(const std::function<void()>& trace) {
-        trace();
-        std::vector<double> times;
-        for (int r = 0; r < repeats_; ++r) {
-            const auto start = std::chrono::steady_clock::now();
-            trace();
-            times.push_back(
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-        }
-        return median(times);
-    }
-
-    CaseResult finish(const std::string& name, size_t rays, double device_s, double embree_s,
-                      size_t agreeing) {
-        CaseResult result;
-        result.name = name;
-        result.rays = rays;
-        result.device_mrays = static_cast<double>(rays) / device_s * 1e-6;
-        result.embree_mrays = static_cast<double>(rays) / embree_s * 1e-6;
-        const double device_threads = std::max(1u, context_.device().compute_units);
-        result.ratio_per_thread = (result.device_mrays / device_threads) /
-                                  (result.embree_mrays / static_cast<double>(threads_));
-        result.agreement = static_cast<double>(agreeing) / static_cast<double>(rays);
-        return result;
-    }
-
-    CaseResult closest_case(const std::string& name, const std::vector<shared::Ray>& rays) {
-        const Buffer<shared::Ray> ray_buffer(context_, rays, "bench_rays");
-        Buffer<shared::Hit> hit_buffer(context_, rays.size(), "bench_hits");
-        const double device_s =
-            device_seconds("trace_closest", [&] { tracer_.trace_closest(ray_buffer, hit_buffer); });
-        std::vector<shared::Hit> embree_hits;
-        const double embree_s =
-            embree_seconds([&] { embree_.intersect(rays, embree_hits, threads_); });
-        const std::vector<shared::Hit> device_hits = hit_buffer.download();
-        size_t agreeing = 0;
-        for (size_t i = 0; i < rays.size(); ++i) {
-            agreeing += same_closest_hit(device_hits[i], embree_hits[i]) ? 1 : 0;
-        }
-        return finish(name, rays.size(), device_s, embree_s, agreeing);
-    }
-
-    CaseResult any_case(const std::string& name, const std::vector<shared::Ray>& rays) {
-        const Buffer<shared::Ray> ray_buffer(context_, rays, "bench_rays");
-        Buffer<unsigned> occluded_buffer(context_, rays.size(), "bench_occluded");
-        const double device_s =
-            device_seconds("trace_any", [&] { tracer_.trace_any(ray_buffer, occluded_buffer); });
-        std::vector<unsigned> embree_occluded;
-        const double embree_s =
-            embree_seconds([&] { embree_.occluded(rays, embree_occluded, threads_); });
-        const std::vector<unsigned> device_occluded = occluded_buffer.download();
-        size_t agreeing = 0;
-        for (size_t i = 0; i < rays.size(); ++i) {
-            agreeing += device_occluded[i] == embree_occluded[i] ? 1 : 0;
-        }
-        return finish(name, rays.size(), device_s, embree_s, agreeing);
-    }
-
-    Context& context_;
-    Bvh bvh_;
-    DeviceBvh device_bvh_;
-    DeviceTracer tracer_;
-    EmbreeScene embree_;
-    unsigned threads_;
-    int repeats_;
-};
 
 std::vector<OptionSpec> bench_rays_specs() {
     std::vector<OptionSpec> specs = {
@@ -165,15 +49,6 @@ std::vector<OptionSpec> bench_rays_specs() {
     return specs;
 }
 
-std::string default_cornell_box() {
-    for (const char* candidate :
-         {"scenes/cornell-box/scene.json", RADCACHE_SOURCE_DIR "/scenes/cornell-box/scene.json"}) {
-        if (std::filesystem::is_regular_file(candidate)) {
-            return candidate;
-        }
-    }
-    throw Error("cannot find scenes/cornell-box/scene.json; pass --scene", kExitUsage);
-}
 
 }  // namespace
 
@@ -195,7 +70,7 @@ int run_bench_rays(const std::vector<std::string>& args) {
     }
     std::vector<std::string> scenes = arguments.values("--scene");
     if (scenes.empty()) {
-        scenes = {default_cornell_box(), kDenseSceneName};
+        scenes = {shipped_scene("cornell-box"), kDenseSceneName};
     }
     const std::filesystem::path json_path = arguments.value("--json");
     const int width = static_cast<int>(arguments.integer("--width", 1024, 1, 1 << 14));
@@ -221,7 +96,7 @@ int run_bench_rays(const std::vector<std::string>& args) {
             bench.tracer().camera_rays(camera_params(scene.camera, width, height));
         const std::vector<shared::Ray> incoherent =
             bench.tracer().diffuse_bounce_rays(coherent, seed);
-        const std::vector<CaseResult> results = bench.run(coherent, incoherent);
+        const std::vector<RayCaseResult> results = bench.run(coherent, incoherent);
 
         std::printf("\nscene %s: %zu triangles, device %s (%u compute units), Embree %u threads\n",
                     scene_name.c_str(), scene.mesh.triangle_count(), context.device().name.c_str(),
@@ -234,7 +109,7 @@ int run_bench_rays(const std::vector<std::string>& args) {
         entry["triangles"] = scene.mesh.triangle_count();
         entry["threads"] = threads;
         entry["device_compute_units"] = context.device().compute_units;
-        for (const CaseResult& r : results) {
+        for (const RayCaseResult& r : results) {
             std::printf("%-20s %10zu %14.2f %14.2f %12.3f %9.4f%%\n", r.name.c_str(), r.rays,
                         r.device_mrays, r.embree_mrays, r.ratio_per_thread, 100.0 * r.agreement);
             entry[r.name] = {{"rays", r.rays},

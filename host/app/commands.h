@@ -12,5 +12,10 @@ int run_render_command(const std::vector<std::string>& args);
 int run_bench_command(const std::vector<std::string>& args);
 int run_bench_rays(const std::vector<std::string>& args);
 int run_bench_compile(const std::vector<std::string>& args);
+int run_bench_pt(const std::vector<std::string>& args);
+
+// scenes/<name>/scene.json of the working directory, else of the source tree radcache was built
+// from; Error (exit status 2) naming --scene when neither exists.
+std::string shipped_scene(const std::string& name);
 
 }  // namespace rc

@@ -1,0 +1,108 @@
+// `radcache bench pt`: path-tracing throughput (path samples/s, Mrays/s) and its ratio to the
+// raw traversal throughput of the same device on the same scene, measured in the same run.
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "app/cli.h"
+#include "app/commands.h"
+#include "app/device_options.h"
+#include "app/ray_bench.h"
+#include "methods/path_tracer.h"
+#include "scene/camera.h"
+#include "scene/device_scene.h"
+#include "scene/scene_loader.h"
+#include "util/error.h"
+#include "util/file_io.h"
+
+namespace rc {
+
+int run_bench_pt(const std::vector<std::string>& args) {
+    std::vector<OptionSpec> specs = {
+        {"--scene", "", "FILE", "scene (default scenes/cornell-box/scene.json)"},
+        {"--width", "", "N", "image width (default 512)"},
+        {"--height", "", "N", "image height (default 512)"},
+        {"--spp", "", "N", "timed samples per pixel (default 16)"},
+        {"--json", "", "FILE", "also write the results as JSON"},
+    };
+    for (OptionSpec& spec : device_option_specs()) {
+        specs.push_back(std::move(spec));
+    }
+    const ParsedArguments arguments = parse_arguments("radcache bench pt", args, specs);
+    if (arguments.has("--help")) {
+        std::cout << format_help(
+            "radcache bench pt [options]",
+            "Path-traces the scene and reports path samples/s and Mrays/s (device kernel time),\n"
+            "and the ratio of its ray throughput to raw traversal of incoherent rays on the same\n"
+            "device and scene (bench rays' incoherent_closest): what shading costs.",
+            specs);
+        return 0;
+    }
+    const std::string scene_path =
+        arguments.has("--scene") ? arguments.value("--scene") : shipped_scene("cornell-box");
+    const int width = static_cast<int>(arguments.integer("--width", 512, 1, 1 << 14));
+    const int height = static_cast<int>(arguments.integer("--height", 512, 1, 1 << 14));
+    const int spp = static_cast<int>(arguments.integer("--spp", 16, 1, 1 << 16));
+
+    Context context(context_options(arguments));
+    const Scene scene = load_scene(scene_path);
+    const unsigned threads = std::min(std::max(1u, std::thread::hardware_concurrency()),
+                                      std::max(1u, context.device().compute_units));
+
+    // Path tracing: a one-pass warm-up (kernel build and work-group code generation), then the
+    // timed render.
+    RayBench rays(context, scene, threads, 3);
+    const DeviceScene device_scene(context, scene);
+    PathTracer tracer(context, scene, rays.device_bvh(), device_scene);
+    PathTracerOptions options;
+    options.width = width;
+    options.height = height;
+    options.spp = 1;
+    options.max_depth = scene.render.max_depth;
+    options.rr_depth = scene.render.rr_depth;
+    tracer.render(options);
+    const double before = context.kernel_times().at("path_trace_pass").seconds;
+    options.spp = spp;
+    PathTracerStats stats;
+    tracer.render(options, &stats);
+    const double seconds = context.kernel_times().at("path_trace_pass").seconds - before;
+    const double paths = static_cast<double>(width) * height * spp;
+
+    // Raw traversal on the same scene: camera rays and their diffuse bounces.
+    const std::vector<shared::Ray> coherent =
+        rays.tracer().camera_rays(camera_params(scene.camera, width, height));
+    const std::vector<shared::Ray> incoherent = rays.tracer().diffuse_bounce_rays(coherent, 1);
+    double raw_incoherent = 0.0;
+    for (const RayCaseResult& r : rays.run(coherent, incoherent)) {
+        if (r.name == "incoherent_closest") {
+            raw_incoherent = r.device_mrays;
+        }
+    }
+
+    const double path_rate = paths / seconds;
+    const double mrays = static_cast<double>(stats.rays) / seconds * 1e-6;
+    std::printf("scene %s at %dx%d, %d spp, device %s\n", scene_path.c_str(), width, height, spp,
+                context.device().name.c_str());
+    std::printf("%-34s %12.3f\n", "path samples/s (millions)", path_rate * 1e-6);
+    std::printf("%-34s %12.2f\n", "path tracing Mrays/s", mrays);
+    std::printf("%-34s %12.2f\n", "rays per path", static_cast<double>(stats.rays) / paths);
+    std::printf("%-34s %12.2f\n", "raw incoherent closest Mrays/s", raw_incoherent);
+    std::printf("%-34s %12.3f\n", "ratio (shading cost)", mrays / raw_incoherent);
+    if (arguments.has("--json")) {
+        const nlohmann::json report = {{"device", context.device().name},
+                                       {"scene", scene_path},
+                                       {"resolution", {width, height}},
+                                       {"spp", spp},
+                                       {"kernel_seconds", seconds},
+                                       {"path_samples_per_second", path_rate},
+                                       {"mrays_per_second", mrays},
+                                       {"rays_per_path", static_cast<double>(stats.rays) / paths},
+                                       {"raw_incoherent_closest_mrays", raw_incoherent},
+                                       {"ratio", mrays / raw_incoherent}};
+        write_file_atomically(arguments.value("--json"), report.dump(2) + "\n");
+    }
+    return 0;
+}
+
+}  // namespace rc
