@@ -39,8 +39,8 @@ ChiSquareResult chi_square_test(const std::vector<double>& observed,
     result.degrees_of_freedom = std::max(1, bins - 1);
     const double k = result.degrees_of_freedom;
     // Wilson-Hilferty: (X / k)^(1/3) is nearly normal with mean 1 - 2/(9k), variance 2/(9k).
-    const double z = (std::cbrt(result.statistic / k) - (1.0 - 2.0 / (9.0 * k))) /
-                     std::sqrt(2.0 / (9.0 * k));
+    const double z =
+        (std::cbrt(result.statistic / k) - (1.0 - 2.0 / (9.0 * k))) / std::sqrt(2.0 / (9.0 * k));
     result.p_value = 0.5 * std::erfc(z / std::sqrt(2.0));
     return result;
 }

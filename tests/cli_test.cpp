@@ -199,6 +199,7 @@ TEST(Cli, RenderBadInputsFailBeforeWritingAnything) {
         {{"render", cornell_box(), "-o", out, "--frames", "5:1"}, 2, "--frames"},
         {{"render", cornell_box(), "-o", out, "--aovs", "depth"}, 2, "depth"},
         {{"render", cornell_box(), "-o", "/proc/nonexistent/out.png"}, 2, "/proc/nonexistent"},
+        {{"render", cornell_box(), "-o", "/proc/out.png"}, 2, "not writable"},
         {{"render", cornell_box(), "-o", out, "--stats", (dir / "no/such/dir.json").string()},
          2,
          "--stats"},

@@ -90,8 +90,7 @@ TEST(LightSampling, LightsAreChosenInProportionToPower) {
     const Scene scene = light_scene();
     ASSERT_EQ(scene.lights.lights.size(), 4u);
     // Powers: area pi A lum(L); point 4 pi lum(I); spot 2 pi (1 - cos((cutoff + beam) / 2)) lum(I).
-    const double power[4] = {kPi * 2.0 * luminance({4, 2, 1}), kPi * 0.02 * 10.0,
-                             4.0 * kPi * 2.0,
+    const double power[4] = {kPi * 2.0 * luminance({4, 2, 1}), kPi * 0.02 * 10.0, 4.0 * kPi * 2.0,
                              2.0 * kPi * (1.0 - std::cos(25.0 * kPi / 180.0)) * 5.0};
     const double total = power[0] + power[1] + power[2] + power[3];
     const size_t n = 1 << 20;

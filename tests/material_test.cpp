@@ -1,12 +1,13 @@
 // Materials (kernels/common/material.h): chi-square goodness of fit of every sampler against its
 // pdf, sample/pdf/eval consistency, and directional albedo <= 1 for every BRDF.
+#include "scene/material.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
 
 #include "chi_square.h"
-#include "scene/material.h"
 #include "shared/types.h"
 #include "test_support.h"
 
@@ -40,16 +41,16 @@ std::vector<Case> cases() {
     phong_only.exponent = 20.0f;
     list.push_back({"phong specular only", phong_only});
     for (const auto& [ax, ay] : {std::pair{0.1f, 0.1f}, std::pair{0.25f, 0.25f},
-                                std::pair{0.1f, 0.4f}, std::pair{0.6f, 0.3f}}) {
+                                 std::pair{0.1f, 0.4f}, std::pair{0.6f, 0.3f}}) {
         Material ward;
         ward.kind = MaterialKind::kWard;
         ward.diffuse = glm::vec3(0.2f);
         ward.specular = glm::vec3(0.8f);
         ward.alpha_x = ax;
         ward.alpha_y = ay;
-        list.push_back({"ward " + std::to_string(ax).substr(0, 4) + "/" +
-                            std::to_string(ay).substr(0, 4),
-                        ward});
+        list.push_back(
+            {"ward " + std::to_string(ax).substr(0, 4) + "/" + std::to_string(ay).substr(0, 4),
+             ward});
     }
     Material ward_only = list.back().material;
     ward_only.diffuse = glm::vec3(0.0f);
@@ -110,7 +111,8 @@ Quadrature bin_quadrature(const SphereBins& bins, int cells) {
                         for (int b = 0; b < 4; ++b) {
                             const double theta =
                                 (i * cells + ci + 0.5 + 0.5 * kGaussNodes[a]) * d_theta;
-                            const double phi = (j * cells + cj + 0.5 + 0.5 * kGaussNodes[b]) * d_phi;
+                            const double phi =
+                                (j * cells + cj + 0.5 + 0.5 * kGaussNodes[b]) * d_phi;
                             q.directions.push_back(
                                 {static_cast<float>(std::sin(theta) * std::cos(phi)),
                                  static_cast<float>(std::sin(theta) * std::sin(phi)),

@@ -1,6 +1,8 @@
 // The reference path tracer against analytic answers (the furnace, a plane under a constant
 // sky), against its stored Cornell-box reference by a per-pixel statistical test, and for
 // determinism and AOV consistency.
+#include "methods/path_tracer.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "image/image_io.h"
-#include "methods/path_tracer.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
@@ -144,6 +145,23 @@ TEST(PathTracer, AovsAreConsistent) {
     EXPECT_EQ(r.image.channel_names[0], "R");
     EXPECT_EQ(r.image.channel_names[6], "indirect.R");
     EXPECT_EQ(r.image.channel_names[15], "variance.R");
+}
+
+// A sample that is NaN or infinite is counted, reported with its pixel, and left out of the
+// image (a material with a NaN reflectance, which the loader would refuse, makes every one so).
+TEST(PathTracer, NonFiniteSamplesAreCountedAndDropped) {
+    Scene scene = furnace();
+    scene.materials[0].diffuse = glm::vec3(std::nanf(""), 0.5f, 0.5f);
+    PathTracerOptions options;
+    options.width = 8;
+    options.height = 8;
+    options.spp = 3;
+    const Render r = render(scene, options);
+    EXPECT_EQ(r.stats.nonfinite_samples, 8u * 8u * 3u);
+    EXPECT_EQ(r.stats.first_nonfinite_pixel, 0);
+    for (float v : r.image.pixels) {
+        ASSERT_TRUE(std::isfinite(v));
+    }
 }
 
 bool bitwise_equal(const Image& a, const Image& b) {

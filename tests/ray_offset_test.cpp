@@ -90,14 +90,14 @@ TEST(RayOffset, BouncesNeverHitTheSurfaceTheyLeaveAtAnyScale) {
         float size;
         float spread;
     };
-    for (const Case& c : {Case{glm::vec3(0.0f), 1.0f, 0.3f},
-                          Case{glm::vec3(0.01f, -0.02f, 0.0f), 0.05f, 0.3f},
-                          Case{glm::vec3(1000.0f, 2000.0f, -500.0f), 300.0f, 0.3f},
-                          Case{glm::vec3(-6.0e4f, 1.0e4f, 3.0e4f), 50.0f, 0.3f},
-                          Case{glm::vec3(278.0f, 0.0f, 280.0f), 550.0f, 0.3f},
-                          // Hit points near the origin on a huge quad: the intersection error
-                          // follows the vertices' magnitude, not the hit point's.
-                          Case{glm::vec3(0.0f), 2000.0f, 0.001f}}) {
+    for (const Case& c :
+         {Case{glm::vec3(0.0f), 1.0f, 0.3f}, Case{glm::vec3(0.01f, -0.02f, 0.0f), 0.05f, 0.3f},
+          Case{glm::vec3(1000.0f, 2000.0f, -500.0f), 300.0f, 0.3f},
+          Case{glm::vec3(-6.0e4f, 1.0e4f, 3.0e4f), 50.0f, 0.3f},
+          Case{glm::vec3(278.0f, 0.0f, 280.0f), 550.0f, 0.3f},
+          // Hit points near the origin on a huge quad: the intersection error
+          // follows the vertices' magnitude, not the hit point's.
+          Case{glm::vec3(0.0f), 2000.0f, 0.001f}}) {
         const SelfHits hits = count_self_hits(tilted_quad(c.centre, c.size, c.spread));
         EXPECT_GT(hits.rays, 10000u);
         EXPECT_EQ(hits.offset, 0u) << "centre " << c.centre.x << " size " << c.size;

@@ -59,7 +59,8 @@ Image select_layers(const Image& image, const std::vector<std::string>& layers) 
     const size_t pixels = static_cast<size_t>(image.width) * image.height;
     for (size_t p = 0; p < pixels; ++p) {
         for (size_t k = 0; k < channels.size(); ++k) {
-            selected.pixels[p * channels.size() + k] = image.pixels[p * image.channels + channels[k]];
+            selected.pixels[p * channels.size() + k] =
+                image.pixels[p * image.channels + channels[k]];
         }
     }
     return selected;

@@ -1,12 +1,12 @@
 #include "image/image_io.h"
 
 #include <OpenImageIO/imageio.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 
 #include "util/error.h"
 #include "util/file_io.h"
@@ -79,11 +79,18 @@ void check_output_path(const std::filesystem::path& path) {
             path.string() + ": output directory '" + directory.string() + "' does not exist",
             kExitUsage);
     }
-    if (::access(directory.c_str(), W_OK) != 0) {
-        throw Error(
-            path.string() + ": output directory '" + directory.string() + "' is not writable",
-            kExitUsage);
+    // Create and remove a probe file: permission bits do not tell root about read-only mounts.
+    const std::filesystem::path probe = temporary_sibling(path);
+    {
+        std::ofstream out(probe);
+        if (!out) {
+            throw Error(
+                path.string() + ": output directory '" + directory.string() + "' is not writable",
+                kExitUsage);
+        }
     }
+    std::error_code ignored;
+    std::filesystem::remove(probe, ignored);
     if (std::filesystem::is_directory(path)) {
         throw Error(path.string() + ": output path is a directory", kExitUsage);
     }
