@@ -38,15 +38,16 @@ Render render(const Scene& scene, PathTracerOptions options) {
     return render(scene, std::move(options), test::shared_context());
 }
 
-// Mean of channel c over the image and the standard error of that mean (from the variance
-// layer, channels 15..17).
-std::pair<double, double> mean_and_error(const Image& image, int c) {
+// Mean of channel c over an image of `spp` samples per pixel and the standard error of that mean
+// (from the stddev layer, channels 15..17).
+std::pair<double, double> mean_and_error(const Image& image, int c, int spp) {
     double sum = 0.0;
     double variance = 0.0;
     const size_t pixels = static_cast<size_t>(image.width) * image.height;
     for (size_t p = 0; p < pixels; ++p) {
         sum += image.pixels[p * image.channels + c];
-        variance += image.pixels[p * image.channels + 15 + c];
+        const double deviation = image.pixels[p * image.channels + 15 + c];
+        variance += deviation * deviation / spp;
     }
     return {sum / pixels, std::sqrt(variance) / pixels};
 }
@@ -68,7 +69,7 @@ TEST(PathTracer, FurnaceRadianceIsEmissionOverOneMinusAlbedo) {
         ASSERT_TRUE(std::isfinite(v));
     }
     for (int c = 0; c < 3; ++c) {
-        const auto [mean, error] = mean_and_error(r.image, c);
+        const auto [mean, error] = mean_and_error(r.image, c, options.spp);
         EXPECT_NEAR(mean, 2.0, 0.02) << "channel " << c << ", standard error " << error;
         EXPECT_LT(error, 0.004);
     }
@@ -88,7 +89,7 @@ TEST(PathTracer, MaxDepthCountsBounces) {
         for (int i = 0; i <= depth; ++i) {
             expected += 0.5 * std::pow(0.75, i);
         }
-        const auto [mean, error] = mean_and_error(r.image, 0);
+        const auto [mean, error] = mean_and_error(r.image, 0, options.spp);
         if (depth == 0) {
             EXPECT_DOUBLE_EQ(mean, 0.5);
         } else {
@@ -115,7 +116,7 @@ TEST(PathTracer, DiffusePlaneUnderConstantSkyReflectsAlbedoTimesRadiance) {
     const Render r = render(scene, options);
     const double radiance[3] = {1.0, 0.5, 0.25};
     for (int c = 0; c < 3; ++c) {
-        const auto [mean, error] = mean_and_error(r.image, c);
+        const auto [mean, error] = mean_and_error(r.image, c, options.spp);
         EXPECT_NEAR(mean, 0.6 * radiance[c], 0.01 * 0.6 * radiance[c])
             << "channel " << c << ", standard error " << error;
         EXPECT_LT(5.0 * error, 0.01 * 0.6 * radiance[c]);
@@ -144,7 +145,7 @@ TEST(PathTracer, AovsAreConsistent) {
     }
     EXPECT_EQ(r.image.channel_names[0], "R");
     EXPECT_EQ(r.image.channel_names[6], "indirect.R");
-    EXPECT_EQ(r.image.channel_names[15], "variance.R");
+    EXPECT_EQ(r.image.channel_names[15], "stddev.R");
 }
 
 // A sample that is NaN or infinite is counted, reported with its pixel, and left out of the
@@ -162,6 +163,106 @@ TEST(PathTracer, NonFiniteSamplesAreCountedAndDropped) {
     for (float v : r.image.pixels) {
         ASSERT_TRUE(std::isfinite(v));
     }
+}
+
+int channel_index(const Image& image, const std::string& name) {
+    for (int c = 0; c < image.channels; ++c) {
+        if (image.channel_names[c] == name) {
+            return c;
+        }
+    }
+    ADD_FAILURE() << "no channel " << name;
+    return 0;
+}
+
+// Variance of rounding a value to half precision (uniform over one half ulp).
+double half_rounding_variance(double value) {
+    const double magnitude = std::max(std::fabs(value), 6.1e-5);  // the smallest normal half
+    const double ulp = std::ldexp(1.0, static_cast<int>(std::floor(std::log2(magnitude))) - 10);
+    return ulp * ulp / 12.0;
+}
+
+// The stored reference (scenes/cornell-box/reference.exr, 512^2 at 4096 samples per pixel, with
+// each pixel's per-sample standard deviation) box-filtered 4 x 4 is the expected value of a 128^2
+// render.
+// Per pixel and channel z = (render - reference) / sqrt(var_render + var_reference + var_half),
+// where var_render, the variance of the render's 64-sample mean, comes from the reference's
+// per-sample variance (65 536 samples per test pixel) rather than from the render's own 64
+// samples: skewed pixels (rare bright paths) underestimate their variance from few samples.
+// Beyond |z| = 5 a normal variable lies with probability 6e-7; the means of 64 skewed samples are
+// not quite normal, so the test allows 0.1% of the 49 152 values beyond 5, and checks the
+// image-wide sum of differences against its standard deviation (|Z| < 5) for a global bias.
+TEST(PathTracer, CornellBoxAgreesWithItsReferenceByPerPixelZTest) {
+    const Image reference = read_image(test::source_dir() / "scenes/cornell-box/reference.exr");
+    const double reference_spp = 4096.0;
+    const int factor = 4;
+    const int width = reference.width / factor;
+    const int height = reference.height / factor;
+    PathTracerOptions options;
+    options.width = width;
+    options.height = height;
+    options.spp = 64;
+    options.seed = 12345;
+    const Render r = render(test::load_cornell_box(), options);
+    EXPECT_EQ(r.stats.nonfinite_samples, 0u);
+    size_t outliers = 0;
+    size_t values = 0;
+    for (int c = 0; c < 3; ++c) {
+        const std::string channel(1, "RGB"[c]);
+        const int ref_c = channel_index(reference, channel);
+        const int ref_deviation = channel_index(reference, "stddev." + channel);
+        const int test_c = channel_index(r.image, channel);
+        const int ref_indirect = channel_index(reference, "indirect." + channel);
+        const int test_indirect = channel_index(r.image, "indirect." + channel);
+        double sum_difference = 0.0;
+        double sum_variance = 0.0;
+        double indirect_reference = 0.0;
+        double indirect_render = 0.0;
+        for (int y = 0; y < height; ++y) {
+            for (int x = 0; x < width; ++x) {
+                double mean = 0.0;
+                double mean_square = 0.0;
+                double within = 0.0;  // mean per-sample variance of the sub-pixels
+                double reference_variance = 0.0;
+                for (int dy = 0; dy < factor; ++dy) {
+                    for (int dx = 0; dx < factor; ++dx) {
+                        const int rx = x * factor + dx;
+                        const int ry = y * factor + dy;
+                        const double v = reference.at(rx, ry, ref_c);
+                        const double deviation = reference.at(rx, ry, ref_deviation);
+                        mean += v;
+                        mean_square += v * v;
+                        within += deviation * deviation;
+                        reference_variance +=
+                            deviation * deviation / reference_spp + half_rounding_variance(v);
+                        indirect_reference += reference.at(rx, ry, ref_indirect);
+                    }
+                }
+                const double n = factor * factor;
+                mean /= n;
+                // A render sample lands in a random sub-pixel: its variance is the mean
+                // sub-pixel variance plus the variance of the sub-pixel means.
+                const double per_sample = within / n + std::max(0.0, mean_square / n - mean * mean);
+                const double total_variance =
+                    per_sample / options.spp + reference_variance / (n * n);
+                const double difference = r.image.at(x, y, test_c) - mean;
+                sum_difference += difference;
+                sum_variance += total_variance;
+                indirect_render += r.image.at(x, y, test_indirect);
+                ++values;
+                if (difference * difference > 25.0 * total_variance) {
+                    ++outliers;
+                }
+            }
+        }
+        const double z = sum_difference / std::sqrt(sum_variance);
+        EXPECT_LT(std::fabs(z), 5.0) << "channel " << c << ": image-wide z " << z;
+        // The indirect layer: image-wide means within 2%.
+        indirect_reference /= factor * factor;
+        EXPECT_NEAR(indirect_render / indirect_reference, 1.0, 0.02) << "indirect channel " << c;
+    }
+    EXPECT_LE(outliers, values / 1000) << outliers << " of " << values << " beyond 5 sigma";
+    std::printf("%zu of %zu values beyond 5 sigma\n", outliers, values);
 }
 
 bool bitwise_equal(const Image& a, const Image& b) {

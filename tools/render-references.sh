@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Renders the path-traced reference of every non-analytic shipped scene into
-# scenes/<name>/reference.exr (half floats: beauty, direct, indirect and the per-pixel variance
-# of the beauty mean) and records how in scenes/<name>/reference.json.
+# scenes/<name>/reference.exr (half floats: beauty, direct, indirect and the per-sample standard
+# deviation of the beauty) and records how in scenes/<name>/reference.json.
 # Usage: tools/render-references.sh [scene ...]   (default: all; build radcache first)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,7 +18,7 @@ for name in "${scenes[@]}"; do
     n=${spp[$name]:?"no reference settings for scene $name"}
     dir=scenes/$name
     command=("$radcache" render "$dir/scene.json" -o "$dir/reference.exr" --spp "$n" --seed "$seed"
-             --half --aovs beauty,direct,indirect,variance --stats "$dir/reference.stats.json" --quiet)
+             --half --aovs beauty,direct,indirect,stddev --stats "$dir/reference.stats.json" --quiet)
     echo "rendering $name at $n spp"
     "${command[@]}"
     python3 - "$dir" "$n" "$seed" "${command[*]}" <<'PY'
@@ -27,7 +27,7 @@ directory, spp, seed, command = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]),
 stats = json.load(open(f"{directory}/reference.stats.json"))
 record = {
     "file": "reference.exr",
-    "layers": "beauty (R, G, B), direct, indirect, variance (of the beauty mean per pixel)",
+    "layers": "beauty (R, G, B), direct, indirect, stddev (of one beauty sample of the pixel)",
     "storage": "OpenEXR, half float, zip",
     "spp": spp,
     "seed": seed,

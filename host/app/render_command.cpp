@@ -54,7 +54,7 @@ std::vector<OptionSpec> render_option_specs() {
         {"--half", "", "", ".exr: store half floats"},
         {"--aovs", "", "LIST",
          ".exr: the layers to write, comma-separated (default all: beauty, direct, indirect, "
-         "albedo, normal, variance)"},
+         "albedo, normal, stddev)"},
         {"--stats", "", "FILE", "write timings and counts as JSON"},
         {"--quiet", "-q", "", "print nothing but errors"},
     };

@@ -11,7 +11,7 @@
 namespace rc {
 
 const char* const kPathTracerAovs[6] = {"beauty", "direct", "indirect",
-                                        "albedo", "normal", "variance"};
+                                        "albedo", "normal", "stddev"};
 
 namespace {
 
@@ -57,9 +57,11 @@ Image PathTracer::resolve(const Buffer<shared::float4>& film, int width, int hei
             out[6 + c] = (&s[3].x)[c] * inv;
             out[9 + c] = (&s[4].x)[c] * inv;
             out[12 + c] = (&s[5].x)[c] * inv;
-            // Variance of the mean: the sample variance over n.
+            // Standard deviation of one sample, unbiased variance estimate (that of the mean is
+            // stddev / sqrt(n)): unlike the mean's variance it keeps its precision in half floats.
             out[15 + c] =
-                n > 1.0f ? std::max(0.0f, square[c] - mean[c] * mean[c]) / (n - 1.0f) : 0.0f;
+                n > 1.0f ? std::sqrt(std::max(0.0f, square[c] - mean[c] * mean[c]) * n / (n - 1.0f))
+                         : 0.0f;
         }
     }
     return image;

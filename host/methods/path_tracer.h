@@ -36,7 +36,8 @@ struct PathTracerStats {
 };
 
 // The AOV layers of a path-traced image, in channel order (3 channels each): beauty (R, G, B),
-// then direct, indirect, albedo, normal and variance (of the beauty mean per pixel).
+// then direct, indirect, albedo, normal and stddev (the standard deviation of one beauty sample
+// of the pixel, the unbiased sample estimate; the mean's is stddev / sqrt(spp)).
 extern const char* const kPathTracerAovs[6];
 
 class PathTracer {
