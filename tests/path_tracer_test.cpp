@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
@@ -15,6 +16,7 @@
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
+#include "util/file_io.h"
 
 namespace rc {
 namespace {
@@ -193,8 +195,10 @@ double half_rounding_variance(double value) {
 // not quite normal, so the test allows 0.1% of the 49 152 values beyond 5, and checks the
 // image-wide sum of differences against its standard deviation (|Z| < 5) for a global bias.
 TEST(PathTracer, CornellBoxAgreesWithItsReferenceByPerPixelZTest) {
-    const Image reference = read_image(test::source_dir() / "scenes/cornell-box/reference.exr");
-    const double reference_spp = 4096.0;
+    const std::filesystem::path folder = test::source_dir() / "scenes/cornell-box";
+    const Image reference = read_image(folder / "reference.exr");
+    const double reference_spp =
+        nlohmann::json::parse(read_file(folder / "reference.json"))["spp"].get<double>();
     const int factor = 4;
     const int width = reference.width / factor;
     const int height = reference.height / factor;
