@@ -42,7 +42,7 @@ std::vector<OptionSpec> render_option_specs() {
         {"--method", "", "NAME", std::string("rendering method: ") + kMethods + " (default pt)"},
         {"--spp", "", "N", "samples per pixel (default: the scene's render.spp, else 16)"},
         {"--time", "", "SECONDS", "render passes until this much time has passed, not to --spp"},
-        {"--seed", "", "N", "random seed (default 0)"},
+        {"--seed", "", "N", "random seed (default: the scene's render.seed, else 0)"},
         {"--width", "", "N", "image width in pixels (default: the scene camera's)"},
         {"--height", "", "N", "image height in pixels (default: the scene camera's)"},
         {"--frames", "", "A:B", "render frames A to B of an animated scene, one image each"},
