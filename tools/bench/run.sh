@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs radcache's benchmarks side by side on one device and keeps the results with the machine
 # they ran on. Usage: tools/bench/run.sh [OUTDIR] [radcache options, e.g. --device 0:0]
-# Writes OUTDIR/machine.txt, OUTDIR/rays.json, OUTDIR/compile.json and prints the tables.
+# Writes OUTDIR/machine.txt, OUTDIR/compile.json, OUTDIR/rays.json, OUTDIR/pt.json and prints
+# the tables.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 out="${1:-build/bench}"
@@ -18,3 +19,4 @@ radcache=build/radcache
 cat "$out/machine.txt"
 "$radcache" bench compile --json "$out/compile.json" "$@"
 "$radcache" bench rays --json "$out/rays.json" "$@"
+"$radcache" bench pt --json "$out/pt.json" "$@"
