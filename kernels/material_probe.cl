@@ -5,9 +5,8 @@
 
 // Sample i: (wi, pdf) into samples[i] and the BRDF value into values[i]; pdf = -1 when the
 // sampler fails (a direction below the surface).
-__kernel void material_sample_probe(uint begin, uint end, Material material, float4 wo,
-                                    uint seed, __global float4* samples,
-                                    __global float4* values) {
+__kernel void material_sample_probe(uint begin, uint end, Material material, float4 wo, uint seed,
+                                    __global float4* samples, __global float4* values) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {
         return;

@@ -49,7 +49,6 @@ std::vector<OptionSpec> bench_rays_specs() {
     return specs;
 }
 
-
 }  // namespace
 
 int run_bench_rays(const std::vector<std::string>& args) {

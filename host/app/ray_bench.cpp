@@ -77,8 +77,7 @@ RayCaseResult RayBench::closest_case(const std::string& name,
     const double device_s =
         device_seconds("trace_closest", [&] { tracer_.trace_closest(ray_buffer, hit_buffer); });
     std::vector<shared::Hit> embree_hits;
-    const double embree_s =
-        embree_seconds([&] { embree_.intersect(rays, embree_hits, threads_); });
+    const double embree_s = embree_seconds([&] { embree_.intersect(rays, embree_hits, threads_); });
     const std::vector<shared::Hit> device_hits = hit_buffer.download();
     size_t agreeing = 0;
     for (size_t i = 0; i < rays.size(); ++i) {

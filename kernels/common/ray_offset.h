@@ -23,8 +23,8 @@ RC_FUNC float3 rc_offset_ray_origin(float3 p, float3 n) {
 // the largest vertex coordinate (pbrt-v3 §3.9 bounds these errors by small multiples of
 // epsilon times the vertex magnitudes), then by Wächter and Binder's offset.
 RC_FUNC float3 rc_offset_surface_origin(float3 p, float3 n, RC_GLOBAL const Triangle* triangle) {
-    const float3 magnitude = fmax(fabs(triangle->v0.xyz), fmax(fabs(triangle->v1.xyz),
-                                                               fabs(triangle->v2.xyz)));
+    const float3 magnitude =
+        fmax(fabs(triangle->v0.xyz), fmax(fabs(triangle->v1.xyz), fabs(triangle->v2.xyz)));
     const float scale = fmax(magnitude.x, fmax(magnitude.y, magnitude.z));
     const float kErrorUlps = 32.0f * 5.9604645e-8f;  // 32 * 2^-24
     return rc_offset_ray_origin(p + (kErrorUlps * scale) * n, n);

@@ -112,14 +112,15 @@ RC_SHARED_END
 #define RC_SHARED_LAYOUTS(STRUCT, FIELD)                                                         \
     STRUCT(Ray)                                                                                  \
     FIELD(Ray, origin)                                                                           \
-    FIELD(Ray, direction) STRUCT(Hit) FIELD(Hit, t) FIELD(Hit, primitive) FIELD(Hit, u)          \
-        FIELD(Hit, v) STRUCT(BvhNode) FIELD(BvhNode, lower_x) FIELD(BvhNode, upper_x)            \
-            FIELD(BvhNode, lower_y) FIELD(BvhNode, upper_y) FIELD(BvhNode, lower_z)              \
-                FIELD(BvhNode, upper_z) FIELD(BvhNode, child) FIELD(BvhNode, count)              \
-                    STRUCT(Triangle) FIELD(Triangle, v0) FIELD(Triangle, v1) FIELD(Triangle, v2) \
-                        STRUCT(CameraParams) FIELD(CameraParams, origin)                         \
-                            FIELD(CameraParams, top_left) FIELD(CameraParams, right)             \
-                                FIELD(CameraParams, down) FIELD(CameraParams, resolution)
+    FIELD(Ray, direction)                                                                        \
+    STRUCT(Hit) FIELD(Hit, t) FIELD(Hit, primitive) FIELD(Hit, u) FIELD(Hit, v) STRUCT(BvhNode)  \
+        FIELD(BvhNode, lower_x) FIELD(BvhNode, upper_x) FIELD(BvhNode, lower_y)                  \
+            FIELD(BvhNode, upper_y) FIELD(BvhNode, lower_z) FIELD(BvhNode, upper_z)              \
+                FIELD(BvhNode, child) FIELD(BvhNode, count) STRUCT(Triangle) FIELD(Triangle, v0) \
+                    FIELD(Triangle, v1) FIELD(Triangle, v2) STRUCT(CameraParams)                 \
+                        FIELD(CameraParams, origin) FIELD(CameraParams, top_left)                \
+                            FIELD(CameraParams, right) FIELD(CameraParams, down)                 \
+                                FIELD(CameraParams, resolution)
 
 #ifndef __OPENCL_VERSION__
 static_assert(sizeof(rc::shared::float4) == 16 && alignof(rc::shared::float4) == 16);
