@@ -1,31 +1,20 @@
 // Test kernels (tests/light_sampling_test.cpp): next-event estimation's light sampling from one
 // point.
 #include "common/light.h"
+#include "scene_arguments.h"
 #include "shared/rng.h"
 
-// Sample i from point p: light index and pdf into choice[i] (x: light, y: pdf), the direction
-// and the target point into geometry[2i], geometry[2i + 1], the radiance into radiance[i].
-__kernel void light_sample_probe(uint begin, uint end, float4 p, uint seed,
-                                 __global const BvhNode* nodes, __global const Triangle* triangles,
-                                 __global const uint* triangle_of_primitive,
-                                 __global const Light* lights, __global const float* light_cdf,
-                                 __global const uint* light_triangles,
-                                 __global const float* light_triangle_cdf, int light_count,
+// Sample i from point p: light index and pdf into choice[i] (x: light, y: pdf, z: delta, w:
+// infinite), the direction and the target point into geometry[2i], geometry[2i + 1], the
+// radiance into radiance[i].
+__kernel void light_sample_probe(uint begin, uint end, float4 p, uint seed, RC_SCENE_PARAMETERS,
                                  __global float4* choice, __global float4* geometry,
                                  __global float4* radiance) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {
         return;
     }
-    SceneData scene;
-    scene.nodes = nodes;
-    scene.triangles = triangles;
-    scene.triangle_of_primitive = triangle_of_primitive;
-    scene.lights = lights;
-    scene.light_cdf = light_cdf;
-    scene.light_triangles = light_triangles;
-    scene.light_triangle_cdf = light_triangle_cdf;
-    scene.light_count = light_count;
+    const SceneData scene = RC_SCENE_DATA();
     RngStream rng = rc_rng_stream(seed, 0u, i, 0u);
     const float u = rc_rng_next_float(&rng);
     const float u1 = rc_rng_next_float(&rng);

@@ -2,41 +2,17 @@
 // accumulated into the film. Each pixel is written by one work item per pass, so the sums are
 // deterministic.
 #include "path_tracer.h"
+#include "scene_arguments.h"
 
 // film: for each pixel 6 float4 sums: beauty, beauty squared, direct, indirect, albedo, normal.
 // counters: [0] rays traced, [1] non-finite samples (dropped), [2] first pixel with one.
 __kernel void path_trace_pass(uint begin, uint end, PathTracerParams params, CameraParams camera,
-                              __global const BvhNode* nodes, __global const Triangle* triangles,
-                              __global const uint* triangle_of_primitive,
-                              __global const TriangleShading* shading,
-                              __global const float4* normals, __global const float2* uvs,
-                              __global const Material* materials,
-                              __global const TextureInfo* textures, __global const float4* texels,
-                              __global const Light* lights, __global const float* light_cdf,
-                              __global const uint* light_triangles,
-                              __global const float* light_triangle_cdf, __global float4* film,
-                              __global uint* counters) {
+                              RC_SCENE_PARAMETERS, __global float4* film, __global uint* counters) {
     const uint pixel = begin + (uint)get_global_id(0);
     if (pixel >= end) {
         return;
     }
-    SceneData scene;
-    scene.nodes = nodes;
-    scene.triangles = triangles;
-    scene.triangle_of_primitive = triangle_of_primitive;
-    scene.shading = shading;
-    scene.normals = normals;
-    scene.uvs = uvs;
-    scene.materials = materials;
-    scene.textures = textures;
-    scene.texels = texels;
-    scene.lights = lights;
-    scene.light_cdf = light_cdf;
-    scene.light_triangles = light_triangles;
-    scene.light_triangle_cdf = light_triangle_cdf;
-    scene.light_count = params.depth.z;
-    scene.environment = params.depth.w;
-
+    const SceneData scene = RC_SCENE_DATA();
     const PathSample s = rc_path_sample(&scene, &camera, &params, pixel);
     atomic_add(&counters[0], s.rays);
     if (!all(isfinite(s.radiance)) || !all(isfinite(s.albedo)) || !all(isfinite(s.normal))) {

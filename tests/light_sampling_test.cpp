@@ -10,6 +10,7 @@
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "chi_square.h"
+#include "methods/scene_arguments.h"
 #include "scene/device_scene.h"
 #include "scene/generated_meshes.h"
 #include "test_support.h"
@@ -77,10 +78,8 @@ ProbeResult probe(const Scene& scene, glm::vec3 p, size_t count, unsigned seed) 
     Buffer<shared::float4> geometry(context, 2 * count, "geometry");
     Buffer<shared::float4> radiance(context, count, "radiance");
     const shared::float4 point = {p.x, p.y, p.z, 0.0f};
-    context.launch(kernel, count, point, seed, device_bvh.nodes, device_bvh.triangles,
-                   device_bvh.triangle_of_primitive, device_scene.lights, device_scene.light_cdf,
-                   device_scene.light_triangles, device_scene.light_triangle_cdf,
-                   device_scene.light_count, choice, geometry, radiance);
+    context.launch(kernel, count, point, seed, SceneArguments(device_bvh, device_scene), choice,
+                   geometry, radiance);
     return {choice.download(), geometry.download(), radiance.download()};
 }
 

@@ -56,12 +56,13 @@ class Context {
 
     // Runs `kernel` over items [0, count). The kernel's first two parameters are
     // (uint begin, uint end) and it handles item begin + get_global_id(0) when below end; the
-    // remaining parameters are `args` (buffers or plain values). Large launches are split into
-    // chunks of bounded duration; an item's result never depends on the chunking.
+    // remaining parameters are `args` (buffers, plain values, or argument groups). Large
+    // launches are split into chunks of bounded duration; an item's result never depends on the
+    // chunking.
     template <class... Args>
     void launch(Kernel& kernel, size_t count, const Args&... args) {
         unsigned index = 2;
-        (set_kernel_arg(kernel, index++, args), ...);
+        (set_kernel_arg(kernel, index, args), ...);
         run_chunked(kernel, count);
     }
 
@@ -76,16 +77,22 @@ class Context {
     _cl_command_queue* cl_queue() const { return queue_; }
 
    private:
-    static void set_kernel_arg(Kernel& kernel, unsigned index, const DeviceBuffer& buffer) {
+    static void set_kernel_arg(Kernel& kernel, unsigned& index, const DeviceBuffer& buffer) {
         _cl_mem* handle = buffer.handle();
-        kernel.set_arg(index, sizeof handle, &handle);
+        kernel.set_arg(index++, sizeof handle, &handle);
     }
+    static void set_kernel_arg(Kernel& kernel, unsigned& index, const KernelArgumentGroup& group) {
+        index += group.set_kernel_args(kernel, index);
+    }
+    // A plain value (the kernel parameter must have the same size).
     template <class T>
-    requires(std::is_trivially_copyable_v<T> &&
-             !std::is_base_of_v<DeviceBuffer, T>) static void set_kernel_arg(Kernel& kernel,
-                                                                             unsigned index,
-                                                                             const T& value) {
-        kernel.set_arg(index, sizeof(T), &value);
+    static constexpr bool kPlainArgument =
+        std::is_trivially_copyable_v<T> && !std::is_base_of_v<DeviceBuffer, T> &&
+        !std::is_base_of_v<KernelArgumentGroup, T>;
+    template <class T>
+    static std::enable_if_t<kPlainArgument<T>> set_kernel_arg(Kernel& kernel, unsigned& index,
+                                                              const T& value) {
+        kernel.set_arg(index++, sizeof(T), &value);
     }
     void run_chunked(Kernel& kernel, size_t count);
 

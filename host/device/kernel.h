@@ -32,4 +32,13 @@ class Kernel {
     std::string name_;
 };
 
+// Several consecutive kernel arguments that travel together (the scene's buffers, say):
+// Context::launch calls set_kernel_args with the index of the first, and it returns how many it
+// set.
+class KernelArgumentGroup {
+   public:
+    virtual ~KernelArgumentGroup() = default;
+    virtual unsigned set_kernel_args(Kernel& kernel, unsigned first) const = 0;
+};
+
 }  // namespace rc

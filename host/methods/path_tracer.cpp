@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "methods/scene_arguments.h"
 #include "scene/camera.h"
 #include "util/error.h"
 
@@ -91,8 +92,7 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
 
     shared::PathTracerParams params{};
     params.image = {width, height, 0, 0};
-    params.depth = {options.max_depth, options.rr_depth, device_scene_.light_count,
-                    device_scene_.environment};
+    params.depth = {options.max_depth, options.rr_depth, 0, 0};
     params.seed = {static_cast<unsigned>(options.seed), static_cast<unsigned>(options.seed >> 32),
                    0, 0};
     const shared::CameraParams camera = camera_params(scene_.camera, width, height);
@@ -110,11 +110,7 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
         params.image.z = pass;
         const std::vector<unsigned> zero = {0u, 0u, 0xffffffffu};
         counters.upload(zero);
-        context_.launch(kernel_, count, params, camera, bvh_.nodes, bvh_.triangles,
-                        bvh_.triangle_of_primitive, device_scene_.shading, device_scene_.normals,
-                        device_scene_.uvs, device_scene_.materials, device_scene_.textures,
-                        device_scene_.texels, device_scene_.lights, device_scene_.light_cdf,
-                        device_scene_.light_triangles, device_scene_.light_triangle_cdf, film,
+        context_.launch(kernel_, count, params, camera, SceneArguments(bvh_, device_scene_), film,
                         counters);
         const std::vector<unsigned> c = counters.download();
         result.rays += c[0];

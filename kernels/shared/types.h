@@ -101,10 +101,52 @@ typedef struct Light {
 // Per-pass parameters of the path tracer.
 typedef struct PathTracerParams {
     int4 image;  // x: width, y: height, z: index of the pass's sample, w: unused
-    int4 depth;  // x: maximum depth (bounces), y: depth where Russian roulette starts,
-                 // z: number of lights, w: index of the environment light or -1
+    int4 depth;  // x: maximum depth (bounces), y: depth where Russian roulette starts, z, w:
+                 // unused
     uint4 seed;  // x, y: the 64-bit seed
 } PathTracerParams;
+
+// The first hit of one camera sample (irradiance caching's G-buffer). Samples are stored pixel
+// by pixel: sample s of pixel p is entry p * spp + s.
+typedef struct GBufferSample {
+    float4 position;  // xyz: hit point; w: world size of a pixel there (the footprint)
+    float4 normal;    // xyz: shading normal facing the camera; w: diffuse reflectance (luminance)
+    float4 origin;    // xyz: where rays leaving the surface start (offset off it)
+    int4 info;        // x: primitive or -1 (no hit), y: pixel, z: sample, w: 1 when the cache
+                      // serves it (a hit with a diffuse lobe)
+} GBufferSample;
+
+// An irradiance record (DESIGN.md §6.2) as the kernels use it: position, normal, the radius of
+// its influence, the indirect irradiance and its gradients (per RGB channel).
+typedef struct IrradianceRecord {
+    float4 position;     // xyz; w: R, the validity radius (influence radius = accuracy * R)
+    float4 normal;       // xyz; w: unused
+    float4 irradiance;   // rgb: E; w: unused
+    float4 rotation_r;   // xyz: rotational gradient of the red channel (Ward and Heckbert 1992)
+    float4 rotation_g;
+    float4 rotation_b;
+    float4 translation_r;  // xyz: translational gradient of the red channel
+    float4 translation_g;
+    float4 translation_b;
+} IrradianceRecord;
+
+// A uniform world-space grid over records: cell c lists the records whose influence sphere
+// touches it, as cell_records[cell_start[c] .. cell_start[c + 1]).
+typedef struct RecordGrid {
+    float4 origin;      // xyz: the lower corner
+    float4 inv_cell;    // xyz: cells per unit length
+    int4 dims;          // xyz: cells along each axis; w: total cells
+} RecordGrid;
+
+// Parameters of the irradiance-caching kernels.
+typedef struct IcParams {
+    int4 image;      // x: width, y: height, z: camera samples per pixel, w: record count
+    int4 sampling;   // x: M (polar strata), y: N (azimuthal strata), z: first record of the
+                     // launch, w: 1 to count emission seen by hemisphere rays (tests)
+    int4 depth;      // x: maximum depth, y: Russian-roulette depth, z, w: unused
+    uint4 seed;      // x, y: the 64-bit seed
+    float4 weights;  // x: accuracy a, y: largest weight (near a record's centre)
+} IcParams;
 
 RC_SHARED_END
 
@@ -136,4 +178,8 @@ static_assert(sizeof(rc::shared::TextureInfo) == 16);
 static_assert(sizeof(rc::shared::TriangleShading) == 32);
 static_assert(sizeof(rc::shared::Light) == 80);
 static_assert(sizeof(rc::shared::PathTracerParams) == 48);
+static_assert(sizeof(rc::shared::GBufferSample) == 64);
+static_assert(sizeof(rc::shared::IrradianceRecord) == 144);
+static_assert(sizeof(rc::shared::RecordGrid) == 48);
+static_assert(sizeof(rc::shared::IcParams) == 80);
 #endif

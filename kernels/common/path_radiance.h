@@ -1,0 +1,159 @@
+// The path-tracing estimator shared by the reference path tracer and the caching methods:
+// unidirectional paths with next-event estimation at every vertex, combined with BRDF sampling
+// by multiple importance sampling (power heuristic; Veach 1997, ch. 9), Russian roulette from a
+// given depth, and a maximum depth. Depth counts bounces along the path: the surface a path's
+// first ray hits is depth 0, so its emission is a 0-bounce path and light it reflects from a
+// light source a 1-bounce path.
+#pragma once
+
+#include "common/bvh_traversal.h"
+#include "common/light.h"
+#include "common/material.h"
+#include "common/math.h"
+#include "common/scene_data.h"
+#include "shared/rng.h"
+#include "shared/types.h"
+
+typedef struct PathSample {
+    float3 radiance;  // direct + indirect
+    float3 direct;    // paths of at most one bounce
+    float3 indirect;  // paths of two bounces or more
+    float3 albedo;    // first hit: diffuse + specular reflectance
+    float3 normal;    // first hit: shading normal, facing the ray
+    float distance;   // first hit's distance along the (unit) ray direction; INFINITY on a miss
+    uint rays;        // rays traced (closest and shadow)
+} PathSample;
+
+// Adds `value` to the direct or the indirect part by the number of bounces of its path.
+RC_FUNC void rc_add_contribution(PathSample* s, int bounces, float3 value) {
+    if (bounces <= 1) {
+        s->direct += value;
+    } else {
+        s->indirect += value;
+    }
+}
+
+RC_FUNC bool rc_occluded(const SceneData* scene, float3 from, float3 to, bool infinite,
+                         float3 direction) {
+    Ray shadow;
+    shadow.origin = (float4)(from, 0.0f);
+    shadow.direction = infinite ? (float4)(direction, INFINITY) : (float4)(to - from, 1.0f);
+    return rc_trace_any(scene->nodes, scene->triangles, shadow);
+}
+
+// Next-event estimation at a surface point: one light chosen by power, its sample weighted by
+// the power heuristic against the BRDF's density (delta lights: weight 1). Returns the reflected
+// radiance towards wo (local frame); counts the shadow ray in *rays.
+RC_FUNC float3 rc_next_event(const SceneData* scene, const SurfacePoint* sp,
+                             const SurfaceMaterial* material, float3 wo, RngStream* rng,
+                             uint* rays) {
+    const float u_light = rc_rng_next_float(rng);
+    const float u1 = rc_rng_next_float(rng);
+    const float u2 = rc_rng_next_float(rng);
+    const float u3 = rc_rng_next_float(rng);
+    if (scene->light_count <= 0) {
+        return (float3)(0.0f);
+    }
+    const int l = rc_sample_cdf(scene->light_cdf, scene->light_count, u_light);
+    const LightSample ls = rc_sample_light(scene, l, rc_cdf_probability(scene->light_cdf, l),
+                                           sp->position, u1, u2, u3);
+    if (ls.pdf <= 0.0f || rc_is_black(ls.radiance) ||
+        dot(ls.direction, sp->geometric_normal) <= 0.0f) {
+        return (float3)(0.0f);
+    }
+    const float3 wi = rc_to_local(&sp->shading, ls.direction);
+    const float3 f = rc_material_eval(material, wo, wi);
+    if (rc_is_black(f)) {
+        return (float3)(0.0f);
+    }
+    *rays += 1;
+    if (rc_occluded(scene, sp->origin, ls.target, ls.infinite, ls.direction)) {
+        return (float3)(0.0f);
+    }
+    const float weight =
+        ls.delta ? 1.0f : rc_power_heuristic(ls.pdf, rc_material_pdf(material, wo, wi));
+    return f * (wi.z * weight / ls.pdf) * ls.radiance;
+}
+
+// Radiance arriving along `ray` (unit direction), by path tracing. With first_emission false the
+// emission of the surface (or environment) the ray reaches first is left out: the caller counts
+// that light by its own next-event estimation. `bounces` is the number of bounces the caller's
+// path already made (it shifts the direct/indirect split); paths end after max_depth bounces in
+// all.
+RC_FUNC PathSample rc_path_radiance(const SceneData* scene, Ray ray, RngStream* rng, int bounces,
+                                    int max_depth, int rr_depth, bool first_emission) {
+    PathSample s;
+    s.direct = s.indirect = s.albedo = s.normal = (float3)(0.0f);
+    s.distance = INFINITY;
+    s.rays = 0;
+    float3 throughput = (float3)(1.0f);
+    float previous_pdf = 0.0f;  // BRDF pdf of the last bounce (for MIS on emitters hit)
+    float3 previous_position = ray.origin.xyz;
+    for (int depth = bounces;; ++depth) {
+        const bool first = depth == bounces;
+        const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
+        s.rays += 1;
+        if (hit.primitive == RC_NO_HIT) {
+            if (scene->environment >= 0 && (!first || first_emission)) {
+                const float weight =
+                    first ? 1.0f : rc_power_heuristic(previous_pdf, rc_environment_pdf(scene));
+                rc_add_contribution(
+                    &s, depth,
+                    throughput * scene->lights[scene->environment].radiance.xyz * weight);
+            }
+            break;
+        }
+        const SurfacePoint sp = rc_surface_point(scene, ray, hit);
+        const SurfaceMaterial material = rc_surface_material(scene, &sp);
+        if (first) {
+            s.albedo = material.diffuse + material.specular;
+            s.normal = sp.shading.n;
+            s.distance = hit.t;
+        }
+        // Emission reached by BRDF sampling (or seen directly).
+        if (sp.light >= 0 && sp.front && (!first || first_emission)) {
+            const float weight =
+                first ? 1.0f
+                      : rc_power_heuristic(previous_pdf,
+                                           rc_area_light_pdf(scene, sp.light, previous_position,
+                                                             sp.position, sp.geometric_normal));
+            rc_add_contribution(&s, depth,
+                                throughput * scene->lights[sp.light].radiance.xyz * weight);
+        }
+        if (depth >= max_depth) {
+            break;
+        }
+        const float3 wo = rc_to_local(&sp.shading, -ray.direction.xyz);
+        rc_add_contribution(&s, depth + 1,
+                            throughput * rc_next_event(scene, &sp, &material, wo, rng, &s.rays));
+
+        // Continue the path by sampling the BRDF.
+        const float u_lobe = rc_rng_next_float(rng);
+        const float u1 = rc_rng_next_float(rng);
+        const float u2 = rc_rng_next_float(rng);
+        float3 wi;
+        float pdf;
+        float3 f;
+        if (!rc_material_sample(&material, wo, u_lobe, u1, u2, &wi, &pdf, &f)) {
+            break;
+        }
+        const float3 direction = rc_from_local(&sp.shading, wi);
+        if (dot(direction, sp.geometric_normal) <= 0.0f) {
+            break;  // below the geometric surface: shading normals must not leak light
+        }
+        throughput *= f * (wi.z / pdf);
+        previous_pdf = pdf;
+        previous_position = sp.position;
+        if (depth + 1 >= rr_depth) {
+            const float survive = fmin(rc_max_component(throughput), 0.95f);
+            if (rc_rng_next_float(rng) >= survive) {
+                break;
+            }
+            throughput /= survive;
+        }
+        ray.origin = (float4)(sp.origin, 0.0f);
+        ray.direction = (float4)(direction, INFINITY);
+    }
+    s.radiance = s.direct + s.indirect;
+    return s;
+}
