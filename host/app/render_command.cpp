@@ -15,6 +15,7 @@
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "image/image_io.h"
+#include "methods/irradiance_cache.h"
 #include "methods/normals.h"
 #include "methods/path_tracer.h"
 #include "scene/device_scene.h"
@@ -32,7 +33,7 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-constexpr const char* kMethods = "pt, normals";
+constexpr const char* kMethods = "pt, ic, normals";
 
 std::vector<OptionSpec> render_option_specs() {
     std::vector<OptionSpec> specs = {
@@ -56,6 +57,17 @@ std::vector<OptionSpec> render_option_specs() {
          ".exr: the layers to write, comma-separated (default all: beauty, direct, indirect, "
          "albedo, normal, stddev)"},
         {"--stats", "", "FILE", "write timings and counts as JSON"},
+        {"--accuracy", "", "A",
+         "ic: interpolation accuracy a (Radiance's -aa): records influence points within a R "
+         "(default 0.25)"},
+        {"--ic-rays", "", "N", "ic: hemisphere rays per record (Radiance's -ad; default 512)"},
+        {"--ic-min-spacing", "", "L",
+         "ic: smallest record influence radius, in pixels (\"2\", \"2px\") or scene units "
+         "(\"5u\") (default 2px)"},
+        {"--ic-max-spacing", "", "L", "ic: largest record influence radius (default 32px)"},
+        {"--ic-bounces", "", "N", "ic: bounces through records (1: path-traced beyond; default 1)"},
+        {"--cache-out", "", "FILE", "ic: save the irradiance cache's records"},
+        {"--cache-in", "", "FILE", "ic: start from the records of a saved cache"},
         {"--quiet", "-q", "", "print nothing but errors"},
     };
     for (OptionSpec& spec : device_option_specs()) {
@@ -189,7 +201,7 @@ int run_render_command(const std::vector<std::string>& args) {
     if (arguments.has("--method")) {
         settings.method = arguments.value("--method");
     }
-    if (settings.method != "pt" && settings.method != "normals") {
+    if (settings.method != "pt" && settings.method != "ic" && settings.method != "normals") {
         throw Error(
             "--method: unknown method '" + settings.method + "' (implemented: " + kMethods + ")",
             kExitUsage);
@@ -198,6 +210,10 @@ int run_render_command(const std::vector<std::string>& args) {
         bool known = layer == "beauty";
         if (settings.method == "pt") {
             for (const char* aov : kPathTracerAovs) {
+                known = known || layer == aov;
+            }
+        } else if (settings.method == "ic") {
+            for (const char* aov : kIrradianceCacheAovs) {
                 known = known || layer == aov;
             }
         }
@@ -213,6 +229,31 @@ int run_render_command(const std::vector<std::string>& args) {
     settings.exposure =
         static_cast<float>(arguments.number("--exposure", settings.exposure, -64.0, 64.0));
     write_options.exposure = settings.exposure;
+    IrradianceCacheOptions ic;
+    ic.accuracy = static_cast<float>(arguments.number("--accuracy", ic.accuracy, 1e-3, 1.0));
+    ic.rays = static_cast<int>(arguments.integer("--ic-rays", ic.rays, 4, 1 << 16));
+    if (arguments.has("--ic-min-spacing")) {
+        ic.min_spacing = parse_spacing(arguments.value("--ic-min-spacing"), "--ic-min-spacing");
+    }
+    if (arguments.has("--ic-max-spacing")) {
+        ic.max_spacing = parse_spacing(arguments.value("--ic-max-spacing"), "--ic-max-spacing");
+    }
+    ic.bounces = static_cast<int>(arguments.integer("--ic-bounces", ic.bounces, 1, 8));
+    ic.cache_in = arguments.value("--cache-in");
+    ic.cache_out = arguments.value("--cache-out");
+    if (!ic.cache_out.empty()) {
+        check_writable_parent(ic.cache_out, "--cache-out");
+    }
+    for (const char* option : {"--accuracy", "--ic-rays", "--ic-min-spacing", "--ic-max-spacing",
+                               "--ic-bounces", "--cache-out", "--cache-in"}) {
+        if (arguments.has(option) && settings.method != "ic") {
+            throw Error(std::string(option) + " applies to --method ic only", kExitUsage);
+        }
+    }
+    if (frames.given && frames.first != frames.last &&
+        (!ic.cache_in.empty() || !ic.cache_out.empty())) {
+        throw Error("--cache-in/--cache-out take one frame", kExitUsage);
+    }
     const int width = static_cast<int>(arguments.integer("--width", 0, 1, 1 << 16));
     const int height = static_cast<int>(arguments.integer("--height", 0, 1, 1 << 16));
     auto written = [&](const Image& image) {
@@ -258,7 +299,53 @@ int run_render_command(const std::vector<std::string>& args) {
         Image image;
         nlohmann::json this_frame = {{"frame", frame}, {"output", output.string()}};
         ProgressBar progress(frames.given ? "frame " + std::to_string(frame) : "render", !quiet());
-        if (settings.method == "normals") {
+        if (settings.method == "ic") {
+            IrradianceCache cache(context, scene, device_bvh, device_scene);
+            ic.width = width;
+            ic.height = height;
+            ic.spp = settings.spp;
+            ic.seed = settings.seed;
+            ic.max_depth = settings.max_depth;
+            ic.rr_depth = settings.rr_depth;
+            IrradianceCacheStats stats;
+            image = cache.render(ic, &stats);
+            spp_done = settings.spp;
+            rays += stats.record_rays + stats.shading_rays;
+            nonfinite += stats.nonfinite_samples;
+            if (first_nonfinite_pixel < 0) {
+                first_nonfinite_pixel = stats.first_nonfinite_pixel;
+            }
+            nlohmann::json levels = nlohmann::json::array();
+            for (size_t l = 0; l < stats.level_strides.size(); ++l) {
+                levels.push_back(
+                    {{"stride", stats.level_strides[l]}, {"records", stats.level_records[l]}});
+            }
+            this_frame["spp"] = settings.spp;
+            this_frame["records"] = stats.records;
+            this_frame["loaded_records"] = stats.loaded_records;
+            this_frame["placement_passes"] = levels;
+            this_frame["strata"] = {stats.strata_m, stats.strata_n};
+            this_frame["rays_per_record"] =
+                stats.records > stats.loaded_records
+                    ? static_cast<double>(stats.record_rays) /
+                          static_cast<double>(stats.records - stats.loaded_records)
+                    : 0.0;
+            this_frame["record_rays"] = stats.record_rays;
+            this_frame["shading_rays"] = stats.shading_rays;
+            this_frame["cache_bytes"] = stats.cache_bytes;
+            this_frame["seconds"] = {{"gbuffer", stats.gbuffer_seconds},
+                                     {"placement", stats.placement_seconds},
+                                     {"records", stats.record_seconds},
+                                     {"insertion", stats.insertion_seconds},
+                                     {"shading", stats.shading_seconds}};
+            log_note(std::to_string(stats.records) + " irradiance records");
+            if (stats.nonfinite_samples > 0) {
+                log_warning(std::to_string(stats.nonfinite_samples) +
+                            " samples were NaN or infinite and were dropped (first at pixel " +
+                            std::to_string(stats.first_nonfinite_pixel % image.width) + ", " +
+                            std::to_string(stats.first_nonfinite_pixel / image.width) + ")");
+            }
+        } else if (settings.method == "normals") {
             NormalsMethod method(context, scene, device_bvh);
             NormalsOptions options;
             options.width = width;

@@ -75,6 +75,48 @@ RC_FUNC float3 rc_next_event(const SceneData* scene, const SurfacePoint* sp,
     return f * (wi.z * weight / ls.pdf) * ls.radiance;
 }
 
+// Emission reached by sampling the BRDF once at a surface point, weighted by the power heuristic
+// against light sampling: with rc_next_event, the direct light of the point (what the path
+// tracer's first bounce computes). Counts the ray in *rays.
+RC_FUNC float3 rc_bsdf_sampled_emission(const SceneData* scene, const SurfacePoint* sp,
+                                        const SurfaceMaterial* material, float3 wo, RngStream* rng,
+                                        uint* rays) {
+    const float u_lobe = rc_rng_next_float(rng);
+    const float u1 = rc_rng_next_float(rng);
+    const float u2 = rc_rng_next_float(rng);
+    float3 wi;
+    float pdf;
+    float3 f;
+    if (!rc_material_sample(material, wo, u_lobe, u1, u2, &wi, &pdf, &f)) {
+        return (float3)(0.0f);
+    }
+    const float3 direction = rc_from_local(&sp->shading, wi);
+    if (dot(direction, sp->geometric_normal) <= 0.0f) {
+        return (float3)(0.0f);
+    }
+    Ray ray;
+    ray.origin = (float4)(sp->origin, 0.0f);
+    ray.direction = (float4)(direction, INFINITY);
+    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
+    *rays += 1;
+    const float3 throughput = f * (wi.z / pdf);
+    if (hit.primitive == RC_NO_HIT) {
+        if (scene->environment < 0) {
+            return (float3)(0.0f);
+        }
+        return throughput * scene->lights[scene->environment].radiance.xyz *
+               rc_power_heuristic(pdf, rc_environment_pdf(scene));
+    }
+    const SurfacePoint light_point = rc_surface_point(scene, ray, hit);
+    if (light_point.light < 0 || !light_point.front) {
+        return (float3)(0.0f);
+    }
+    return throughput * scene->lights[light_point.light].radiance.xyz *
+           rc_power_heuristic(
+               pdf, rc_area_light_pdf(scene, light_point.light, sp->position, light_point.position,
+                                      light_point.geometric_normal));
+}
+
 // Radiance arriving along `ray` (unit direction), by path tracing. With first_emission false the
 // emission of the surface (or environment) the ray reaches first is left out: the caller counts
 // that light by its own next-event estimation. `bounces` is the number of bounces the caller's

@@ -1,0 +1,163 @@
+#include "methods/irradiance_cache_file.h"
+
+#include <OpenImageIO/hash.h>
+
+#include <cstring>
+
+#include "util/error.h"
+#include "util/file_io.h"
+
+namespace rc {
+namespace {
+
+constexpr char kMagic[8] = {'R', 'C', 'I', 'R', 'C', 'A', 'C', 'H'};
+constexpr uint32_t kVersion = 1;
+constexpr size_t kFloatsPerRecord = 32;
+
+struct Header {
+    char magic[8];
+    uint32_t version;
+    uint32_t record_bytes;
+    uint64_t scene;
+    float accuracy;
+    uint32_t reserved;
+    uint64_t count;
+};
+
+template <class T>
+uint64_t hash_bytes(const std::vector<T>& values, uint64_t seed) {
+    const uint64_t h = OIIO::farmhash::Fingerprint64(reinterpret_cast<const char*>(values.data()),
+                                                     values.size() * sizeof(T));
+    return OIIO::farmhash::Fingerprint(OIIO::farmhash::Uint128(seed, h));
+}
+
+uint64_t checksum(const std::string& bytes) {
+    return OIIO::farmhash::Fingerprint64(bytes.data(), bytes.size());
+}
+
+void put_vec3(float*& out, glm::vec3 v) {
+    *out++ = v.x;
+    *out++ = v.y;
+    *out++ = v.z;
+}
+
+glm::vec3 get_vec3(const float*& in) {
+    glm::vec3 v(in[0], in[1], in[2]);
+    in += 3;
+    return v;
+}
+
+}  // namespace
+
+uint64_t scene_fingerprint(const Scene& scene) {
+    uint64_t h = 0x5243534345ull;
+    h = hash_bytes(scene.mesh.positions, h);
+    h = hash_bytes(scene.mesh.triangles, h);
+    h = hash_bytes(scene.shading, h);
+    h = hash_bytes(scene.normals, h);
+    std::vector<shared::Material> materials;
+    for (const Material& m : scene.materials) {
+        materials.push_back(to_device(m));
+    }
+    h = hash_bytes(materials, h);
+    h = hash_bytes(scene.lights.lights, h);
+    return h;
+}
+
+void write_irradiance_cache(const std::filesystem::path& path, const Scene& scene,
+                            const RecordStore& store) {
+    Header header{};
+    std::memcpy(header.magic, kMagic, sizeof kMagic);
+    header.version = kVersion;
+    header.record_bytes = static_cast<uint32_t>(kFloatsPerRecord * sizeof(float));
+    header.scene = scene_fingerprint(scene);
+    header.accuracy = store.accuracy();
+    header.count = store.size();
+    std::vector<float> floats(store.size() * kFloatsPerRecord);
+    float* out = floats.data();
+    for (const CacheRecord& r : store.records()) {
+        put_vec3(out, r.position);
+        put_vec3(out, r.normal);
+        put_vec3(out, r.irradiance);
+        for (const glm::vec3& g : r.rotation) {
+            put_vec3(out, g);
+        }
+        for (const glm::vec3& g : r.translation) {
+            put_vec3(out, g);
+        }
+        *out++ = r.harmonic_distance;
+        *out++ = r.min_distance;
+        *out++ = r.r_min;
+        *out++ = r.r_max;
+        *out++ = r.radius;
+    }
+    std::string bytes(sizeof header + floats.size() * sizeof(float), '\0');
+    std::memcpy(bytes.data(), &header, sizeof header);
+    std::memcpy(bytes.data() + sizeof header, floats.data(), floats.size() * sizeof(float));
+    const uint64_t sum = checksum(bytes);
+    bytes.append(reinterpret_cast<const char*>(&sum), sizeof sum);
+    write_file_atomically(path, bytes);
+}
+
+std::vector<CacheRecord> read_irradiance_cache(const std::filesystem::path& path,
+                                               const Scene& scene, float accuracy) {
+    const std::string name = path.string();
+    if (!std::filesystem::is_regular_file(path)) {
+        throw Error(name + ": irradiance cache file not found");
+    }
+    const std::string bytes = read_file(path);
+    Header header;
+    if (bytes.size() < sizeof header + sizeof(uint64_t) ||
+        std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) {
+        throw Error(name + ": not a radcache irradiance cache file");
+    }
+    std::memcpy(&header, bytes.data(), sizeof header);
+    if (header.version != kVersion) {
+        throw Error(name + ": irradiance cache version " + std::to_string(header.version) +
+                    "; this radcache reads version " + std::to_string(kVersion));
+    }
+    const size_t expected =
+        sizeof header + header.count * kFloatsPerRecord * sizeof(float) + sizeof(uint64_t);
+    if (header.record_bytes != kFloatsPerRecord * sizeof(float) || bytes.size() != expected) {
+        throw Error(name + ": corrupt irradiance cache (" + std::to_string(bytes.size()) +
+                    " bytes where its header implies " + std::to_string(expected) + ")");
+    }
+    uint64_t stored_sum;
+    std::memcpy(&stored_sum, bytes.data() + bytes.size() - sizeof stored_sum, sizeof stored_sum);
+    if (checksum(bytes.substr(0, bytes.size() - sizeof stored_sum)) != stored_sum) {
+        throw Error(name + ": corrupt irradiance cache (checksum mismatch)");
+    }
+    if (header.scene != scene_fingerprint(scene)) {
+        throw Error(name +
+                    ": irradiance cache was made for another scene (or another frame of "
+                    "it) than " +
+                    scene.path.string());
+    }
+    if (header.accuracy != accuracy) {
+        throw Error(name + ": irradiance cache was made with accuracy " +
+                    std::to_string(header.accuracy) + ", not " + std::to_string(accuracy));
+    }
+    std::vector<float> floats(header.count * kFloatsPerRecord);
+    std::memcpy(floats.data(), bytes.data() + sizeof header, floats.size() * sizeof(float));
+    std::vector<CacheRecord> records(header.count);
+    const float* in = floats.data();
+    for (CacheRecord& r : records) {
+        r.position = get_vec3(in);
+        r.normal = get_vec3(in);
+        r.irradiance = get_vec3(in);
+        for (glm::vec3& g : r.rotation) {
+            g = get_vec3(in);
+        }
+        for (glm::vec3& g : r.translation) {
+            g = get_vec3(in);
+        }
+        r.harmonic_distance = *in++;
+        r.min_distance = *in++;
+        r.r_min = *in++;
+        r.r_max = *in++;
+        r.radius = *in++;
+    }
+    return records;
+}
+
+}  // namespace rc

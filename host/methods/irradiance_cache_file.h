@@ -1,0 +1,29 @@
+// Irradiance cache files (--cache-out / --cache-in): a versioned binary record list that another
+// view of the same scene reuses. A file made for another scene or with another accuracy, a file of
+// another version, and a truncated or corrupt file are refused with an error naming the file.
+//
+// Layout (little-endian): magic "RCIRCACH", uint32 version, uint32 record size, uint64 scene
+// fingerprint, float32 accuracy, uint32 reserved, uint64 record count, the records (32 float32
+// each: position, normal, irradiance, 3 rotational and 3 translational gradients, harmonic mean
+// and minimum distance, R_min, R_max, R), uint64 checksum of everything before it.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "methods/irradiance_records.h"
+#include "scene/scene.h"
+
+namespace rc {
+
+// A fingerprint of the scene's world geometry, shading, materials and lights at its frame.
+uint64_t scene_fingerprint(const Scene& scene);
+
+void write_irradiance_cache(const std::filesystem::path& path, const Scene& scene,
+                            const RecordStore& store);
+
+std::vector<CacheRecord> read_irradiance_cache(const std::filesystem::path& path,
+                                               const Scene& scene, float accuracy);
+
+}  // namespace rc

@@ -1,0 +1,149 @@
+// Entry kernels of irradiance caching (host/methods/irradiance_cache.cpp): the G-buffer, record
+// hemisphere sampling and its reduction, record gathering (coverage and interpolation), and the
+// final shading pass.
+#include "irradiance_cache.h"
+#include "scene_arguments.h"
+
+// Entry i = pixel * spp + s: the first hit of that camera sample.
+__kernel void ic_gbuffer(uint begin, uint end, IcParams params, CameraParams camera,
+                         RC_SCENE_PARAMETERS, __global GBufferSample* gbuffer) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const uint spp = (uint)params.image.z;
+    const uint pixel = i / spp;
+    RngStream rng;
+    float x, y;
+    const Ray ray = rc_ic_camera_ray(&params, &camera, pixel, i % spp, &rng, &x, &y);
+    const Hit hit = rc_trace_closest(nodes, triangles, ray);
+    GBufferSample g;
+    g.info = (int4)(-1, (int)pixel, (int)(i % spp), 0);
+    g.position = g.normal = g.origin = (float4)(0.0f);
+    if (hit.primitive != RC_NO_HIT) {
+        const SurfacePoint sp = rc_surface_point(&scene, ray, hit);
+        const SurfaceMaterial material = rc_surface_material(&scene, &sp);
+        const float diffuse = rc_luminance(material.diffuse);
+        g.position = (float4)(sp.position, rc_ic_pixel_footprint(&camera, x, y, hit.t));
+        g.normal = (float4)(sp.shading.n, diffuse);
+        g.origin = (float4)(sp.origin, 0.0f);
+        g.info.x = (int)hit.primitive;
+        g.info.w = diffuse > 0.0f ? 1 : 0;
+    }
+    gbuffer[i] = g;
+}
+
+// Item i: cell i % (M N) of batch record i / (M N): the radiance arriving through it and the
+// distance to what it hits, as (L.rgb, distance) in cells[i].
+// counters[0] counts the rays traced.
+__kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
+                              __global const IrradianceRecord* records,
+                              __global const float4* origins, __global float4* cells,
+                              __global uint* counters) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const uint per_record = (uint)(params.sampling.x * params.sampling.y);
+    const uint b = i / per_record;
+    const uint cell = i % per_record;
+    const uint record = (uint)params.sampling.z + b;
+    const int j = (int)cell / params.sampling.y;
+    const int k = (int)cell % params.sampling.y;
+    RngStream rng = rc_ic_cell_stream(&params, record, cell);
+    const float zeta = rc_rng_next_float(&rng);
+    const float xi = rc_rng_next_float(&rng);
+    const Frame frame = rc_ic_record_frame(records[b].normal.xyz);
+    Ray ray;
+    ray.origin = (float4)(origins[b].xyz, 0.0f);
+    ray.direction =
+        (float4)(rc_from_local(&frame, rc_ic_cell_direction(j, k, params.sampling.x,
+                                                            params.sampling.y, zeta, xi)),
+                 INFINITY);
+    // The hemisphere ray is the record's first bounce; its hit's own emission is direct light
+    // (left to next-event estimation at the shading point) unless the tests ask for it.
+    const PathSample s = rc_path_radiance(&scene, ray, &rng, 1, params.depth.x, params.depth.y,
+                                          params.sampling.w != 0);
+    atomic_add(&counters[0], s.rays);
+    cells[i] = (float4)(all(isfinite(s.radiance)) ? s.radiance : (float3)(0.0f), s.distance);
+}
+
+// Item b: irradiance, gradients (into records[b]) and (harmonic mean, minimum) hit distance
+// (into distances[b]) of batch record b.
+__kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global const float4* cells,
+                               __global IrradianceRecord* records, __global float4* distances) {
+    const uint b = begin + (uint)get_global_id(0);
+    if (b >= end) {
+        return;
+    }
+    const uint per_record = (uint)(params.sampling.x * params.sampling.y);
+    const RecordEstimate e = rc_ic_reduce(&params, (uint)params.sampling.z + b,
+                                          records[b].normal.xyz, cells + (size_t)b * per_record);
+    __global IrradianceRecord* r = records + b;
+    r->irradiance = (float4)(e.irradiance, 0.0f);
+    r->rotation_r = (float4)(e.rotation[0], 0.0f);
+    r->rotation_g = (float4)(e.rotation[1], 0.0f);
+    r->rotation_b = (float4)(e.rotation[2], 0.0f);
+    r->translation_r = (float4)(e.translation[0], 0.0f);
+    r->translation_g = (float4)(e.translation[1], 0.0f);
+    r->translation_b = (float4)(e.translation[2], 0.0f);
+    distances[b] = (float4)(e.harmonic_distance, e.min_distance, 0.0f, 0.0f);
+}
+
+// Item q: (sum w E', sum w) of the records covering G-buffer entry queries[q].
+__kernel void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
+                        __global const int* cell_start, __global const int* cell_records,
+                        __global const IrradianceRecord* records,
+                        __global const GBufferSample* gbuffer, __global const int* queries,
+                        __global float4* out) {
+    const uint q = begin + (uint)get_global_id(0);
+    if (q >= end) {
+        return;
+    }
+    const GBufferSample g = gbuffer[queries[q]];
+    out[q] = rc_ic_gather(&grid, cell_start, cell_records, records, g.position.xyz, g.normal.xyz,
+                          params.weights.x, params.weights.y);
+}
+
+// Item = pixel: shades its camera samples and writes the pixel's means to film (7 float4 per
+// pixel: beauty, direct, indirect, albedo, normal, (coverage, 0, 0, 0), records overlay).
+// counters: [0] rays traced, [1] non-finite samples (dropped), [2] first pixel with one.
+__kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camera,
+                       RC_SCENE_PARAMETERS, RecordGrid grid, __global const int* cell_start,
+                       __global const int* cell_records, __global const IrradianceRecord* records,
+                       __global float4* film, __global uint* counters) {
+    const uint pixel = begin + (uint)get_global_id(0);
+    if (pixel >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const RecordCache cache = {grid, cell_start, cell_records, records};
+    float3 sums[7] = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f), (float3)(0.0f),
+                      (float3)(0.0f), (float3)(0.0f), (float3)(0.0f)};
+    uint rays = 0;
+    uint finite = 0;
+    for (uint s = 0; s < (uint)params.image.z; ++s) {
+        const CachedShading c = rc_ic_shade(&scene, &camera, &params, &cache, pixel, s);
+        rays += c.rays;
+        if (!all(isfinite(c.radiance)) || !all(isfinite(c.indirect))) {
+            atomic_inc(&counters[1]);
+            atomic_min(&counters[2], pixel);
+            continue;
+        }
+        ++finite;
+        sums[0] += c.radiance;
+        sums[1] += c.direct;
+        sums[2] += c.indirect;
+        sums[3] += c.albedo;
+        sums[4] += c.normal;
+        sums[5] += (float3)(c.coverage, 0.0f, 0.0f);
+        sums[6] += c.marks;
+    }
+    atomic_add(&counters[0], rays);
+    const float inv = finite > 0 ? 1.0f / (float)finite : 0.0f;
+    for (int k = 0; k < 7; ++k) {
+        film[7 * (size_t)pixel + k] = (float4)(sums[k] * inv, 0.0f);
+    }
+}
