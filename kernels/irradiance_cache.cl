@@ -4,6 +4,26 @@
 #include "irradiance_cache.h"
 #include "scene_arguments.h"
 
+// The G-buffer entry of a ray's first hit, with the hit distance for the footprint (position.w)
+// and `owner` in info.y, info.z.
+RC_FUNC GBufferSample rc_ic_gbuffer_sample(const SceneData* scene, Ray ray, int2 owner) {
+    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
+    GBufferSample g;
+    g.info = (int4)(-1, owner.x, owner.y, 0);
+    g.position = g.normal = g.origin = (float4)(0.0f);
+    if (hit.primitive != RC_NO_HIT) {
+        const SurfacePoint sp = rc_surface_point(scene, ray, hit);
+        const SurfaceMaterial material = rc_surface_material(scene, &sp);
+        const float diffuse = rc_luminance(material.diffuse);
+        g.position = (float4)(sp.position, hit.t);
+        g.normal = (float4)(sp.shading.n, diffuse);
+        g.origin = (float4)(sp.origin, 0.0f);
+        g.info.x = (int)hit.primitive;
+        g.info.w = diffuse > 0.0f ? 1 : 0;
+    }
+    return g;
+}
+
 // Entry i = pixel * spp + s: the first hit of that camera sample.
 __kernel void ic_gbuffer(uint begin, uint end, IcParams params, CameraParams camera,
                          RC_SCENE_PARAMETERS, __global GBufferSample* gbuffer) {
@@ -17,26 +37,35 @@ __kernel void ic_gbuffer(uint begin, uint end, IcParams params, CameraParams cam
     RngStream rng;
     float x, y;
     const Ray ray = rc_ic_camera_ray(&params, &camera, pixel, i % spp, &rng, &x, &y);
-    const Hit hit = rc_trace_closest(nodes, triangles, ray);
-    GBufferSample g;
-    g.info = (int4)(-1, (int)pixel, (int)(i % spp), 0);
-    g.position = g.normal = g.origin = (float4)(0.0f);
-    if (hit.primitive != RC_NO_HIT) {
-        const SurfacePoint sp = rc_surface_point(&scene, ray, hit);
-        const SurfaceMaterial material = rc_surface_material(&scene, &sp);
-        const float diffuse = rc_luminance(material.diffuse);
-        g.position = (float4)(sp.position, rc_ic_pixel_footprint(&camera, x, y, hit.t));
-        g.normal = (float4)(sp.shading.n, diffuse);
-        g.origin = (float4)(sp.origin, 0.0f);
-        g.info.x = (int)hit.primitive;
-        g.info.w = diffuse > 0.0f ? 1 : 0;
-    }
+    GBufferSample g = rc_ic_gbuffer_sample(&scene, ray, (int2)((int)pixel, (int)(i % spp)));
+    g.position.w = rc_ic_pixel_footprint(&camera, x, y, g.position.w);
     gbuffer[i] = g;
 }
 
+// Item i: cell i % (M N) of batch record i / (M N): the first hit of its ray, where the next cache
+// level must cover it (footprint: rc_ic_deeper_pixel_width at the hit distance).
+__kernel void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
+                             __global const IrradianceRecord* records,
+                             __global const float4* origins, __global GBufferSample* hits) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const uint per_record = (uint)(params.sampling.x * params.sampling.y);
+    const uint b = i / per_record;
+    const uint cell = i % per_record;
+    RngStream rng;
+    const Ray ray = rc_ic_cell_ray(&params, (uint)params.sampling.z + b, cell,
+                                   records[b].normal.xyz, origins[b].xyz, &rng);
+    GBufferSample g = rc_ic_gbuffer_sample(&scene, ray, (int2)((int)b, (int)cell));
+    g.position.w *= rc_ic_deeper_pixel_width(&params);
+    hits[i] = g;
+}
+
 // Item i: cell i % (M N) of batch record i / (M N): the radiance arriving through it and the
-// distance to what it hits, as (L.rgb, distance) in cells[i].
-// counters[0] counts the rays traced.
+// distance to what it hits, as (L.rgb, distance) in cells[i]. The light beyond the hit is path
+// traced. counters[0] counts the rays traced.
 __kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
                               __global const IrradianceRecord* records,
                               __global const float4* origins, __global float4* cells,
@@ -48,26 +77,41 @@ __kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PA
     const SceneData scene = RC_SCENE_DATA();
     const uint per_record = (uint)(params.sampling.x * params.sampling.y);
     const uint b = i / per_record;
-    const uint cell = i % per_record;
-    const uint record = (uint)params.sampling.z + b;
-    const int j = (int)cell / params.sampling.y;
-    const int k = (int)cell % params.sampling.y;
-    RngStream rng = rc_ic_cell_stream(&params, record, cell);
-    const float zeta = rc_rng_next_float(&rng);
-    const float xi = rc_rng_next_float(&rng);
-    const Frame frame = rc_ic_record_frame(records[b].normal.xyz);
-    Ray ray;
-    ray.origin = (float4)(origins[b].xyz, 0.0f);
-    ray.direction =
-        (float4)(rc_from_local(&frame, rc_ic_cell_direction(j, k, params.sampling.x,
-                                                            params.sampling.y, zeta, xi)),
-                 INFINITY);
-    // The hemisphere ray is the record's first bounce; its hit's own emission is direct light
-    // (left to next-event estimation at the shading point) unless the tests ask for it.
-    const PathSample s = rc_path_radiance(&scene, ray, &rng, 1, params.depth.x, params.depth.y,
-                                          params.sampling.w != 0);
+    RngStream rng;
+    const Ray ray = rc_ic_cell_ray(&params, (uint)params.sampling.z + b, i % per_record,
+                                   records[b].normal.xyz, origins[b].xyz, &rng);
+    // The hemisphere ray is a bounce of the record's level; its hit's own emission is direct
+    // light (left to next-event estimation at the shading point) unless the tests ask for it.
+    const PathSample s = rc_path_radiance(&scene, ray, &rng, params.depth.z + 1, params.depth.x,
+                                          params.depth.y, params.sampling.w != 0);
     atomic_add(&counters[0], s.rays);
     cells[i] = (float4)(all(isfinite(s.radiance)) ? s.radiance : (float3)(0.0f), s.distance);
+}
+
+// As ic_record_cells, with the diffuse indirect light at each hit from the next cache level.
+__kernel void ic_record_cells_cached(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
+                                     __global const IrradianceRecord* records,
+                                     __global const float4* origins, RecordGrid grid,
+                                     __global const int* cell_start,
+                                     __global const int* cell_records,
+                                     __global const IrradianceRecord* next_level,
+                                     __global float4* cells, __global uint* counters) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const RecordCache cache = {grid, cell_start, cell_records, next_level};
+    const uint per_record = (uint)(params.sampling.x * params.sampling.y);
+    const uint b = i / per_record;
+    RngStream rng;
+    const Ray ray = rc_ic_cell_ray(&params, (uint)params.sampling.z + b, i % per_record,
+                                   records[b].normal.xyz, origins[b].xyz, &rng);
+    const CachedRadiance c = rc_ic_cached_radiance(&scene, &params, &cache, ray, &rng,
+                                                   params.sampling.w != 0, params.depth.z + 1);
+    atomic_add(&counters[0], c.rays);
+    const float3 radiance = c.direct + c.indirect;
+    cells[i] = (float4)(all(isfinite(radiance)) ? radiance : (float3)(0.0f), c.distance);
 }
 
 // Item b: irradiance, gradients (into records[b]) and (harmonic mean, minimum) hit distance
@@ -89,7 +133,48 @@ __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global c
     r->translation_r = (float4)(e.translation[0], 0.0f);
     r->translation_g = (float4)(e.translation[1], 0.0f);
     r->translation_b = (float4)(e.translation[2], 0.0f);
+    r->occluder = (float4)(e.occluder, 0.0f);
     distances[b] = (float4)(e.harmonic_distance, e.min_distance, 0.0f, 0.0f);
+}
+
+// Item q: candidate q of a placement pass (params.placement): with C candidate columns, stride s
+// and S samples per candidate pixel, candidate q is camera sample q % S of pixel
+// (s (q / S % C), s (q / S / C)); with stride 0, entry q. Appends the G-buffer index of each
+// candidate the cache serves but no record covers to uncovered[], counting them in count[0] (the
+// host sorts them).
+__kernel void ic_uncovered(uint begin, uint end, IcParams params, RecordGrid grid,
+                           __global const int* cell_start, __global const int* cell_records,
+                           __global const IrradianceRecord* records,
+                           __global const GBufferSample* gbuffer, __global uint* uncovered,
+                           __global uint* count) {
+    const uint q = begin + (uint)get_global_id(0);
+    if (q >= end) {
+        return;
+    }
+    const uint stride = (uint)params.placement.x;
+    const uint per_pixel = (uint)max(params.placement.y, 1);
+    const uint columns = (uint)max(params.placement.z, 1);
+    const uint c = q / per_pixel;
+    const uint x = stride * (c % columns);
+    const uint y = stride * (c / columns);
+    const uint i =
+        stride == 0 ? q : (y * (uint)params.image.x + x) * (uint)params.image.z + q % per_pixel;
+    const GBufferSample g = gbuffer[i];
+    if (g.info.w == 0 || rc_ic_covered(&grid, cell_start, cell_records, records, g.position.xyz,
+                                       g.normal.xyz, params.weights.x, params.weights.y)) {
+        return;
+    }
+    uncovered[atomic_inc(&count[0])] = i;
+}
+
+// Item k: G-buffer entry indices[k], copied to out[k].
+__kernel void ic_gbuffer_select(uint begin, uint end, __global const GBufferSample* gbuffer,
+                                __global const uint* indices, __global GBufferSample* out) {
+    const uint k = begin + (uint)get_global_id(0);
+    if (k >= end) {
+        return;
+    }
+    out[k] = gbuffer[indices[k]];
 }
 
 // Item q: (sum w E', sum w) of the records covering G-buffer entry queries[q].
@@ -126,20 +211,23 @@ __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camer
     uint finite = 0;
     for (uint s = 0; s < (uint)params.image.z; ++s) {
         const CachedShading c = rc_ic_shade(&scene, &camera, &params, &cache, pixel, s);
-        rays += c.rays;
-        if (!all(isfinite(c.radiance)) || !all(isfinite(c.indirect))) {
+        const CachedRadiance l = c.light;
+        const float3 radiance = l.direct + l.indirect;
+        rays += l.rays;
+        if (!all(isfinite(radiance))) {
             atomic_inc(&counters[1]);
             atomic_min(&counters[2], pixel);
             continue;
         }
         ++finite;
-        sums[0] += c.radiance;
-        sums[1] += c.direct;
-        sums[2] += c.indirect;
-        sums[3] += c.albedo;
-        sums[4] += c.normal;
-        sums[5] += (float3)(c.coverage, 0.0f, 0.0f);
-        sums[6] += c.marks;
+        sums[0] += radiance;
+        sums[1] += l.direct;
+        sums[2] += l.indirect;
+        sums[3] += l.albedo;
+        sums[4] += l.normal;
+        sums[5] += (float3)(l.coverage, 0.0f, 0.0f);
+        // The records overlay: marks over the image at half brightness.
+        sums[6] += any(c.marks > 0.0f) ? c.marks : 0.5f * radiance;
     }
     atomic_add(&counters[0], rays);
     const float inv = finite > 0 ? 1.0f / (float)finite : 0.0f;

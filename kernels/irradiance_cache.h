@@ -1,5 +1,6 @@
-// Irradiance caching's camera side (host/methods/irradiance_cache.cpp): camera samples and the
-// final shading of a sample with cached diffuse indirect light.
+// Irradiance caching's ray side (host/methods/irradiance_cache.cpp): camera samples, the rays of
+// a record's hemisphere, and the light a ray brings back when the diffuse indirect light at its
+// hit comes from a cache level.
 #pragma once
 
 #include "common/camera.h"
@@ -13,6 +14,14 @@ RC_FUNC float rc_ic_pixel_footprint(const CameraParams* camera, float x, float y
     return t * length(camera->right.xyz) / ((float)camera->resolution.x * length(d));
 }
 
+// A deeper cache level's "pixel", per unit distance: a quarter of the angular width of one of the
+// M N strata of a record's hemisphere (sqrt(2 pi / (M N)) radians). Records at deeper levels are
+// spaced more finely than the hemisphere rays that read them: spacing them by whole strata left
+// visible bias on the Cornell box (docs/irradiance-caching.md).
+RC_FUNC float rc_ic_deeper_pixel_width(const IcParams* params) {
+    return 0.25f * sqrt(2.0f * RC_PI / (float)(params->sampling.x * params->sampling.y));
+}
+
 // The camera ray of sample s of a pixel (the same jitter in every pass that regenerates it).
 RC_FUNC Ray rc_ic_camera_ray(const IcParams* params, const CameraParams* camera, uint pixel, uint s,
                              RngStream* rng, float* x, float* y) {
@@ -22,7 +31,27 @@ RC_FUNC Ray rc_ic_camera_ray(const IcParams* params, const CameraParams* camera,
     return rc_camera_ray(camera, *x, *y);
 }
 
-// The records as the shading pass reads them.
+// The ray through cell `cell` (row j = cell / N, column k = cell % N) of record `record` (its
+// random stream; params->depth.z its level), leaving `origin` about normal n; *rng continues
+// the cell's stream after the jitter.
+RC_FUNC Ray rc_ic_cell_ray(const IcParams* params, uint record, uint cell, float3 n, float3 origin,
+                           RngStream* rng) {
+    *rng = rc_ic_cell_stream(params, record, cell);
+    const float zeta = rc_rng_next_float(rng);
+    const float xi = rc_rng_next_float(rng);
+    const int j = (int)cell / params->sampling.y;
+    const int k = (int)cell % params->sampling.y;
+    const Frame frame = rc_ic_record_frame(n);
+    Ray ray;
+    ray.origin = (float4)(origin, 0.0f);
+    ray.direction =
+        (float4)(rc_from_local(&frame, rc_ic_cell_direction(j, k, params->sampling.x,
+                                                            params->sampling.y, zeta, xi)),
+                 INFINITY);
+    return ray;
+}
+
+// One cache level as the kernels read it.
 typedef struct RecordCache {
     RecordGrid grid;
     RC_GLOBAL const int* cell_start;
@@ -30,16 +59,94 @@ typedef struct RecordCache {
     RC_GLOBAL const IrradianceRecord* records;
 } RecordCache;
 
-typedef struct CachedShading {
-    float3 radiance;  // direct + indirect
-    float3 direct;    // emission, next-event estimation and BRDF-sampled emission (MIS)
+// The light a ray brings back from its first hit.
+typedef struct CachedRadiance {
+    float3 direct;    // emission (when counted), next-event estimation and BRDF-sampled emission
     float3 indirect;  // diffuse from the cache + glossy by path tracing
     float3 albedo;
     float3 normal;
-    float coverage;  // sum of record weights
-    float3 marks;    // record centres (red) and influence borders (green)
+    float3 position;
+    float coverage;  // sum of record weights at the hit
+    float distance;  // to the hit; infinite for a miss
     uint rays;
-} CachedShading;
+} CachedRadiance;
+
+// Light arriving along `ray`: at its hit, emission (if count_emission) and direct light as the
+// path tracer's vertex computes them, indirect light of the diffuse lobe from the cache
+// (rho_d / pi E, Ward et al. 1988), indirect light of the specular lobe (phong, ward) by a path
+// sampled from that lobe. Where no record covers the hit, the diffuse lobe is path traced too.
+// `bounces`: the bounces the ray's path made before (for the depth limit).
+RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcParams* params,
+                                             const RecordCache* cache, Ray ray, RngStream* rng,
+                                             bool count_emission, int bounces) {
+    CachedRadiance c;
+    c.direct = c.indirect = c.albedo = c.normal = c.position = (float3)(0.0f);
+    c.coverage = 0.0f;
+    c.distance = INFINITY;
+    c.rays = 1;
+    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
+    if (hit.primitive == RC_NO_HIT) {
+        if (scene->environment >= 0 && count_emission) {
+            c.direct = scene->lights[scene->environment].radiance.xyz;
+        }
+        return c;
+    }
+    const SurfacePoint sp = rc_surface_point(scene, ray, hit);
+    const SurfaceMaterial material = rc_surface_material(scene, &sp);
+    c.albedo = material.diffuse + material.specular;
+    c.normal = sp.shading.n;
+    c.position = sp.position;
+    c.distance = hit.t;
+    const float3 wo = rc_to_local(&sp.shading, -ray.direction.xyz);
+    if (sp.light >= 0 && sp.front && count_emission) {
+        c.direct += scene->lights[sp.light].radiance.xyz;
+    }
+    if (bounces >= params->depth.x) {
+        return c;  // the path may bounce no more
+    }
+    c.direct += rc_next_event(scene, &sp, &material, wo, rng, &c.rays);
+    c.direct += rc_bsdf_sampled_emission(scene, &sp, &material, wo, rng, &c.rays);
+    if (bounces + 1 >= params->depth.x) {
+        return c;  // indirect light takes one bounce more than the path may make
+    }
+    SurfaceMaterial traced = material;  // the lobes left to path tracing
+    traced.diffuse = (float3)(0.0f);
+    traced.diffuse_probability = 0.0f;
+    if (rc_luminance(material.diffuse) > 0.0f) {
+        const float4 gathered =
+            rc_ic_gather(&cache->grid, cache->cell_start, cache->cell_records, cache->records,
+                         sp.position, sp.shading.n, params->weights.x, params->weights.y);
+        c.coverage = gathered.w;
+        if (gathered.w > 0.0f) {
+            c.indirect += material.diffuse * RC_INV_PI * (gathered.xyz / gathered.w);
+        } else {
+            traced = material;
+        }
+    }
+    if (rc_is_black(traced.diffuse) &&
+        (traced.kind == RC_MATERIAL_DIFFUSE || rc_is_black(traced.specular))) {
+        return c;
+    }
+    const float u_lobe = rc_rng_next_float(rng);
+    const float u1 = rc_rng_next_float(rng);
+    const float u2 = rc_rng_next_float(rng);
+    float3 wi;
+    float pdf;
+    float3 f;
+    if (rc_material_sample(&traced, wo, u_lobe, u1, u2, &wi, &pdf, &f)) {
+        const float3 direction = rc_from_local(&sp.shading, wi);
+        if (dot(direction, sp.geometric_normal) > 0.0f) {
+            Ray next;
+            next.origin = (float4)(sp.origin, 0.0f);
+            next.direction = (float4)(direction, INFINITY);
+            const PathSample p = rc_path_radiance(scene, next, rng, bounces + 1, params->depth.x,
+                                                  params->depth.y, false);
+            c.rays += p.rays;
+            c.indirect += f * (wi.z / pdf) * p.radiance;
+        }
+    }
+    return c;
+}
 
 // Record centres and influence borders near p, for the `records` AOV.
 RC_FUNC float3 rc_ic_record_marks(const RecordCache* cache, float accuracy, float3 p,
@@ -62,71 +169,24 @@ RC_FUNC float3 rc_ic_record_marks(const RecordCache* cache, float accuracy, floa
     return marks;
 }
 
-// Sample s of a pixel: emission and direct light as the path tracer's first vertex computes
-// them, indirect light of the diffuse lobe from the cache (rho_d / pi E), indirect light of the
-// specular lobe (phong, ward) by a path sampled from that lobe.
+// Camera sample s of a pixel, shaded with the first cache level.
+typedef struct CachedShading {
+    CachedRadiance light;
+    float3 marks;  // record centres (red) and influence borders (green), when drawn
+} CachedShading;
+
 RC_FUNC CachedShading rc_ic_shade(const SceneData* scene, const CameraParams* camera,
                                   const IcParams* params, const RecordCache* cache, uint pixel,
                                   uint s) {
     CachedShading c;
-    c.radiance = c.direct = c.indirect = c.albedo = c.normal = c.marks = (float3)(0.0f);
-    c.coverage = 0.0f;
-    c.rays = 1;
     RngStream rng;
     float x, y;
     const Ray ray = rc_ic_camera_ray(params, camera, pixel, s, &rng, &x, &y);
-    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
-    if (hit.primitive == RC_NO_HIT) {
-        if (scene->environment >= 0) {
-            c.direct = scene->lights[scene->environment].radiance.xyz;
-        }
-        c.radiance = c.direct;
-        return c;
+    c.light = rc_ic_cached_radiance(scene, params, cache, ray, &rng, true, 0);
+    c.marks = (float3)(0.0f);
+    if (params->weights.z != 0.0f && isfinite(c.light.distance)) {
+        c.marks = rc_ic_record_marks(cache, params->weights.x, c.light.position,
+                                     rc_ic_pixel_footprint(camera, x, y, c.light.distance));
     }
-    const SurfacePoint sp = rc_surface_point(scene, ray, hit);
-    const SurfaceMaterial material = rc_surface_material(scene, &sp);
-    c.albedo = material.diffuse + material.specular;
-    c.normal = sp.shading.n;
-    const float3 wo = rc_to_local(&sp.shading, -ray.direction.xyz);
-    if (sp.light >= 0 && sp.front) {
-        c.direct += scene->lights[sp.light].radiance.xyz;
-    }
-    c.direct += rc_next_event(scene, &sp, &material, wo, &rng, &c.rays);
-    c.direct += rc_bsdf_sampled_emission(scene, &sp, &material, wo, &rng, &c.rays);
-    if (rc_luminance(material.diffuse) > 0.0f) {
-        const float4 gathered =
-            rc_ic_gather(&cache->grid, cache->cell_start, cache->cell_records, cache->records,
-                         sp.position, sp.shading.n, params->weights.x, params->weights.y);
-        c.coverage = gathered.w;
-        if (gathered.w > 0.0f) {
-            c.indirect += material.diffuse * RC_INV_PI * (gathered.xyz / gathered.w);
-        }
-    }
-    if (material.kind != RC_MATERIAL_DIFFUSE && !rc_is_black(material.specular)) {
-        SurfaceMaterial lobe = material;
-        lobe.diffuse = (float3)(0.0f);
-        lobe.diffuse_probability = 0.0f;
-        const float u_lobe = rc_rng_next_float(&rng);
-        const float u1 = rc_rng_next_float(&rng);
-        const float u2 = rc_rng_next_float(&rng);
-        float3 wi;
-        float pdf;
-        float3 f;
-        if (rc_material_sample(&lobe, wo, u_lobe, u1, u2, &wi, &pdf, &f)) {
-            const float3 direction = rc_from_local(&sp.shading, wi);
-            if (dot(direction, sp.geometric_normal) > 0.0f) {
-                Ray next;
-                next.origin = (float4)(sp.origin, 0.0f);
-                next.direction = (float4)(direction, INFINITY);
-                const PathSample p =
-                    rc_path_radiance(scene, next, &rng, 1, params->depth.x, params->depth.y, false);
-                c.rays += p.rays;
-                c.indirect += f * (wi.z / pdf) * p.radiance;
-            }
-        }
-    }
-    c.marks = rc_ic_record_marks(cache, params->weights.x, sp.position,
-                                 rc_ic_pixel_footprint(camera, x, y, hit.t));
-    c.radiance = c.direct + c.indirect;
     return c;
 }

@@ -57,7 +57,7 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
     const std::vector<BadCommand> cases = {
         {{"render", cornell_box(), "-o", (dir / "out.xyz").string()}, 2, "unsupported output"},
         {{"render", cornell_box(), "-o", (dir / "missing/out.png").string()}, 2, "does not exist"},
-        {{"render", cornell_box(), "-o", out, "--method", "ic"}, 2, "unknown method 'ic'"},
+        {{"render", cornell_box(), "-o", out, "--method", "rc"}, 2, "unknown method 'rc'"},
         {{"render", cornell_box(), "-o", out, "--bogus"}, 2, "unknown option '--bogus'"},
         {{"render", cornell_box(), "-o", out, "--spp", "0"}, 2, "--spp"},
         {{"render", cornell_box(), "-o", out, "--width", "abc"}, 2, "--width"},

@@ -7,16 +7,14 @@
 namespace rc {
 namespace {
 
-using namespace rc::shared;
-
 TEST(SharedLayout, DeviceMatchesHost) {
     std::vector<unsigned> host;
     std::vector<std::string> names;
-#define RC_HOST_STRUCT(type)                             \
-    host.push_back(static_cast<unsigned>(sizeof(type))); \
+#define RC_HOST_STRUCT(type)                                     \
+    host.push_back(static_cast<unsigned>(sizeof(shared::type))); \
     names.push_back("sizeof(" #type ")");
-#define RC_HOST_FIELD(type, field)                                \
-    host.push_back(static_cast<unsigned>(offsetof(type, field))); \
+#define RC_HOST_FIELD(type, field)                                        \
+    host.push_back(static_cast<unsigned>(offsetof(shared::type, field))); \
     names.push_back("offsetof(" #type ", " #field ")");
     RC_SHARED_LAYOUTS(RC_HOST_STRUCT, RC_HOST_FIELD)
 #undef RC_HOST_STRUCT

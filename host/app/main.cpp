@@ -15,7 +15,9 @@ const char* kUsage =
     "commands:\n"
     "  devices          list the OpenCL platforms and devices\n"
     "  render SCENE     render a scene to an image\n"
+    "  compare TEST REF an image's error against a reference\n"
     "  bench rays       traversal throughput against Embree\n"
+    "  bench pt         path-tracing throughput\n"
     "  bench compile    cold and warm kernel build times\n"
     "\n"
     "radcache COMMAND --help describes a command's options.\n";
@@ -35,6 +37,9 @@ int main(int argc, char** argv) {
         }
         if (words[0] == "render") {
             return rc::run_render_command(args);
+        }
+        if (words[0] == "compare") {
+            return rc::run_compare_command(args);
         }
         if (words[0] == "bench") {
             return rc::run_bench_command(args);

@@ -1,6 +1,5 @@
 // `radcache render SCENE [options]`.
-#include <unistd.h>
-
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -117,15 +116,6 @@ std::filesystem::path intermediate_path(const std::filesystem::path& output, int
     path.replace_filename(output.stem().string() + ".spp" + std::to_string(spp) +
                           output.extension().string());
     return path;
-}
-
-void check_writable_parent(const std::filesystem::path& file, const char* option) {
-    const std::filesystem::path dir = file.parent_path().empty() ? "." : file.parent_path();
-    if (!std::filesystem::is_directory(dir) || ::access(dir.c_str(), W_OK) != 0) {
-        throw Error(std::string(option) + " " + file.string() + ": directory '" + dir.string() +
-                        "' does not exist or is not writable",
-                    kExitUsage);
-    }
 }
 
 nlohmann::json kernel_times_json(const Context& context) {
@@ -307,6 +297,8 @@ int run_render_command(const std::vector<std::string>& args) {
             ic.seed = settings.seed;
             ic.max_depth = settings.max_depth;
             ic.rr_depth = settings.rr_depth;
+            ic.records_overlay = layers.empty() ||
+                                 std::find(layers.begin(), layers.end(), "records") != layers.end();
             IrradianceCacheStats stats;
             image = cache.render(ic, &stats);
             spp_done = settings.spp;
@@ -315,21 +307,27 @@ int run_render_command(const std::vector<std::string>& args) {
             if (first_nonfinite_pixel < 0) {
                 first_nonfinite_pixel = stats.first_nonfinite_pixel;
             }
-            nlohmann::json levels = nlohmann::json::array();
-            for (size_t l = 0; l < stats.level_strides.size(); ++l) {
-                levels.push_back(
-                    {{"stride", stats.level_strides[l]}, {"records", stats.level_records[l]}});
+            nlohmann::json passes = nlohmann::json::array();
+            for (const PlacementPass& pass : stats.passes) {
+                passes.push_back({{"level", pass.level},
+                                  {"stride", pass.stride},
+                                  {"candidates", pass.candidates},
+                                  {"uncovered", pass.uncovered},
+                                  {"records", pass.records}});
             }
             this_frame["spp"] = settings.spp;
             this_frame["records"] = stats.records;
             this_frame["loaded_records"] = stats.loaded_records;
-            this_frame["placement_passes"] = levels;
+            this_frame["level_records"] = stats.level_records;
+            this_frame["placement_passes"] = passes;
             this_frame["strata"] = {stats.strata_m, stats.strata_n};
+            size_t computed = 0;
+            for (size_t level_size : stats.level_records) {
+                computed += level_size;
+            }
+            computed -= stats.loaded_records;
             this_frame["rays_per_record"] =
-                stats.records > stats.loaded_records
-                    ? static_cast<double>(stats.record_rays) /
-                          static_cast<double>(stats.records - stats.loaded_records)
-                    : 0.0;
+                computed > 0 ? static_cast<double>(stats.record_rays) / computed : 0.0;
             this_frame["record_rays"] = stats.record_rays;
             this_frame["shading_rays"] = stats.shading_rays;
             this_frame["cache_bytes"] = stats.cache_bytes;

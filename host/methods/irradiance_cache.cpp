@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <regex>
 #include <unordered_map>
 
@@ -28,7 +29,6 @@ double seconds_since(Clock::time_point start) {
 constexpr size_t kFilmSlots = 7;      // float4 per pixel (kernels/irradiance_cache.cl)
 constexpr float kMaxWeight = 1.0e4f;  // weight cap near a record's centre
 constexpr size_t kMaxBatchCells = size_t{1} << 23;  // hemisphere cells per record launch
-constexpr int kFinestPasses = 16;  // passes at stride 1 before every sample is covered
 
 shared::float4 float4_of(glm::vec3 v, float w = 0.0f) { return {v.x, v.y, v.z, w}; }
 glm::vec3 vec3_of(const shared::float4& v) { return {v.x, v.y, v.z}; }
@@ -50,27 +50,29 @@ struct DeviceRecords {
     Buffer<int> cell_records;
 };
 
-// Keeps, in order, the candidates farther than their minimum influence radius from the ones
-// kept before (with similar normals): one batch then places no two records where one would do.
-std::vector<size_t> thin_candidates(const std::vector<shared::GBufferSample>& gbuffer,
-                                    const std::vector<size_t>& candidates,
+// Keeps, in order, the samples farther than their minimum influence radius from the ones kept
+// before (with similar normals): one batch then places no two records where one would do.
+// Returns indices into `samples`.
+std::vector<size_t> thin_candidates(const std::vector<shared::GBufferSample>& samples,
                                     const std::vector<float>& min_influence) {
     float cell = 0.0f;
     for (float r : min_influence) {
         cell = std::max(cell, r);
     }
+    std::vector<size_t> kept;
     if (!(cell > 0.0f)) {
-        return candidates;
+        for (size_t c = 0; c < samples.size(); ++c) {
+            kept.push_back(c);
+        }
+        return kept;
     }
     std::unordered_map<long long, std::vector<size_t>> kept_in_cell;
     auto key = [](long long x, long long y, long long z) {
         return (x * 73856093LL) ^ (y * 19349663LL) ^ (z * 83492791LL);
     };
-    std::vector<size_t> kept;
-    for (size_t c = 0; c < candidates.size(); ++c) {
-        const shared::GBufferSample& g = gbuffer[candidates[c]];
-        const glm::vec3 p = vec3_of(g.position);
-        const glm::vec3 n = vec3_of(g.normal);
+    for (size_t c = 0; c < samples.size(); ++c) {
+        const glm::vec3 p = vec3_of(samples[c].position);
+        const glm::vec3 n = vec3_of(samples[c].normal);
         const long long cx = static_cast<long long>(std::floor(p.x / cell));
         const long long cy = static_cast<long long>(std::floor(p.y / cell));
         const long long cz = static_cast<long long>(std::floor(p.z / cell));
@@ -83,10 +85,9 @@ std::vector<size_t> thin_candidates(const std::vector<shared::GBufferSample>& gb
                         continue;
                     }
                     for (size_t other : found->second) {
-                        const shared::GBufferSample& o = gbuffer[candidates[other]];
-                        const float d = glm::length(p - vec3_of(o.position));
+                        const float d = glm::length(p - vec3_of(samples[other].position));
                         if (d < std::max(min_influence[c], min_influence[other]) &&
-                            glm::dot(n, vec3_of(o.normal)) > 0.9f) {
+                            glm::dot(n, vec3_of(samples[other].normal)) > 0.9f) {
                             near = true;
                             break;
                         }
@@ -96,7 +97,7 @@ std::vector<size_t> thin_candidates(const std::vector<shared::GBufferSample>& gb
         }
         if (!near) {
             kept_in_cell[key(cx, cy, cz)].push_back(c);
-            kept.push_back(candidates[c]);
+            kept.push_back(c);
         }
     }
     return kept;
@@ -138,19 +139,61 @@ IrradianceCache::IrradianceCache(Context& context, const Scene& scene, const Dev
       bvh_(bvh),
       device_scene_(device_scene),
       gbuffer_kernel_(context.kernel("irradiance_cache.cl", "ic_gbuffer")),
+      hits_kernel_(context.kernel("irradiance_cache.cl", "ic_record_hits")),
       cells_kernel_(context.kernel("irradiance_cache.cl", "ic_record_cells")),
+      cached_cells_kernel_(context.kernel("irradiance_cache.cl", "ic_record_cells_cached")),
       reduce_kernel_(context.kernel("irradiance_cache.cl", "ic_record_reduce")),
       gather_kernel_(context.kernel("irradiance_cache.cl", "ic_gather")),
+      uncovered_kernel_(context.kernel("irradiance_cache.cl", "ic_uncovered")),
+      select_kernel_(context.kernel("irradiance_cache.cl", "ic_gbuffer_select")),
       shade_kernel_(context.kernel("irradiance_cache.cl", "ic_shade")) {}
+
+void IrradianceCache::reset(const RecordSampling& sampling) {
+    if (sampling.levels < 1 || sampling.m < 1 || sampling.n < 1) {
+        throw Error("irradiance cache: needs at least one level and one hemisphere stratum",
+                    kExitUsage);
+    }
+    sampling_ = sampling;
+    stores_.assign(static_cast<size_t>(sampling.levels), RecordStore(sampling.accuracy));
+    stats_ = IrradianceCacheStats{};
+    stats_.strata_m = sampling.m;
+    stats_.strata_n = sampling.n;
+}
+
+shared::IcParams IrradianceCache::level_params(int level) const {
+    shared::IcParams params{};
+    params.sampling = {sampling_.m, sampling_.n, 0, sampling_.include_emission ? 1 : 0};
+    params.depth = {sampling_.max_depth, sampling_.rr_depth, level, 0};
+    params.seed = {static_cast<unsigned>(sampling_.seed),
+                   static_cast<unsigned>(sampling_.seed >> 32), 0, 0};
+    params.weights = {sampling_.accuracy, kMaxWeight, 0.0f, 0.0f};
+    params.image = image_;
+    return params;
+}
 
 std::vector<CacheRecord> IrradianceCache::compute_records(const std::vector<RecordSite>& sites,
                                                           uint32_t first_index,
                                                           const RecordSampling& sampling,
                                                           uint64_t* rays) {
+    reset(sampling);
+    first_index_ = first_index;
+    std::vector<CacheRecord> computed = compute_level(0, sites);
+    first_index_ = 0;
+    if (rays != nullptr) {
+        *rays += stats_.record_rays;
+    }
+    return computed;
+}
+
+std::vector<CacheRecord> IrradianceCache::compute_level(int level,
+                                                        const std::vector<RecordSite>& sites) {
     std::vector<CacheRecord> computed;
     computed.reserve(sites.size());
-    const size_t per_record = static_cast<size_t>(sampling.m) * sampling.n;
-    const size_t batch_limit = std::max<size_t>(1, kMaxBatchCells / per_record);
+    const bool cached = level + 1 < sampling_.levels;
+    const size_t per_record = static_cast<size_t>(sampling_.m) * sampling_.n;
+    // Reading a deeper level needs the hemisphere hits on the host side too: smaller batches.
+    const size_t cells_limit = cached ? kMaxBatchCells / 8 : kMaxBatchCells;
+    const size_t batch_limit = std::max<size_t>(1, cells_limit / per_record);
     const SceneArguments scene(bvh_, device_scene_);
     Buffer<unsigned> counters(context_, 1, "ic_record_counters");
     for (size_t begin = 0; begin < sites.size(); begin += batch_limit) {
@@ -167,21 +210,29 @@ std::vector<CacheRecord> IrradianceCache::compute_records(const std::vector<Reco
         const Buffer<shared::float4> origin_buffer(context_, origins, "ic_batch_origins");
         Buffer<shared::float4> cells(context_, count * per_record, "ic_cells");
         Buffer<shared::float4> distances(context_, count, "ic_distances");
+        shared::IcParams params = level_params(level);
+        // Streams: records are numbered within their level.
+        const size_t first = (level == 0 ? first_index_ : 0) + stores_[level].size() + begin;
+        params.sampling.z = static_cast<int>(first);
         counters.fill_zero();
-        shared::IcParams params{};
-        params.sampling = {sampling.m, sampling.n, static_cast<int>(first_index + begin),
-                           sampling.include_emission ? 1 : 0};
-        params.depth = {sampling.max_depth, sampling.rr_depth, 0, 0};
-        params.seed = {static_cast<unsigned>(sampling.seed),
-                       static_cast<unsigned>(sampling.seed >> 32), 0, 0};
-        context_.launch(cells_kernel_, count * per_record, params, scene, record_buffer,
-                        origin_buffer, cells, counters);
+        if (cached) {
+            // The next level must cover every hit of these rays before they read it.
+            Buffer<shared::GBufferSample> hits(context_, count * per_record, "ic_record_hits");
+            context_.launch(hits_kernel_, count * per_record, params, scene, record_buffer,
+                            origin_buffer, hits);
+            cover(level + 1, hits, {0, 1, 1, 0}, count * per_record, true);
+            const DeviceRecords next(context_, stores_[level + 1]);
+            context_.launch(cached_cells_kernel_, count * per_record, params, scene, record_buffer,
+                            origin_buffer, next.grid, next.cell_start, next.cell_records,
+                            next.records, cells, counters);
+        } else {
+            context_.launch(cells_kernel_, count * per_record, params, scene, record_buffer,
+                            origin_buffer, cells, counters);
+        }
         context_.launch(reduce_kernel_, count, params, cells, record_buffer, distances);
         const std::vector<shared::IrradianceRecord> result = record_buffer.download();
         const std::vector<shared::float4> distance = distances.download();
-        if (rays != nullptr) {
-            *rays += counters.download()[0];
-        }
+        stats_.record_rays += counters.download()[0];
         for (size_t b = 0; b < count; ++b) {
             const RecordSite& site = sites[begin + b];
             CacheRecord r;
@@ -196,12 +247,87 @@ std::vector<CacheRecord> IrradianceCache::compute_records(const std::vector<Reco
             r.translation[2] = vec3_of(result[b].translation_b);
             r.harmonic_distance = distance[b].x;
             r.min_distance = distance[b].y;
+            r.occluder = vec3_of(result[b].occluder);
             r.r_min = site.r_min;
             r.r_max = site.r_max;
+
             computed.push_back(r);
         }
     }
     return computed;
+}
+
+void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samples,
+                            shared::int4 placement, size_t candidates, bool until_covered) {
+    Buffer<unsigned> uncovered_buffer(context_, candidates, "ic_uncovered");
+    Buffer<unsigned> uncovered_count(context_, 1, "ic_uncovered_count");
+    shared::IcParams params = level_params(level);
+    params.placement = placement;
+    const float a = sampling_.accuracy;
+    auto bound = [a](const Spacing& spacing, float footprint) {
+        return (spacing.world ? spacing.value : spacing.value * footprint) / a;
+    };
+    // A pass covers for good the samples it places records at (a record always covers its own
+    // position), so passes until all are covered end.
+    for (int pass = 0; until_covered || pass < 1; ++pass) {
+        const bool timed = level == 0;
+        auto start = Clock::now();
+        std::vector<shared::GBufferSample> uncovered;
+        {
+            const DeviceRecords records(context_, stores_[level]);
+            uncovered_count.fill_zero();
+            context_.launch(uncovered_kernel_, candidates, params, records.grid, records.cell_start,
+                            records.cell_records, records.records, samples, uncovered_buffer,
+                            uncovered_count);
+            const size_t count = uncovered_count.download()[0];
+            if (count > 0) {
+                std::vector<unsigned> indices(count);
+                uncovered_buffer.read(indices.data(), count * sizeof(unsigned));
+                std::sort(indices.begin(), indices.end());  // appended in any order
+                const Buffer<unsigned> index_buffer(context_, indices, "ic_uncovered_sorted");
+                Buffer<shared::GBufferSample> selected(context_, count, "ic_uncovered_samples");
+                context_.launch(select_kernel_, count, samples, index_buffer, selected);
+                uncovered = selected.download();
+            }
+        }
+        std::vector<float> min_influence(uncovered.size());
+        for (size_t c = 0; c < uncovered.size(); ++c) {
+            min_influence[c] = a * bound(sampling_.min_spacing, uncovered[c].position.w);
+        }
+        const std::vector<size_t> chosen = thin_candidates(uncovered, min_influence);
+        if (timed) {
+            stats_.placement_seconds += seconds_since(start);
+        }
+        if (chosen.empty()) {
+            break;
+        }
+        start = Clock::now();
+        std::vector<RecordSite> sites;
+        sites.reserve(chosen.size());
+        for (size_t c : chosen) {
+            const shared::GBufferSample& g = uncovered[c];
+            RecordSite site;
+            site.position = vec3_of(g.position);
+            site.normal = vec3_of(g.normal);
+            site.origin = vec3_of(g.origin);
+            site.r_min = bound(sampling_.min_spacing, g.position.w);
+            site.r_max = std::max(site.r_min, bound(sampling_.max_spacing, g.position.w));
+            sites.push_back(site);
+        }
+        const std::vector<CacheRecord> computed = compute_level(level, sites);
+        if (timed) {
+            stats_.record_seconds += seconds_since(start);
+        }
+        start = Clock::now();
+        for (const CacheRecord& record : computed) {
+            stores_[level].insert(record);
+        }
+        if (timed) {
+            stats_.insertion_seconds += seconds_since(start);
+        }
+        stats_.passes.push_back(
+            {level, placement.x, candidates, uncovered.size(), computed.size()});
+    }
 }
 
 std::vector<shared::float4> IrradianceCache::gather(
@@ -222,7 +348,6 @@ std::vector<shared::float4> IrradianceCache::gather(
 }
 
 Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceCacheStats* stats) {
-    IrradianceCacheStats result;
     const int width = options.width > 0 ? options.width : scene_.camera.width;
     const int height = options.height > 0 ? options.height : scene_.camera.height;
     const size_t pixels = static_cast<size_t>(width) * height;
@@ -238,127 +363,73 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
         options.min_spacing.value > options.max_spacing.value) {
         throw Error("--ic-min-spacing exceeds --ic-max-spacing", kExitUsage);
     }
-    if (options.bounces != 1) {
-        throw Error("--ic-bounces " + std::to_string(options.bounces) +
-                        ": only 1 is implemented (deeper bounces by path tracing)",
-                    kExitUsage);
+    if (options.bounces < 1) {
+        throw Error("--ic-bounces must be at least 1", kExitUsage);
     }
-    const shared::CameraParams camera = camera_params(scene_.camera, width, height);
-    const SceneArguments scene(bvh_, device_scene_);
-    shared::IcParams params{};
-    params.image = {width, height, options.spp, 0};
-    params.depth = {options.max_depth, options.rr_depth, 0, 0};
-    params.seed = {static_cast<unsigned>(options.seed), static_cast<unsigned>(options.seed >> 32),
-                   0, 0};
-    params.weights = {options.accuracy, kMaxWeight, 0.0f, 0.0f};
-
-    // 1. G-buffer.
-    auto start = Clock::now();
-    Buffer<shared::GBufferSample> gbuffer_buffer(context_, samples, "ic_gbuffer");
-    context_.launch(gbuffer_kernel_, samples, params, camera, scene, gbuffer_buffer);
-    const std::vector<shared::GBufferSample> gbuffer = gbuffer_buffer.download();
-    result.gbuffer_seconds = seconds_since(start);
-
-    // 2.-4. Placement, coarse to fine, with record computation and insertion.
-    store_ = RecordStore(options.accuracy);
-    if (!options.cache_in.empty()) {
-        store_.restore(read_irradiance_cache(options.cache_in, scene_, options.accuracy));
-        result.loaded_records = store_.size();
+    if (samples > std::numeric_limits<uint32_t>::max()) {
+        throw Error("irradiance caching: width x height x spp exceeds 2^32 camera samples",
+                    kExitUsage);
     }
     RecordSampling sampling = strata_for(options.rays);
     sampling.max_depth = options.max_depth;
     sampling.rr_depth = options.rr_depth;
     sampling.seed = options.seed;
-    result.strata_m = sampling.m;
-    result.strata_n = sampling.n;
-    auto bound = [&](const Spacing& spacing, float footprint) {
-        return (spacing.world ? spacing.value : spacing.value * footprint) / options.accuracy;
-    };
-    for (int stride : {16, 8, 4, 2, 1}) {
-        std::vector<size_t> candidates;
-        for (size_t p = 0; p < pixels; ++p) {
-            const int x = static_cast<int>(p % width);
-            const int y = static_cast<int>(p / width);
-            if (x % stride != 0 || y % stride != 0) {
-                continue;
-            }
-            const int sample_count = stride == 1 ? options.spp : 1;
-            for (int s = 0; s < sample_count; ++s) {
-                const size_t i = p * options.spp + s;
-                if (gbuffer[i].info.w != 0) {
-                    candidates.push_back(i);
-                }
-            }
-        }
-        for (int pass = 0; pass < (stride == 1 ? kFinestPasses : 1) && !candidates.empty();
-             ++pass) {
-            start = Clock::now();
-            std::vector<size_t> uncovered;
-            if (store_.size() == 0) {
-                uncovered = candidates;
-            } else {
-                const DeviceRecords records(context_, store_);
-                std::vector<int> queries(candidates.begin(), candidates.end());
-                const Buffer<int> query_buffer(context_, queries, "ic_candidates");
-                Buffer<shared::float4> coverage(context_, queries.size(), "ic_coverage");
-                context_.launch(gather_kernel_, queries.size(), params, records.grid,
-                                records.cell_start, records.cell_records, records.records,
-                                gbuffer_buffer, query_buffer, coverage);
-                const std::vector<shared::float4> covered = coverage.download();
-                for (size_t c = 0; c < candidates.size(); ++c) {
-                    if (!(covered[c].w > 0.0f)) {
-                        uncovered.push_back(candidates[c]);
-                    }
-                }
-            }
-            candidates = uncovered;
-            std::vector<float> min_influence(uncovered.size());
-            for (size_t c = 0; c < uncovered.size(); ++c) {
-                min_influence[c] =
-                    options.accuracy * bound(options.min_spacing, gbuffer[uncovered[c]].position.w);
-            }
-            const std::vector<size_t> chosen = thin_candidates(gbuffer, uncovered, min_influence);
-            result.placement_seconds += seconds_since(start);
-            if (chosen.empty()) {
-                break;
-            }
-            start = Clock::now();
-            std::vector<RecordSite> sites;
-            sites.reserve(chosen.size());
-            for (size_t i : chosen) {
-                const shared::GBufferSample& g = gbuffer[i];
-                RecordSite site;
-                site.position = vec3_of(g.position);
-                site.normal = vec3_of(g.normal);
-                site.origin = vec3_of(g.origin);
-                site.r_min = bound(options.min_spacing, g.position.w);
-                site.r_max = std::max(site.r_min, bound(options.max_spacing, g.position.w));
-                sites.push_back(site);
-            }
-            const std::vector<CacheRecord> computed = compute_records(
-                sites, static_cast<uint32_t>(store_.size()), sampling, &result.record_rays);
-            result.record_seconds += seconds_since(start);
-            start = Clock::now();
-            for (const CacheRecord& record : computed) {
-                store_.insert(record);
-            }
-            result.insertion_seconds += seconds_since(start);
-            result.level_strides.push_back(stride);
-            result.level_records.push_back(computed.size());
+    sampling.levels = options.bounces;
+    sampling.accuracy = options.accuracy;
+    sampling.min_spacing = options.min_spacing;
+    sampling.max_spacing = options.max_spacing;
+    reset(sampling);
+    image_ = {width, height, options.spp, 0};
+
+    const shared::CameraParams camera = camera_params(scene_.camera, width, height);
+    const SceneArguments scene(bvh_, device_scene_);
+    shared::IcParams params = level_params(0);
+    params.weights.z = options.records_overlay ? 1.0f : 0.0f;
+
+    // 1. G-buffer.
+    auto start = Clock::now();
+    Buffer<shared::GBufferSample> gbuffer(context_, samples, "ic_gbuffer");
+    context_.launch(gbuffer_kernel_, samples, params, camera, scene, gbuffer);
+    context_.finish();
+    stats_.gbuffer_seconds = seconds_since(start);
+
+    // 2.-4. Placement, coarse to fine, with record computation and insertion. Candidates: the
+    // first camera sample of every stride-th pixel of every stride-th row; at stride 1 every
+    // camera sample. Coarser strides take one pass. At stride 1 passes repeat until every sample
+    // is covered: neighbor clamping may shrink records placed earlier and uncover samples that
+    // were covered, so every pass checks all candidates again. (Indirect light needs two
+    // bounces; below that the cache is never read.)
+    if (!options.cache_in.empty()) {
+        std::vector<std::vector<CacheRecord>> loaded =
+            read_irradiance_cache(options.cache_in, scene_, options.accuracy);
+        for (size_t level = 0; level < loaded.size() && level < stores_.size(); ++level) {
+            stats_.loaded_records += loaded[level].size();
+            stores_[level].restore(std::move(loaded[level]));
         }
     }
-    result.records = store_.size();
+    if (options.max_depth >= 2) {
+        for (int stride : {16, 8, 4, 2, 1}) {
+            const int columns = (width + stride - 1) / stride;
+            const int rows = (height + stride - 1) / stride;
+            const int per_pixel = stride == 1 ? options.spp : 1;
+            cover(0, gbuffer, {stride, per_pixel, columns, 0},
+                  static_cast<size_t>(columns) * rows * per_pixel, stride == 1);
+        }
+    }
+    for (const RecordStore& store : stores_) {
+        stats_.level_records.push_back(store.size());
+    }
+    stats_.records = stores_[0].size();
     if (!options.cache_out.empty()) {
-        write_irradiance_cache(options.cache_out, scene_, store_);
+        write_irradiance_cache(options.cache_out, scene_, stores_);
     }
 
     // 5. Shading.
     start = Clock::now();
-    const DeviceRecords records(context_, store_);
-    result.cache_bytes = records.bytes();
-    result.insertion_seconds += seconds_since(start);
+    const DeviceRecords records(context_, stores_[0]);
+    stats_.cache_bytes = records.bytes();
+    stats_.insertion_seconds += seconds_since(start);
     start = Clock::now();
-    params.image.w = static_cast<int>(store_.size());
     Buffer<shared::float4> film(context_, pixels * kFilmSlots, "ic_film");
     Buffer<unsigned> counters(context_, 3, "ic_counters");
     counters.upload({0u, 0u, 0xffffffffu});
@@ -366,31 +437,35 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
                     records.cell_records, records.records, film, counters);
     const std::vector<shared::float4> sums = film.download();
     const std::vector<unsigned> c = counters.download();
-    result.shading_rays = c[0];
-    result.nonfinite_samples = c[1];
-    result.first_nonfinite_pixel = c[1] > 0 ? static_cast<int64_t>(c[2]) : -1;
-    result.shading_seconds = seconds_since(start);
+    stats_.shading_rays = c[0];
+    stats_.nonfinite_samples = c[1];
+    stats_.first_nonfinite_pixel = c[1] > 0 ? static_cast<int64_t>(c[2]) : -1;
+    stats_.shading_seconds = seconds_since(start);
 
-    Image image(width, height, 19);
+    const int channels = options.records_overlay ? 19 : 16;
+    Image image(width, height, channels);
     image.channel_names = {"R",          "G",          "B",          "direct.R",   "direct.G",
                            "direct.B",   "indirect.R", "indirect.G", "indirect.B", "albedo.R",
                            "albedo.G",   "albedo.B",   "normal.R",   "normal.G",   "normal.B",
                            "coverage.Y", "records.R",  "records.G",  "records.B"};
+    image.channel_names.resize(channels);
     for (size_t p = 0; p < pixels; ++p) {
         const shared::float4* s = &sums[kFilmSlots * p];
-        float* out = &image.pixels[p * 19];
+        float* out = &image.pixels[p * channels];
         for (int k = 0; k < 5; ++k) {
             out[3 * k + 0] = s[k].x;
             out[3 * k + 1] = s[k].y;
             out[3 * k + 2] = s[k].z;
         }
         out[15] = s[5].x;
-        out[16] = s[6].x;
-        out[17] = s[6].y;
-        out[18] = s[6].z;
+        if (options.records_overlay) {
+            out[16] = s[6].x;
+            out[17] = s[6].y;
+            out[18] = s[6].z;
+        }
     }
     if (stats != nullptr) {
-        *stats = result;
+        *stats = stats_;
     }
     return image;
 }

@@ -34,37 +34,50 @@ struct IrradianceCacheOptions {
     uint64_t seed = 0;
     int max_depth = 64;
     int rr_depth = 3;
-    float accuracy = 0.25f;            // a: records influence points within a R
-    int rays = 512;                    // hemisphere rays per record (M x N strata, N ~ pi M)
-    Spacing min_spacing{2.0f, false};  // bounds on a record's influence radius a R
-    Spacing max_spacing{32.0f, false};
-    int bounces = 1;                  // 1: hemisphere rays path-trace what lies beyond
+    float accuracy = 0.35f;            // a: records influence points within a R
+    int rays = 1024;                   // hemisphere rays per record (M x N strata, N ~ pi M)
+    Spacing min_spacing{8.0f, false};  // bounds on a record's influence radius a R
+    Spacing max_spacing{64.0f, false};
+    int bounces = 1;  // cache levels: 1 path-traces beyond the hemisphere rays' hits; n > 1
+                      // reads level k + 1 there for levels k < n
     std::filesystem::path cache_in;   // records to start from
     std::filesystem::path cache_out;  // where to save the records
+    bool records_overlay = true;      // draw the `records` layer
+};
+
+// One pass of placement: records created at one cache level (0: the camera's) from candidates
+// at one pixel stride (0: hemisphere hits of the level above).
+struct PlacementPass {
+    int level = 0;
+    int stride = 0;
+    size_t candidates = 0;
+    size_t uncovered = 0;
+    size_t records = 0;
 };
 
 struct IrradianceCacheStats {
-    std::vector<int> level_strides;     // pixel stride of each placement pass
-    std::vector<size_t> level_records;  // records created by each pass
-    size_t records = 0;                 // in the cache at the end (loaded ones included)
-    size_t loaded_records = 0;
+    std::vector<PlacementPass> passes;
+    std::vector<size_t> level_records;  // in each level's cache at the end (loaded ones included)
+    size_t records = 0;                 // in the first level at the end
+    size_t loaded_records = 0;          // all levels
     int strata_m = 0;
     int strata_n = 0;
     uint64_t record_rays = 0;   // rays traced for records (hemisphere rays and their paths)
     uint64_t shading_rays = 0;  // rays traced by the shading pass
     double gbuffer_seconds = 0.0;
-    double placement_seconds = 0.0;  // coverage queries and candidate selection
-    double record_seconds = 0.0;     // hemisphere sampling and reduction
-    double insertion_seconds = 0.0;  // host insertion, device records and grid
+    double placement_seconds = 0.0;  // coverage queries and candidate selection, first level
+    double record_seconds = 0.0;     // record computation, deeper levels' placement included
+    double insertion_seconds = 0.0;  // host insertion and the device records and grid
     double shading_seconds = 0.0;
-    size_t cache_bytes = 0;  // records and grid on the device
+    size_t cache_bytes = 0;  // records and grid of the first level on the device
     uint64_t nonfinite_samples = 0;
     int64_t first_nonfinite_pixel = -1;
 };
 
 // The layers of an irradiance-cached image, in channel order: beauty (R, G, B), direct, indirect
 // (3 channels each), albedo, normal, coverage (1 channel: the sum of record weights), records
-// (record centres red, influence borders green).
+// (record centres red and influence borders green over the image at half brightness; only when
+// IrradianceCacheOptions::records_overlay).
 extern const char* const kIrradianceCacheAovs[7];
 
 // Where a record is to be computed.
@@ -76,14 +89,18 @@ struct RecordSite {
     float r_max = 0.0f;
 };
 
-// How records sample their hemisphere.
+// How records sample their hemisphere and how deeper cache levels place their records.
 struct RecordSampling {
-    int m = 13;  // polar strata
-    int n = 39;  // azimuthal strata
+    int m = 18;  // polar strata
+    int n = 57;  // azimuthal strata
     int max_depth = 64;
     int rr_depth = 3;
     uint64_t seed = 0;
-    bool include_emission = false;  // count emitters the hemisphere rays see (tests)
+    bool include_emission = false;      // count emitters the hemisphere rays see (tests)
+    int levels = 1;                     // cache levels (--ic-bounces)
+    float accuracy = 0.35f;             // of every level
+    Spacing min_spacing{8.0f, false};   // of the deeper levels, where a "pixel" is the footprint
+    Spacing max_spacing{64.0f, false};  // of one hemisphere stratum's cone
 };
 
 // M x N strata with N ~ pi M and M N close to `rays`.
@@ -96,7 +113,9 @@ class IrradianceCache {
 
     Image render(const IrradianceCacheOptions& options, IrradianceCacheStats* stats = nullptr);
 
-    // The record kernels on arbitrary sites; `first_index` numbers them (their random streams).
+    // First-level records at arbitrary sites, numbered from `first_index` (their random streams);
+    // with sampling.levels > 1 the deeper levels start empty and get the records the hemisphere
+    // rays need.
     std::vector<CacheRecord> compute_records(const std::vector<RecordSite>& sites,
                                              uint32_t first_index, const RecordSampling& sampling,
                                              uint64_t* rays = nullptr);
@@ -105,19 +124,37 @@ class IrradianceCache {
     std::vector<shared::float4> gather(const RecordStore& store,
                                        const std::vector<shared::GBufferSample>& queries);
 
-    const RecordStore& store() const { return store_; }
+    // The records of cache level `level` (0: the one the camera samples read) after render().
+    const RecordStore& store(int level = 0) const { return stores_.at(level); }
 
    private:
+    // Places records at `level` where candidates of `samples` are not covered: candidate q as
+    // ic_uncovered maps it with `placement`. One pass, or passes until all are covered.
+    void cover(int level, const Buffer<shared::GBufferSample>& samples, shared::int4 placement,
+               size_t candidates, bool until_covered);
+    // Records of `level` at `sites`, numbered from the level's current size.
+    std::vector<CacheRecord> compute_level(int level, const std::vector<RecordSite>& sites);
+    void reset(const RecordSampling& sampling);
+    shared::IcParams level_params(int level) const;
+
     Context& context_;
     const Scene& scene_;
     const DeviceBvh& bvh_;
     const DeviceScene& device_scene_;
     Kernel gbuffer_kernel_;
+    Kernel hits_kernel_;
     Kernel cells_kernel_;
+    Kernel cached_cells_kernel_;
     Kernel reduce_kernel_;
     Kernel gather_kernel_;
+    Kernel uncovered_kernel_;
+    Kernel select_kernel_;
     Kernel shade_kernel_;
-    RecordStore store_{0.25f};
+    RecordSampling sampling_;
+    shared::int4 image_{0, 0, 1, 0};  // width, height, camera samples per pixel (render)
+    uint32_t first_index_ = 0;        // stream offset of first-level records (compute_records)
+    std::vector<RecordStore> stores_;
+    IrradianceCacheStats stats_;
 };
 
 }  // namespace rc

@@ -35,21 +35,25 @@ size_t RecordStore::insert(CacheRecord record) {
     record.radius = std::min(radius, record.r_max);
 
     // Neighbor clamping: first the new record by every record it overlaps, then the others by it,
-    // and on from every record that changed (the course clamps one ring of neighbors; relaxing
-    // until nothing changes keeps R_j <= R_k + |p_j - p_k| for every overlapping pair).
-    const size_t j = records_.size();
-    for (const CacheRecord& other : records_) {
+    // and on from every record that changed. (The course clamps one ring of neighbors; the
+    // relaxation only goes further if a neighbor's R had been loaded from elsewhere. The result,
+    // R_j <= R_k + |p_j - p_k| for every pair, does not depend on the visiting order: a record
+    // that lowers R_j always overlaps it.)
+    for (uint32_t k : overlapping(record.position, record.radius)) {
+        const CacheRecord& other = records_[k];
         const float d = glm::length(record.position - other.position);
         if (d < record.radius + other.radius) {
             record.radius = std::min(record.radius, other.radius + d);
         }
     }
+    const size_t j = records_.size();
     records_.push_back(record);
+    index_record(static_cast<uint32_t>(j));
     std::vector<size_t> changed = {j};
     while (!changed.empty()) {
         const size_t a = changed.back();
         changed.pop_back();
-        for (size_t b = 0; b < records_.size(); ++b) {
+        for (uint32_t b : overlapping(records_[a].position, records_[a].radius)) {
             if (b == a) {
                 continue;
             }
@@ -62,6 +66,71 @@ size_t RecordStore::insert(CacheRecord record) {
         }
     }
     return j;
+}
+
+namespace {
+
+// The radius class of R: the smallest L with R <= 2^L.
+int radius_class(float radius) {
+    if (!(radius > 0.0f)) {
+        return -126;
+    }
+    if (!std::isfinite(radius)) {
+        return 127;
+    }
+    int exponent = 0;
+    const float mantissa = std::frexp(radius, &exponent);  // radius = mantissa 2^exponent
+    return mantissa == 0.5f ? exponent - 1 : exponent;
+}
+
+glm::ivec3 cell_of(glm::vec3 p, float cell) {
+    const glm::vec3 c =
+        glm::clamp(glm::floor(p / cell), glm::vec3(-1048576.0f), glm::vec3(1048575.0f));
+    return glm::ivec3(c);
+}
+
+uint64_t cell_key(glm::ivec3 c) {
+    return (static_cast<uint64_t>(static_cast<uint32_t>(c.x) & 0x1fffffu) << 42) |
+           (static_cast<uint64_t>(static_cast<uint32_t>(c.y) & 0x1fffffu) << 21) |
+           static_cast<uint64_t>(static_cast<uint32_t>(c.z) & 0x1fffffu);
+}
+
+}  // namespace
+
+std::vector<uint32_t> RecordStore::overlapping(glm::vec3 p, float radius) const {
+    std::vector<uint32_t> found;
+    for (const auto& [level, radius_class] : classes_) {
+        // Class members have R_k <= cell, so overlapping ones lie within radius + cell of p.
+        const float cell = std::ldexp(1.0f, level);
+        const float reach = radius + cell;
+        const glm::ivec3 from = cell_of(p - glm::vec3(reach), cell);
+        const glm::ivec3 to = cell_of(p + glm::vec3(reach), cell);
+        const glm::dvec3 span = glm::dvec3(to - from) + 1.0;
+        if (!std::isfinite(reach) || span.x * span.y * span.z > radius_class.records.size()) {
+            found.insert(found.end(), radius_class.records.begin(), radius_class.records.end());
+            continue;
+        }
+        for (int z = from.z; z <= to.z; ++z) {
+            for (int y = from.y; y <= to.y; ++y) {
+                for (int x = from.x; x <= to.x; ++x) {
+                    const auto it = radius_class.cells.find(cell_key({x, y, z}));
+                    if (it != radius_class.cells.end()) {
+                        found.insert(found.end(), it->second.begin(), it->second.end());
+                    }
+                }
+            }
+        }
+    }
+    return found;
+}
+
+void RecordStore::index_record(uint32_t index) {
+    // R only shrinks after insertion, so the class chosen now stays an upper bound.
+    const int level = radius_class(records_[index].radius);
+    RadiusClass& radius_class = classes_[level];
+    radius_class.records.push_back(index);
+    radius_class.cells[cell_key(cell_of(records_[index].position, std::ldexp(1.0f, level)))]
+        .push_back(index);
 }
 
 shared::IrradianceRecord RecordStore::device_record(size_t i) const {
@@ -80,6 +149,7 @@ shared::IrradianceRecord RecordStore::device_record(size_t i) const {
     d.translation_r = float4_of(scale * r.translation[0]);
     d.translation_g = float4_of(scale * r.translation[1]);
     d.translation_b = float4_of(scale * r.translation[2]);
+    d.occluder = float4_of(r.occluder);
     return d;
 }
 
@@ -170,6 +240,12 @@ RecordGridData RecordStore::build_grid(size_t max_cells) const {
     return data;
 }
 
-void RecordStore::restore(std::vector<CacheRecord> records) { records_ = std::move(records); }
+void RecordStore::restore(std::vector<CacheRecord> records) {
+    records_ = std::move(records);
+    classes_.clear();
+    for (uint32_t i = 0; i < records_.size(); ++i) {
+        index_record(i);
+    }
+}
 
 }  // namespace rc

@@ -3,7 +3,9 @@
 // with the gradients scaled down when R was raised, and the world-space grid the kernels query.
 #pragma once
 
+#include <cstdint>
 #include <glm/vec3.hpp>
+#include <unordered_map>
 #include <vector>
 
 #include "shared/types.h"
@@ -19,7 +21,8 @@ struct CacheRecord {
     glm::vec3 translation[3] = {};  // translational gradient per RGB channel
     float harmonic_distance = 0.0f;
     float min_distance = 0.0f;
-    float r_min = 0.0f;  // bounds on the validity radius R
+    glm::vec3 occluder{0.0f};  // tangent-plane offset of the nearest hit (rc_ic_weight)
+    float r_min = 0.0f;        // bounds on the validity radius R
     float r_max = 0.0f;
     // R before the [r_min, r_max] clamp: the harmonic mean distance limited by the gradient and
     // by r_max, then by neighbor clamping (set by RecordStore::insert).
@@ -63,8 +66,19 @@ class RecordStore {
     void restore(std::vector<CacheRecord> records);
 
    private:
+    // Records hashed by position, one grid per radius class: the records of class L have
+    // R <= 2^L and sit in cells of size 2^L.
+    struct RadiusClass {
+        std::vector<uint32_t> records;
+        std::unordered_map<uint64_t, std::vector<uint32_t>> cells;
+    };
+    // Indices of every record k with |p - p_k| < radius + R_k, and maybe a few more.
+    std::vector<uint32_t> overlapping(glm::vec3 p, float radius) const;
+    void index_record(uint32_t index);
+
     float accuracy_;
     std::vector<CacheRecord> records_;
+    std::unordered_map<int, RadiusClass> classes_;
 };
 
 }  // namespace rc

@@ -65,4 +65,13 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
     });
 }
 
+void check_writable_parent(const std::filesystem::path& file, const std::string& option) {
+    const std::filesystem::path dir = file.parent_path().empty() ? "." : file.parent_path();
+    if (!std::filesystem::is_directory(dir) || ::access(dir.c_str(), W_OK) != 0) {
+        throw Error(option + " " + file.string() + ": directory '" + dir.string() +
+                        "' does not exist or is not writable",
+                    kExitUsage);
+    }
+}
+
 }  // namespace rc

@@ -19,6 +19,10 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
 void replace_file_atomically(const std::filesystem::path& path,
                              const std::function<void(const std::filesystem::path&)>& write);
 
+// Error (exit status 2) "<option> <file>: directory '<dir>' does not exist or is not writable"
+// unless `file` could be created: checked before any work is done.
+void check_writable_parent(const std::filesystem::path& file, const std::string& option);
+
 // A temporary path in the same directory as `path` (same file system, so rename is atomic),
 // with the same extension.
 std::filesystem::path temporary_sibling(const std::filesystem::path& path);

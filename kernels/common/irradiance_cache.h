@@ -10,17 +10,23 @@
 // Random-number domain of record sampling, kept apart from camera samples.
 #define RC_IC_RNG_DOMAIN 0x49434331u
 
-// The jitter (zeta, xi) of cell `cell` of record `record`: words 0 and 1 of its stream, so the
-// reduction can regenerate the sampled directions.
+// The random stream of cell `cell` of record `record` of cache level params->depth.z (0: the
+// records the camera samples read). Its words 0 and 1 are the cell's jitter (zeta, xi), so the
+// reduction and the deeper levels' placement regenerate the sampled directions.
+RC_FUNC uint rc_ic_level_key(const IcParams* params) {
+    return params->seed.y ^ ((uint)params->depth.z * 0x9e3779b9u);
+}
+
 RC_FUNC RngStream rc_ic_cell_stream(const IcParams* params, uint record, uint cell) {
-    return rc_rng_stream(params->seed.x ^ RC_IC_RNG_DOMAIN, params->seed.y, record, cell);
+    return rc_rng_stream(params->seed.x ^ RC_IC_RNG_DOMAIN, rc_ic_level_key(params), record, cell);
 }
 
 RC_FUNC void rc_ic_cell_jitter(const IcParams* params, uint record, uint cell, float* zeta,
                                float* xi) {
     const uint lo = params->seed.x ^ RC_IC_RNG_DOMAIN;
-    *zeta = rc_uint_to_unit_float(rc_rng_word(lo, params->seed.y, record, cell, 0u));
-    *xi = rc_uint_to_unit_float(rc_rng_word(lo, params->seed.y, record, cell, 1u));
+    const uint hi = rc_ic_level_key(params);
+    *zeta = rc_uint_to_unit_float(rc_rng_word(lo, hi, record, cell, 0u));
+    *xi = rc_uint_to_unit_float(rc_rng_word(lo, hi, record, cell, 1u));
 }
 
 // Stratified cosine-weighted direction of cell (j, k) of an M x N division (Ward, Rubinstein and
@@ -49,6 +55,7 @@ typedef struct RecordEstimate {
     float3 translation[3];  // per channel
     float harmonic_distance;
     float min_distance;
+    float3 occluder;  // tangent-plane offset of the nearest hit (zero: none to the side)
 } RecordEstimate;
 
 // Irradiance, gradients and distances from the M x N cell samples (L.rgb, hit distance) of a
@@ -79,6 +86,7 @@ RC_FUNC RecordEstimate rc_ic_reduce(const IcParams* params, uint record, float3 
     float3 translation[3] = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f)};
     float inverse_distances = 0.0f;
     float min_distance = INFINITY;
+    float3 nearest = (float3)(0.0f);  // local direction of the nearest hit
     for (int k = 0; k < nn; ++k) {
         const float phi_centre = 2.0f * RC_PI * ((float)k + 0.5f) / (float)nn;
         const float phi_wall = 2.0f * RC_PI * (float)k / (float)nn;
@@ -98,10 +106,13 @@ RC_FUNC RecordEstimate rc_ic_reduce(const IcParams* params, uint record, float3 
             const float r = sample.w;
             sum += l;
             inverse_distances += 1.0f / r;  // 0 for a miss (r = inf)
-            min_distance = fmin(min_distance, r);
             const float sin2 = ((float)j + zeta) / (float)m;
             const float sin_theta = sqrt(sin2);
             const float cos_theta = sqrt(fmax(0.0f, 1.0f - sin2));
+            if (r < min_distance) {
+                min_distance = r;
+                nearest = rc_ic_cell_direction(j, k, m, nn, zeta, xi);
+            }
             // Rotational: tan of the stratum's centre angle.
             const float centre2 = ((float)j + 0.5f) / (float)m;
             const float tan_centre = sqrt(centre2 / (1.0f - centre2));
@@ -137,12 +148,23 @@ RC_FUNC RecordEstimate rc_ic_reduce(const IcParams* params, uint record, float3 
     }
     e.harmonic_distance = inverse_distances > 0.0f ? (float)(m * nn) / inverse_distances : INFINITY;
     e.min_distance = min_distance;
+    // The nearest hit's offset along the tangent plane: points beyond it in that direction lie
+    // past the nearest occluder (rc_ic_weight). Occluders within 45 degrees of the normal are
+    // above the record rather than beside it and bound nothing.
+    e.occluder = (float3)(0.0f);
+    if (isfinite(min_distance) && nearest.z < 0.70710678f) {
+        e.occluder = min_distance * (nearest.x * frame.t + nearest.y * frame.b);
+    }
     return e;
 }
 
 // The weight of a record at point p with normal n: Ward's 1 / (d / R + sqrt(1 - n . n_i)),
 // shifted by -1/a so it falls to zero at the influence border ("Weighting Function Revisited";
-// d < a R), capped near the centre. Zero for records "in front" of p (Ward et al. 1988, eq. 6).
+// d < a R), capped near the centre. Zero for records "in front" of p (Ward et al. 1988, eq. 6),
+// and for points past the record's nearest occluder: p - p_i reaching beyond the plane through
+// the nearest hit's tangent offset o, (p - p_i) . o > o . o. This keeps records from reaching
+// through a thin wall to the coplanar surface on its other side (a ceiling running over it), where
+// the raise to R_min would otherwise carry light.
 RC_FUNC float rc_ic_weight(RC_GLOBAL const IrradianceRecord* record, float3 p, float3 n,
                            float accuracy, float max_weight) {
     const float3 offset = p - record->position.xyz;
@@ -150,6 +172,10 @@ RC_FUNC float rc_ic_weight(RC_GLOBAL const IrradianceRecord* record, float3 p, f
     const float3 ni = record->normal.xyz;
     // Behind test: P_i in front of P, beyond a small tolerance of the influence radius.
     if (dot(offset, 0.5f * (n + ni)) < -1e-3f * accuracy * radius) {
+        return 0.0f;
+    }
+    const float3 occluder = record->occluder.xyz;
+    if (dot(offset, occluder) > dot(occluder, occluder)) {
         return 0.0f;
     }
     const float error = length(offset) / radius + sqrt(fmax(0.0f, 1.0f - dot(n, ni)));
@@ -207,4 +233,21 @@ RC_FUNC float4 rc_ic_gather(const RecordGrid* grid, RC_GLOBAL const int* cell_st
         }
     }
     return sum;
+}
+
+// Whether any record covers (p, n) with a positive weight (the weighted sum's support).
+RC_FUNC bool rc_ic_covered(const RecordGrid* grid, RC_GLOBAL const int* cell_start,
+                           RC_GLOBAL const int* cell_records,
+                           RC_GLOBAL const IrradianceRecord* records, float3 p, float3 n,
+                           float accuracy, float max_weight) {
+    const int cell = rc_ic_grid_cell(grid, p);
+    if (cell < 0) {
+        return false;
+    }
+    for (int i = cell_start[cell]; i < cell_start[cell + 1]; ++i) {
+        if (rc_ic_weight(records + cell_records[i], p, n, accuracy, max_weight) > 0.0f) {
+            return true;
+        }
+    }
+    return false;
 }

@@ -106,36 +106,38 @@ typedef struct PathTracerParams {
     uint4 seed;  // x, y: the 64-bit seed
 } PathTracerParams;
 
-// The first hit of one camera sample (irradiance caching's G-buffer). Samples are stored pixel
-// by pixel: sample s of pixel p is entry p * spp + s.
+// The first hit of one camera sample (irradiance caching's G-buffer; sample s of pixel p is entry
+// p * spp + s) or of one ray of a record's hemisphere (where the next cache level is read).
 typedef struct GBufferSample {
-    float4 position;  // xyz: hit point; w: world size of a pixel there (the footprint)
-    float4 normal;    // xyz: shading normal facing the camera; w: diffuse reflectance (luminance)
+    float4 position;  // xyz: hit point; w: the footprint there (world size of a pixel, or of the
+                      // hemisphere stratum's cone)
+    float4 normal;    // xyz: shading normal facing the ray; w: diffuse reflectance (luminance)
     float4 origin;    // xyz: where rays leaving the surface start (offset off it)
-    int4 info;        // x: primitive or -1 (no hit), y: pixel, z: sample, w: 1 when the cache
-                      // serves it (a hit with a diffuse lobe)
+    int4 info;        // x: primitive or -1 (no hit), y: pixel (record), z: sample (cell), w: 1
+                      // when the cache serves it (a hit with a diffuse lobe)
 } GBufferSample;
 
 // An irradiance record (DESIGN.md §6.2) as the kernels use it: position, normal, the radius of
 // its influence, the indirect irradiance and its gradients (per RGB channel).
 typedef struct IrradianceRecord {
-    float4 position;     // xyz; w: R, the validity radius (influence radius = accuracy * R)
-    float4 normal;       // xyz; w: unused
-    float4 irradiance;   // rgb: E; w: unused
-    float4 rotation_r;   // xyz: rotational gradient of the red channel (Ward and Heckbert 1992)
+    float4 position;    // xyz; w: R, the validity radius (influence radius = accuracy * R)
+    float4 normal;      // xyz; w: unused
+    float4 irradiance;  // rgb: E; w: unused
+    float4 rotation_r;  // xyz: rotational gradient of the red channel (Ward and Heckbert 1992)
     float4 rotation_g;
     float4 rotation_b;
     float4 translation_r;  // xyz: translational gradient of the red channel
     float4 translation_g;
     float4 translation_b;
+    float4 occluder;  // xyz: tangent-plane offset of the nearest hemisphere hit (rc_ic_weight)
 } IrradianceRecord;
 
 // A uniform world-space grid over records: cell c lists the records whose influence sphere
 // touches it, as cell_records[cell_start[c] .. cell_start[c + 1]).
 typedef struct RecordGrid {
-    float4 origin;      // xyz: the lower corner
-    float4 inv_cell;    // xyz: cells per unit length
-    int4 dims;          // xyz: cells along each axis; w: total cells
+    float4 origin;    // xyz: the lower corner
+    float4 inv_cell;  // xyz: cells per unit length
+    int4 dims;        // xyz: cells along each axis; w: total cells
 } RecordGrid;
 
 // Parameters of the irradiance-caching kernels.
@@ -143,26 +145,95 @@ typedef struct IcParams {
     int4 image;      // x: width, y: height, z: camera samples per pixel, w: record count
     int4 sampling;   // x: M (polar strata), y: N (azimuthal strata), z: first record of the
                      // launch, w: 1 to count emission seen by hemisphere rays (tests)
-    int4 depth;      // x: maximum depth, y: Russian-roulette depth, z, w: unused
+    int4 depth;      // x: maximum depth, y: Russian-roulette depth, z: cache level of the
+                     // records being computed (0: the camera's), w: unused
     uint4 seed;      // x, y: the 64-bit seed
-    float4 weights;  // x: accuracy a, y: largest weight (near a record's centre)
+    float4 weights;  // x: accuracy a, y: largest weight (near a record's centre), z: 1 to draw
+                     // the records overlay
+    int4 placement;  // a placement pass's candidates: x: pixel stride, y: camera samples per
+                     // candidate pixel, z: candidate columns, w: unused
 } IcParams;
 
 RC_SHARED_END
 
 // Every shared struct and field, for the host/device layout comparison.
-#define RC_SHARED_LAYOUTS(STRUCT, FIELD)                                                         \
-    STRUCT(Ray)                                                                                  \
-    FIELD(Ray, origin)                                                                           \
-    FIELD(Ray, direction)                                                                        \
-    STRUCT(Hit) FIELD(Hit, t) FIELD(Hit, primitive) FIELD(Hit, u) FIELD(Hit, v) STRUCT(BvhNode)  \
-        FIELD(BvhNode, lower_x) FIELD(BvhNode, upper_x) FIELD(BvhNode, lower_y)                  \
-            FIELD(BvhNode, upper_y) FIELD(BvhNode, lower_z) FIELD(BvhNode, upper_z)              \
-                FIELD(BvhNode, child) FIELD(BvhNode, count) STRUCT(Triangle) FIELD(Triangle, v0) \
-                    FIELD(Triangle, v1) FIELD(Triangle, v2) STRUCT(CameraParams)                 \
-                        FIELD(CameraParams, origin) FIELD(CameraParams, top_left)                \
-                            FIELD(CameraParams, right) FIELD(CameraParams, down)                 \
-                                FIELD(CameraParams, resolution)
+// clang-format off
+#define RC_SHARED_LAYOUTS(STRUCT, FIELD) \
+    STRUCT(Ray)                            \
+    FIELD(Ray, origin)                     \
+    FIELD(Ray, direction)                  \
+    STRUCT(Hit)                            \
+    FIELD(Hit, t)                          \
+    FIELD(Hit, primitive)                  \
+    FIELD(Hit, u)                          \
+    FIELD(Hit, v)                          \
+    STRUCT(BvhNode)                        \
+    FIELD(BvhNode, lower_x)                \
+    FIELD(BvhNode, upper_x)                \
+    FIELD(BvhNode, lower_y)                \
+    FIELD(BvhNode, upper_y)                \
+    FIELD(BvhNode, lower_z)                \
+    FIELD(BvhNode, upper_z)                \
+    FIELD(BvhNode, child)                  \
+    FIELD(BvhNode, count)                  \
+    STRUCT(Triangle)                       \
+    FIELD(Triangle, v0)                    \
+    FIELD(Triangle, v1)                    \
+    FIELD(Triangle, v2)                    \
+    STRUCT(CameraParams)                   \
+    FIELD(CameraParams, origin)            \
+    FIELD(CameraParams, top_left)          \
+    FIELD(CameraParams, right)             \
+    FIELD(CameraParams, down)              \
+    FIELD(CameraParams, resolution)        \
+    STRUCT(Material)                       \
+    FIELD(Material, diffuse)               \
+    FIELD(Material, specular)              \
+    FIELD(Material, lobe)                  \
+    FIELD(Material, kind)                  \
+    STRUCT(TextureInfo)                    \
+    FIELD(TextureInfo, layout)             \
+    STRUCT(TriangleShading)                \
+    FIELD(TriangleShading, normals)        \
+    FIELD(TriangleShading, uvs)            \
+    STRUCT(Light)                          \
+    FIELD(Light, position)                 \
+    FIELD(Light, axis)                     \
+    FIELD(Light, radiance)                 \
+    FIELD(Light, shape)                    \
+    FIELD(Light, info)                     \
+    STRUCT(PathTracerParams)               \
+    FIELD(PathTracerParams, image)         \
+    FIELD(PathTracerParams, depth)         \
+    FIELD(PathTracerParams, seed)          \
+    STRUCT(GBufferSample)                  \
+    FIELD(GBufferSample, position)         \
+    FIELD(GBufferSample, normal)           \
+    FIELD(GBufferSample, origin)           \
+    FIELD(GBufferSample, info)             \
+    STRUCT(IrradianceRecord)               \
+    FIELD(IrradianceRecord, position)      \
+    FIELD(IrradianceRecord, normal)        \
+    FIELD(IrradianceRecord, irradiance)    \
+    FIELD(IrradianceRecord, rotation_r)    \
+    FIELD(IrradianceRecord, rotation_g)    \
+    FIELD(IrradianceRecord, rotation_b)    \
+    FIELD(IrradianceRecord, translation_r) \
+    FIELD(IrradianceRecord, translation_g) \
+    FIELD(IrradianceRecord, translation_b) \
+    FIELD(IrradianceRecord, occluder)      \
+    STRUCT(RecordGrid)                     \
+    FIELD(RecordGrid, origin)              \
+    FIELD(RecordGrid, inv_cell)            \
+    FIELD(RecordGrid, dims)                \
+    STRUCT(IcParams)                       \
+    FIELD(IcParams, image)                 \
+    FIELD(IcParams, sampling)              \
+    FIELD(IcParams, depth)                 \
+    FIELD(IcParams, seed)                  \
+    FIELD(IcParams, weights)               \
+    FIELD(IcParams, placement)
+// clang-format on
 
 #ifndef __OPENCL_VERSION__
 static_assert(sizeof(rc::shared::float4) == 16 && alignof(rc::shared::float4) == 16);
@@ -179,7 +250,7 @@ static_assert(sizeof(rc::shared::TriangleShading) == 32);
 static_assert(sizeof(rc::shared::Light) == 80);
 static_assert(sizeof(rc::shared::PathTracerParams) == 48);
 static_assert(sizeof(rc::shared::GBufferSample) == 64);
-static_assert(sizeof(rc::shared::IrradianceRecord) == 144);
+static_assert(sizeof(rc::shared::IrradianceRecord) == 160);
 static_assert(sizeof(rc::shared::RecordGrid) == 48);
-static_assert(sizeof(rc::shared::IcParams) == 80);
+static_assert(sizeof(rc::shared::IcParams) == 96);
 #endif
