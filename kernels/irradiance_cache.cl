@@ -193,7 +193,9 @@ __kernel void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
 }
 
 // Item = pixel: shades its camera samples and writes the pixel's means to film (7 float4 per
-// pixel: beauty, direct, indirect, albedo, normal, (coverage, 0, 0, 0), records overlay).
+// pixel: beauty, direct, indirect, albedo, normal, (coverage, 0, 0, 0), records overlay), where
+// coverage is the smallest sum of record weights over the samples the cache serves (0 when one
+// of them is uncovered or none is served).
 // counters: [0] rays traced, [1] non-finite samples (dropped), [2] first pixel with one.
 __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camera,
                        RC_SCENE_PARAMETERS, RecordGrid grid, __global const int* cell_start,
@@ -209,6 +211,7 @@ __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camer
                       (float3)(0.0f), (float3)(0.0f), (float3)(0.0f)};
     uint rays = 0;
     uint finite = 0;
+    float coverage = INFINITY;
     for (uint s = 0; s < (uint)params.image.z; ++s) {
         const CachedShading c = rc_ic_shade(&scene, &camera, &params, &cache, pixel, s);
         const CachedRadiance l = c.light;
@@ -225,7 +228,9 @@ __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camer
         sums[2] += l.indirect;
         sums[3] += l.albedo;
         sums[4] += l.normal;
-        sums[5] += (float3)(l.coverage, 0.0f, 0.0f);
+        if (l.served) {
+            coverage = fmin(coverage, l.coverage);
+        }
         // The records overlay: marks over the image at half brightness.
         sums[6] += any(c.marks > 0.0f) ? c.marks : 0.5f * radiance;
     }
@@ -234,4 +239,5 @@ __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camer
     for (int k = 0; k < 7; ++k) {
         film[7 * (size_t)pixel + k] = (float4)(sums[k] * inv, 0.0f);
     }
+    film[7 * (size_t)pixel + 5] = (float4)(isfinite(coverage) ? coverage : 0.0f, 0.0f, 0.0f, 0.0f);
 }

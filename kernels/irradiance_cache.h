@@ -67,6 +67,7 @@ typedef struct CachedRadiance {
     float3 normal;
     float3 position;
     float coverage;  // sum of record weights at the hit
+    bool served;     // the cache was read (a diffuse lobe and bounces left for indirect light)
     float distance;  // to the hit; infinite for a miss
     uint rays;
 } CachedRadiance;
@@ -82,6 +83,7 @@ RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcPar
     CachedRadiance c;
     c.direct = c.indirect = c.albedo = c.normal = c.position = (float3)(0.0f);
     c.coverage = 0.0f;
+    c.served = false;
     c.distance = INFINITY;
     c.rays = 1;
     const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
@@ -117,6 +119,7 @@ RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcPar
             rc_ic_gather(&cache->grid, cache->cell_start, cache->cell_records, cache->records,
                          sp.position, sp.shading.n, params->weights.x, params->weights.y);
         c.coverage = gathered.w;
+        c.served = true;
         if (gathered.w > 0.0f) {
             c.indirect += material.diffuse * RC_INV_PI * (gathered.xyz / gathered.w);
         } else {

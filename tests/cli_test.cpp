@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "image/image.h"
 #include "image/image_io.h"
 #include "test_support.h"
 #include "util/file_io.h"
@@ -64,6 +65,40 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
         {{"render", cornell_box(), "-o", out, "--width"}, 2, "needs a value"},
         {{"render", (dir / "nope.json").string(), "-o", out}, 1, "not found"},
         {{"render", "-o", out}, 2, "exactly one scene"},
+        {{"render", cornell_box(), "-o", out, "--method", "ic", "--accuracy", "0"},
+         2,
+         "--accuracy"},
+        {{"render", cornell_box(), "-o", out, "--method", "ic", "--accuracy", "1.5"},
+         2,
+         "--accuracy"},
+        {{"render", cornell_box(), "-o", out, "--method", "ic", "--ic-rays", "2"}, 2, "--ic-rays"},
+        {{"render", cornell_box(), "-o", out, "--method", "ic", "--ic-bounces", "0"},
+         2,
+         "--ic-bounces"},
+        {{"render", cornell_box(), "-o", out, "--method", "ic", "--ic-min-spacing", "abc"},
+         2,
+         "--ic-min-spacing: expected a length"},
+        {{"render", cornell_box(), "-o", out, "--method", "ic", "--ic-max-spacing", "-2u"},
+         2,
+         "--ic-max-spacing"},
+        {{"render", cornell_box(), "-o", out, "--method", "ic", "--ic-min-spacing", "16",
+          "--ic-max-spacing", "4"},
+         2,
+         "--ic-min-spacing exceeds --ic-max-spacing"},
+        {{"render", cornell_box(), "-o", out, "--accuracy", "0.3"}, 2, "applies to --method ic"},
+        {{"render", cornell_box(), "-o", out, "--method", "ic", "--cache-in",
+          (dir / "missing.rcc").string()},
+         1,
+         "irradiance cache file not found"},
+        {{"render", cornell_box(), "-o", out, "--method", "ic", "--cache-out",
+          (dir / "nodir/cache.rcc").string()},
+         2,
+         "--cache-out"},
+        {{"render", cornell_box(), "-o", out, "--method", "ic", "--aovs", "stddev"},
+         2,
+         "has no layer 'stddev'"},
+        {{"compare", (dir / "a.exr").string()}, 2, "TEST and REF"},
+        {{"compare", (dir / "a.exr").string(), (dir / "b.exr").string()}, 1, "a.exr"},
         {{"frobnicate"}, 2, "unknown command"},
         {{"bench", "nothing"}, 2, "unknown benchmark"},
         {{"devices", "extra"}, 2, "no arguments"},
@@ -80,6 +115,82 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
         EXPECT_NE(result.output.find("radcache: error: "), std::string::npos) << result.output;
     }
     EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+// An irradiance-cached render writes its layers and per-frame statistics: records per placement
+// pass, rays per record, seconds per phase, cache memory.
+TEST(Cli, IrradianceCacheRenderWritesLayersAndStats) {
+    const auto dir = test::scratch_dir("cli_ic");
+    const auto output = dir / "ic.exr";
+    const test::CommandResult result = test::run_radcache({"render",
+                                                           cornell_box(),
+                                                           "-o",
+                                                           output.string(),
+                                                           "--method",
+                                                           "ic",
+                                                           "--width",
+                                                           "48",
+                                                           "--height",
+                                                           "32",
+                                                           "--spp",
+                                                           "2",
+                                                           "--ic-rays",
+                                                           "64",
+                                                           "--ic-min-spacing",
+                                                           "4px",
+                                                           "--ic-max-spacing",
+                                                           "100u",
+                                                           "--quiet",
+                                                           "--stats",
+                                                           (dir / "stats.json").string(),
+                                                           "--cache-out",
+                                                           (dir / "cache.rcc").string()});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const Image image = read_image(output);
+    for (const char* layer :
+         {"beauty", "direct", "indirect", "albedo", "normal", "coverage", "records"}) {
+        EXPECT_NO_THROW(select_layers(image, {layer})) << layer;
+    }
+    const nlohmann::json stats = nlohmann::json::parse(read_file(dir / "stats.json"));
+    EXPECT_EQ(stats["method"], "ic");
+    const nlohmann::json& frame = stats["frames"][0];
+    EXPECT_GT(frame["records"].get<int>(), 0);
+    EXPECT_EQ(frame["placement_passes"][0]["stride"], 16);
+    EXPECT_GT(frame["rays_per_record"].get<double>(), 64.0);
+    EXPECT_GT(frame["cache_bytes"].get<double>(), 0.0);
+    for (const char* phase : {"gbuffer", "placement", "records", "insertion", "shading"}) {
+        EXPECT_TRUE(frame["seconds"].contains(phase)) << phase;
+    }
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / "cache.rcc"));
+
+    // The cache serves another render of the same view: nothing left to place.
+    const test::CommandResult reuse = test::run_radcache({"render",
+                                                          cornell_box(),
+                                                          "-o",
+                                                          (dir / "again.exr").string(),
+                                                          "--method",
+                                                          "ic",
+                                                          "--width",
+                                                          "48",
+                                                          "--height",
+                                                          "32",
+                                                          "--spp",
+                                                          "2",
+                                                          "--ic-rays",
+                                                          "64",
+                                                          "--ic-min-spacing",
+                                                          "4px",
+                                                          "--ic-max-spacing",
+                                                          "100u",
+                                                          "--quiet",
+                                                          "--stats",
+                                                          (dir / "again.json").string(),
+                                                          "--cache-in",
+                                                          (dir / "cache.rcc").string()});
+    ASSERT_EQ(reuse.exit_code, 0) << reuse.output;
+    const nlohmann::json again = nlohmann::json::parse(read_file(dir / "again.json"));
+    EXPECT_EQ(again["frames"][0]["loaded_records"], frame["records"]);
+    EXPECT_EQ(again["frames"][0]["records"], frame["records"]);
 }
 
 TEST(Cli, HelpListsOptions) {

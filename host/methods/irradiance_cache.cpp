@@ -26,8 +26,7 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-constexpr size_t kFilmSlots = 7;      // float4 per pixel (kernels/irradiance_cache.cl)
-constexpr float kMaxWeight = 1.0e4f;  // weight cap near a record's centre
+constexpr size_t kFilmSlots = 7;  // float4 per pixel (kernels/irradiance_cache.cl)
 constexpr size_t kMaxBatchCells = size_t{1} << 23;  // hemisphere cells per record launch
 
 shared::float4 float4_of(glm::vec3 v, float w = 0.0f) { return {v.x, v.y, v.z, w}; }
@@ -166,7 +165,7 @@ shared::IcParams IrradianceCache::level_params(int level) const {
     params.depth = {sampling_.max_depth, sampling_.rr_depth, level, 0};
     params.seed = {static_cast<unsigned>(sampling_.seed),
                    static_cast<unsigned>(sampling_.seed >> 32), 0, 0};
-    params.weights = {sampling_.accuracy, kMaxWeight, 0.0f, 0.0f};
+    params.weights = {sampling_.accuracy, kIrradianceCacheMaxWeight, 0.0f, 0.0f};
     params.image = image_;
     return params;
 }
@@ -301,6 +300,9 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
         if (chosen.empty()) {
             break;
         }
+        // Listed in the order passes start (deeper levels' passes follow the pass they serve).
+        const size_t entry = stats_.passes.size();
+        stats_.passes.push_back({level, placement.x, candidates, uncovered.size(), chosen.size()});
         start = Clock::now();
         std::vector<RecordSite> sites;
         sites.reserve(chosen.size());
@@ -325,8 +327,7 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
         if (timed) {
             stats_.insertion_seconds += seconds_since(start);
         }
-        stats_.passes.push_back(
-            {level, placement.x, candidates, uncovered.size(), computed.size()});
+        stats_.passes[entry].records = computed.size();
     }
 }
 
@@ -341,7 +342,7 @@ std::vector<shared::float4> IrradianceCache::gather(
     const Buffer<int> index_buffer(context_, indices, "ic_query_indices");
     Buffer<shared::float4> out(context_, queries.size(), "ic_gathered");
     shared::IcParams params{};
-    params.weights = {store.accuracy(), kMaxWeight, 0.0f, 0.0f};
+    params.weights = {store.accuracy(), kIrradianceCacheMaxWeight, 0.0f, 0.0f};
     context_.launch(gather_kernel_, queries.size(), params, records.grid, records.cell_start,
                     records.cell_records, records.records, samples, index_buffer, out);
     return out.download();

@@ -74,8 +74,12 @@ struct IrradianceCacheStats {
     int64_t first_nonfinite_pixel = -1;
 };
 
+// The largest weight a record gets (near its centre, where Ward's weight grows without bound).
+constexpr float kIrradianceCacheMaxWeight = 1.0e4f;
+
 // The layers of an irradiance-cached image, in channel order: beauty (R, G, B), direct, indirect
-// (3 channels each), albedo, normal, coverage (1 channel: the sum of record weights), records
+// (3 channels each), albedo, normal, coverage (1 channel: the smallest sum of record weights over
+// the pixel's camera samples the cache serves; 0 when one is uncovered or none is served), records
 // (record centres red and influence borders green over the image at half brightness; only when
 // IrradianceCacheOptions::records_overlay).
 extern const char* const kIrradianceCacheAovs[7];

@@ -178,7 +178,9 @@ RC_FUNC float rc_ic_weight(RC_GLOBAL const IrradianceRecord* record, float3 p, f
     if (dot(offset, occluder) > dot(occluder, occluder)) {
         return 0.0f;
     }
-    const float error = length(offset) / radius + sqrt(fmax(0.0f, 1.0f - dot(n, ni)));
+    // sqrt(1 - n . n_i) as |n - n_i| / sqrt(2): equal for unit vectors, without the cancellation
+    // of 1 - n . n_i in float when the normals are close.
+    const float error = length(offset) / radius + length(n - ni) * 0.70710678f;
     if (error >= accuracy) {
         return 0.0f;
     }
