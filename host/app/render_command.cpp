@@ -53,20 +53,24 @@ std::vector<OptionSpec> render_option_specs() {
         {"--exposure", "", "STOPS", "exposure applied before 8-bit encoding (default 0)"},
         {"--half", "", "", ".exr: store half floats"},
         {"--aovs", "", "LIST",
-         ".exr: the layers to write, comma-separated (default all: beauty, direct, indirect, "
-         "albedo, normal, stddev)"},
+         ".exr: the layers to write, comma-separated (default all; pt: beauty, direct, "
+         "indirect, albedo, normal, stddev; ic: beauty, direct, indirect, albedo, normal, "
+         "coverage, records)"},
         {"--stats", "", "FILE", "write timings and counts as JSON"},
         {"--accuracy", "", "A",
-         "ic: interpolation accuracy a (Radiance's -aa): records influence points within a R "
-         "(default 0.25)"},
-        {"--ic-rays", "", "N", "ic: hemisphere rays per record (Radiance's -ad; default 512)"},
+         "ic: interpolation accuracy a in (0, 1] (Radiance's -aa): a record serves points within "
+         "a R (default 0.35)"},
+        {"--ic-rays", "", "N", "ic: hemisphere rays per record (Radiance's -ad; default 1024)"},
         {"--ic-min-spacing", "", "L",
-         "ic: smallest record influence radius, in pixels (\"2\", \"2px\") or scene units "
-         "(\"5u\") (default 2px)"},
-        {"--ic-max-spacing", "", "L", "ic: largest record influence radius (default 32px)"},
-        {"--ic-bounces", "", "N", "ic: bounces through records (1: path-traced beyond; default 1)"},
-        {"--cache-out", "", "FILE", "ic: save the irradiance cache's records"},
-        {"--cache-in", "", "FILE", "ic: start from the records of a saved cache"},
+         "ic: smallest record influence radius a R, in pixels (\"8\", \"8px\") or scene units "
+         "(\"5u\") (default 8px)"},
+        {"--ic-max-spacing", "", "L", "ic: largest record influence radius a R (default 64px)"},
+        {"--ic-bounces", "", "N",
+         "ic: cache levels (1: path tracing beyond the hemisphere rays' hits; N: records at N "
+         "levels, the last path traced beyond; default 1)"},
+        {"--cache-out", "", "FILE", "ic: save the irradiance cache's records (every level)"},
+        {"--cache-in", "", "FILE",
+         "ic: start from the records of a saved cache (same scene, frame and accuracy)"},
         {"--quiet", "-q", "", "print nothing but errors"},
     };
     for (OptionSpec& spec : device_option_specs()) {
@@ -238,6 +242,11 @@ int run_render_command(const std::vector<std::string>& args) {
                                "--ic-bounces", "--cache-out", "--cache-in"}) {
         if (arguments.has(option) && settings.method != "ic") {
             throw Error(std::string(option) + " applies to --method ic only", kExitUsage);
+        }
+    }
+    for (const char* option : {"--time", "--save-every-pow2"}) {
+        if (arguments.has(option) && settings.method != "pt") {
+            throw Error(std::string(option) + " applies to --method pt only", kExitUsage);
         }
     }
     if (frames.given && frames.first != frames.last &&
