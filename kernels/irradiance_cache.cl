@@ -192,8 +192,11 @@ __kernel void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
                           params.weights.x, params.weights.y);
 }
 
-// Item = pixel: shades its camera samples and writes the pixel's means to film (7 float4 per
-// pixel: beauty, direct, indirect, albedo, normal, (coverage, 0, 0, 0), records overlay), where
+// The render pass (splat accumulation). Every camera sample gets the sums sum w E' and sum w of
+// the records whose influence sphere covers it, gathered through the grid in the grid's order:
+// the sums a splat of every record over the samples it covers would give, deterministic without
+// atomics. Item = pixel: shades its camera samples and writes the pixel's means to film (7 float4
+// per pixel: beauty, direct, indirect, albedo, normal, (coverage, 0, 0, 0), records overlay), where
 // coverage is the smallest sum of record weights over the samples the cache serves (0 when one
 // of them is uncovered or none is served).
 // counters: [0] rays traced, [1] non-finite samples (dropped), [2] first pixel with one.

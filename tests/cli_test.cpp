@@ -161,7 +161,7 @@ TEST(Cli, IrradianceCacheRenderWritesLayersAndStats) {
     EXPECT_EQ(frame["placement_passes"][0]["stride"], 16);
     EXPECT_GT(frame["rays_per_record"].get<double>(), 64.0);
     EXPECT_GT(frame["cache_bytes"].get<double>(), 0.0);
-    for (const char* phase : {"gbuffer", "placement", "records", "insertion", "shading"}) {
+    for (const char* phase : {"gbuffer", "placement", "records", "insertion", "splatting"}) {
         EXPECT_TRUE(frame["seconds"].contains(phase)) << phase;
     }
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / "cache.rcc"));

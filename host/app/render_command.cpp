@@ -344,7 +344,7 @@ int run_render_command(const std::vector<std::string>& args) {
                                      {"placement", stats.placement_seconds},
                                      {"records", stats.record_seconds},
                                      {"insertion", stats.insertion_seconds},
-                                     {"shading", stats.shading_seconds}};
+                                     {"splatting", stats.splatting_seconds}};
             log_note(std::to_string(stats.records) + " irradiance records");
             if (stats.nonfinite_samples > 0) {
                 log_warning(std::to_string(stats.nonfinite_samples) +

@@ -441,7 +441,7 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     stats_.shading_rays = c[0];
     stats_.nonfinite_samples = c[1];
     stats_.first_nonfinite_pixel = c[1] > 0 ? static_cast<int64_t>(c[2]) : -1;
-    stats_.shading_seconds = seconds_since(start);
+    stats_.splatting_seconds = seconds_since(start);
 
     const int channels = options.records_overlay ? 19 : 16;
     Image image(width, height, channels);

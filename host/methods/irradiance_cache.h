@@ -68,8 +68,8 @@ struct IrradianceCacheStats {
     double placement_seconds = 0.0;  // coverage queries and candidate selection, first level
     double record_seconds = 0.0;     // record computation, deeper levels' placement included
     double insertion_seconds = 0.0;  // host insertion and the device records and grid
-    double shading_seconds = 0.0;
-    size_t cache_bytes = 0;  // records and grid of the first level on the device
+    double splatting_seconds = 0.0;  // the render pass: direct light and the records' splat sums
+    size_t cache_bytes = 0;          // records and grid of the first level on the device
     uint64_t nonfinite_samples = 0;
     int64_t first_nonfinite_pixel = -1;
 };
