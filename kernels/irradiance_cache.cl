@@ -2,6 +2,7 @@
 // hemisphere sampling and its reduction, record gathering (coverage and interpolation), and the
 // final shading pass.
 #include "irradiance_cache.h"
+#include "irradiance_vector_grid.h"
 #include "scene_arguments.h"
 
 // The G-buffer entry of a ray's first hit, with the hit distance for the footprint (position.w)
@@ -109,6 +110,34 @@ __kernel void ic_record_cells_cached(uint begin, uint end, IcParams params, RC_S
                                    records[b].normal.xyz, origins[b].xyz, &rng);
     const CachedRadiance c = rc_ic_cached_radiance(&scene, &params, &cache, ray, &rng,
                                                    params.sampling.w != 0, params.depth.z + 1);
+    atomic_add(&counters[0], c.rays);
+    const float3 radiance = c.direct + c.indirect;
+    cells[i] = (float4)(all(isfinite(radiance)) ? radiance : (float3)(0.0f), c.distance);
+}
+
+// As ic_record_cells, with the diffuse light at each hit read from the irradiance vector grid
+// instead of path-traced continuation (--ic-ivg): direct light there by next-event estimation
+// (unless the grid holds it), rho_d / pi E from the grid, other lobes by path tracing.
+__kernel void ic_record_cells_grid(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
+                                   __global const IrradianceRecord* records,
+                                   __global const float4* origins, IvgParams grid_params,
+                                   __global const float* grid_values,
+                                   __global const half* grid_packed, __global float4* cells,
+                                   __global uint* counters) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const VectorGrid grid = {grid_params, grid_values, grid_packed};
+    const uint per_record = (uint)(params.sampling.x * params.sampling.y);
+    const uint b = i / per_record;
+    RngStream rng;
+    const Ray ray = rc_ic_cell_ray(&params, (uint)params.sampling.z + b, i % per_record,
+                                   records[b].normal.xyz, origins[b].xyz, &rng);
+    float3 grid_term;
+    const CachedRadiance c = rc_ivg_radiance(&scene, &grid, ray, &rng, params.sampling.w != 0,
+                                             params.depth.z + 1, &grid_term);
     atomic_add(&counters[0], c.rays);
     const float3 radiance = c.direct + c.indirect;
     cells[i] = (float4)(all(isfinite(radiance)) ? radiance : (float3)(0.0f), c.distance);

@@ -3,9 +3,9 @@
 // hit comes from a cache level.
 #pragma once
 
+#include "common/cached_radiance.h"
 #include "common/camera.h"
 #include "common/irradiance_cache.h"
-#include "common/path_radiance.h"
 
 // World size of a pixel at distance t along the camera ray through pixel (x, y).
 RC_FUNC float rc_ic_pixel_footprint(const CameraParams* camera, float x, float y, float t) {
@@ -59,19 +59,6 @@ typedef struct RecordCache {
     RC_GLOBAL const IrradianceRecord* records;
 } RecordCache;
 
-// The light a ray brings back from its first hit.
-typedef struct CachedRadiance {
-    float3 direct;    // emission (when counted), next-event estimation and BRDF-sampled emission
-    float3 indirect;  // diffuse from the cache + glossy by path tracing
-    float3 albedo;
-    float3 normal;
-    float3 position;
-    float coverage;  // sum of record weights at the hit
-    bool served;     // the cache was read (a diffuse lobe and bounces left for indirect light)
-    float distance;  // to the hit; infinite for a miss
-    uint rays;
-} CachedRadiance;
-
 // Light arriving along `ray`: at its hit, emission (if count_emission) and direct light as the
 // path tracer's vertex computes them, indirect light of the diffuse lobe from the cache
 // (rho_d / pi E, Ward et al. 1988), indirect light of the specular lobe (phong, ward) by a path
@@ -81,39 +68,15 @@ RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcPar
                                              const RecordCache* cache, Ray ray, RngStream* rng,
                                              bool count_emission, int bounces) {
     CachedRadiance c;
-    c.direct = c.indirect = c.albedo = c.normal = c.position = (float3)(0.0f);
-    c.coverage = 0.0f;
-    c.served = false;
-    c.distance = INFINITY;
-    c.rays = 1;
-    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
-    if (hit.primitive == RC_NO_HIT) {
-        if (scene->environment >= 0 && count_emission) {
-            c.direct = scene->lights[scene->environment].radiance.xyz;
-        }
+    SurfacePoint sp;
+    SurfaceMaterial material;
+    float3 wo;
+    if (!rc_cached_vertex(scene, ray, rng, count_emission, true, bounces, params->depth.x, &c, &sp,
+                          &material, &wo) ||
+        bounces + 1 >= params->depth.x) {
         return c;
     }
-    const SurfacePoint sp = rc_surface_point(scene, ray, hit);
-    const SurfaceMaterial material = rc_surface_material(scene, &sp);
-    c.albedo = material.diffuse + material.specular;
-    c.normal = sp.shading.n;
-    c.position = sp.position;
-    c.distance = hit.t;
-    const float3 wo = rc_to_local(&sp.shading, -ray.direction.xyz);
-    if (sp.light >= 0 && sp.front && count_emission) {
-        c.direct += scene->lights[sp.light].radiance.xyz;
-    }
-    if (bounces >= params->depth.x) {
-        return c;  // the path may bounce no more
-    }
-    c.direct += rc_next_event(scene, &sp, &material, wo, rng, &c.rays);
-    c.direct += rc_bsdf_sampled_emission(scene, &sp, &material, wo, rng, &c.rays);
-    if (bounces + 1 >= params->depth.x) {
-        return c;  // indirect light takes one bounce more than the path may make
-    }
-    SurfaceMaterial traced = material;  // the lobes left to path tracing
-    traced.diffuse = (float3)(0.0f);
-    traced.diffuse_probability = 0.0f;
+    SurfaceMaterial traced = rc_without_diffuse(&material);  // the lobes left to path tracing
     if (rc_luminance(material.diffuse) > 0.0f) {
         const float4 gathered =
             rc_ic_gather(&cache->grid, cache->cell_start, cache->cell_records, cache->records,
@@ -126,28 +89,7 @@ RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcPar
             traced = material;
         }
     }
-    if (rc_is_black(traced.diffuse) &&
-        (traced.kind == RC_MATERIAL_DIFFUSE || rc_is_black(traced.specular))) {
-        return c;
-    }
-    const float u_lobe = rc_rng_next_float(rng);
-    const float u1 = rc_rng_next_float(rng);
-    const float u2 = rc_rng_next_float(rng);
-    float3 wi;
-    float pdf;
-    float3 f;
-    if (rc_material_sample(&traced, wo, u_lobe, u1, u2, &wi, &pdf, &f)) {
-        const float3 direction = rc_from_local(&sp.shading, wi);
-        if (dot(direction, sp.geometric_normal) > 0.0f) {
-            Ray next;
-            next.origin = (float4)(sp.origin, 0.0f);
-            next.direction = (float4)(direction, INFINITY);
-            const PathSample p = rc_path_radiance(scene, next, rng, bounces + 1, params->depth.x,
-                                                  params->depth.y, false);
-            c.rays += p.rays;
-            c.indirect += f * (wi.z / pdf) * p.radiance;
-        }
-    }
+    rc_trace_lobes(scene, &sp, &traced, wo, rng, bounces, params->depth.x, params->depth.y, &c);
     return c;
 }
 

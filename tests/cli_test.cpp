@@ -232,6 +232,28 @@ TEST(Cli, BenchRaysWritesTheDocumentedJson) {
     }
 }
 
+TEST(Cli, BenchAllMeasuresEveryFamilyOnTheDevice) {
+    const auto dir = test::scratch_dir("cli_bench_all");
+    const auto json_path = dir / "all.json";
+    const test::CommandResult result = test::run_radcache(
+        {"bench", "all", "--scene", cornell_box(), "--width", "32", "--height", "32", "--spp", "1",
+         "--repeat", "1", "--device", "0:0", "--json", json_path.string()});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("hemisphere samples/s"), std::string::npos) << result.output;
+    const nlohmann::json report = nlohmann::json::parse(read_file(json_path));
+    ASSERT_EQ(report["devices"].size(), 1u);
+    const nlohmann::json& device = report["devices"][0];
+    EXPECT_FALSE(device.contains("error"));
+    for (const char* key :
+         {"coherent_closest_mrays", "coherent_any_mrays", "incoherent_closest_mrays",
+          "incoherent_any_mrays", "embree_coherent_closest_mrays", "embree_incoherent_any_mrays",
+          "path_samples_per_second", "path_tracing_mrays", "hemisphere_samples_per_second",
+          "records_per_second", "splat_samples_per_second"}) {
+        ASSERT_TRUE(device.contains(key)) << key;
+        EXPECT_GT(device[key].get<double>(), 0.0) << key;
+    }
+}
+
 }  // namespace
 }  // namespace rc
 

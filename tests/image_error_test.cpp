@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "image/image_io.h"
@@ -77,6 +78,67 @@ TEST(ImageError, CompareCommandReportsTheFigures) {
                             (dir / "reference.exr").string(), "--aov", "indirect"});
     EXPECT_EQ(layer.exit_code, 2);
     EXPECT_NE(layer.output.find("indirect"), std::string::npos) << layer.output;
+}
+
+TEST(ErrorImage, MapsPerPixelRelMseOntoTheScale) {
+    // Pixel 0: no error (black). Pixel 1: reference 0, test 1 -> relMSE 1 / 0.01 = 100, above
+    // the top of the scale (white).
+    const Image reference = image_of({0.5f, 0.5f, 0.5f, 0, 0, 0});
+    const Image test = image_of({0.5f, 0.5f, 0.5f, 1, 1, 1});
+    const Image errors = error_image(test, reference);
+    ASSERT_EQ(errors.width, 2);
+    ASSERT_EQ(errors.channels, 3);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(errors.at(0, 0, c), 0.0f);
+        EXPECT_NEAR(errors.at(1, 0, c), 1.0f, 1e-6f);
+    }
+    // A pixel at relMSE 10^-2.5, the middle of the scale, gets the scale's middle colour
+    // (sRGB-decoded): (v - r)^2 / (r^2 + 0.01) with r = 0 and v = sqrt(0.01 * 10^-2.5).
+    const float v = static_cast<float>(std::sqrt(0.01 * std::pow(10.0, -2.5)));
+    const Image middle = error_image(image_of({v, v, v, 0, 0, 0}), image_of({0, 0, 0, 0, 0, 0}));
+    float srgb[3];
+    error_scale_colour(0.5, srgb);
+    for (int c = 0; c < 3; ++c) {
+        const float linear =
+            srgb[c] <= 0.04045f ? srgb[c] / 12.92f : std::pow((srgb[c] + 0.055f) / 1.055f, 2.4f);
+        EXPECT_NEAR(middle.at(0, 0, c), linear, 1e-3f);
+    }
+    Image wide(3, 1, 3);
+    EXPECT_THROW(error_image(test, wide), Error);
+}
+
+TEST(ErrorImage, ScaleLightnessRisesMonotonically) {
+    double previous = -1.0;
+    for (int i = 0; i <= 100; ++i) {
+        float srgb[3];
+        error_scale_colour(i / 100.0, srgb);
+        const double lightness = 0.2126 * srgb[0] + 0.7152 * srgb[1] + 0.0722 * srgb[2];
+        EXPECT_GT(lightness, previous) << "at t = " << i / 100.0;
+        previous = lightness;
+    }
+}
+
+TEST(ErrorImage, CompareCommandWritesItOrRefusesTheName) {
+    const auto dir = test::scratch_dir("compare_error_image");
+    write_image(dir / "test.exr", image_of({1, 2, 3, 0, 0, 0}));
+    write_image(dir / "reference.exr", image_of({1, 1, 1, 0, 0, 0.5f}));
+    const test::CommandResult result = test::run_radcache(
+        {"compare", (dir / "test.exr").string(), (dir / "reference.exr").string(), "--error-image",
+         (dir / "error.exr").string()});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const Image written = read_image(dir / "error.exr");
+    const Image expected =
+        error_image(image_of({1, 2, 3, 0, 0, 0}), image_of({1, 1, 1, 0, 0, 0.5f}));
+    ASSERT_EQ(written.pixels.size(), expected.pixels.size());
+    for (size_t i = 0; i < expected.pixels.size(); ++i) {
+        EXPECT_EQ(written.pixels[i], expected.pixels[i]) << i;
+    }
+    const test::CommandResult refused = test::run_radcache(
+        {"compare", (dir / "test.exr").string(), (dir / "reference.exr").string(), "--error-image",
+         (dir / "error.tiff").string()});
+    EXPECT_EQ(refused.exit_code, 2);
+    EXPECT_NE(refused.output.find("error.tiff"), std::string::npos) << refused.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "error.tiff"));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages radcache needs, skipping those already present.
+# Installs the Debian packages radcache needs, skipping those already present, and the Python
+# packages of its measurement tools (tools/requirements.txt).
 # Idempotent: runs `apt-get update` at most once, and only when something is missing.
 set -euo pipefail
 
@@ -17,16 +18,33 @@ for package in "${packages[@]}"; do
     fi
 done
 
-if [ ${#missing[@]} -eq 0 ]; then
-    echo "install-deps: all packages present"
-    exit 0
-fi
-
 sudo=""
 if [ "$(id -u)" -ne 0 ]; then
     sudo="sudo"
 fi
-echo "install-deps: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -qq
-$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "install-deps: all Debian packages present"
+else
+    echo "install-deps: installing ${missing[*]}"
+    export DEBIAN_FRONTEND=noninteractive
+    $sudo apt-get update -qq
+    $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# The Python packages of the measurement tools (tools/sweep.py, tools/results.py) and their
+# test, for the python3 on the PATH: installed through pip only when one is missing.
+requirements="$(dirname "$0")/requirements.txt"
+if python3 -c "import numpy, matplotlib, flip_evaluator" 2>/dev/null; then
+    echo "install-deps: all Python packages present"
+else
+    if ! python3 -m pip --version >/dev/null 2>&1; then
+        export DEBIAN_FRONTEND=noninteractive
+        $sudo apt-get update -qq
+        $sudo apt-get install -y -qq --no-install-recommends python3-pip
+    fi
+    echo "install-deps: installing the Python packages of $requirements"
+    # A Debian-managed python3 refuses plain installs (PEP 668): then install for the user.
+    python3 -m pip install --quiet --disable-pip-version-check -r "$requirements" 2>/dev/null ||
+        python3 -m pip install --quiet --disable-pip-version-check --user \
+            --break-system-packages -r "$requirements"
+fi

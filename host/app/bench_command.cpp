@@ -8,10 +8,13 @@ namespace rc {
 
 int run_bench_command(const std::vector<std::string>& args) {
     if (args.empty() || args[0] == "--help" || args[0] == "-h") {
-        std::cout << "usage: radcache bench rays|pt|compile [options]\n";
+        std::cout << "usage: radcache bench all|rays|pt|compile [options]\n";
         return args.empty() ? kExitUsage : 0;
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
+    if (args[0] == "all") {
+        return run_bench_all(rest);
+    }
     if (args[0] == "rays") {
         return run_bench_rays(rest);
     }
@@ -21,7 +24,7 @@ int run_bench_command(const std::vector<std::string>& args) {
     if (args[0] == "compile") {
         return run_bench_compile(rest);
     }
-    throw Error("unknown benchmark '" + args[0] + "' (rays, pt, compile)", kExitUsage);
+    throw Error("unknown benchmark '" + args[0] + "' (all, rays, pt, compile)", kExitUsage);
 }
 
 std::string shipped_scene(const std::string& name) {

@@ -16,6 +16,7 @@ const char* kUsage =
     "  devices          list the OpenCL platforms and devices\n"
     "  render SCENE     render a scene to an image\n"
     "  compare TEST REF an image's error against a reference\n"
+    "  bench all        every kernel family on every device, side by side\n"
     "  bench rays       traversal throughput against Embree\n"
     "  bench pt         path-tracing throughput\n"
     "  bench compile    cold and warm kernel build times\n"

@@ -10,11 +10,13 @@
 #include "app/cli.h"
 #include "app/commands.h"
 #include "app/device_options.h"
+#include "app/ivg_options.h"
 #include "app/progress_bar.h"
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "image/image_io.h"
 #include "methods/irradiance_cache.h"
+#include "methods/ivg_method.h"
 #include "methods/normals.h"
 #include "methods/path_tracer.h"
 #include "scene/device_scene.h"
@@ -32,7 +34,7 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-constexpr const char* kMethods = "pt, ic, normals";
+constexpr const char* kMethods = "pt, ic, ivg, ivg-gather, normals";
 
 std::vector<OptionSpec> render_option_specs() {
     std::vector<OptionSpec> specs = {
@@ -55,7 +57,7 @@ std::vector<OptionSpec> render_option_specs() {
         {"--aovs", "", "LIST",
          ".exr: the layers to write, comma-separated (default all; pt: beauty, direct, "
          "indirect, albedo, normal, stddev; ic: beauty, direct, indirect, albedo, normal, "
-         "coverage, records)"},
+         "coverage, records; ivg, ivg-gather: beauty, direct, indirect, albedo, normal, grid)"},
         {"--stats", "", "FILE", "write timings and counts as JSON"},
         {"--accuracy", "", "A",
          "ic: interpolation accuracy a in (0, 1] (Radiance's -aa): a record serves points within "
@@ -73,6 +75,9 @@ std::vector<OptionSpec> render_option_specs() {
          "ic: start from the records of a saved cache (same scene, frame and accuracy)"},
         {"--quiet", "-q", "", "print nothing but errors"},
     };
+    for (OptionSpec& spec : ivg_option_specs()) {
+        specs.push_back(std::move(spec));
+    }
     for (OptionSpec& spec : device_option_specs()) {
         specs.push_back(std::move(spec));
     }
@@ -195,7 +200,9 @@ int run_render_command(const std::vector<std::string>& args) {
     if (arguments.has("--method")) {
         settings.method = arguments.value("--method");
     }
-    if (settings.method != "pt" && settings.method != "ic" && settings.method != "normals") {
+    const bool grid_method = settings.method == "ivg" || settings.method == "ivg-gather";
+    if (settings.method != "pt" && settings.method != "ic" && settings.method != "normals" &&
+        !grid_method) {
         throw Error(
             "--method: unknown method '" + settings.method + "' (implemented: " + kMethods + ")",
             kExitUsage);
@@ -208,6 +215,10 @@ int run_render_command(const std::vector<std::string>& args) {
             }
         } else if (settings.method == "ic") {
             for (const char* aov : kIrradianceCacheAovs) {
+                known = known || layer == aov;
+            }
+        } else if (grid_method) {
+            for (const char* aov : kIvgAovs) {
                 known = known || layer == aov;
             }
         }
@@ -252,6 +263,16 @@ int run_render_command(const std::vector<std::string>& args) {
     if (frames.given && frames.first != frames.last &&
         (!ic.cache_in.empty() || !ic.cache_out.empty())) {
         throw Error("--cache-in/--cache-out take one frame", kExitUsage);
+    }
+    IvgOptions grid_options = ivg_options(arguments, settings.method);
+    grid_options.seed = settings.seed;
+    grid_options.max_depth = settings.max_depth;
+    grid_options.rr_depth = settings.rr_depth;
+    const bool build_grid = uses_grid(settings.method, arguments);
+    const int gathers = gather_rays(arguments, settings.method);
+    if (frames.given && frames.first != frames.last &&
+        (!grid_options.grid_in.empty() || !grid_options.grid_out.empty())) {
+        throw Error("--grid-in/--grid-out take one frame", kExitUsage);
     }
     const int width = static_cast<int>(arguments.integer("--width", 0, 1, 1 << 16));
     const int height = static_cast<int>(arguments.integer("--height", 0, 1, 1 << 16));
@@ -298,8 +319,48 @@ int run_render_command(const std::vector<std::string>& args) {
         Image image;
         nlohmann::json this_frame = {{"frame", frame}, {"output", output.string()}};
         ProgressBar progress(frames.given ? "frame " + std::to_string(frame) : "render", !quiet());
-        if (settings.method == "ic") {
+        std::unique_ptr<IrradianceVectorGrid> grid;
+        if (build_grid) {
+            progress.update(0.0, "photons");
+            grid = std::make_unique<IrradianceVectorGrid>(context, scene, device_bvh, device_scene);
+            IvgStats grid_stats;
+            grid->build(grid_options, &grid_stats);
+            this_frame["grid"] = ivg_stats_json(grid_stats);
+            rays += grid_stats.rays;
+            log_note("irradiance vector grid " + std::to_string(grid_stats.cells[0]) + "x" +
+                     std::to_string(grid_stats.cells[1]) + "x" +
+                     std::to_string(grid_stats.cells[2]) + ", " +
+                     std::to_string(grid_stats.photons) + " photons");
+        }
+        if (grid_method) {
+            IvgMethod method(context, scene, device_bvh, device_scene, *grid);
+            IvgRenderOptions options;
+            options.width = width;
+            options.height = height;
+            options.spp = settings.spp;
+            options.seed = settings.seed;
+            options.gather_rays = gathers;
+            IvgRenderStats stats;
+            image = method.render(options, &stats);
+            spp_done = settings.spp;
+            rays += stats.rays;
+            nonfinite += stats.nonfinite_samples;
+            if (first_nonfinite_pixel < 0) {
+                first_nonfinite_pixel = stats.first_nonfinite_pixel;
+            }
+            this_frame["spp"] = settings.spp;
+            this_frame["gather_rays"] = gathers;
+            this_frame["shading_rays"] = stats.rays;
+            this_frame["seconds"] = {{"shading", stats.seconds}};
+            if (stats.nonfinite_samples > 0) {
+                log_warning(std::to_string(stats.nonfinite_samples) +
+                            " samples were NaN or infinite and were dropped (first at pixel " +
+                            std::to_string(stats.first_nonfinite_pixel % image.width) + ", " +
+                            std::to_string(stats.first_nonfinite_pixel / image.width) + ")");
+            }
+        } else if (settings.method == "ic") {
             IrradianceCache cache(context, scene, device_bvh, device_scene);
+            ic.grid = grid.get();
             ic.width = width;
             ic.height = height;
             ic.spp = settings.spp;

@@ -1,5 +1,6 @@
 #include "image/image_error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -12,7 +13,9 @@ double relative_squared_error(double value, double reference) {
     return d * d / (reference * reference + 0.01);
 }
 
-ImageError image_error(const Image& test, const Image& reference, const std::string& test_name) {
+namespace {
+
+void check_comparable(const Image& test, const Image& reference, const std::string& test_name) {
     if (test.width != reference.width || test.height != reference.height) {
         throw Error(test_name + ": " + std::to_string(test.width) + "x" +
                     std::to_string(test.height) + " against a " + std::to_string(reference.width) +
@@ -22,6 +25,17 @@ ImageError image_error(const Image& test, const Image& reference, const std::str
         throw Error(test_name + ": " + std::to_string(test.channels) + " channels against " +
                     std::to_string(reference.channels) + " in the reference");
     }
+}
+
+// sRGB transfer function, display value to linear.
+float srgb_to_linear(float v) {
+    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+
+}  // namespace
+
+ImageError image_error(const Image& test, const Image& reference, const std::string& test_name) {
+    check_comparable(test, reference, test_name);
     ImageError e;
     const int channels = test.channels;
     e.channels = test.channel_names;
@@ -62,6 +76,48 @@ ImageError image_error(const Image& test, const Image& reference, const std::str
     const double mse = e.rmse * e.rmse;
     e.psnr = mse > 0.0 ? -10.0 * std::log10(mse) : std::numeric_limits<double>::infinity();
     return e;
+}
+
+void error_scale_colour(double t, float srgb[3]) {
+    // Control points of the scale in display space, evenly spaced in t: black, blue, magenta,
+    // red, yellow, white. Lightness rises monotonically so the scale also reads in grey.
+    static constexpr float kStops[6][3] = {{0.0f, 0.0f, 0.0f},  {0.1f, 0.1f, 0.6f},
+                                           {0.6f, 0.1f, 0.6f},  {0.9f, 0.2f, 0.1f},
+                                           {1.0f, 0.85f, 0.1f}, {1.0f, 1.0f, 1.0f}};
+    const double clamped = std::isnan(t) ? 1.0 : std::min(1.0, std::max(0.0, t));
+    const double position = clamped * 5.0;
+    const int stop = std::min(4, static_cast<int>(position));
+    const float f = static_cast<float>(position - stop);
+    for (int c = 0; c < 3; ++c) {
+        srgb[c] = kStops[stop][c] + f * (kStops[stop + 1][c] - kStops[stop][c]);
+    }
+}
+
+Image error_image(const Image& test, const Image& reference, const std::string& test_name) {
+    check_comparable(test, reference, test_name);
+    Image image(test.width, test.height, 3);
+    image.channel_names = {"R", "G", "B"};
+    for (int y = 0; y < test.height; ++y) {
+        for (int x = 0; x < test.width; ++x) {
+            double relative = 0.0;
+            for (int c = 0; c < test.channels; ++c) {
+                relative += relative_squared_error(test.at(x, y, c), reference.at(x, y, c));
+            }
+            relative /= std::max(1, test.channels);
+            // NaN maps to the top of the scale; zero error to the bottom.
+            const double log_error = relative > 0.0         ? std::log10(relative)
+                                     : std::isnan(relative) ? kErrorImageLog10Max
+                                                            : kErrorImageLog10Min;
+            float srgb[3];
+            error_scale_colour(
+                (log_error - kErrorImageLog10Min) / (kErrorImageLog10Max - kErrorImageLog10Min),
+                srgb);
+            for (int c = 0; c < 3; ++c) {
+                image.at(x, y, c) = srgb_to_linear(srgb[c]);
+            }
+        }
+    }
+    return image;
 }
 
 }  // namespace rc

@@ -29,4 +29,18 @@ double relative_squared_error(double value, double reference);
 ImageError image_error(const Image& test, const Image& reference,
                        const std::string& test_name = "image");
 
+// The false-colour scale of error images: log10 of a pixel's relMSE from kErrorImageLog10Min
+// (black) to kErrorImageLog10Max (white), through blue, magenta, red and yellow.
+constexpr double kErrorImageLog10Min = -5.0;
+constexpr double kErrorImageLog10Max = 0.0;
+
+// The display colour (sRGB-encoded, 0..1) of a position t in [0, 1] on the error scale.
+void error_scale_colour(double t, float srgb[3]);
+
+// A false-colour RGB image of the per-pixel relMSE (the mean over channels of
+// relative_squared_error) of `test` against `reference`, in linear values whose sRGB encoding
+// is error_scale_colour. Same checks as image_error.
+Image error_image(const Image& test, const Image& reference,
+                  const std::string& test_name = "image");
+
 }  // namespace rc

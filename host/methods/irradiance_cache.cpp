@@ -141,6 +141,7 @@ IrradianceCache::IrradianceCache(Context& context, const Scene& scene, const Dev
       hits_kernel_(context.kernel("irradiance_cache.cl", "ic_record_hits")),
       cells_kernel_(context.kernel("irradiance_cache.cl", "ic_record_cells")),
       cached_cells_kernel_(context.kernel("irradiance_cache.cl", "ic_record_cells_cached")),
+      grid_cells_kernel_(context.kernel("irradiance_cache.cl", "ic_record_cells_grid")),
       reduce_kernel_(context.kernel("irradiance_cache.cl", "ic_record_reduce")),
       gather_kernel_(context.kernel("irradiance_cache.cl", "ic_gather")),
       uncovered_kernel_(context.kernel("irradiance_cache.cl", "ic_uncovered")),
@@ -224,6 +225,9 @@ std::vector<CacheRecord> IrradianceCache::compute_level(int level,
             context_.launch(cached_cells_kernel_, count * per_record, params, scene, record_buffer,
                             origin_buffer, next.grid, next.cell_start, next.cell_records,
                             next.records, cells, counters);
+        } else if (sampling_.grid != nullptr) {
+            context_.launch(grid_cells_kernel_, count * per_record, params, scene, record_buffer,
+                            origin_buffer, *sampling_.grid, cells, counters);
         } else {
             context_.launch(cells_kernel_, count * per_record, params, scene, record_buffer,
                             origin_buffer, cells, counters);
@@ -367,6 +371,10 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     if (options.bounces < 1) {
         throw Error("--ic-bounces must be at least 1", kExitUsage);
     }
+    if (options.grid != nullptr && options.bounces > 1) {
+        throw Error("--ic-ivg reads the grid at the hemisphere rays' hits: it needs --ic-bounces 1",
+                    kExitUsage);
+    }
     if (samples > std::numeric_limits<uint32_t>::max()) {
         throw Error("irradiance caching: width x height x spp exceeds 2^32 camera samples",
                     kExitUsage);
@@ -376,6 +384,7 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     sampling.rr_depth = options.rr_depth;
     sampling.seed = options.seed;
     sampling.levels = options.bounces;
+    sampling.grid = options.grid;
     sampling.accuracy = options.accuracy;
     sampling.min_spacing = options.min_spacing;
     sampling.max_spacing = options.max_spacing;

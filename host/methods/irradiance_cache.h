@@ -14,6 +14,7 @@
 #include "device/context.h"
 #include "image/image.h"
 #include "methods/irradiance_records.h"
+#include "methods/irradiance_vector_grid.h"
 #include "scene/device_scene.h"
 #include "scene/scene.h"
 
@@ -43,6 +44,9 @@ struct IrradianceCacheOptions {
     std::filesystem::path cache_in;   // records to start from
     std::filesystem::path cache_out;  // where to save the records
     bool records_overlay = true;      // draw the `records` layer
+    // --ic-ivg: the hemisphere rays take the diffuse light at their hits from this grid instead
+    // of path-traced continuation (one cache level only).
+    const IrradianceVectorGrid* grid = nullptr;
 };
 
 // One pass of placement: records created at one cache level (0: the camera's) from candidates
@@ -105,6 +109,7 @@ struct RecordSampling {
     float accuracy = 0.35f;             // of every level
     Spacing min_spacing{8.0f, false};   // of the deeper levels, where a "pixel" is the footprint
     Spacing max_spacing{64.0f, false};  // of one hemisphere stratum's cone
+    const IrradianceVectorGrid* grid = nullptr;  // read at the last level's hemisphere hits
 };
 
 // M x N strata with N ~ pi M and M N close to `rays`.
@@ -149,6 +154,7 @@ class IrradianceCache {
     Kernel hits_kernel_;
     Kernel cells_kernel_;
     Kernel cached_cells_kernel_;
+    Kernel grid_cells_kernel_;
     Kernel reduce_kernel_;
     Kernel gather_kernel_;
     Kernel uncovered_kernel_;

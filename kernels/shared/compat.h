@@ -10,6 +10,10 @@
 #define RC_HAS_DOUBLE 1
 #endif
 
+#ifdef cl_khr_int64_base_atomics
+#pragma OPENCL EXTENSION cl_khr_int64_base_atomics : enable
+#endif
+
 #define RC_SHARED_BEGIN
 #define RC_SHARED_END
 #define RC_FUNC static inline
@@ -21,6 +25,9 @@
 #define rc_as_int(x) as_int(x)
 #define rc_offsetof(type, field) __builtin_offsetof(type, field)
 #define rc_shuffle(v, mask) shuffle((v), (mask))
+// 64-bit integer atomic addition (cl_khr_int64_base_atomics; the irradiance vector grid's
+// fixed-point sums).
+#define rc_atomic_add_long(pointer, value) atom_add((pointer), (value))
 // At the start of a block: no fused multiply-adds in it (needed where a computation must be
 // exactly antisymmetric, like the edge functions of the watertight triangle test).
 #define RC_NO_FP_CONTRACT _Pragma("OPENCL FP_CONTRACT OFF")

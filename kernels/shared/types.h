@@ -154,6 +154,28 @@ typedef struct IcParams {
                      // candidate pixel, z: candidate columns, w: unused
 } IcParams;
 
+// Irradiance vector grid interpolation (IvgParams::lookup.x).
+#define RC_IVG_TRILINEAR 0
+#define RC_IVG_TRICUBIC 1
+
+// Parameters of the irradiance-vector-grid kernels (Pacanowski et al., INRIA RR-6983). The grid
+// has cells.x x cells.y x cells.z voxels and (cells + 1) vertices along each axis; a vertex holds
+// six irradiance vectors (+x, -x, +y, -y, +z, -z), one 3-vector per colour channel.
+typedef struct IvgParams {
+    float4 origin;  // xyz: the grid's lower corner; w: fixed-point units per unit of flux
+    float4 cell;    // xyz: the cell size along each axis; w: the smallest |cosine| to a face's
+                    // normal a crossing's weight is divided by
+    float4 sphere;  // xyz, w: centre and radius of a sphere around the scene (environment)
+    int4 cells;     // xyz: voxels along each axis; w: vertices in all
+    uint4 photons;  // x: photons of the whole grid, y: first photon of the launch, z: 1 to
+                    // record unbounced (direct) segments, w: unused
+    int4 depth;     // x: maximum depth (bounces of a camera path), y: Russian-roulette depth,
+                    // z: gather rays per camera sample (ivg-gather), w: camera samples per pixel
+    uint4 seed;     // x, y: the 64-bit seed
+    int4 lookup;    // x: RC_IVG_TRILINEAR or RC_IVG_TRICUBIC, y: 1 to read the compressed
+                    // layout, z, w: unused
+} IvgParams;
+
 RC_SHARED_END
 
 // Every shared struct and field, for the host/device layout comparison.
@@ -232,7 +254,16 @@ RC_SHARED_END
     FIELD(IcParams, depth)                 \
     FIELD(IcParams, seed)                  \
     FIELD(IcParams, weights)               \
-    FIELD(IcParams, placement)
+    FIELD(IcParams, placement)             \
+    STRUCT(IvgParams)                      \
+    FIELD(IvgParams, origin)               \
+    FIELD(IvgParams, cell)                 \
+    FIELD(IvgParams, sphere)               \
+    FIELD(IvgParams, cells)                \
+    FIELD(IvgParams, photons)              \
+    FIELD(IvgParams, depth)                \
+    FIELD(IvgParams, seed)                 \
+    FIELD(IvgParams, lookup)
 // clang-format on
 
 #ifndef __OPENCL_VERSION__
@@ -253,4 +284,5 @@ static_assert(sizeof(rc::shared::GBufferSample) == 64);
 static_assert(sizeof(rc::shared::IrradianceRecord) == 160);
 static_assert(sizeof(rc::shared::RecordGrid) == 48);
 static_assert(sizeof(rc::shared::IcParams) == 96);
+static_assert(sizeof(rc::shared::IvgParams) == 128);
 #endif

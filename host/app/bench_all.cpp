@@ -1,0 +1,260 @@
+// `radcache bench all`: every kernel family's throughput on every OpenCL device, side by side in
+// one run (DESIGN.md §7), with Embree's native intersector on the same rays as the anchor.
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "app/cli.h"
+#include "app/commands.h"
+#include "app/device_options.h"
+#include "app/ray_bench.h"
+#include "device/device_list.h"
+#include "methods/irradiance_cache.h"
+#include "methods/path_tracer.h"
+#include "scene/camera.h"
+#include "scene/device_scene.h"
+#include "scene/scene_loader.h"
+#include "util/error.h"
+#include "util/file_io.h"
+
+namespace rc {
+namespace {
+
+// One measured figure of one device.
+struct Figure {
+    std::string key;    // JSON name
+    std::string label;  // table row
+    double value = 0.0;
+    double embree = 0.0;  // the anchor on the same work, 0 when there is none
+};
+
+struct DeviceResult {
+    DeviceInfo device;
+    std::vector<Figure> figures;
+    unsigned embree_threads = 0;
+    std::string error;  // why this device could not be measured
+};
+
+// Device seconds of the named kernels accumulated since `before`.
+double kernel_seconds_since(const Context& context, const std::map<std::string, KernelTime>& before,
+                            const std::vector<std::string>& kernels) {
+    double seconds = 0.0;
+    for (const std::string& name : kernels) {
+        const auto now = context.kernel_times().find(name);
+        if (now == context.kernel_times().end()) {
+            continue;
+        }
+        const auto then = before.find(name);
+        seconds += now->second.seconds - (then == before.end() ? 0.0 : then->second.seconds);
+    }
+    return seconds;
+}
+
+DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_options,
+                          const Scene& scene, int width, int height, int pt_spp, int repeats) {
+    DeviceResult result;
+    result.device = device;
+    context_options.device_spec = device.spec();
+    Context context(context_options);
+    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+    result.embree_threads = std::min(hardware, std::max(1u, device.compute_units));
+
+    // Traversal: camera rays (coherent) and their diffuse bounces (incoherent), device against
+    // Embree on the very same rays.
+    RayBench rays(context, scene, result.embree_threads, repeats);
+    const std::vector<shared::Ray> coherent =
+        rays.tracer().camera_rays(camera_params(scene.camera, width, height));
+    const std::vector<shared::Ray> incoherent = rays.tracer().diffuse_bounce_rays(coherent, 1);
+    for (const RayCaseResult& r : rays.run(coherent, incoherent)) {
+        std::string label = r.name;
+        std::replace(label.begin(), label.end(), '_', ' ');
+        result.figures.push_back(
+            {r.name + "_mrays", label + " Mrays/s", r.device_mrays, r.embree_mrays});
+    }
+    const DeviceScene device_scene(context, scene);
+
+    // Path tracing: a one-pass warm-up (kernel build, code generation), then the timed passes.
+    PathTracer tracer(context, scene, rays.device_bvh(), device_scene);
+    PathTracerOptions pt;
+    pt.width = width;
+    pt.height = height;
+    pt.spp = 1;
+    pt.max_depth = scene.render.max_depth;
+    pt.rr_depth = scene.render.rr_depth;
+    tracer.render(pt);
+    auto before = context.kernel_times();
+    pt.spp = pt_spp;
+    PathTracerStats pt_stats;
+    tracer.render(pt, &pt_stats);
+    const double pt_seconds = kernel_seconds_since(context, before, {"path_trace_pass"});
+    const double paths = static_cast<double>(width) * height * pt_spp;
+    result.figures.push_back(
+        {"path_samples_per_second", "path samples/s (M)", paths / pt_seconds * 1e-6, 0.0});
+    result.figures.push_back({"path_tracing_mrays", "path tracing Mrays/s",
+                              static_cast<double>(pt_stats.rays) / pt_seconds * 1e-6, 0.0});
+
+    // Irradiance caching at its defaults, one camera sample per pixel: hemisphere samples (a
+    // ray and its path-traced continuation each) of the record kernels, and camera samples of
+    // the splat accumulation pass. A small warm-up render first.
+    IrradianceCache cache(context, scene, rays.device_bvh(), device_scene);
+    IrradianceCacheOptions ic;
+    ic.width = std::min(width, 64);
+    ic.height = std::min(height, 64);
+    ic.spp = 1;
+    ic.max_depth = scene.render.max_depth;
+    ic.rr_depth = scene.render.rr_depth;
+    ic.records_overlay = false;
+    cache.render(ic);
+    before = context.kernel_times();
+    ic.width = width;
+    ic.height = height;
+    IrradianceCacheStats ic_stats;
+    cache.render(ic, &ic_stats);
+    const double record_seconds =
+        kernel_seconds_since(context, before, {"ic_record_cells", "ic_record_reduce"});
+    const double hemisphere_samples =
+        static_cast<double>(ic_stats.records) * ic_stats.strata_m * ic_stats.strata_n;
+    result.figures.push_back({"hemisphere_samples_per_second", "hemisphere samples/s (M)",
+                              hemisphere_samples / record_seconds * 1e-6, 0.0});
+    result.figures.push_back({"records_per_second", "IC records/s (k)",
+                              static_cast<double>(ic_stats.records) / record_seconds * 1e-3, 0.0});
+    const double splat_seconds = kernel_seconds_since(context, before, {"ic_shade"});
+    result.figures.push_back({"splat_samples_per_second", "splat accumulation samples/s (M)",
+                              static_cast<double>(width) * height / splat_seconds * 1e-6, 0.0});
+    return result;
+}
+
+}  // namespace
+
+int run_bench_all(const std::vector<std::string>& args) {
+    std::vector<OptionSpec> specs = {
+        {"--scene", "", "FILE", "scene (default scenes/cornell-box/scene.json)"},
+        {"--width", "", "N", "image width (default 512)"},
+        {"--height", "", "N", "image height (default 512)"},
+        {"--spp", "", "N", "timed path-tracing samples per pixel (default 4)"},
+        {"--repeat", "", "N", "timed repetitions per ray case, median reported (default 3)"},
+        {"--json", "", "FILE", "also write the results as JSON"},
+    };
+    for (OptionSpec& spec : device_option_specs()) {
+        specs.push_back(std::move(spec));
+    }
+    const ParsedArguments arguments = parse_arguments("radcache bench all", args, specs);
+    if (arguments.has("--help")) {
+        std::cout << format_help(
+            "radcache bench all [options]",
+            "Every kernel family on every OpenCL device (or the one --device names), side by\n"
+            "side: traversal Mrays/s (coherent and incoherent, closest and any hit) with Embree's\n"
+            "rtcIntersect1/rtcOccluded1 on the same rays as the anchor, path samples/s, "
+            "irradiance\n"
+            "cache hemisphere samples/s and records/s, and splat accumulation samples/s. Device\n"
+            "kernel time from profiling events; kernels are built and warmed up first.",
+            specs);
+        return 0;
+    }
+    if (!arguments.positionals().empty()) {
+        throw Error("unexpected argument '" + arguments.positionals()[0] + "'", kExitUsage);
+    }
+    const std::string scene_path =
+        arguments.has("--scene") ? arguments.value("--scene") : shipped_scene("cornell-box");
+    const int width = static_cast<int>(arguments.integer("--width", 512, 1, 1 << 14));
+    const int height = static_cast<int>(arguments.integer("--height", 512, 1, 1 << 14));
+    const int spp = static_cast<int>(arguments.integer("--spp", 4, 1, 1 << 16));
+    const int repeats = static_cast<int>(arguments.integer("--repeat", 3, 1, 1000));
+    const std::filesystem::path json_path = arguments.value("--json");
+    if (!json_path.empty()) {
+        check_writable_parent(json_path, "--json");
+    }
+
+    const ContextOptions options = context_options(arguments);
+    const std::vector<DeviceInfo> all = list_devices();
+    std::vector<DeviceInfo> devices;
+    if (arguments.has("--device")) {
+        devices.push_back(select_device(all, options.device_spec));
+    } else {
+        devices = all;
+    }
+    const Scene scene = load_scene(scene_path);
+
+    std::vector<DeviceResult> results;
+    for (const DeviceInfo& device : devices) {
+        std::fprintf(stderr, "bench all: %s %s\n", device.spec().c_str(), device.name.c_str());
+        try {
+            results.push_back(bench_device(device, options, scene, width, height, spp, repeats));
+        } catch (const Error& e) {
+            DeviceResult failed;
+            failed.device = device;
+            failed.error = e.what();
+            std::fprintf(stderr, "bench all: %s failed: %s\n", device.spec().c_str(), e.what());
+            results.push_back(failed);
+        }
+    }
+
+    // The table: one row per figure, one column per device, Embree's anchor last.
+    std::printf("scene %s at %dx%d (%d spp path tracing, irradiance cache defaults at 1 spp)\n",
+                scene_path.c_str(), width, height, spp);
+    std::printf("%-36s", "figure");
+    for (const DeviceResult& r : results) {
+        std::printf(" %22.22s", (r.device.spec() + " " + r.device.name).c_str());
+    }
+    std::printf(" %22s\n", "Embree (same rays)");
+    const DeviceResult* measured = nullptr;
+    for (const DeviceResult& r : results) {
+        if (r.error.empty()) {
+            measured = &r;
+            break;
+        }
+    }
+    if (measured != nullptr) {
+        for (size_t f = 0; f < measured->figures.size(); ++f) {
+            std::printf("%-36s", measured->figures[f].label.c_str());
+            for (const DeviceResult& r : results) {
+                if (r.error.empty()) {
+                    std::printf(" %22.3f", r.figures[f].value);
+                } else {
+                    std::printf(" %22s", "failed");
+                }
+            }
+            if (measured->figures[f].embree > 0.0) {
+                std::printf(" %15.3f (%2u th)\n", measured->figures[f].embree,
+                            measured->embree_threads);
+            } else {
+                std::printf(" %22s\n", "-");
+            }
+        }
+    }
+
+    if (!json_path.empty()) {
+        nlohmann::json report;
+        report["scene"] = scene_path;
+        report["resolution"] = {width, height};
+        report["pt_spp"] = spp;
+        report["devices"] = nlohmann::json::array();
+        for (const DeviceResult& r : results) {
+            nlohmann::json entry = {{"device", r.device.name},
+                                    {"spec", r.device.spec()},
+                                    {"platform", r.device.platform_name},
+                                    {"type", r.device.type},
+                                    {"compute_units", r.device.compute_units},
+                                    {"embree_threads", r.embree_threads}};
+            if (!r.error.empty()) {
+                entry["error"] = r.error;
+            }
+            for (const Figure& f : r.figures) {
+                entry[f.key] = f.value;
+                if (f.embree > 0.0) {
+                    entry["embree_" + f.key] = f.embree;
+                }
+            }
+            report["devices"].push_back(entry);
+        }
+        write_file_atomically(json_path, report.dump(2) + "\n");
+    }
+    const bool any_failed = std::any_of(results.begin(), results.end(),
+                                        [](const DeviceResult& r) { return !r.error.empty(); });
+    return any_failed ? 1 : 0;
+}
+
+}  // namespace rc

@@ -1,0 +1,112 @@
+// The irradiance vector grid (Pacanowski et al., INRIA RR-6983; DESIGN.md §6.3): a uniform grid
+// over the scene whose vertices hold six irradiance vectors per colour channel, filled by photon
+// tracing on the device, normalised, optionally compressed, saved and loaded. Owns the grid's
+// buffers and reports its statistics; ivg_method.h renders with it and the irradiance cache's
+// records can read it (--ic-ivg).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "bvh/device_bvh.h"
+#include "device/buffer.h"
+#include "device/context.h"
+#include "device/kernel.h"
+#include "scene/device_scene.h"
+#include "scene/scene.h"
+#include "shared/types.h"
+
+namespace rc {
+
+struct IvgOptions {
+    std::array<int, 3> cells{0, 0, 0};  // voxels per axis; all 0: chosen from the scene (auto)
+    uint64_t photons = 0;               // 0: chosen from the grid's size
+    bool include_direct = false;        // record unbounced photon segments (direct light)
+    int interpolation = RC_IVG_TRILINEAR;
+    bool compressed = false;  // read the 16-bit colour + direction layout (§4.2)
+    uint64_t seed = 0;
+    int max_depth = 64;
+    int rr_depth = 3;
+    std::filesystem::path grid_in;   // load instead of tracing photons
+    std::filesystem::path grid_out;  // save after building
+};
+
+// "NxMxK" or "auto"; Error (exit status 2) naming --grid otherwise.
+std::array<int, 3> parse_grid_resolution(const std::string& text);
+
+struct IvgStats {
+    std::array<int, 3> cells{0, 0, 0};
+    uint64_t photons = 0;
+    uint64_t crossings = 0;
+    uint64_t rays = 0;
+    bool loaded = false;    // from --grid-in
+    size_t grid_bytes = 0;  // the normalised grid (and the compressed copy) on the device
+    double trace_seconds = 0.0;
+    double normalize_seconds = 0.0;  // normalisation, compression and the file
+};
+
+// A photon segment for the deposition tests: from -> to carrying flux.
+struct PhotonSegment {
+    glm::vec3 from{0.0f};
+    glm::vec3 to{0.0f};
+    glm::vec3 flux{0.0f};
+};
+
+// The voxels per axis `auto` picks for a box of this size: cubic cells, about
+// kAutoGridVertices vertices, at least 2 voxels per axis.
+std::array<int, 3> auto_grid_cells(glm::vec3 extent);
+constexpr int kAutoGridVertices = 32768;
+// Photons `auto` traces per grid vertex.
+constexpr uint64_t kAutoPhotonsPerVertex = 8;
+
+class IrradianceVectorGrid : public KernelArgumentGroup {
+   public:
+    IrradianceVectorGrid(Context& context, const Scene& scene, const DeviceBvh& bvh,
+                         const DeviceScene& device_scene);
+
+    // Traces photons into the grid (or loads it), normalises it and prepares what the options
+    // ask to read (the compressed layout); saves it when asked.
+    void build(const IvgOptions& options, IvgStats* stats = nullptr);
+
+    // The grid's placement and the fixed-point scale for the scene and options (no photons).
+    shared::IvgParams layout(const IvgOptions& options) const;
+    const shared::IvgParams& params() const { return params_; }
+    void set_params(const shared::IvgParams& params) { params_ = params; }
+
+    // Kernel arguments (IvgParams, values, packed), in that order.
+    unsigned set_kernel_args(Kernel& kernel, unsigned first) const override;
+
+    // The normalised grid (RC_IVG_VALUES_PER_VERTEX floats per vertex).
+    std::vector<float> values() const;
+    void set_values(const std::vector<float>& values);
+
+    // Tests: the fixed-point sums of segments deposited into an empty grid with these params.
+    std::vector<int64_t> deposit(const shared::IvgParams& params,
+                                 const std::vector<PhotonSegment>& segments);
+    // Tests: fixed-point sums normalised by the kernel with these params.
+    std::vector<float> normalize(const shared::IvgParams& params,
+                                 const std::vector<int64_t>& accum);
+    // Tests: the irradiance the current grid gives points with unit normals.
+    std::vector<glm::vec3> lookup(const std::vector<glm::vec3>& positions,
+                                  const std::vector<glm::vec3>& normals);
+
+   private:
+    void upload_values(const std::vector<float>& values);
+
+    Context& context_;
+    const Scene& scene_;
+    const DeviceBvh& bvh_;
+    const DeviceScene& device_scene_;
+    Kernel trace_kernel_;
+    Kernel deposit_kernel_;
+    Kernel normalize_kernel_;
+    Kernel lookup_kernel_;
+    shared::IvgParams params_{};
+    Buffer<float> values_;
+    Buffer<uint16_t> packed_;
+};
+
+}  // namespace rc

@@ -1,0 +1,99 @@
+#include "methods/ivg_method.h"
+
+#include <chrono>
+#include <limits>
+
+#include "methods/scene_arguments.h"
+#include "scene/camera.h"
+#include "util/error.h"
+
+namespace rc {
+
+const char* const kIvgAovs[6] = {"beauty", "direct", "indirect", "albedo", "normal", "grid"};
+
+namespace {
+
+constexpr size_t kFilmSlots = 6;  // float4 per pixel (kernels/irradiance_vector_grid.cl)
+
+// The grid's parameters with this render's camera samples and gather rays.
+class RenderGrid : public KernelArgumentGroup {
+   public:
+    RenderGrid(const IrradianceVectorGrid& grid, const IvgRenderOptions& options) : grid_(grid) {
+        params_ = grid.params();
+        params_.depth.z = options.gather_rays;
+        params_.depth.w = options.spp;
+        params_.seed = {static_cast<unsigned>(options.seed),
+                        static_cast<unsigned>(options.seed >> 32), 0, 0};
+    }
+    unsigned set_kernel_args(Kernel& kernel, unsigned first) const override {
+        const unsigned count = grid_.set_kernel_args(kernel, first);
+        kernel.set_arg(first, sizeof params_, &params_);
+        return count;
+    }
+
+   private:
+    const IrradianceVectorGrid& grid_;
+    shared::IvgParams params_{};
+};
+
+}  // namespace
+
+IvgMethod::IvgMethod(Context& context, const Scene& scene, const DeviceBvh& bvh,
+                     const DeviceScene& device_scene, const IrradianceVectorGrid& grid)
+    : context_(context),
+      scene_(scene),
+      bvh_(bvh),
+      device_scene_(device_scene),
+      grid_(grid),
+      shade_kernel_(context.kernel("irradiance_vector_grid.cl", "ivg_shade")) {}
+
+Image IvgMethod::render(const IvgRenderOptions& options, IvgRenderStats* stats) {
+    const int width = options.width > 0 ? options.width : scene_.camera.width;
+    const int height = options.height > 0 ? options.height : scene_.camera.height;
+    const size_t pixels = static_cast<size_t>(width) * height;
+    if (options.spp < 1) {
+        throw Error("the irradiance vector grid needs at least one camera sample per pixel",
+                    kExitUsage);
+    }
+    if (options.gather_rays < 0) {
+        throw Error("--gather-rays must not be negative", kExitUsage);
+    }
+    if (pixels > std::numeric_limits<uint32_t>::max()) {
+        throw Error("irradiance vector grid: width x height exceeds 2^32 pixels", kExitUsage);
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const shared::CameraParams camera = camera_params(scene_.camera, width, height);
+    const SceneArguments scene(bvh_, device_scene_);
+    const RenderGrid grid(grid_, options);
+    Buffer<shared::float4> film(context_, pixels * kFilmSlots, "ivg_film");
+    Buffer<unsigned> counters(context_, 3, "ivg_counters");
+    counters.upload({0u, 0u, 0xffffffffu});
+    context_.launch(shade_kernel_, pixels, grid, camera, scene, film, counters);
+    const std::vector<shared::float4> sums = film.download();
+    const std::vector<unsigned> c = counters.download();
+
+    Image image(width, height, 18);
+    image.channel_names = {"R",        "G",          "B",          "direct.R",   "direct.G",
+                           "direct.B", "indirect.R", "indirect.G", "indirect.B", "albedo.R",
+                           "albedo.G", "albedo.B",   "normal.R",   "normal.G",   "normal.B",
+                           "grid.R",   "grid.G",     "grid.B"};
+    for (size_t p = 0; p < pixels; ++p) {
+        const shared::float4* s = &sums[kFilmSlots * p];
+        float* out = &image.pixels[p * 18];
+        for (size_t k = 0; k < kFilmSlots; ++k) {
+            out[3 * k + 0] = s[k].x;
+            out[3 * k + 1] = s[k].y;
+            out[3 * k + 2] = s[k].z;
+        }
+    }
+    if (stats != nullptr) {
+        stats->rays = c[0];
+        stats->nonfinite_samples = c[1];
+        stats->first_nonfinite_pixel = c[1] > 0 ? static_cast<int64_t>(c[2]) : -1;
+        stats->seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    return image;
+}
+
+}  // namespace rc

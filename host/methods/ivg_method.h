@@ -1,0 +1,55 @@
+// Rendering with the irradiance vector grid (DESIGN.md §6.3; `radcache render --method ivg` and
+// `--method ivg-gather`): direct light by next-event estimation at the camera's hit and the
+// diffuse lobe's indirect light from the grid, read at the hit itself (ivg: no gather rays) or
+// at the hits of cosine-distributed gather rays (ivg-gather: final gathering); other lobes by
+// path tracing. Schedules the render pass; the grid belongs to IrradianceVectorGrid.
+#pragma once
+
+#include <cstdint>
+
+#include "bvh/device_bvh.h"
+#include "device/context.h"
+#include "image/image.h"
+#include "methods/irradiance_vector_grid.h"
+#include "scene/device_scene.h"
+#include "scene/scene.h"
+
+namespace rc {
+
+struct IvgRenderOptions {
+    int width = 0;  // 0: the scene camera's
+    int height = 0;
+    int spp = 4;
+    uint64_t seed = 0;
+    int gather_rays = 0;  // per camera sample; 0: read the grid at the camera's hit (ivg)
+};
+
+struct IvgRenderStats {
+    uint64_t rays = 0;
+    double seconds = 0.0;
+    uint64_t nonfinite_samples = 0;
+    int64_t first_nonfinite_pixel = -1;
+};
+
+// The layers of an image rendered with the grid, in channel order (3 channels each): beauty
+// (R, G, B), direct, indirect, albedo, normal, grid (the grid's diffuse light at the camera's
+// hit, rho_d / pi E: the grid-only indirect light).
+extern const char* const kIvgAovs[6];
+
+class IvgMethod {
+   public:
+    IvgMethod(Context& context, const Scene& scene, const DeviceBvh& bvh,
+              const DeviceScene& device_scene, const IrradianceVectorGrid& grid);
+
+    Image render(const IvgRenderOptions& options, IvgRenderStats* stats = nullptr);
+
+   private:
+    Context& context_;
+    const Scene& scene_;
+    const DeviceBvh& bvh_;
+    const DeviceScene& device_scene_;
+    const IrradianceVectorGrid& grid_;
+    Kernel shade_kernel_;
+};
+
+}  // namespace rc

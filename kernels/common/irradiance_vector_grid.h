@@ -1,0 +1,274 @@
+// The irradiance vector grid (Pacanowski, Granier, Poulin and Schlick, INRIA RR-6983; DESIGN.md
+// §6.3): photon segments deposited at voxel-face crossings, and the lookup of the irradiance a
+// surface point receives.
+//
+// Layout: vertex v = (k (cells.y + 1) + j) (cells.x + 1) + i holds 54 values, direction d (0: +x,
+// 1: -x, 2: +y, 3: -y, 4: +z, 5: -z), channel c (r, g, b), component (x, y, z) at
+// ((v 6 + d) 3 + c) 3 + component. The "+x" vector holds the light that arrives from the +x side
+// (photons travelling towards -x), which a surface facing +x receives. Accumulation is in 64-bit
+// fixed point (params.origin.w units per unit of flux), so sums do not depend on the order of the
+// atomic additions; the normalised grid is float. The compressed layout keeps, per vertex and
+// direction, 6 half floats: |I_r|, |I_g|, |I_b| and the unit direction of I_r + I_g + I_b (§4.2).
+#pragma once
+
+#include "common/math.h"
+#include "shared/types.h"
+
+#define RC_IVG_VALUES_PER_VERTEX 54
+#define RC_IVG_PACKED_PER_VERTEX 36
+
+RC_FUNC float rc_ivg_component(float3 v, int axis) {
+    return axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
+}
+
+RC_FUNC int rc_ivg_cells_along(const IvgParams* p, int axis) {
+    return axis == 0 ? p->cells.x : (axis == 1 ? p->cells.y : p->cells.z);
+}
+
+RC_FUNC int rc_ivg_vertex(const IvgParams* p, int i, int j, int k) {
+    return (k * (p->cells.y + 1) + j) * (p->cells.x + 1) + i;
+}
+
+// The fixed-point amount one crossing adds for colour channel value `flux` and component
+// `incident` of the incident direction: flux * incident / cosine * units, where cosine is the
+// travel direction's |cosine| to the face's normal (at least p->cell.w). Photons cross a face in
+// proportion to that cosine, so the sum over crossings per unit area estimates Arvo's irradiance
+// vector, the integral of L(w) w over the hemisphere; the report's §3.3 formula omits the
+// division, which makes a parallel beam's vector E cos(theta) w instead of E w. With the segment
+// d and its length, incident / cosine = -d_k / max(|d_A|, cell.w |d|): no normalisation, so the
+// amounts are exact functions of the segment. Saturates at +-2^52.
+RC_FUNC long rc_ivg_fixed(float flux, float minus_d_k, float denominator, float units) {
+    RC_NO_FP_CONTRACT
+    const float value = flux * minus_d_k / denominator * units;
+    const float limit = 4503599627370496.0f;
+    if (!isfinite(value)) {
+        return 0;
+    }
+    return (long)rint(clamp(value, -limit, limit));
+}
+
+// Adds the crossings of the segment from a to b (travel direction w = (b - a) / |b - a|) carrying
+// `flux` to accum: at every crossing of a grid plane of axis A strictly after a (a segment leaving
+// a surface that lies on a plane does not cross it) and up to b (a photon that ends on a surface
+// lying on a plane has reached it), flux * (-w) / max(|w_A|, cell.w) is added to the vector of
+// the nearest vertex on that plane (rounding half up), for the direction -sign(w_A) A. Crossings
+// outside the grid's faces are left out. Positions are computed per crossing from the plane's
+// index, so they do not depend on the order of the walk. Returns the number of crossings.
+RC_FUNC uint rc_ivg_deposit_segment(const IvgParams* p, float3 a, float3 b, float3 flux,
+                                    RC_GLOBAL volatile long* accum) {
+    RC_NO_FP_CONTRACT
+    const float3 d = b - a;
+    const float length_d = length(d);
+    if (!(length_d > 0.0f) || !isfinite(length_d)) {
+        return 0;
+    }
+    uint crossings = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const float da = rc_ivg_component(d, axis);
+        if (da == 0.0f) {
+            continue;
+        }
+        const float origin_a = rc_ivg_component(p->origin.xyz, axis);
+        const float cell_a = rc_ivg_component(p->cell.xyz, axis);
+        const int planes = rc_ivg_cells_along(p, axis);
+        const float tolerance = 1.0e-4f * cell_a;
+        // Plane n lies at origin_a + n cell_a; the segment covers [min, max] along the axis.
+        const float a_a = rc_ivg_component(a, axis);
+        const float b_a = rc_ivg_component(b, axis);
+        const float low = (fmin(a_a, b_a) - origin_a) / cell_a;
+        const float high = (fmax(a_a, b_a) - origin_a) / cell_a;
+        const int first = max(0, (int)floor(low) - 1);
+        const int last = min(planes, (int)ceil(high) + 1);
+        const float denominator = fmax(fabs(da), p->cell.w * length_d);
+        const int direction = 2 * axis + (da < 0.0f ? 0 : 1);
+        for (int n = first; n <= last; ++n) {
+            const float plane = origin_a + (float)n * cell_a;
+            // Distance along the axis from a to the plane, in the direction of travel.
+            const float along = (plane - a_a) * (da > 0.0f ? 1.0f : -1.0f);
+            if (!(along > tolerance) || !(along <= fabs(da) + tolerance)) {
+                continue;
+            }
+            const float s = (plane - a_a) / da;
+            int index[3];
+            bool inside = true;
+            for (int other = 0; other < 3; ++other) {
+                if (other == axis) {
+                    index[other] = n;
+                    continue;
+                }
+                const float x = rc_ivg_component(a, other) + s * rc_ivg_component(d, other);
+                const float g = (x - rc_ivg_component(p->origin.xyz, other)) /
+                                rc_ivg_component(p->cell.xyz, other);
+                const int count = rc_ivg_cells_along(p, other);
+                const float slack = 1.0e-4f;
+                if (!(g >= -slack) || !(g <= (float)count + slack)) {
+                    inside = false;
+                }
+                index[other] = clamp((int)floor(g + 0.5f), 0, count);
+            }
+            if (!inside) {
+                continue;
+            }
+            const int v = rc_ivg_vertex(p, index[0], index[1], index[2]);
+            RC_GLOBAL volatile long* slot = accum + (size_t)(v * 6 + direction) * 9;
+            const float minus_d[3] = {-d.x, -d.y, -d.z};
+            const float channel[3] = {flux.x, flux.y, flux.z};
+            for (int c = 0; c < 3; ++c) {
+                for (int k = 0; k < 3; ++k) {
+                    const long amount =
+                        rc_ivg_fixed(channel[c], minus_d[k], denominator, p->origin.w);
+                    if (amount != 0) {
+                        rc_atomic_add_long(slot + 3 * c + k, amount);
+                    }
+                }
+            }
+            ++crossings;
+        }
+    }
+    return crossings;
+}
+
+// Area of the face cell around a vertex, perpendicular to `axis` (§3.3): the voxel face's area,
+// halved for each other axis along which the vertex lies on the grid's boundary.
+RC_FUNC float rc_ivg_face_area(const IvgParams* p, int axis, int i, int j, int k) {
+    const int index[3] = {i, j, k};
+    float area = 1.0f;
+    for (int other = 0; other < 3; ++other) {
+        if (other == axis) {
+            continue;
+        }
+        area *= rc_ivg_component(p->cell.xyz, other);
+        if (index[other] == 0 || index[other] == rc_ivg_cells_along(p, other)) {
+            area *= 0.5f;
+        }
+    }
+    return area;
+}
+
+// The irradiance vectors (r, g, b) of direction `direction` at vertex (i, j, k), clamped to the
+// grid, from the float or the compressed layout.
+RC_FUNC void rc_ivg_vertex_vectors(const IvgParams* p, RC_GLOBAL const float* values,
+                                   RC_GLOBAL const half* packed, int i, int j, int k, int direction,
+                                   float3 out[3]) {
+    i = clamp(i, 0, p->cells.x);
+    j = clamp(j, 0, p->cells.y);
+    k = clamp(k, 0, p->cells.z);
+    const size_t v = (size_t)rc_ivg_vertex(p, i, j, k);
+    if (p->lookup.y != 0) {
+        const size_t base = (v * 6 + (size_t)direction) * 6;
+        const float3 colour = vload_half3(0, packed + base);
+        const float3 unit = vload_half3(0, packed + base + 3);
+        out[0] = colour.x * unit;
+        out[1] = colour.y * unit;
+        out[2] = colour.z * unit;
+        return;
+    }
+    const size_t base = (v * 6 + (size_t)direction) * 9;
+    for (int c = 0; c < 3; ++c) {
+        out[c] = vload3(0, values + base + 3 * (size_t)c);
+    }
+}
+
+// Catmull-Rom weights of the four vertices around fraction t in [0, 1] (interpolating, exact
+// for quadratic fields).
+RC_FUNC float4 rc_ivg_cubic_weights(float t) {
+    const float t2 = t * t;
+    const float t3 = t2 * t;
+    return (float4)(0.5f * (-t3 + 2.0f * t2 - t), 0.5f * (3.0f * t3 - 5.0f * t2 + 2.0f),
+                    0.5f * (-3.0f * t3 + 4.0f * t2 + t), 0.5f * (t3 - t2));
+}
+
+// Whether a vertex's vectors for one direction hold anything: no photon crossed its face cell
+// in that direction when all are zero (inside a solid, behind a wall off the grid planes).
+RC_FUNC bool rc_ivg_reached(const float3 vectors[3]) {
+    return any(vectors[0] != 0.0f) || any(vectors[1] != 0.0f) || any(vectors[2] != 0.0f);
+}
+
+// The irradiance vectors (r, g, b) of one direction spatially interpolated at grid coordinate g
+// (position in cells): trilinear over the vertices photons reached, the weights renormalised
+// over them (a vertex no photon reached, inside a solid or behind a wall that does not lie on a
+// grid plane, carries no information about the surface point and would darken it), or tricubic
+// (Catmull-Rom, vertices beyond the grid clamped) when all 64 vertices of its stencil were
+// reached, trilinear otherwise.
+RC_FUNC void rc_ivg_interpolate(const IvgParams* p, RC_GLOBAL const float* values,
+                                RC_GLOBAL const half* packed, float3 g, int direction,
+                                float3 out[3]) {
+    out[0] = out[1] = out[2] = (float3)(0.0f);
+    const int3 base = (int3)(min((int)floor(g.x), max(p->cells.x - 1, 0)),
+                             min((int)floor(g.y), max(p->cells.y - 1, 0)),
+                             min((int)floor(g.z), max(p->cells.z - 1, 0)));
+    const float3 t = g - (float3)((float)base.x, (float)base.y, (float)base.z);
+    float3 vectors[3];
+    if (p->lookup.x == RC_IVG_TRICUBIC) {
+        const float4 wx = rc_ivg_cubic_weights(t.x);
+        const float4 wy = rc_ivg_cubic_weights(t.y);
+        const float4 wz = rc_ivg_cubic_weights(t.z);
+        const float ax[4] = {wx.x, wx.y, wx.z, wx.w};
+        const float ay[4] = {wy.x, wy.y, wy.z, wy.w};
+        const float az[4] = {wz.x, wz.y, wz.z, wz.w};
+        bool complete = true;
+        for (int dz = 0; dz < 4 && complete; ++dz) {
+            for (int dy = 0; dy < 4 && complete; ++dy) {
+                for (int dx = 0; dx < 4 && complete; ++dx) {
+                    const float weight = ax[dx] * ay[dy] * az[dz];
+                    rc_ivg_vertex_vectors(p, values, packed, base.x + dx - 1, base.y + dy - 1,
+                                          base.z + dz - 1, direction, vectors);
+                    complete = rc_ivg_reached(vectors);
+                    for (int c = 0; c < 3; ++c) {
+                        out[c] += weight * vectors[c];
+                    }
+                }
+            }
+        }
+        if (complete) {
+            return;
+        }
+        out[0] = out[1] = out[2] = (float3)(0.0f);
+    }
+    float total = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const int dx = corner & 1;
+        const int dy = (corner >> 1) & 1;
+        const int dz = (corner >> 2) & 1;
+        const float weight =
+            (dx ? t.x : 1.0f - t.x) * (dy ? t.y : 1.0f - t.y) * (dz ? t.z : 1.0f - t.z);
+        rc_ivg_vertex_vectors(p, values, packed, base.x + dx, base.y + dy, base.z + dz, direction,
+                              vectors);
+        if (!rc_ivg_reached(vectors)) {
+            continue;
+        }
+        total += weight;
+        for (int c = 0; c < 3; ++c) {
+            out[c] += weight * vectors[c];
+        }
+    }
+    if (total > 0.0f) {
+        for (int c = 0; c < 3; ++c) {
+            out[c] /= total;
+        }
+    }
+}
+
+// Irradiance (r, g, b) at point x with unit normal n (§4.1): per axis the vector of the side the
+// normal faces, spatially interpolated, blended as I_n = I_x n_x^2 + I_y n_y^2 + I_z n_z^2, and
+// E = max(0, <I_n, n>) per channel. The reflected radiance of a Lambertian surface is rho / pi E.
+RC_FUNC float3 rc_ivg_irradiance(const IvgParams* p, RC_GLOBAL const float* values,
+                                 RC_GLOBAL const half* packed, float3 x, float3 n) {
+    const float3 upper = (float3)((float)p->cells.x, (float)p->cells.y, (float)p->cells.z);
+    const float3 g = clamp((x - p->origin.xyz) / p->cell.xyz, (float3)(0.0f), upper);
+    float3 blended[3] = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f)};
+    for (int axis = 0; axis < 3; ++axis) {
+        const float n_a = rc_ivg_component(n, axis);
+        const float weight = n_a * n_a;
+        if (weight == 0.0f) {
+            continue;
+        }
+        float3 vectors[3];
+        rc_ivg_interpolate(p, values, packed, g, 2 * axis + (n_a >= 0.0f ? 0 : 1), vectors);
+        for (int c = 0; c < 3; ++c) {
+            blended[c] += weight * vectors[c];
+        }
+    }
+    return (float3)(fmax(0.0f, dot(blended[0], n)), fmax(0.0f, dot(blended[1], n)),
+                    fmax(0.0f, dot(blended[2], n)));
+}

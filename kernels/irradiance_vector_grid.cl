@@ -1,0 +1,117 @@
+// Entry kernels of the irradiance vector grid (host/methods/irradiance_vector_grid.cpp,
+// host/methods/ivg_method.cpp): photon tracing, deposition of given segments (tests),
+// normalisation, lookups (tests) and the render pass of `ivg` and `ivg-gather`.
+#include "irradiance_vector_grid.h"
+#include "scene_arguments.h"
+
+// Item i: photon params.photons.y + i, traced and deposited into accum (64-bit fixed point).
+// counters[0] counts crossings, counters[1] rays.
+__kernel void ivg_trace_photons(uint begin, uint end, IvgParams params, RC_SCENE_PARAMETERS,
+                                __global long* accum, __global uint* counters) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    uint rays = 0;
+    const uint crossings = rc_ivg_trace_photon(&scene, &params, params.photons.y + i, accum, &rays);
+    atomic_add(&counters[0], crossings);
+    atomic_add(&counters[1], rays);
+}
+
+// Item i: the segment from[i] -> to[i] carrying flux[i].xyz, deposited into accum.
+__kernel void ivg_deposit_segments(uint begin, uint end, IvgParams params,
+                                   __global const float4* from, __global const float4* to,
+                                   __global const float4* flux, __global long* accum) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    rc_ivg_deposit_segment(&params, from[i].xyz, to[i].xyz, flux[i].xyz, accum);
+}
+
+// Item v: vertex v's 54 sums turned into irradiance vectors (§3.3): divided by the fixed-point
+// units, the photon count and the area of the vertex's face cell for each direction.
+__kernel void ivg_normalize(uint begin, uint end, IvgParams params, __global const long* accum,
+                            __global float* values) {
+    const uint v = begin + (uint)get_global_id(0);
+    if (v >= end) {
+        return;
+    }
+    const int columns = params.cells.x + 1;
+    const int rows = params.cells.y + 1;
+    const int i = (int)v % columns;
+    const int j = ((int)v / columns) % rows;
+    const int k = (int)v / (columns * rows);
+    const float photons = (float)max(params.photons.x, 1u);
+    for (int direction = 0; direction < 6; ++direction) {
+        const float scale =
+            1.0f / (params.origin.w * photons * rc_ivg_face_area(&params, direction / 2, i, j, k));
+        for (int n = 0; n < 9; ++n) {
+            const size_t slot = ((size_t)v * 6 + (size_t)direction) * 9 + (size_t)n;
+            values[slot] = (float)accum[slot] * scale;
+        }
+    }
+}
+
+// Item q: the irradiance (rgb) the grid gives point positions[q] with unit normal normals[q].
+__kernel void ivg_lookup(uint begin, uint end, IvgParams params, __global const float* values,
+                         __global const half* packed, __global const float4* positions,
+                         __global const float4* normals, __global float4* out) {
+    const uint q = begin + (uint)get_global_id(0);
+    if (q >= end) {
+        return;
+    }
+    out[q] = (float4)(rc_ivg_irradiance(&params, values, packed, positions[q].xyz, normals[q].xyz),
+                      0.0f);
+}
+
+// The render pass. Item = pixel: shades its params.depth.w camera samples and writes the pixel's
+// means to film (6 float4 per pixel: beauty, direct, indirect, albedo, normal, grid). With
+// params.depth.z gather rays per sample, final gathering (`ivg-gather`); with none, the grid read
+// directly at the camera's hit (`ivg`). counters: [0] rays, [1] NaN or infinite samples (dropped),
+// [2] the first pixel that had one.
+__kernel void ivg_shade(uint begin, uint end, IvgParams params, __global const float* values,
+                        __global const half* packed, CameraParams camera, RC_SCENE_PARAMETERS,
+                        __global float4* film, __global uint* counters) {
+    const uint pixel = begin + (uint)get_global_id(0);
+    if (pixel >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const VectorGrid grid = {params, values, packed};
+    float3 sums[6] = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f),
+                      (float3)(0.0f), (float3)(0.0f), (float3)(0.0f)};
+    uint rays = 0;
+    uint finite = 0;
+    for (uint s = 0; s < (uint)params.depth.w; ++s) {
+        float3 grid_term;
+        CachedRadiance l;
+        if (params.depth.z > 0) {
+            l = rc_ivg_gather(&scene, &grid, &camera, pixel, s, &grid_term);
+        } else {
+            RngStream rng;
+            const Ray ray = rc_ivg_camera_ray(&params, &camera, pixel, s, &rng);
+            l = rc_ivg_radiance(&scene, &grid, ray, &rng, true, 0, &grid_term);
+        }
+        const float3 radiance = l.direct + l.indirect;
+        rays += l.rays;
+        if (!all(isfinite(radiance))) {
+            atomic_inc(&counters[1]);
+            atomic_min(&counters[2], pixel);
+            continue;
+        }
+        ++finite;
+        sums[0] += radiance;
+        sums[1] += l.direct;
+        sums[2] += l.indirect;
+        sums[3] += l.albedo;
+        sums[4] += l.normal;
+        sums[5] += grid_term;
+    }
+    atomic_add(&counters[0], rays);
+    const float inv = finite > 0 ? 1.0f / (float)finite : 0.0f;
+    for (int k = 0; k < 6; ++k) {
+        film[6 * (size_t)pixel + k] = (float4)(sums[k] * inv, 0.0f);
+    }
+}

@@ -1,0 +1,414 @@
+// The irradiance vector grid's kernels (kernels/common/irradiance_vector_grid.h): photon
+// deposition against a brute-force host reference, normalisation against known irradiance
+// vectors (a parallel beam, an isotropic field), and the lookup's interpolation and blending.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <random>
+
+#include "bvh/bvh.h"
+#include "bvh/device_bvh.h"
+#include "methods/irradiance_vector_grid.h"
+#include "scene/device_scene.h"
+#include "test_support.h"
+
+namespace rc {
+namespace {
+
+// A grid object on the Cornell box's device scene (the tests set their own params).
+struct GridFixture {
+    GridFixture()
+        : scene(test::load_cornell_box()),
+          bvh(build_bvh(scene.mesh)),
+          device_bvh(test::shared_context(), bvh),
+          device_scene(test::shared_context(), scene),
+          grid(test::shared_context(), scene, device_bvh, device_scene) {}
+    Scene scene;
+    Bvh bvh;
+    DeviceBvh device_bvh;
+    DeviceScene device_scene;
+    IrradianceVectorGrid grid;
+};
+
+GridFixture& fixture() {
+    static GridFixture* f = new GridFixture();
+    return *f;
+}
+
+shared::IvgParams unit_grid(int n, float units) {
+    shared::IvgParams p{};
+    p.origin = {0.0f, 0.0f, 0.0f, units};
+    p.cell = {1.0f, 1.0f, 1.0f, 0.1f};
+    p.cells = {n, n, n, (n + 1) * (n + 1) * (n + 1)};
+    p.photons = {1, 0, 0, 0};
+    return p;
+}
+
+size_t slot(const shared::IvgParams& p, int i, int j, int k, int direction) {
+    const size_t v = (static_cast<size_t>(k) * (p.cells.y + 1) + j) * (p.cells.x + 1) + i;
+    return (v * 6 + direction) * 9;
+}
+
+// The reference deposition: every plane of every axis tested against the segment in double
+// precision (no walk); the fixed-point amount is the kernel's float formula, so the sums must
+// agree exactly.
+std::vector<int64_t> reference_deposit(const shared::IvgParams& p,
+                                       const std::vector<PhotonSegment>& segments) {
+    std::vector<int64_t> sums(static_cast<size_t>(p.cells.w) * 54, 0);
+    const float origin[3] = {p.origin.x, p.origin.y, p.origin.z};
+    const float cell[3] = {p.cell.x, p.cell.y, p.cell.z};
+    const int cells[3] = {p.cells.x, p.cells.y, p.cells.z};
+    for (const PhotonSegment& s : segments) {
+        const float d[3] = {s.to.x - s.from.x, s.to.y - s.from.y, s.to.z - s.from.z};
+        const double length =
+            std::sqrt(double(d[0]) * d[0] + double(d[1]) * d[1] + double(d[2]) * d[2]);
+        const float flux[3] = {s.flux.x, s.flux.y, s.flux.z};
+        for (int axis = 0; axis < 3; ++axis) {
+            if (d[axis] == 0.0f) {
+                continue;
+            }
+            for (int n = 0; n <= cells[axis]; ++n) {
+                const double plane = double(origin[axis]) + double(n) * cell[axis];
+                const double s_n = (plane - s.from[axis]) / d[axis];
+                const double along = s_n * std::fabs(double(d[axis]));
+                const double tolerance = 1e-4 * cell[axis];
+                if (!(along > tolerance && along <= std::fabs(double(d[axis])) + tolerance)) {
+                    continue;
+                }
+                int index[3];
+                bool inside = true;
+                for (int other = 0; other < 3; ++other) {
+                    if (other == axis) {
+                        index[other] = n;
+                        continue;
+                    }
+                    const double x = s.from[other] + s_n * d[other];
+                    const double g = (x - origin[other]) / cell[other];
+                    // Rounding half up is defined, but float and double may fall on either side
+                    // of a tie: the segments must keep clear of them.
+                    EXPECT_GT(std::fabs(g - std::floor(g) - 0.5), 1e-4)
+                        << "a test segment crosses midway between vertices";
+                    inside = inside && g >= -1e-4 && g <= cells[other] + 1e-4;
+                    index[other] =
+                        std::clamp(static_cast<int>(std::floor(g + 0.5)), 0, cells[other]);
+                }
+                if (!inside) {
+                    continue;
+                }
+                const int direction = 2 * axis + (d[axis] < 0.0f ? 0 : 1);
+                const float denominator =
+                    std::max(std::fabs(d[axis]), p.cell.w * static_cast<float>(length));
+                const size_t base = slot(p, index[0], index[1], index[2], direction);
+                for (int c = 0; c < 3; ++c) {
+                    for (int k = 0; k < 3; ++k) {
+                        const float value = flux[c] * -d[k] / denominator * p.origin.w;
+                        sums[base + 3 * c + k] += static_cast<int64_t>(std::rint(value));
+                    }
+                }
+            }
+        }
+    }
+    return sums;
+}
+
+TEST(IvgDeposit, MatchesBruteForceIncludingEdgesCornersAndEnds) {
+    const shared::IvgParams p = unit_grid(4, 1024.0f);
+    const glm::vec3 flux(1.0f, 0.5f, 0.25f);
+    const std::vector<PhotonSegment> segments = {
+        {{0.25f, 1.25f, 2.75f}, {3.75f, 1.25f, 2.75f}, flux},           // along +x: planes 1, 2, 3
+        {{0.5f, 0.5f, 0.5f}, {3.5f, 3.5f, 3.5f}, flux},                 // through three vertices
+        {{0.5f, 0.5f, 1.25f}, {2.5f, 2.5f, 1.25f}, flux},               // through two edges
+        {{1.75f, 3.5f, 0.25f}, {1.75f, 0.0f, 0.25f}, flux},             // ends on the y = 0 face
+        {{2.0f, 0.75f, 0.25f}, {3.5f, 0.75f, 0.25f}, flux},             // starts on the x = 2 plane
+        {{3.5f, 2.25f, 1.75f}, {6.5f, 2.25f, 1.75f}, flux},             // leaves through x = 4
+        {{-1.0f, 5.0f, 1.0f}, {5.0f, 5.0f, 1.0f}, flux},                // outside the grid
+        {{0.3f, 0.7f, 0.1f}, {3.9f, 2.2f, 3.4f}, {2.0f, 1.0f, 3.0f}},   // oblique
+        {{3.9f, 0.2f, 3.7f}, {0.35f, 3.1f, 0.6f}, {0.7f, 0.7f, 0.7f}},  // oblique, backwards
+    };
+    const std::vector<int64_t> device = fixture().grid.deposit(p, segments);
+    const std::vector<int64_t> expected = reference_deposit(p, segments);
+    ASSERT_EQ(device.size(), expected.size());
+    size_t nonzero = 0;
+    for (size_t i = 0; i < expected.size(); ++i) {
+        ASSERT_EQ(device[i], expected[i])
+            << "value " << i << " (vertex " << i / 54 << ", direction " << i / 9 % 6 << ")";
+        nonzero += expected[i] != 0;
+    }
+    EXPECT_GT(nonzero, 100u);
+    // Hand-checked entries: the +x segment crosses x = 1, 2, 3 at y = 1.25 -> j = 1, z = 2.75 ->
+    // k = 3, into the -x vector (light from the -x side): -flux.r * 1024 in the x component.
+    for (int i = 1; i <= 3; ++i) {
+        EXPECT_EQ(device[slot(p, i, 1, 3, 1) + 0], -1024) << i;
+    }
+    // The segment ending on y = 0 reaches the face's vertex (2, 0, 0); the one starting on x = 2
+    // does not deposit at x = 2 but does at x = 3.
+    EXPECT_NE(device[slot(p, 2, 0, 0, 2) + 1], 0);
+    EXPECT_EQ(device[slot(p, 2, 1, 0, 1)], 0);
+    EXPECT_EQ(device[slot(p, 3, 1, 0, 1)], -1024);
+}
+
+// Photon segments of a parallel beam crossing the whole grid, stratified over a square launch
+// area (one jittered photon per stratum): incident direction `toward_light`, irradiance
+// `irradiance` on a plane perpendicular to the beam.
+std::vector<PhotonSegment> parallel_beam(glm::vec3 toward_light, float irradiance, int strata,
+                                         float* flux_per_photon) {
+    const glm::vec3 travel = -glm::normalize(toward_light);
+    const glm::vec3 centre(2.0f);
+    const float half = 6.0f;  // the launch square covers the grid's shadow
+    const glm::vec3 t = glm::normalize(glm::cross(travel, glm::vec3(0.3f, 0.5f, 0.9f)));
+    const glm::vec3 b = glm::cross(travel, t);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const float side = 2.0f * half / static_cast<float>(strata);
+    *flux_per_photon = irradiance * side * side;
+    std::vector<PhotonSegment> segments;
+    for (int i = 0; i < strata; ++i) {
+        for (int j = 0; j < strata; ++j) {
+            const float a = -half + (static_cast<float>(i) + u(rng)) * side;
+            const float c = -half + (static_cast<float>(j) + u(rng)) * side;
+            const glm::vec3 start = centre - 10.0f * travel + a * t + c * b;
+            segments.push_back({start, start + 20.0f * travel, glm::vec3(*flux_per_photon)});
+        }
+    }
+    return segments;
+}
+
+TEST(IvgNormalize, ParallelBeamGivesItsIrradianceVectorAtEveryVertex) {
+    const glm::vec3 toward_light = glm::normalize(glm::vec3(0.45f, 0.8f, -0.4f));
+    const float irradiance = 3.0f;
+    float flux = 0.0f;
+    const std::vector<PhotonSegment> beam = parallel_beam(toward_light, irradiance, 600, &flux);
+    shared::IvgParams p = unit_grid(4, 1e6f / flux);
+    p.photons.x = 1;  // the flux per photon already includes the division by the count
+    GridFixture& f = fixture();
+    const std::vector<float> values = f.grid.normalize(p, f.grid.deposit(p, beam));
+    const int directions[3] = {0, 2, 5};  // +x, +y, -z: the sides the light comes from
+    double worst = 0.0;
+    for (int k = 0; k <= 4; ++k) {
+        for (int j = 0; j <= 4; ++j) {
+            for (int i = 0; i <= 4; ++i) {
+                for (int direction : directions) {
+                    const float* v = &values[slot(p, i, j, k, direction)];
+                    for (int c = 0; c < 3; ++c) {
+                        for (int a = 0; a < 3; ++a) {
+                            const double expected = irradiance * toward_light[a];
+                            worst = std::max(worst, std::fabs(v[3 * c + a] - expected));
+                        }
+                    }
+                }
+                // The other sides receive nothing.
+                for (int direction : {1, 3, 4}) {
+                    EXPECT_EQ(values[slot(p, i, j, k, direction)], 0.0f);
+                }
+            }
+        }
+    }
+    // 2500 stratified photons per unit area: under 2% per face cell, quarter cells on the
+    // grid's edges included.
+    EXPECT_LT(worst, 0.03 * irradiance) << "largest deviation from E w";
+}
+
+TEST(IvgNormalize, IsotropicFieldGivesOppositeVectorsOfEqualLength) {
+    // Uniform random lines through a sphere of radius R around the grid: an isotropic field of
+    // radiance L = N flux / (4 pi * pi R^2); each side's vector is pi L along its axis.
+    const int count = 300000;
+    const float radius = 4.0f;
+    const float flux = 1.0f;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::vector<PhotonSegment> segments;
+    const glm::vec3 centre(2.0f);
+    for (int i = 0; i < count; ++i) {
+        const float z = 1.0f - 2.0f * u(rng);
+        const float phi = 6.2831853f * u(rng);
+        const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+        const glm::vec3 w(r * std::cos(phi), r * std::sin(phi), z);
+        const glm::vec3 t = glm::normalize(
+            glm::cross(w, std::fabs(w.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
+        const glm::vec3 b = glm::cross(w, t);
+        const float rho = radius * std::sqrt(u(rng));
+        const float angle = 6.2831853f * u(rng);
+        const glm::vec3 start =
+            centre + rho * (std::cos(angle) * t + std::sin(angle) * b) - 2.0f * radius * w;
+        segments.push_back({start, start + 4.0f * radius * w, glm::vec3(flux)});
+    }
+    shared::IvgParams p = unit_grid(4, 1e6f);
+    GridFixture& f = fixture();
+    const std::vector<float> values = f.grid.normalize(p, f.grid.deposit(p, segments));
+    const double pi = 3.14159265358979;
+    const double radiance = count * flux / (4.0 * pi * pi * radius * radius);
+    double sum_plus = 0.0;
+    double sum_minus = 0.0;
+    int vertices = 0;
+    for (int k = 1; k <= 3; ++k) {
+        for (int j = 1; j <= 3; ++j) {
+            for (int i = 1; i <= 3; ++i) {
+                for (int axis = 0; axis < 3; ++axis) {
+                    const float* plus = &values[slot(p, i, j, k, 2 * axis)];
+                    const float* minus = &values[slot(p, i, j, k, 2 * axis + 1)];
+                    sum_plus += plus[axis];
+                    sum_minus += minus[axis];
+                    // Transverse components vanish up to noise.
+                    for (int a = 0; a < 3; ++a) {
+                        if (a != axis) {
+                            EXPECT_LT(std::fabs(plus[a]), 0.15 * pi * radiance);
+                        }
+                    }
+                }
+                ++vertices;
+            }
+        }
+    }
+    const double mean_plus = sum_plus / (3.0 * vertices);
+    const double mean_minus = sum_minus / (3.0 * vertices);
+    EXPECT_NEAR(mean_plus, -mean_minus, 0.02 * mean_plus);
+    // The clamp of grazing crossings (|cos| >= 0.1) removes about 0.3% of the length.
+    EXPECT_NEAR(mean_plus, pi * radiance, 0.03 * pi * radiance);
+}
+
+// A grid whose vectors are given by a function of the vertex's position and direction.
+std::vector<float> field(const shared::IvgParams& p,
+                         const std::function<glm::vec3(glm::vec3, int direction, int c)>& f) {
+    std::vector<float> values(static_cast<size_t>(p.cells.w) * 54);
+    for (int k = 0; k <= p.cells.z; ++k) {
+        for (int j = 0; j <= p.cells.y; ++j) {
+            for (int i = 0; i <= p.cells.x; ++i) {
+                const glm::vec3 x(p.origin.x + i * p.cell.x, p.origin.y + j * p.cell.y,
+                                  p.origin.z + k * p.cell.z);
+                for (int direction = 0; direction < 6; ++direction) {
+                    for (int c = 0; c < 3; ++c) {
+                        const glm::vec3 v = f(x, direction, c);
+                        float* out = &values[slot(p, i, j, k, direction) + 3 * c];
+                        out[0] = v.x;
+                        out[1] = v.y;
+                        out[2] = v.z;
+                    }
+                }
+            }
+        }
+    }
+    return values;
+}
+
+shared::IvgParams lookup_grid(int interpolation, bool compressed) {
+    shared::IvgParams p{};
+    p.origin = {-1.0f, 0.5f, 2.0f, 1.0f};
+    p.cell = {0.5f, 0.25f, 1.0f, 0.1f};
+    p.cells = {6, 5, 4, 7 * 6 * 5};
+    p.lookup = {interpolation, compressed ? 1 : 0, 0, 0};
+    return p;
+}
+
+std::vector<glm::vec3> random_points(const shared::IvgParams& p, int count, float margin) {
+    std::mt19937 rng(3);
+    std::vector<glm::vec3> points;
+    for (int n = 0; n < count; ++n) {
+        glm::vec3 x;
+        const int cells[3] = {p.cells.x, p.cells.y, p.cells.z};
+        const float origin[3] = {p.origin.x, p.origin.y, p.origin.z};
+        const float cell[3] = {p.cell.x, p.cell.y, p.cell.z};
+        for (int a = 0; a < 3; ++a) {
+            std::uniform_real_distribution<float> u(margin, cells[a] - margin);
+            x[a] = origin[a] + u(rng) * cell[a];
+        }
+        points.push_back(x);
+    }
+    return points;
+}
+
+TEST(IvgLookup, TrilinearReproducesLinearFields) {
+    GridFixture& f = fixture();
+    const shared::IvgParams p = lookup_grid(RC_IVG_TRILINEAR, false);
+    auto linear = [](glm::vec3 x, int c) {
+        return 2.0f + 0.3f * x.x - 0.2f * x.y + 0.1f * x.z + 0.5f * static_cast<float>(c);
+    };
+    f.grid.set_params(p);
+    f.grid.set_values(field(p, [&](glm::vec3 x, int direction, int c) {
+        // +x holds the field along x; the other sides something else (not read with n = +x).
+        return direction == 0 ? glm::vec3(linear(x, c), 0.0f, 0.0f) : glm::vec3(5.0f, 7.0f, 9.0f);
+    }));
+    const std::vector<glm::vec3> points = random_points(p, 200, 0.0f);
+    const std::vector<glm::vec3> normals(points.size(), glm::vec3(1.0f, 0.0f, 0.0f));
+    const std::vector<glm::vec3> e = f.grid.lookup(points, normals);
+    for (size_t q = 0; q < points.size(); ++q) {
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(e[q][c], linear(points[q], c), 2e-5f * linear(points[q], c)) << q;
+        }
+    }
+}
+
+TEST(IvgLookup, TricubicInterpolatesVerticesAndReproducesQuadraticFields) {
+    GridFixture& f = fixture();
+    const shared::IvgParams p = lookup_grid(RC_IVG_TRICUBIC, false);
+    auto quadratic = [](glm::vec3 x, int c) {
+        return 3.0f + 0.4f * x.x * x.x - 0.3f * x.y * x.z + 0.2f * x.z * x.z + 0.1f * x.y +
+               0.25f * static_cast<float>(c);
+    };
+    f.grid.set_params(p);
+    f.grid.set_values(field(p, [&](glm::vec3 x, int direction, int c) {
+        return direction == 0 ? glm::vec3(quadratic(x, c), 0.0f, 0.0f) : glm::vec3(1.0f);
+    }));
+    // Away from the border (where the clamped stencil is no longer exact).
+    const std::vector<glm::vec3> points = random_points(p, 200, 1.0f);
+    const std::vector<glm::vec3> normals(points.size(), glm::vec3(1.0f, 0.0f, 0.0f));
+    const std::vector<glm::vec3> e = f.grid.lookup(points, normals);
+    for (size_t q = 0; q < points.size(); ++q) {
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(e[q][c], quadratic(points[q], c), 1e-4f * quadratic(points[q], c)) << q;
+        }
+    }
+    // At the vertices themselves, any field: a random one.
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0.5f, 2.0f);
+    const std::vector<float> random =
+        field(p, [&](glm::vec3, int, int) { return glm::vec3(u(rng), u(rng), u(rng)); });
+    f.grid.set_values(random);
+    std::vector<glm::vec3> vertices;
+    std::vector<float> expected;
+    for (int i = 0; i <= p.cells.x; i += 2) {
+        for (int j = 0; j <= p.cells.y; j += 2) {
+            const int k = 1;
+            vertices.emplace_back(p.origin.x + i * p.cell.x, p.origin.y + j * p.cell.y,
+                                  p.origin.z + k * p.cell.z);
+            expected.push_back(random[slot(p, i, j, k, 0)]);  // red, x component
+        }
+    }
+    const std::vector<glm::vec3> at = f.grid.lookup(
+        vertices, std::vector<glm::vec3>(vertices.size(), glm::vec3(1.0f, 0.0f, 0.0f)));
+    for (size_t q = 0; q < vertices.size(); ++q) {
+        EXPECT_NEAR(at[q].x, std::max(0.0f, expected[q]), 1e-5f) << q;
+    }
+}
+
+TEST(IvgLookup, BlendsTheSidesTheNormalFacesBySquaredComponents) {
+    GridFixture& f = fixture();
+    for (bool compressed : {false, true}) {
+        const shared::IvgParams p = lookup_grid(RC_IVG_TRILINEAR, compressed);
+        f.grid.set_params(p);
+        // Side d holds (d + 1) times a fixed direction per side, scaled per channel.
+        const glm::vec3 sides[6] = {{1, 0, 0},  {-1, 0, 0}, {0.6f, 0.8f, 0},
+                                    {0, -1, 0}, {0, 0, 1},  {0, 0.6f, -0.8f}};
+        f.grid.set_values(field(p, [&](glm::vec3, int direction, int c) {
+            return sides[direction] * static_cast<float>(direction + 1) * (1.0f + 0.5f * c);
+        }));
+        // n faces +x, +y, -z: reads sides 0, 2, 5.
+        const glm::vec3 n = glm::normalize(glm::vec3(0.5f, 0.6f, -0.3f));
+        const std::vector<glm::vec3> e = f.grid.lookup({glm::vec3(0.3f, 1.1f, 3.4f)}, {n});
+        for (int c = 0; c < 3; ++c) {
+            const float scale = 1.0f + 0.5f * c;
+            const glm::vec3 blended = n.x * n.x * sides[0] * 1.0f * scale +
+                                      n.y * n.y * sides[2] * 3.0f * scale +
+                                      n.z * n.z * sides[5] * 6.0f * scale;
+            const float expected = std::max(0.0f, glm::dot(blended, n));
+            // Half floats keep about 3 decimal digits.
+            EXPECT_NEAR(e[0][c], expected, (compressed ? 2e-3f : 1e-5f) * expected)
+                << "channel " << c << (compressed ? " compressed" : "");
+        }
+    }
+}
+
+}  // namespace
+}  // namespace rc
