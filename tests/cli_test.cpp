@@ -2,6 +2,7 @@
 // status 2 and no output file for every bad option.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "image/image.h"
@@ -100,6 +101,42 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
         {{"render", cornell_box(), "-o", out, "--method", "ic", "--aovs", "stddev"},
          2,
          "has no layer 'stddev'"},
+        {{"render", cornell_box(), "-o", out, "--method", "ivg", "--grid", "3x3"}, 2, "--grid"},
+        {{"render", cornell_box(), "-o", out, "--method", "ivg", "--grid", "0x4x4"},
+         2,
+         "--grid: voxels per axis"},
+        {{"render", cornell_box(), "-o", out, "--method", "ivg", "--ivg-interp", "cubic"},
+         2,
+         "--ivg-interp"},
+        {{"render", cornell_box(), "-o", out, "--method", "ivg", "--photons", "0"}, 2, "--photons"},
+        {{"render", cornell_box(), "-o", out, "--photons", "100"},
+         2,
+         "applies to --method ivg, ivg-gather, or ic with --ic-ivg"},
+        {{"render", cornell_box(), "-o", out, "--method", "ivg", "--gather-rays", "4"},
+         2,
+         "--gather-rays applies to --method ivg-gather only"},
+        {{"render", cornell_box(), "-o", out, "--method", "ivg-gather", "--gather-rays", "0"},
+         2,
+         "--gather-rays"},
+        {{"render", cornell_box(), "-o", out, "--ic-ivg"}, 2, "--ic-ivg applies"},
+        {{"render", cornell_box(), "-o", out, "--method", "ic", "--ic-ivg", "--ic-bounces", "2"},
+         2,
+         "needs --ic-bounces 1"},
+        {{"render", cornell_box(), "-o", out, "--method", "ivg", "--grid-in",
+          (dir / "missing.rcg").string()},
+         1,
+         "irradiance vector grid file not found"},
+        {{"render", cornell_box(), "-o", out, "--method", "ivg", "--grid-in",
+          (dir / "missing.rcg").string(), "--photons", "5"},
+         2,
+         "--photons and --grid-in"},
+        {{"render", cornell_box(), "-o", out, "--method", "ivg", "--grid-out",
+          (dir / "nodir/grid.rcg").string()},
+         2,
+         "--grid-out"},
+        {{"render", cornell_box(), "-o", out, "--method", "ivg", "--aovs", "coverage"},
+         2,
+         "has no layer 'coverage'"},
         {{"compare", (dir / "a.exr").string()}, 2, "TEST and REF"},
         {{"compare", (dir / "a.exr").string(), (dir / "b.exr").string()}, 1, "a.exr"},
         {{"frobnicate"}, 2, "unknown command"},
@@ -118,6 +155,57 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
         EXPECT_NE(result.output.find("radcache: error: "), std::string::npos) << result.output;
     }
     EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+// A render with the irradiance vector grid writes its layers and the grid's statistics, and a
+// saved grid is reused bitwise.
+TEST(Cli, IrradianceVectorGridRenderWritesLayersStatsAndGrids) {
+    const auto dir = test::scratch_dir("cli_ivg");
+    const std::string image = (dir / "ivg.exr").string();
+    const std::string grid = (dir / "cornell.rcg").string();
+    const test::CommandResult first = test::run_radcache({"render",
+                                                          cornell_box(),
+                                                          "-o",
+                                                          image,
+                                                          "--method",
+                                                          "ivg-gather",
+                                                          "--spp",
+                                                          "1",
+                                                          "--width",
+                                                          "32",
+                                                          "--height",
+                                                          "32",
+                                                          "--gather-rays",
+                                                          "4",
+                                                          "--grid",
+                                                          "8x8x8",
+                                                          "--photons",
+                                                          "20000",
+                                                          "--grid-out",
+                                                          grid,
+                                                          "--stats",
+                                                          (dir / "stats.json").string(),
+                                                          "--quiet"});
+    ASSERT_EQ(first.exit_code, 0) << first.output;
+    const nlohmann::json stats = nlohmann::json::parse(read_file(dir / "stats.json"));
+    const nlohmann::json& frame = stats["frames"][0];
+    EXPECT_EQ(stats["method"], "ivg-gather");
+    EXPECT_EQ(frame["gather_rays"], 4);
+    EXPECT_EQ(frame["grid"]["cells"], nlohmann::json({8, 8, 8}));
+    EXPECT_EQ(frame["grid"]["photons"], 20000);
+    EXPECT_GT(frame["grid"]["photons_per_second"].get<double>(), 0.0);
+    EXPECT_EQ(frame["grid"]["grid_bytes"], 9 * 9 * 9 * 54 * 4);
+    const Image written = read_image(image);
+    std::vector<std::string> layers = layer_names(written);
+    std::sort(layers.begin(), layers.end());  // OpenEXR stores channels by name
+    EXPECT_EQ(layers, (std::vector<std::string>{"albedo", "beauty", "direct", "grid", "indirect",
+                                                "normal"}));
+    const std::string again = (dir / "again.exr").string();
+    const test::CommandResult reused = test::run_radcache(
+        {"render", cornell_box(), "-o", again, "--method", "ivg-gather", "--spp", "1", "--width",
+         "32", "--height", "32", "--gather-rays", "4", "--grid-in", grid, "--quiet"});
+    ASSERT_EQ(reused.exit_code, 0) << reused.output;
+    EXPECT_EQ(read_image(again).pixels, written.pixels);
 }
 
 // An irradiance-cached render writes its layers and per-frame statistics: records per placement
@@ -248,7 +336,8 @@ TEST(Cli, BenchAllMeasuresEveryFamilyOnTheDevice) {
          {"coherent_closest_mrays", "coherent_any_mrays", "incoherent_closest_mrays",
           "incoherent_any_mrays", "embree_coherent_closest_mrays", "embree_incoherent_any_mrays",
           "path_samples_per_second", "path_tracing_mrays", "hemisphere_samples_per_second",
-          "records_per_second", "splat_samples_per_second"}) {
+          "records_per_second", "splat_samples_per_second", "photons_per_second",
+          "photon_crossings_per_second"}) {
         ASSERT_TRUE(device.contains(key)) << key;
         EXPECT_GT(device[key].get<double>(), 0.0) << key;
     }

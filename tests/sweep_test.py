@@ -18,8 +18,9 @@ RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 SCRATCH = os.path.join(os.environ.get("RADCACHE_TEST_SCRATCH_DIR") or "/tmp", "sweep_test")
 # The columns docs/results.md and the sweep's docstring document, in order.
 DOCUMENTED_COLUMNS = ["scene", "method", "curve", "setting", "spp", "accuracy", "ic_rays",
-                      "wall_seconds", "render_seconds", "kernel_seconds", "compile_seconds",
-                      "rmse", "relmse", "flip", "indirect_relmse", "records", "device", "image"]
+                      "photons", "grid", "gather_rays", "wall_seconds", "render_seconds",
+                      "kernel_seconds", "compile_seconds", "rmse", "relmse", "flip",
+                      "indirect_relmse", "records", "device", "image"]
 
 
 def run(command):
@@ -42,7 +43,8 @@ class SweepTest(unittest.TestCase):
         cls.result = run([sys.executable, SWEEP, os.path.join(ROOT, "scenes", "cornell-box"),
                           "--reference", cls.reference, "--width", "24", "--height", "24",
                           "--pt-spp", "1", "64", "--ic-accuracy", "0.5", "--ic-spp", "1",
-                          "--ic-rays", "256", "--out", cls.out])
+                          "--ic-rays", "256", "--methods", "pt", "ic", "ivg-gather",
+                          "--gather-rays", "4", "--out", cls.out])
 
     def test_runs_end_to_end(self):
         self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
@@ -55,8 +57,10 @@ class SweepTest(unittest.TestCase):
             reader = csv.DictReader(f)
             self.assertEqual(reader.fieldnames, DOCUMENTED_COLUMNS)
             rows = list(reader)
-        self.assertEqual([r["method"] for r in rows], ["pt", "pt", "ic"])
-        self.assertEqual([r["spp"] for r in rows], ["1", "64", "1"])
+        self.assertEqual([r["method"] for r in rows], ["pt", "pt", "ic", "ivg-gather"])
+        self.assertEqual([r["spp"] for r in rows], ["1", "64", "1", "1"])
+        self.assertEqual(rows[3]["gather_rays"], "4")
+        self.assertGreater(int(rows[3]["photons"]), 0)
         for r in rows:
             self.assertEqual(r["scene"], "cornell-box")
             for column in ("wall_seconds", "render_seconds", "kernel_seconds", "rmse", "relmse",
@@ -75,7 +79,7 @@ class SweepTest(unittest.TestCase):
         with open(os.path.join(self.out, "sweep.json")) as f:
             report = json.load(f)
         self.assertEqual(report["columns"], DOCUMENTED_COLUMNS)
-        self.assertEqual(len(report["rows"]), 3)
+        self.assertEqual(len(report["rows"]), 4)
         self.assertIn("compilation excluded", report["timing"])
         # The relMSE of a row is what radcache compare reports for its image.
         row = report["rows"][0]

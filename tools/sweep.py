@@ -12,8 +12,14 @@ samples for `ic`), measures each image against the scene's reference (RMSE and r
   OUT/index.html                  both charts, equal-time crops of every curve beside the
                                   reference's, and false-colour relMSE images
 
-Columns: scene, method, curve, setting, spp, accuracy, ic_rays, wall_seconds, render_seconds,
-kernel_seconds, compile_seconds, rmse, relmse, flip, indirect_relmse, records, device, image.
+Methods and their knobs: pt (--pt-spp), ic (--ic-accuracy x --ic-rays x --ic-spp), ic-ivg (ic whose
+records read the irradiance vector grid: --ic-accuracy at the first --ic-spp and --ic-rays), ivg
+(--ivg-photons x --ivg-grid at --ivg-spp camera samples), ivg-gather (--gather-rays at one camera
+sample, the grid at its defaults).
+
+Columns: scene, method, curve, setting, spp, accuracy, ic_rays, photons, grid, gather_rays,
+wall_seconds, render_seconds, kernel_seconds, compile_seconds, rmse, relmse, flip,
+indirect_relmse, records, device, image.
 
 Times. render_seconds is the render phase of `radcache render --stats` (G-buffer to final
 image; scene loading, device start-up and image writing excluded); it is the chart's time axis.
@@ -23,8 +29,9 @@ first fills the kernel binary cache, and compile_seconds (the timed run's progra
 that cache) says what was left. Peers (POV-Ray, `--povray`) are timed by the wall clock of the
 whole peer process, parsing included.
 
-Usage: tools/sweep.py SCENE [--reference EXR] [--methods pt ic] [--pt-spp 1 2 4 ...]
-           [--ic-accuracy ...] [--ic-rays ...] [--ic-spp ...] [--width N --height N]
+Usage: tools/sweep.py SCENE [--reference EXR] [--methods pt ic ...] [--pt-spp 1 2 4 ...]
+           [--ic-accuracy ...] [--ic-rays ...] [--ic-spp ...] [--ivg-photons ...] [--ivg-grid ...]
+           [--ivg-spp N] [--gather-rays ...] [--width N --height N]
            [--povray [SETTING ...]] [--out DIR] [-- extra radcache render options]
 SCENE is a scene directory or its scene.json; the reference defaults to reference.exr beside it.
 The radcache executable is build/radcache, or $RADCACHE when set.
@@ -45,10 +52,12 @@ import time
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
-COLUMNS = ["scene", "method", "curve", "setting", "spp", "accuracy", "ic_rays", "wall_seconds",
-           "render_seconds", "kernel_seconds", "compile_seconds", "rmse", "relmse", "flip",
-           "indirect_relmse", "records", "device", "image"]
-METHOD_COLOURS = {"pt": "tab:blue", "ic": "tab:orange", "povray": "tab:green"}
+COLUMNS = ["scene", "method", "curve", "setting", "spp", "accuracy", "ic_rays", "photons", "grid",
+           "gather_rays", "wall_seconds", "render_seconds", "kernel_seconds", "compile_seconds",
+           "rmse", "relmse", "flip", "indirect_relmse", "records", "device", "image"]
+METHODS = ["pt", "ic", "ic-ivg", "ivg", "ivg-gather"]
+METHOD_COLOURS = {"pt": "tab:blue", "ic": "tab:orange", "ic-ivg": "tab:brown", "ivg": "tab:purple",
+                  "ivg-gather": "tab:red", "povray": "tab:green"}
 
 
 def fail(message):
@@ -120,6 +129,28 @@ def radcache_runs(args):
                                  {"spp": spp, "accuracy": accuracy, "ic_rays": rays},
                                  ["--method", "ic", "--spp", str(spp), "--accuracy", str(accuracy),
                                   "--ic-rays", str(rays)]))
+    if "ic-ivg" in args.methods:
+        rays, spp = args.ic_rays[0], args.ic_spp[0]
+        for accuracy in args.ic_accuracy:
+            runs.append(("ic-ivg", "ic + grid, %d spp" % spp,
+                         "accuracy=%g rays=%d spp=%d" % (accuracy, rays, spp),
+                         {"spp": spp, "accuracy": accuracy, "ic_rays": rays, "grid": "auto"},
+                         ["--method", "ic", "--ic-ivg", "--spp", str(spp), "--accuracy",
+                          str(accuracy), "--ic-rays", str(rays)]))
+    if "ivg" in args.methods:
+        for grid in args.ivg_grid:
+            curve = "ivg, grid %s, %d spp" % (grid, args.ivg_spp)
+            for photons in args.ivg_photons:
+                runs.append(("ivg", curve, "photons=%d grid=%s" % (photons, grid),
+                             {"spp": args.ivg_spp, "photons": photons, "grid": grid},
+                             ["--method", "ivg", "--spp", str(args.ivg_spp), "--photons",
+                              str(photons), "--grid", grid]))
+    if "ivg-gather" in args.methods:
+        for gathers in args.gather_rays:
+            runs.append(("ivg-gather", "ivg-gather, 1 spp", "gather_rays=%d" % gathers,
+                         {"spp": 1, "gather_rays": gathers, "grid": "auto"},
+                         ["--method", "ivg-gather", "--spp", "1", "--gather-rays",
+                          str(gathers)]))
     return runs
 
 
@@ -156,6 +187,7 @@ def povray_rows(args, scene, reference, out):
             shutil.copyfile(os.path.join(peer_out, peer["setting"] + ".exr"), image)
             row = {"method": "povray", "curve": "POV-Ray 3.7 radiosity",
                    "setting": peer["setting"], "spp": "", "accuracy": "", "ic_rays": "",
+                   "photons": "", "grid": "", "gather_rays": "",
                    "wall_seconds": float(peer["seconds"]),
                    "render_seconds": float(peer["seconds"]), "kernel_seconds": "",
                    "compile_seconds": "", "records": "",
@@ -324,11 +356,16 @@ def parse_arguments(argv):
         epilog="Everything after -- goes to every radcache render (e.g. -- --device 0:0).")
     parser.add_argument("scene", help="scene directory or scene.json")
     parser.add_argument("--reference", help="reference image (default: reference.exr beside it)")
-    parser.add_argument("--methods", nargs="+", default=["pt", "ic"], choices=["pt", "ic"])
+    parser.add_argument("--methods", nargs="+", default=["pt", "ic"], choices=METHODS)
     parser.add_argument("--pt-spp", nargs="+", type=int, default=[1, 2, 4, 8, 16, 32, 64, 128])
     parser.add_argument("--ic-accuracy", nargs="+", type=float, default=[0.6, 0.45, 0.35, 0.25])
     parser.add_argument("--ic-rays", nargs="+", type=int, default=[1024])
     parser.add_argument("--ic-spp", nargs="+", type=int, default=[4, 16])
+    parser.add_argument("--ivg-photons", nargs="+", type=int, default=[65536, 262144, 1048576])
+    parser.add_argument("--ivg-grid", nargs="+", default=["auto"],
+                        help="grid resolutions (NxMxK or auto)")
+    parser.add_argument("--ivg-spp", type=int, default=4)
+    parser.add_argument("--gather-rays", nargs="+", type=int, default=[16, 64, 144])
     parser.add_argument("--width", type=int, help="override the scene's resolution")
     parser.add_argument("--height", type=int)
     parser.add_argument("--povray", nargs="*", metavar="SETTING",
@@ -343,7 +380,7 @@ def parse_arguments(argv):
     else:
         args = parser.parse_args(argv)
         args.extra = []
-    for name in ("pt_spp", "ic_rays", "ic_spp"):
+    for name in ("pt_spp", "ic_rays", "ic_spp", "ivg_photons", "gather_rays"):
         if any(v < 1 for v in getattr(args, name)):
             parser.error("--%s: values must be positive" % name.replace("_", "-"))
     if any(not 0.0 < a for a in args.ic_accuracy):
@@ -375,9 +412,11 @@ def main(argv):
     runs = radcache_runs(args)
     # Warm the kernel binary cache, untimed: one tiny render per method.
     for method in sorted({method for method, *_ in runs}):
+        options = ["--method", "ic", "--ic-ivg"] if method == "ic-ivg" else ["--method", method]
+        if method in ("ivg", "ivg-gather", "ic-ivg"):
+            options += ["--photons", "1000"]
         render(scene, os.path.join(out, "warm-%s.exr" % method),
-               ["--method", method, "--spp", "1", "--width", "16", "--height", "16"] +
-               args.extra)
+               options + ["--spp", "1", "--width", "16", "--height", "16"] + args.extra)
     rows = []
     device = ""
     for index, (method, curve, setting, knobs, options) in enumerate(runs):
@@ -389,7 +428,9 @@ def main(argv):
         frame = stats["frames"][0] if stats.get("frames") else {}
         row = {"method": method, "curve": curve, "setting": setting,
                "spp": knobs.get("spp", ""), "accuracy": knobs.get("accuracy", ""),
-               "ic_rays": knobs.get("ic_rays", ""), "wall_seconds": wall,
+               "ic_rays": knobs.get("ic_rays", ""), "grid": knobs.get("grid", ""),
+               "photons": frame.get("grid", {}).get("photons", ""),
+               "gather_rays": knobs.get("gather_rays", ""), "wall_seconds": wall,
                "render_seconds": stats["seconds"]["render"],
                "kernel_seconds": sum(k["seconds"] for k in stats["kernels"].values()),
                "compile_seconds": sum(b["seconds"] for b in stats.get("program_builds", [])),

@@ -13,6 +13,7 @@
 #include "app/ray_bench.h"
 #include "device/device_list.h"
 #include "methods/irradiance_cache.h"
+#include "methods/irradiance_vector_grid.h"
 #include "methods/path_tracer.h"
 #include "scene/camera.h"
 #include "scene/device_scene.h"
@@ -54,7 +55,8 @@ double kernel_seconds_since(const Context& context, const std::map<std::string, 
 }
 
 DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_options,
-                          const Scene& scene, int width, int height, int pt_spp, int repeats) {
+                          const Scene& scene, int width, int height, int pt_spp, int repeats,
+                          uint64_t photons) {
     DeviceResult result;
     result.device = device;
     context_options.device_spec = device.spec();
@@ -124,6 +126,26 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
     const double splat_seconds = kernel_seconds_since(context, before, {"ic_shade"});
     result.figures.push_back({"splat_samples_per_second", "splat accumulation samples/s (M)",
                               static_cast<double>(width) * height / splat_seconds * 1e-6, 0.0});
+
+    // Photon tracing into the irradiance vector grid at its automatic size (a small warm-up
+    // first): photons/s, each traced through its bounces and deposited at every face crossing.
+    IrradianceVectorGrid grid(context, scene, rays.device_bvh(), device_scene);
+    IvgOptions ivg;
+    ivg.max_depth = scene.render.max_depth;
+    ivg.rr_depth = scene.render.rr_depth;
+    ivg.photons = 1024;
+    grid.build(ivg);
+    before = context.kernel_times();
+    ivg.photons = photons;
+    IvgStats grid_stats;
+    grid.build(ivg, &grid_stats);
+    const double photon_seconds = kernel_seconds_since(context, before, {"ivg_trace_photons"});
+    result.figures.push_back({"photons_per_second", "photons/s (M)",
+                              static_cast<double>(grid_stats.photons) / photon_seconds * 1e-6,
+                              0.0});
+    result.figures.push_back({"photon_crossings_per_second", "photon face crossings/s (M)",
+                              static_cast<double>(grid_stats.crossings) / photon_seconds * 1e-6,
+                              0.0});
     return result;
 }
 
@@ -136,6 +158,7 @@ int run_bench_all(const std::vector<std::string>& args) {
         {"--height", "", "N", "image height (default 512)"},
         {"--spp", "", "N", "timed path-tracing samples per pixel (default 4)"},
         {"--repeat", "", "N", "timed repetitions per ray case, median reported (default 3)"},
+        {"--photons", "", "N", "photons traced into the irradiance vector grid (default 2^18)"},
         {"--json", "", "FILE", "also write the results as JSON"},
     };
     for (OptionSpec& spec : device_option_specs()) {
@@ -149,7 +172,9 @@ int run_bench_all(const std::vector<std::string>& args) {
             "side: traversal Mrays/s (coherent and incoherent, closest and any hit) with Embree's\n"
             "rtcIntersect1/rtcOccluded1 on the same rays as the anchor, path samples/s, "
             "irradiance\n"
-            "cache hemisphere samples/s and records/s, and splat accumulation samples/s. Device\n"
+            "cache hemisphere samples/s and records/s, splat accumulation samples/s, and "
+            "photons/s\n"
+            "into the irradiance vector grid. Device\n"
             "kernel time from profiling events; kernels are built and warmed up first.",
             specs);
         return 0;
@@ -163,6 +188,8 @@ int run_bench_all(const std::vector<std::string>& args) {
     const int height = static_cast<int>(arguments.integer("--height", 512, 1, 1 << 14));
     const int spp = static_cast<int>(arguments.integer("--spp", 4, 1, 1 << 16));
     const int repeats = static_cast<int>(arguments.integer("--repeat", 3, 1, 1000));
+    const uint64_t photons =
+        static_cast<uint64_t>(arguments.integer("--photons", 1 << 18, 1, 1LL << 31));
     const std::filesystem::path json_path = arguments.value("--json");
     if (!json_path.empty()) {
         check_writable_parent(json_path, "--json");
@@ -182,7 +209,8 @@ int run_bench_all(const std::vector<std::string>& args) {
     for (const DeviceInfo& device : devices) {
         std::fprintf(stderr, "bench all: %s %s\n", device.spec().c_str(), device.name.c_str());
         try {
-            results.push_back(bench_device(device, options, scene, width, height, spp, repeats));
+            results.push_back(
+                bench_device(device, options, scene, width, height, spp, repeats, photons));
         } catch (const Error& e) {
             DeviceResult failed;
             failed.device = device;
