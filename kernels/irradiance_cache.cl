@@ -1,6 +1,7 @@
 // Entry kernels of irradiance caching (host/methods/irradiance_cache.cpp): the G-buffer, record
 // hemisphere sampling and its reduction, record gathering (coverage and interpolation), and the
 // final shading pass.
+#include "camera_film.h"
 #include "irradiance_cache.h"
 #include "irradiance_vector_grid.h"
 #include "scene_arguments.h"
@@ -64,6 +65,22 @@ __kernel void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PAR
     hits[i] = g;
 }
 
+// The ray of item i of a record batch: cell i % (M N) of batch record i / (M N).
+RC_FUNC Ray rc_ic_batch_cell_ray(const IcParams* params, __global const IrradianceRecord* records,
+                                 __global const float4* origins, uint i, RngStream* rng) {
+    const uint per_record = (uint)(params->sampling.x * params->sampling.y);
+    const uint b = i / per_record;
+    return rc_ic_cell_ray(params, (uint)params->sampling.z + b, i % per_record,
+                          records[b].normal.xyz, origins[b].xyz, rng);
+}
+
+// Stores a cell's (L.rgb, distance) (a NaN or infinite radiance as black) and counts its rays.
+RC_FUNC void rc_ic_store_cell(__global float4* cells, __global uint* counters, uint i,
+                              float3 radiance, float distance, uint rays) {
+    atomic_add(&counters[0], rays);
+    cells[i] = (float4)(all(isfinite(radiance)) ? radiance : (float3)(0.0f), distance);
+}
+
 // Item i: cell i % (M N) of batch record i / (M N): the radiance arriving through it and the
 // distance to what it hits, as (L.rgb, distance) in cells[i]. The light beyond the hit is path
 // traced. counters[0] counts the rays traced.
@@ -76,17 +93,13 @@ __kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PA
         return;
     }
     const SceneData scene = RC_SCENE_DATA();
-    const uint per_record = (uint)(params.sampling.x * params.sampling.y);
-    const uint b = i / per_record;
     RngStream rng;
-    const Ray ray = rc_ic_cell_ray(&params, (uint)params.sampling.z + b, i % per_record,
-                                   records[b].normal.xyz, origins[b].xyz, &rng);
+    const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
     // The hemisphere ray is a bounce of the record's level; its hit's own emission is direct
     // light (left to next-event estimation at the shading point) unless the tests ask for it.
     const PathSample s = rc_path_radiance(&scene, ray, &rng, params.depth.z + 1, params.depth.x,
                                           params.depth.y, params.sampling.w != 0);
-    atomic_add(&counters[0], s.rays);
-    cells[i] = (float4)(all(isfinite(s.radiance)) ? s.radiance : (float3)(0.0f), s.distance);
+    rc_ic_store_cell(cells, counters, i, s.radiance, s.distance, s.rays);
 }
 
 // As ic_record_cells, with the diffuse indirect light at each hit from the next cache level.
@@ -103,16 +116,11 @@ __kernel void ic_record_cells_cached(uint begin, uint end, IcParams params, RC_S
     }
     const SceneData scene = RC_SCENE_DATA();
     const RecordCache cache = {grid, cell_start, cell_records, next_level};
-    const uint per_record = (uint)(params.sampling.x * params.sampling.y);
-    const uint b = i / per_record;
     RngStream rng;
-    const Ray ray = rc_ic_cell_ray(&params, (uint)params.sampling.z + b, i % per_record,
-                                   records[b].normal.xyz, origins[b].xyz, &rng);
+    const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
     const CachedRadiance c = rc_ic_cached_radiance(&scene, &params, &cache, ray, &rng,
                                                    params.sampling.w != 0, params.depth.z + 1);
-    atomic_add(&counters[0], c.rays);
-    const float3 radiance = c.direct + c.indirect;
-    cells[i] = (float4)(all(isfinite(radiance)) ? radiance : (float3)(0.0f), c.distance);
+    rc_ic_store_cell(cells, counters, i, c.direct + c.indirect, c.distance, c.rays);
 }
 
 // As ic_record_cells, with the diffuse light at each hit read from the irradiance vector grid
@@ -130,17 +138,12 @@ __kernel void ic_record_cells_grid(uint begin, uint end, IcParams params, RC_SCE
     }
     const SceneData scene = RC_SCENE_DATA();
     const VectorGrid grid = {grid_params, grid_values, grid_packed};
-    const uint per_record = (uint)(params.sampling.x * params.sampling.y);
-    const uint b = i / per_record;
     RngStream rng;
-    const Ray ray = rc_ic_cell_ray(&params, (uint)params.sampling.z + b, i % per_record,
-                                   records[b].normal.xyz, origins[b].xyz, &rng);
+    const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
     float3 grid_term;
     const CachedRadiance c = rc_ivg_radiance(&scene, &grid, ray, &rng, params.sampling.w != 0,
                                              params.depth.z + 1, &grid_term);
-    atomic_add(&counters[0], c.rays);
-    const float3 radiance = c.direct + c.indirect;
-    cells[i] = (float4)(all(isfinite(radiance)) ? radiance : (float3)(0.0f), c.distance);
+    rc_ic_store_cell(cells, counters, i, c.direct + c.indirect, c.distance, c.rays);
 }
 
 // Item b: irradiance, gradients (into records[b]) and (harmonic mean, minimum) hit distance
@@ -247,24 +250,15 @@ __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camer
     for (uint s = 0; s < (uint)params.image.z; ++s) {
         const CachedShading c = rc_ic_shade(&scene, &camera, &params, &cache, pixel, s);
         const CachedRadiance l = c.light;
-        const float3 radiance = l.direct + l.indirect;
-        rays += l.rays;
-        if (!all(isfinite(radiance))) {
-            atomic_inc(&counters[1]);
-            atomic_min(&counters[2], pixel);
+        if (!rc_add_camera_sample(&l, sums, &rays, counters, pixel)) {
             continue;
         }
         ++finite;
-        sums[0] += radiance;
-        sums[1] += l.direct;
-        sums[2] += l.indirect;
-        sums[3] += l.albedo;
-        sums[4] += l.normal;
         if (l.served) {
             coverage = fmin(coverage, l.coverage);
         }
         // The records overlay: marks over the image at half brightness.
-        sums[6] += any(c.marks > 0.0f) ? c.marks : 0.5f * radiance;
+        sums[6] += any(c.marks > 0.0f) ? c.marks : 0.5f * (l.direct + l.indirect);
     }
     atomic_add(&counters[0], rays);
     const float inv = finite > 0 ? 1.0f / (float)finite : 0.0f;

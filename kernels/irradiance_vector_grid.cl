@@ -1,6 +1,7 @@
 // Entry kernels of the irradiance vector grid (host/methods/irradiance_vector_grid.cpp,
 // host/methods/ivg_method.cpp): photon tracing, deposition of given segments (tests),
 // normalisation, lookups (tests) and the render pass of `ivg` and `ivg-gather`.
+#include "camera_film.h"
 #include "irradiance_vector_grid.h"
 #include "scene_arguments.h"
 
@@ -94,19 +95,10 @@ __kernel void ivg_shade(uint begin, uint end, IvgParams params, __global const f
             const Ray ray = rc_ivg_camera_ray(&params, &camera, pixel, s, &rng);
             l = rc_ivg_radiance(&scene, &grid, ray, &rng, true, 0, &grid_term);
         }
-        const float3 radiance = l.direct + l.indirect;
-        rays += l.rays;
-        if (!all(isfinite(radiance))) {
-            atomic_inc(&counters[1]);
-            atomic_min(&counters[2], pixel);
+        if (!rc_add_camera_sample(&l, sums, &rays, counters, pixel)) {
             continue;
         }
         ++finite;
-        sums[0] += radiance;
-        sums[1] += l.direct;
-        sums[2] += l.indirect;
-        sums[3] += l.albedo;
-        sums[4] += l.normal;
         sums[5] += grid_term;
     }
     atomic_add(&counters[0], rays);

@@ -4,7 +4,7 @@ shipped scene with a reference, the POV-Ray peer on the Cornell box, and `radcac
 
 Runs tools/sweep.py for each scene (outputs under OUT/SCENE, charts copied to
 docs/results/SCENE-*.png), then `radcache bench all`, and writes docs/results.md with the machine,
-device, date and git revision. About 15 minutes on 2 CPU cores with PoCL; run it on an otherwise
+device, date and git revision. About 20 minutes on 2 CPU cores with PoCL; run it on an otherwise
 idle machine, since every figure is a time.
 
 Usage: tools/results.py [--scenes cornell-box two-rooms] [--no-povray] [--out build/results]
@@ -25,6 +25,10 @@ DOCS = os.path.join(ROOT, "docs")
 PT_SPP = ["1", "2", "4", "8", "16", "32", "64", "128", "256", "512"]
 IC_ACCURACY = ["0.6", "0.45", "0.35", "0.25"]
 IC_SPP = ["4", "16"]
+METHODS = ["pt", "ic", "ic-ivg", "ivg", "ivg-gather"]
+IVG_PHOTONS = ["65536", "262144", "1048576"]
+GATHER_RAYS = ["4", "16", "36"]  # per camera sample, at GATHER_SPP samples per pixel
+GATHER_SPP = "4"
 
 
 def run(command):
@@ -56,27 +60,32 @@ def scene_section(report, chart_names):
 
 
 def equal_error_lines(report):
-    """For each ic run: the path tracer's time to the same image and indirect relMSE, read
-    off its curve (log-log interpolation), as a speed-up."""
+    """For each run of another method: the path tracer's time to the same image and indirect
+    relMSE, read off its curve (log-log interpolation), as a speed-up."""
     pt = sorted((r for r in report["rows"] if r["method"] == "pt"),
                 key=lambda r: r["render_seconds"])
     lines = []
     for r in report["rows"]:
-        if r["method"] != "ic":
+        if r["method"] == "pt":
             continue
         cells = []
         for key in ("relmse", "indirect_relmse"):
+            if r[key] in ("", None):
+                cells.append("")
+                continue
             seconds = time_to_error(pt, key, r[key])
             cells.append("> %.1f×" % (pt[-1]["render_seconds"] / r["render_seconds"])
                          if seconds is None else "%.1f×" % (seconds / r["render_seconds"]))
-        lines.append("| %s | %s | %s | %s |" % (r["setting"], number(r["render_seconds"]),
-                                                cells[0], cells[1]))
+        lines.append("| %s | %s | %s | %s | %s |" % (
+            r["method"], r["setting"], number(r["render_seconds"]), cells[0], cells[1]))
     if not lines:
         return []
-    return ["Equal-error speed-up of `ic` over `pt` (the path tracer's time to the same relMSE "
-            "on its curve above, log-log interpolated, over the `ic` time; `>` where `pt`'s "
-            "longest run does not reach it):", "",
-            "| ic setting | ic s | image | indirect |", "| --- | ---: | ---: | ---: |"] + lines + [""]
+    return ["Equal-error speed-up over `pt` (the path tracer's time to the same relMSE on its "
+            "curve above, log-log interpolated, over the method's time; `>` where `pt`'s longest "
+            "run does not reach it; the references' own noise, roughly 1e-4, is in every "
+            "error):", "",
+            "| method | setting | s | image | indirect |", "| --- | --- | ---: | ---: | ---: |"
+            ] + lines + [""]
 
 
 def time_to_error(curve, key, target):
@@ -111,8 +120,9 @@ def main(argv):
     for scene in args.scenes:
         out = os.path.join(args.out, scene)
         command = [sys.executable, os.path.join(ROOT, "tools", "sweep.py"),
-                   os.path.join("scenes", scene), "--out", out, "--pt-spp"] + PT_SPP + [
-                   "--ic-accuracy"] + IC_ACCURACY + ["--ic-spp"] + IC_SPP
+                   os.path.join("scenes", scene), "--out", out, "--methods"] + METHODS + [
+                   "--pt-spp"] + PT_SPP + ["--ic-accuracy"] + IC_ACCURACY + ["--ic-spp"] + IC_SPP + [
+                   "--ivg-photons"] + IVG_PHOTONS + ["--gather-rays"] + GATHER_RAYS + ["--gather-spp", GATHER_SPP]
         if scene == "cornell-box" and not args.no_povray and shutil.which("povray"):
             command.append("--povray")
         if extra:

@@ -14,8 +14,8 @@ samples for `ic`), measures each image against the scene's reference (RMSE and r
 
 Methods and their knobs: pt (--pt-spp), ic (--ic-accuracy x --ic-rays x --ic-spp), ic-ivg (ic whose
 records read the irradiance vector grid: --ic-accuracy at the first --ic-spp and --ic-rays), ivg
-(--ivg-photons x --ivg-grid at --ivg-spp camera samples), ivg-gather (--gather-rays at one camera
-sample, the grid at its defaults).
+(--ivg-photons x --ivg-grid at --ivg-spp camera samples), ivg-gather (--gather-rays per camera
+sample at --gather-spp camera samples, the grid at its defaults).
 
 Columns: scene, method, curve, setting, spp, accuracy, ic_rays, photons, grid, gather_rays,
 wall_seconds, render_seconds, kernel_seconds, compile_seconds, rmse, relmse, flip,
@@ -24,14 +24,15 @@ indirect_relmse, records, device, image.
 Times. render_seconds is the render phase of `radcache render --stats` (G-buffer to final
 image; scene loading, device start-up and image writing excluded); it is the chart's time axis.
 wall_seconds is the whole process; kernel_seconds the sum of the kernels' device times from
-OpenCL profiling events. Kernel compilation is excluded: one small untimed render per method
-first fills the kernel binary cache, and compile_seconds (the timed run's program builds, from
-that cache) says what was left. Peers (POV-Ray, `--povray`) are timed by the wall clock of the
+OpenCL profiling events. Kernel compilation is excluded: one untimed render per method at the
+sweep's resolution and one sample per pixel first fills the kernel binary cache and lets the
+device generate code for the launch shapes, and compile_seconds (the timed run's program builds,
+from that cache) says what was left. Peers (POV-Ray, `--povray`) are timed by the wall clock of the
 whole peer process, parsing included.
 
 Usage: tools/sweep.py SCENE [--reference EXR] [--methods pt ic ...] [--pt-spp 1 2 4 ...]
            [--ic-accuracy ...] [--ic-rays ...] [--ic-spp ...] [--ivg-photons ...] [--ivg-grid ...]
-           [--ivg-spp N] [--gather-rays ...] [--width N --height N]
+           [--ivg-spp N] [--gather-rays ...] [--gather-spp N] [--width N --height N]
            [--povray [SETTING ...]] [--out DIR] [-- extra radcache render options]
 SCENE is a scene directory or its scene.json; the reference defaults to reference.exr beside it.
 The radcache executable is build/radcache, or $RADCACHE when set.
@@ -146,10 +147,12 @@ def radcache_runs(args):
                              ["--method", "ivg", "--spp", str(args.ivg_spp), "--photons",
                               str(photons), "--grid", grid]))
     if "ivg-gather" in args.methods:
+        spp = args.gather_spp
         for gathers in args.gather_rays:
-            runs.append(("ivg-gather", "ivg-gather, 1 spp", "gather_rays=%d" % gathers,
-                         {"spp": 1, "gather_rays": gathers, "grid": "auto"},
-                         ["--method", "ivg-gather", "--spp", "1", "--gather-rays",
+            runs.append(("ivg-gather", "ivg-gather, %d spp" % spp,
+                         "gather_rays=%d spp=%d" % (gathers, spp),
+                         {"spp": spp, "gather_rays": gathers, "grid": "auto"},
+                         ["--method", "ivg-gather", "--spp", str(spp), "--gather-rays",
                           str(gathers)]))
     return runs
 
@@ -366,6 +369,8 @@ def parse_arguments(argv):
                         help="grid resolutions (NxMxK or auto)")
     parser.add_argument("--ivg-spp", type=int, default=4)
     parser.add_argument("--gather-rays", nargs="+", type=int, default=[16, 64, 144])
+    parser.add_argument("--gather-spp", type=int, default=1,
+                        help="camera samples per pixel of ivg-gather")
     parser.add_argument("--width", type=int, help="override the scene's resolution")
     parser.add_argument("--height", type=int)
     parser.add_argument("--povray", nargs="*", metavar="SETTING",
@@ -410,13 +415,15 @@ def main(argv):
         size += ["--height", str(args.height)]
 
     runs = radcache_runs(args)
-    # Warm the kernel binary cache, untimed: one tiny render per method.
+    # Warm up, untimed: one render per method at the sweep's resolution and one sample per
+    # pixel fills the kernel binary cache and lets the device generate code for the launch
+    # shapes the timed runs use (PoCL does that on a shape's first launch).
     for method in sorted({method for method, *_ in runs}):
         options = ["--method", "ic", "--ic-ivg"] if method == "ic-ivg" else ["--method", method]
         if method in ("ivg", "ivg-gather", "ic-ivg"):
             options += ["--photons", "1000"]
         render(scene, os.path.join(out, "warm-%s.exr" % method),
-               options + ["--spp", "1", "--width", "16", "--height", "16"] + args.extra)
+               options + ["--spp", "1"] + size + args.extra)
     rows = []
     device = ""
     for index, (method, curve, setting, knobs, options) in enumerate(runs):

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -32,6 +33,16 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// One warning for the NaN or infinite samples a frame dropped, naming the first pixel.
+void warn_nonfinite(uint64_t samples, int64_t first_pixel, int width) {
+    if (samples > 0) {
+        log_warning(std::to_string(samples) +
+                    " samples were NaN or infinite and were dropped (first at pixel " +
+                    std::to_string(first_pixel % width) + ", " +
+                    std::to_string(first_pixel / width) + ")");
+    }
 }
 
 constexpr const char* kMethods = "pt, ic, ivg, ivg-gather, normals";
@@ -352,12 +363,7 @@ int run_render_command(const std::vector<std::string>& args) {
             this_frame["gather_rays"] = gathers;
             this_frame["shading_rays"] = stats.rays;
             this_frame["seconds"] = {{"shading", stats.seconds}};
-            if (stats.nonfinite_samples > 0) {
-                log_warning(std::to_string(stats.nonfinite_samples) +
-                            " samples were NaN or infinite and were dropped (first at pixel " +
-                            std::to_string(stats.first_nonfinite_pixel % image.width) + ", " +
-                            std::to_string(stats.first_nonfinite_pixel / image.width) + ")");
-            }
+            warn_nonfinite(stats.nonfinite_samples, stats.first_nonfinite_pixel, image.width);
         } else if (settings.method == "ic") {
             IrradianceCache cache(context, scene, device_bvh, device_scene);
             ic.grid = grid.get();
@@ -407,12 +413,7 @@ int run_render_command(const std::vector<std::string>& args) {
                                      {"insertion", stats.insertion_seconds},
                                      {"splatting", stats.splatting_seconds}};
             log_note(std::to_string(stats.records) + " irradiance records");
-            if (stats.nonfinite_samples > 0) {
-                log_warning(std::to_string(stats.nonfinite_samples) +
-                            " samples were NaN or infinite and were dropped (first at pixel " +
-                            std::to_string(stats.first_nonfinite_pixel % image.width) + ", " +
-                            std::to_string(stats.first_nonfinite_pixel / image.width) + ")");
-            }
+            warn_nonfinite(stats.nonfinite_samples, stats.first_nonfinite_pixel, image.width);
         } else if (settings.method == "normals") {
             NormalsMethod method(context, scene, device_bvh);
             NormalsOptions options;
@@ -451,12 +452,7 @@ int run_render_command(const std::vector<std::string>& args) {
             this_frame["spp"] = stats.spp;
             this_frame["rays"] = stats.rays;
             this_frame["seconds"] = stats.seconds;
-            if (stats.nonfinite_samples > 0) {
-                log_warning(std::to_string(stats.nonfinite_samples) +
-                            " samples were NaN or infinite and were dropped (first at pixel " +
-                            std::to_string(stats.first_nonfinite_pixel % image.width) + ", " +
-                            std::to_string(stats.first_nonfinite_pixel / image.width) + ")");
-            }
+            warn_nonfinite(stats.nonfinite_samples, stats.first_nonfinite_pixel, image.width);
         }
         progress.finish();
         render_seconds += seconds_since(phase_start);
