@@ -55,7 +55,8 @@ __kernel void ivg_normalize(uint begin, uint end, IvgParams params, __global con
     }
 }
 
-// Item q: the irradiance (rgb) the grid gives point positions[q] with unit normal normals[q].
+// Item q: the irradiance (rgb) the grid gives point positions[q] with unit normal normals[q]
+// (every corner taken as visible).
 __kernel void ivg_lookup(uint begin, uint end, IvgParams params, __global const float* values,
                          __global const half* packed, __global const float4* positions,
                          __global const float4* normals, __global float4* out) {
@@ -63,8 +64,9 @@ __kernel void ivg_lookup(uint begin, uint end, IvgParams params, __global const 
     if (q >= end) {
         return;
     }
-    out[q] = (float4)(rc_ivg_irradiance(&params, values, packed, positions[q].xyz, normals[q].xyz),
-                      0.0f);
+    out[q] =
+        (float4)(rc_ivg_irradiance(&params, values, packed, positions[q].xyz, normals[q].xyz, 0xff),
+                 0.0f);
 }
 
 // The render pass. Item = pixel: shades its params.depth.w camera samples and writes the pixel's

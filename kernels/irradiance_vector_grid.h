@@ -163,12 +163,24 @@ RC_FUNC uint rc_ivg_trace_photon(const SceneData* scene, const IvgParams* p, uin
     return crossings;
 }
 
-// The diffuse light the grid gives a surface point: rho_d / pi E (§3.2, eq. 1).
-RC_FUNC float3 rc_ivg_diffuse(const VectorGrid* grid, const SurfaceMaterial* material,
-                              const SurfacePoint* sp) {
+// The diffuse light the grid gives a surface point: rho_d / pi E (§3.2, eq. 1), interpolated
+// over the corners of its cell the point sees (a shadow ray from the point's ray origin to just
+// short of each corner; counted in *rays): corners behind a wall hold the other side's light.
+RC_FUNC float3 rc_ivg_diffuse(const SceneData* scene, const VectorGrid* grid,
+                              const SurfaceMaterial* material, const SurfacePoint* sp, uint* rays) {
+    const IvgParams* p = &grid->params;
+    const int3 base = rc_ivg_cell_base(p, rc_ivg_grid_coordinates(p, sp->position));
+    int visible = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const float3 vertex = rc_ivg_corner_position(p, base, corner);
+        const float3 target = vertex + 0.01f * (sp->origin - vertex);
+        if (!rc_occluded(scene, sp->origin, target, false, target - sp->origin)) {
+            visible |= 1 << corner;
+        }
+    }
+    *rays += 8;
     return material->diffuse * RC_INV_PI *
-           rc_ivg_irradiance(&grid->params, grid->values, grid->packed, sp->position,
-                             sp->shading.n);
+           rc_ivg_irradiance(p, grid->values, grid->packed, sp->position, sp->shading.n, visible);
 }
 
 // Light arriving along `ray` when the grid provides the diffuse lobe's indirect light at its hit
@@ -192,7 +204,7 @@ RC_FUNC CachedRadiance rc_ivg_radiance(const SceneData* scene, const VectorGrid*
     }
     const bool indirect = bounces + 1 < max_depth;
     if (rc_luminance(material.diffuse) > 0.0f && (indirect || direct_in_grid)) {
-        *grid_term = rc_ivg_diffuse(grid, &material, &sp);
+        *grid_term = rc_ivg_diffuse(scene, grid, &material, &sp, &c.rays);
         c.indirect += *grid_term;
         c.served = true;
     }
@@ -233,7 +245,7 @@ RC_FUNC CachedRadiance rc_ivg_gather(const SceneData* scene, const VectorGrid* g
     }
     SurfaceMaterial traced = rc_without_diffuse(&material);
     if (rc_luminance(material.diffuse) > 0.0f) {
-        *grid_term = rc_ivg_diffuse(grid, &material, &sp);
+        *grid_term = rc_ivg_diffuse(scene, grid, &material, &sp, &c.rays);
         c.served = true;
         // Gather rays stratified over m x n cells of the cosine-weighted hemisphere (cos^2 theta
         // = 1 - u1, phi = 2 pi u2), m the largest divisor of their count up to its square root.

@@ -28,11 +28,11 @@ namespace rc {
 namespace {
 
 // Final gathering in the accuracy test: 16 stratified gather rays per pixel, one camera sample
-// (measured relMSE 0.0059 and a red mean 4% low: the grid is darker near the red wall, which
-// does not lie on a grid plane).
+// (measured relMSE 0.0059, means 1.8% low or closer). Irradiance caching with the grid: measured
+// relMSE 2.4e-4.
 constexpr int kIvgTestGatherRays = 16;
 constexpr double kIvgGatherRelMse = 0.008;
-constexpr double kIcWithGridRelMse = 1e-3;
+constexpr double kIcWithGridRelMse = 4e-4;
 
 // A scene with its device buffers and a grid.
 struct GridScene {

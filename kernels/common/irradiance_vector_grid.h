@@ -178,6 +178,27 @@ RC_FUNC float4 rc_ivg_cubic_weights(float t) {
                     0.5f * (-3.0f * t3 + 4.0f * t2 + t), 0.5f * (t3 - t2));
 }
 
+// Grid coordinates (position in cells, clamped to the grid) of point x, and the lower corner of
+// the cell interpolation uses there.
+RC_FUNC float3 rc_ivg_grid_coordinates(const IvgParams* p, float3 x) {
+    const float3 upper = (float3)((float)p->cells.x, (float)p->cells.y, (float)p->cells.z);
+    return clamp((x - p->origin.xyz) / p->cell.xyz, (float3)(0.0f), upper);
+}
+
+RC_FUNC int3 rc_ivg_cell_base(const IvgParams* p, float3 g) {
+    return (int3)(min((int)floor(g.x), max(p->cells.x - 1, 0)),
+                  min((int)floor(g.y), max(p->cells.y - 1, 0)),
+                  min((int)floor(g.z), max(p->cells.z - 1, 0)));
+}
+
+// World position of corner `corner` (bit 0: +x, bit 1: +y, bit 2: +z) of the cell at `base`.
+RC_FUNC float3 rc_ivg_corner_position(const IvgParams* p, int3 base, int corner) {
+    const float3 index =
+        (float3)((float)(base.x + (corner & 1)), (float)(base.y + ((corner >> 1) & 1)),
+                 (float)(base.z + ((corner >> 2) & 1)));
+    return p->origin.xyz + index * p->cell.xyz;
+}
+
 // Whether a vertex's vectors for one direction hold anything: no photon crossed its face cell
 // in that direction when all are zero (inside a solid, behind a wall off the grid planes).
 RC_FUNC bool rc_ivg_reached(const float3 vectors[3]) {
@@ -185,21 +206,21 @@ RC_FUNC bool rc_ivg_reached(const float3 vectors[3]) {
 }
 
 // The irradiance vectors (r, g, b) of one direction spatially interpolated at grid coordinate g
-// (position in cells): trilinear over the vertices photons reached, the weights renormalised
+// (position in cells): trilinear over the cell's corners that photons reached and `visible` (bit
+// c: corner c, as rc_ivg_corner_position numbers them) lets through, the weights renormalised
 // over them (a vertex no photon reached, inside a solid or behind a wall that does not lie on a
-// grid plane, carries no information about the surface point and would darken it), or tricubic
-// (Catmull-Rom, vertices beyond the grid clamped) when all 64 vertices of its stencil were
-// reached, trilinear otherwise.
+// grid plane, carries no information about the surface point and would darken it; one the point
+// cannot see lies behind a wall and would carry the other side's light), or tricubic (Catmull-Rom,
+// vertices beyond the grid clamped) when all 8 corners are visible and all 64 vertices of its
+// stencil were reached, trilinear otherwise.
 RC_FUNC void rc_ivg_interpolate(const IvgParams* p, RC_GLOBAL const float* values,
-                                RC_GLOBAL const half* packed, float3 g, int direction,
+                                RC_GLOBAL const half* packed, float3 g, int direction, int visible,
                                 float3 out[3]) {
     out[0] = out[1] = out[2] = (float3)(0.0f);
-    const int3 base = (int3)(min((int)floor(g.x), max(p->cells.x - 1, 0)),
-                             min((int)floor(g.y), max(p->cells.y - 1, 0)),
-                             min((int)floor(g.z), max(p->cells.z - 1, 0)));
+    const int3 base = rc_ivg_cell_base(p, g);
     const float3 t = g - (float3)((float)base.x, (float)base.y, (float)base.z);
     float3 vectors[3];
-    if (p->lookup.x == RC_IVG_TRICUBIC) {
+    if (p->lookup.x == RC_IVG_TRICUBIC && visible == 0xff) {
         const float4 wx = rc_ivg_cubic_weights(t.x);
         const float4 wy = rc_ivg_cubic_weights(t.y);
         const float4 wz = rc_ivg_cubic_weights(t.z);
@@ -232,6 +253,9 @@ RC_FUNC void rc_ivg_interpolate(const IvgParams* p, RC_GLOBAL const float* value
         const int dz = (corner >> 2) & 1;
         const float weight =
             (dx ? t.x : 1.0f - t.x) * (dy ? t.y : 1.0f - t.y) * (dz ? t.z : 1.0f - t.z);
+        if (((visible >> corner) & 1) == 0) {
+            continue;
+        }
         rc_ivg_vertex_vectors(p, values, packed, base.x + dx, base.y + dy, base.z + dz, direction,
                               vectors);
         if (!rc_ivg_reached(vectors)) {
@@ -250,12 +274,12 @@ RC_FUNC void rc_ivg_interpolate(const IvgParams* p, RC_GLOBAL const float* value
 }
 
 // Irradiance (r, g, b) at point x with unit normal n (§4.1): per axis the vector of the side the
-// normal faces, spatially interpolated, blended as I_n = I_x n_x^2 + I_y n_y^2 + I_z n_z^2, and
-// E = max(0, <I_n, n>) per channel. The reflected radiance of a Lambertian surface is rho / pi E.
+// normal faces, spatially interpolated (over the corners `visible` lets through), blended as
+// I_n = I_x n_x^2 + I_y n_y^2 + I_z n_z^2, and E = max(0, <I_n, n>) per channel. The reflected
+// radiance of a Lambertian surface is rho / pi E.
 RC_FUNC float3 rc_ivg_irradiance(const IvgParams* p, RC_GLOBAL const float* values,
-                                 RC_GLOBAL const half* packed, float3 x, float3 n) {
-    const float3 upper = (float3)((float)p->cells.x, (float)p->cells.y, (float)p->cells.z);
-    const float3 g = clamp((x - p->origin.xyz) / p->cell.xyz, (float3)(0.0f), upper);
+                                 RC_GLOBAL const half* packed, float3 x, float3 n, int visible) {
+    const float3 g = rc_ivg_grid_coordinates(p, x);
     float3 blended[3] = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f)};
     for (int axis = 0; axis < 3; ++axis) {
         const float n_a = rc_ivg_component(n, axis);
@@ -264,7 +288,8 @@ RC_FUNC float3 rc_ivg_irradiance(const IvgParams* p, RC_GLOBAL const float* valu
             continue;
         }
         float3 vectors[3];
-        rc_ivg_interpolate(p, values, packed, g, 2 * axis + (n_a >= 0.0f ? 0 : 1), vectors);
+        rc_ivg_interpolate(p, values, packed, g, 2 * axis + (n_a >= 0.0f ? 0 : 1), visible,
+                           vectors);
         for (int c = 0; c < 3; ++c) {
             blended[c] += weight * vectors[c];
         }
