@@ -213,29 +213,35 @@ TEST(Cli, IrradianceVectorGridRenderWritesLayersStatsAndGrids) {
 TEST(Cli, IrradianceCacheRenderWritesLayersAndStats) {
     const auto dir = test::scratch_dir("cli_ic");
     const auto output = dir / "ic.exr";
-    const test::CommandResult result = test::run_radcache({"render",
-                                                           cornell_box(),
-                                                           "-o",
-                                                           output.string(),
-                                                           "--method",
-                                                           "ic",
-                                                           "--width",
-                                                           "48",
-                                                           "--height",
-                                                           "32",
-                                                           "--spp",
-                                                           "2",
-                                                           "--ic-rays",
-                                                           "64",
-                                                           "--ic-min-spacing",
-                                                           "4px",
-                                                           "--ic-max-spacing",
-                                                           "100u",
-                                                           "--quiet",
-                                                           "--stats",
-                                                           (dir / "stats.json").string(),
-                                                           "--cache-out",
-                                                           (dir / "cache.rcc").string()});
+    // One small view, rendered twice: with --cache-out, then with --cache-in.
+    auto render = [&](const std::string& image, const std::string& stats,
+                      const std::vector<std::string>& cache) {
+        std::vector<std::string> args = {"render",
+                                         cornell_box(),
+                                         "-o",
+                                         image,
+                                         "--method",
+                                         "ic",
+                                         "--width",
+                                         "48",
+                                         "--height",
+                                         "32",
+                                         "--spp",
+                                         "2",
+                                         "--ic-rays",
+                                         "64",
+                                         "--ic-min-spacing",
+                                         "4px",
+                                         "--ic-max-spacing",
+                                         "100u",
+                                         "--quiet",
+                                         "--stats",
+                                         stats};
+        args.insert(args.end(), cache.begin(), cache.end());
+        return test::run_radcache(args);
+    };
+    const test::CommandResult result = render(output.string(), (dir / "stats.json").string(),
+                                              {"--cache-out", (dir / "cache.rcc").string()});
     ASSERT_EQ(result.exit_code, 0) << result.output;
     const Image image = read_image(output);
     for (const char* layer :
@@ -255,29 +261,9 @@ TEST(Cli, IrradianceCacheRenderWritesLayersAndStats) {
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / "cache.rcc"));
 
     // The cache serves another render of the same view: nothing left to place.
-    const test::CommandResult reuse = test::run_radcache({"render",
-                                                          cornell_box(),
-                                                          "-o",
-                                                          (dir / "again.exr").string(),
-                                                          "--method",
-                                                          "ic",
-                                                          "--width",
-                                                          "48",
-                                                          "--height",
-                                                          "32",
-                                                          "--spp",
-                                                          "2",
-                                                          "--ic-rays",
-                                                          "64",
-                                                          "--ic-min-spacing",
-                                                          "4px",
-                                                          "--ic-max-spacing",
-                                                          "100u",
-                                                          "--quiet",
-                                                          "--stats",
-                                                          (dir / "again.json").string(),
-                                                          "--cache-in",
-                                                          (dir / "cache.rcc").string()});
+    const test::CommandResult reuse =
+        render((dir / "again.exr").string(), (dir / "again.json").string(),
+               {"--cache-in", (dir / "cache.rcc").string()});
     ASSERT_EQ(reuse.exit_code, 0) << reuse.output;
     const nlohmann::json again = nlohmann::json::parse(read_file(dir / "again.json"));
     EXPECT_EQ(again["frames"][0]["loaded_records"], frame["records"]);

@@ -312,6 +312,16 @@ int run_render_command(const std::vector<std::string>& args) {
     int spp_done = 0;
     int image_width = 0;
     int image_height = 0;
+    // Adds a frame's rays and dropped samples to the totals, and warns about the latter.
+    auto count_frame = [&](uint64_t frame_rays, uint64_t frame_nonfinite, int64_t first_pixel,
+                           int frame_width) {
+        rays += frame_rays;
+        nonfinite += frame_nonfinite;
+        if (first_nonfinite_pixel < 0) {
+            first_nonfinite_pixel = first_pixel;
+        }
+        warn_nonfinite(frame_nonfinite, first_pixel, frame_width);
+    };
     Bvh bvh;
     for (int frame = first_frame; frame <= last_frame; ++frame) {
         if (static_cast<double>(frame) != scene.frame) {
@@ -354,16 +364,12 @@ int run_render_command(const std::vector<std::string>& args) {
             IvgRenderStats stats;
             image = method.render(options, &stats);
             spp_done = settings.spp;
-            rays += stats.rays;
-            nonfinite += stats.nonfinite_samples;
-            if (first_nonfinite_pixel < 0) {
-                first_nonfinite_pixel = stats.first_nonfinite_pixel;
-            }
+            count_frame(stats.rays, stats.nonfinite_samples, stats.first_nonfinite_pixel,
+                        image.width);
             this_frame["spp"] = settings.spp;
             this_frame["gather_rays"] = gathers;
             this_frame["shading_rays"] = stats.rays;
             this_frame["seconds"] = {{"shading", stats.seconds}};
-            warn_nonfinite(stats.nonfinite_samples, stats.first_nonfinite_pixel, image.width);
         } else if (settings.method == "ic") {
             IrradianceCache cache(context, scene, device_bvh, device_scene);
             ic.grid = grid.get();
@@ -378,11 +384,8 @@ int run_render_command(const std::vector<std::string>& args) {
             IrradianceCacheStats stats;
             image = cache.render(ic, &stats);
             spp_done = settings.spp;
-            rays += stats.record_rays + stats.shading_rays;
-            nonfinite += stats.nonfinite_samples;
-            if (first_nonfinite_pixel < 0) {
-                first_nonfinite_pixel = stats.first_nonfinite_pixel;
-            }
+            count_frame(stats.record_rays + stats.shading_rays, stats.nonfinite_samples,
+                        stats.first_nonfinite_pixel, image.width);
             nlohmann::json passes = nlohmann::json::array();
             for (const PlacementPass& pass : stats.passes) {
                 passes.push_back({{"level", pass.level},
@@ -413,7 +416,6 @@ int run_render_command(const std::vector<std::string>& args) {
                                      {"insertion", stats.insertion_seconds},
                                      {"splatting", stats.splatting_seconds}};
             log_note(std::to_string(stats.records) + " irradiance records");
-            warn_nonfinite(stats.nonfinite_samples, stats.first_nonfinite_pixel, image.width);
         } else if (settings.method == "normals") {
             NormalsMethod method(context, scene, device_bvh);
             NormalsOptions options;
@@ -444,15 +446,11 @@ int run_render_command(const std::vector<std::string>& args) {
             PathTracerStats stats;
             image = tracer.render(options, &stats);
             spp_done = stats.spp;
-            rays += stats.rays;
-            nonfinite += stats.nonfinite_samples;
-            if (first_nonfinite_pixel < 0) {
-                first_nonfinite_pixel = stats.first_nonfinite_pixel;
-            }
+            count_frame(stats.rays, stats.nonfinite_samples, stats.first_nonfinite_pixel,
+                        image.width);
             this_frame["spp"] = stats.spp;
             this_frame["rays"] = stats.rays;
             this_frame["seconds"] = stats.seconds;
-            warn_nonfinite(stats.nonfinite_samples, stats.first_nonfinite_pixel, image.width);
         }
         progress.finish();
         render_seconds += seconds_since(phase_start);
