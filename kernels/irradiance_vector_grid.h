@@ -134,20 +134,14 @@ RC_FUNC uint rc_ivg_trace_photon(const SceneData* scene, const IvgParams* p, uin
         const SurfacePoint sp = rc_surface_point(scene, ray, hit);
         const SurfaceMaterial material = rc_surface_material(scene, &sp);
         const float3 wo = rc_to_local(&sp.shading, -ray.direction.xyz);
-        const float u_lobe = rc_rng_next_float(&rng);
-        const float u1 = rc_rng_next_float(&rng);
-        const float u2 = rc_rng_next_float(&rng);
-        const float u_survive = rc_rng_next_float(&rng);
         float3 wi;
         float pdf;
         float3 f;
-        if (!rc_material_sample(&material, wo, u_lobe, u1, u2, &wi, &pdf, &f)) {
+        float3 direction;
+        if (!rc_sample_bounce(&sp, &material, wo, &rng, &wi, &pdf, &f, &direction)) {
             break;
         }
-        const float3 direction = rc_from_local(&sp.shading, wi);
-        if (dot(direction, sp.geometric_normal) <= 0.0f) {
-            break;
-        }
+        const float u_survive = rc_rng_next_float(&rng);
         float3 factor = f * (wi.z / pdf);
         if (bounces + 1 >= rr_depth) {
             const float survive = fmin(1.0f, rc_max_component(factor));

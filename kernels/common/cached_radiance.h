@@ -76,22 +76,17 @@ RC_FUNC void rc_trace_lobes(const SceneData* scene, const SurfacePoint* sp,
         (traced->kind == RC_MATERIAL_DIFFUSE || rc_is_black(traced->specular))) {
         return;
     }
-    const float u_lobe = rc_rng_next_float(rng);
-    const float u1 = rc_rng_next_float(rng);
-    const float u2 = rc_rng_next_float(rng);
     float3 wi;
     float pdf;
     float3 f;
-    if (rc_material_sample(traced, wo, u_lobe, u1, u2, &wi, &pdf, &f)) {
-        const float3 direction = rc_from_local(&sp->shading, wi);
-        if (dot(direction, sp->geometric_normal) > 0.0f) {
-            Ray next;
-            next.origin = (float4)(sp->origin, 0.0f);
-            next.direction = (float4)(direction, INFINITY);
-            const PathSample p =
-                rc_path_radiance(scene, next, rng, bounces + 1, max_depth, rr_depth, false);
-            c->rays += p.rays;
-            c->indirect += f * (wi.z / pdf) * p.radiance;
-        }
+    float3 direction;
+    if (rc_sample_bounce(sp, traced, wo, rng, &wi, &pdf, &f, &direction)) {
+        Ray next;
+        next.origin = (float4)(sp->origin, 0.0f);
+        next.direction = (float4)(direction, INFINITY);
+        const PathSample p =
+            rc_path_radiance(scene, next, rng, bounces + 1, max_depth, rr_depth, false);
+        c->rays += p.rays;
+        c->indirect += f * (wi.z / pdf) * p.radiance;
     }
 }

@@ -75,23 +75,33 @@ RC_FUNC float3 rc_next_event(const SceneData* scene, const SurfacePoint* sp,
     return f * (wi.z * weight / ls.pdf) * ls.radiance;
 }
 
+// A bounce sampled from `material` at sp with three numbers of rng: the direction in the
+// shading frame (*wi), its density and BRDF value, and the world direction. False when sampling
+// fails or the direction lies below the geometric surface (shading normals must not leak light).
+RC_FUNC bool rc_sample_bounce(const SurfacePoint* sp, const SurfaceMaterial* material, float3 wo,
+                              RngStream* rng, float3* wi, float* pdf, float3* f,
+                              float3* direction) {
+    const float u_lobe = rc_rng_next_float(rng);
+    const float u1 = rc_rng_next_float(rng);
+    const float u2 = rc_rng_next_float(rng);
+    if (!rc_material_sample(material, wo, u_lobe, u1, u2, wi, pdf, f)) {
+        return false;
+    }
+    *direction = rc_from_local(&sp->shading, *wi);
+    return dot(*direction, sp->geometric_normal) > 0.0f;
+}
+
 // Emission reached by sampling the BRDF once at a surface point, weighted by the power heuristic
 // against light sampling: with rc_next_event, the direct light of the point (what the path
 // tracer's first bounce computes). Counts the ray in *rays.
 RC_FUNC float3 rc_bsdf_sampled_emission(const SceneData* scene, const SurfacePoint* sp,
                                         const SurfaceMaterial* material, float3 wo, RngStream* rng,
                                         uint* rays) {
-    const float u_lobe = rc_rng_next_float(rng);
-    const float u1 = rc_rng_next_float(rng);
-    const float u2 = rc_rng_next_float(rng);
     float3 wi;
     float pdf;
     float3 f;
-    if (!rc_material_sample(material, wo, u_lobe, u1, u2, &wi, &pdf, &f)) {
-        return (float3)(0.0f);
-    }
-    const float3 direction = rc_from_local(&sp->shading, wi);
-    if (dot(direction, sp->geometric_normal) <= 0.0f) {
+    float3 direction;
+    if (!rc_sample_bounce(sp, material, wo, rng, &wi, &pdf, &f, &direction)) {
         return (float3)(0.0f);
     }
     Ray ray;
@@ -170,18 +180,12 @@ RC_FUNC PathSample rc_path_radiance(const SceneData* scene, Ray ray, RngStream* 
                             throughput * rc_next_event(scene, &sp, &material, wo, rng, &s.rays));
 
         // Continue the path by sampling the BRDF.
-        const float u_lobe = rc_rng_next_float(rng);
-        const float u1 = rc_rng_next_float(rng);
-        const float u2 = rc_rng_next_float(rng);
         float3 wi;
         float pdf;
         float3 f;
-        if (!rc_material_sample(&material, wo, u_lobe, u1, u2, &wi, &pdf, &f)) {
+        float3 direction;
+        if (!rc_sample_bounce(&sp, &material, wo, rng, &wi, &pdf, &f, &direction)) {
             break;
-        }
-        const float3 direction = rc_from_local(&sp.shading, wi);
-        if (dot(direction, sp.geometric_normal) <= 0.0f) {
-            break;  // below the geometric surface: shading normals must not leak light
         }
         throughput *= f * (wi.z / pdf);
         previous_pdf = pdf;
