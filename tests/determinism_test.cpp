@@ -6,7 +6,7 @@
 
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
-#include "methods/normals.h"
+#include "methods/normals/normals.h"
 #include "test_support.h"
 
 namespace rc {

@@ -12,7 +12,7 @@
 
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
-#include "methods/irradiance_cache.h"
+#include "methods/irradiance_cache/irradiance_cache.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"

@@ -1,7 +1,7 @@
 // The reference path tracer against analytic answers (the furnace, a plane under a constant
 // sky), against its stored Cornell-box reference by a per-pixel statistical test, and for
 // determinism and AOV consistency.
-#include "methods/path_tracer.h"
+#include "methods/path_tracer/path_tracer.h"
 
 #include <gtest/gtest.h>
 

@@ -9,7 +9,7 @@
 #include "app/commands.h"
 #include "app/device_options.h"
 #include "app/ray_bench.h"
-#include "methods/path_tracer.h"
+#include "methods/path_tracer/path_tracer.h"
 #include "scene/camera.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"

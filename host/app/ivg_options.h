@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "app/cli.h"
-#include "methods/irradiance_vector_grid.h"
+#include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
 
 namespace rc {
 

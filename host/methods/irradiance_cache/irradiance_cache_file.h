@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "methods/irradiance_records.h"
+#include "methods/irradiance_cache/irradiance_records.h"
 #include "scene/scene.h"
 
 namespace rc {

@@ -1,4 +1,4 @@
-#include "methods/ivg_method.h"
+#include "methods/irradiance_vector_grid/ivg_method.h"
 
 #include <chrono>
 #include <limits>

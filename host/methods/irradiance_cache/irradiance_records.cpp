@@ -1,4 +1,4 @@
-#include "methods/irradiance_records.h"
+#include "methods/irradiance_cache/irradiance_records.h"
 
 #include <algorithm>
 #include <cmath>

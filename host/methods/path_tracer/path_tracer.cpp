@@ -1,4 +1,4 @@
-#include "methods/path_tracer.h"
+#include "methods/path_tracer/path_tracer.h"
 
 #include <algorithm>
 #include <chrono>

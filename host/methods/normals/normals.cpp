@@ -1,4 +1,4 @@
-#include "methods/normals.h"
+#include "methods/normals/normals.h"
 
 #include "scene/camera.h"
 #include "util/error.h"

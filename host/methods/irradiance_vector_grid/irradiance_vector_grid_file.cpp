@@ -1,11 +1,11 @@
-#include "methods/irradiance_vector_grid_file.h"
+#include "methods/irradiance_vector_grid/irradiance_vector_grid_file.h"
 
 #include <OpenImageIO/hash.h>
 
 #include <cstring>
 
-#include "methods/irradiance_cache_file.h"
-#include "methods/irradiance_vector_grid.h"
+#include "methods/irradiance_cache/irradiance_cache_file.h"
+#include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
 #include "util/error.h"
 #include "util/file_io.h"
 

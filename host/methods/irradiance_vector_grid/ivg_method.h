@@ -10,7 +10,7 @@
 #include "bvh/device_bvh.h"
 #include "device/context.h"
 #include "image/image.h"
-#include "methods/irradiance_vector_grid.h"
+#include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
 #include "scene/device_scene.h"
 #include "scene/scene.h"
 

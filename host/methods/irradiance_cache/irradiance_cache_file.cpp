@@ -1,4 +1,4 @@
-#include "methods/irradiance_cache_file.h"
+#include "methods/irradiance_cache/irradiance_cache_file.h"
 
 #include <OpenImageIO/hash.h>
 

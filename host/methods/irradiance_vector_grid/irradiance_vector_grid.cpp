@@ -1,4 +1,4 @@
-#include "methods/irradiance_vector_grid.h"
+#include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
 
 #include <Imath/half.h>
 
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <regex>
 
-#include "methods/irradiance_vector_grid_file.h"
+#include "methods/irradiance_vector_grid/irradiance_vector_grid_file.h"
 #include "methods/scene_arguments.h"
 #include "util/error.h"
 

@@ -1,4 +1,4 @@
-#include "methods/irradiance_cache.h"
+#include "methods/irradiance_cache/irradiance_cache.h"
 
 #include <algorithm>
 #include <chrono>
@@ -8,7 +8,7 @@
 #include <regex>
 #include <unordered_map>
 
-#include "methods/irradiance_cache_file.h"
+#include "methods/irradiance_cache/irradiance_cache_file.h"
 #include "methods/scene_arguments.h"
 #include "scene/camera.h"
 #include "util/error.h"
