@@ -111,7 +111,7 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
         {{"render", cornell_box(), "-o", out, "--method", "ivg", "--photons", "0"}, 2, "--photons"},
         {{"render", cornell_box(), "-o", out, "--photons", "100"},
          2,
-         "applies to --method ivg, ivg-gather, or ic with --ic-ivg"},
+         "--photons applies to --method ic, ivg or ivg-gather only"},
         {{"render", cornell_box(), "-o", out, "--method", "ivg", "--gather-rays", "4"},
          2,
          "--gather-rays applies to --method ivg-gather only"},

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "app/cli.h"
+#include "util/cli.h"
 #include "app/commands.h"
 #include "app/device_options.h"
 #include "app/ray_bench.h"

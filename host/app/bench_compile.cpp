@@ -5,7 +5,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "app/cli.h"
+#include "util/cli.h"
 #include "app/commands.h"
 #include "app/device_options.h"
 #include "device/embedded_sources.h"

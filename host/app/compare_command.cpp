@@ -4,7 +4,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "app/cli.h"
+#include "util/cli.h"
 #include "app/commands.h"
 #include "image/image.h"
 #include "image/image_error.h"

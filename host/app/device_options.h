@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "app/cli.h"
+#include "util/cli.h"
 #include "device/context.h"
 
 namespace rc {

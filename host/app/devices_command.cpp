@@ -1,6 +1,6 @@
 #include <iostream>
 
-#include "app/cli.h"
+#include "util/cli.h"
 #include "app/commands.h"
 #include "device/device_list.h"
 #include "util/error.h"

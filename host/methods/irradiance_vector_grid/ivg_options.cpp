@@ -1,7 +1,8 @@
-#include "app/ivg_options.h"
+#include "methods/irradiance_vector_grid/ivg_options.h"
 
 #include "util/error.h"
 #include "util/file_io.h"
+#include "util/log.h"
 
 namespace rc {
 
@@ -21,31 +22,18 @@ std::vector<OptionSpec> ivg_option_specs() {
         {"--grid-out", "", "FILE", "grid: save the normalised grid"},
         {"--grid-in", "", "FILE",
          "grid: load a saved grid instead of tracing photons (same scene, frame, depth limit)"},
-        {"--gather-rays", "", "N", "ivg-gather: gather rays per camera sample (default 16)"},
-        {"--ic-ivg", "", "",
-         "ic: hemisphere rays read the grid at their hits instead of path tracing beyond them"},
     };
 }
 
-bool uses_grid(const std::string& method, const ParsedArguments& arguments) {
-    return method == "ivg" || method == "ivg-gather" ||
-           (method == "ic" && arguments.has("--ic-ivg"));
-}
-
-IvgOptions ivg_options(const ParsedArguments& arguments, const std::string& method) {
-    if (arguments.has("--ic-ivg") && method != "ic") {
-        throw Error("--ic-ivg applies to --method ic only", kExitUsage);
-    }
-    if (!uses_grid(method, arguments)) {
-        for (const char* option : {"--grid", "--photons", "--ivg-interp", "--ivg-compressed",
-                                   "--ivg-include-direct", "--grid-out", "--grid-in"}) {
-            if (arguments.has(option)) {
-                throw Error(std::string(option) +
-                                " applies to --method ivg, ivg-gather, or ic with --ic-ivg",
-                            kExitUsage);
-            }
+void refuse_ivg_options(const ParsedArguments& arguments, const std::string& why) {
+    for (const OptionSpec& spec : ivg_option_specs()) {
+        if (arguments.has(spec.name)) {
+            throw Error(spec.name + " " + why, kExitUsage);
         }
     }
+}
+
+IvgOptions ivg_options(const ParsedArguments& arguments, const MethodSettings& settings) {
     IvgOptions options;
     options.cells = parse_grid_resolution(arguments.value("--grid", "auto"));
     options.photons = static_cast<uint64_t>(arguments.integer("--photons", 0, 1, 1LL << 31));
@@ -69,17 +57,30 @@ IvgOptions ivg_options(const ParsedArguments& arguments, const std::string& meth
         throw Error("--photons and --grid-in exclude each other (a loaded grid traces none)",
                     kExitUsage);
     }
+    if (settings.frame_count > 1 && (!options.grid_in.empty() || !options.grid_out.empty())) {
+        throw Error("--grid-in/--grid-out take one frame", kExitUsage);
+    }
+    options.seed = settings.seed;
+    options.max_depth = settings.max_depth;
+    options.rr_depth = settings.rr_depth;
     return options;
 }
 
-int gather_rays(const ParsedArguments& arguments, const std::string& method) {
-    if (arguments.has("--gather-rays") && method != "ivg-gather") {
-        throw Error("--gather-rays applies to --method ivg-gather only", kExitUsage);
-    }
-    if (method != "ivg-gather") {
-        return 0;
-    }
-    return static_cast<int>(arguments.integer("--gather-rays", kDefaultGatherRays, 1, 1 << 16));
+std::unique_ptr<IrradianceVectorGrid> build_frame_grid(const FrameScene& frame,
+                                                       const IvgOptions& options,
+                                                       const FrameHooks& hooks,
+                                                       FrameResult* result) {
+    hooks.progress(0.0, "photons");
+    auto grid = std::make_unique<IrradianceVectorGrid>(frame.context, frame.scene, frame.bvh,
+                                                       frame.device_scene);
+    IvgStats stats;
+    grid->build(options, &stats);
+    result->stats["grid"] = ivg_stats_json(stats);
+    result->rays += stats.rays;
+    log_note("irradiance vector grid " + std::to_string(stats.cells[0]) + "x" +
+             std::to_string(stats.cells[1]) + "x" + std::to_string(stats.cells[2]) + ", " +
+             std::to_string(stats.photons) + " photons");
+    return grid;
 }
 
 nlohmann::json ivg_stats_json(const IvgStats& stats) {

@@ -1,4 +1,4 @@
-#include "app/cli.h"
+#include "util/cli.h"
 
 #include <algorithm>
 #include <cerrno>

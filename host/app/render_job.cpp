@@ -1,0 +1,166 @@
+#include "app/render_job.h"
+
+#include <algorithm>
+#include <regex>
+#include <sstream>
+
+#include "app/device_options.h"
+#include "methods/registry.h"
+#include "util/error.h"
+#include "util/file_io.h"
+
+namespace rc {
+
+std::vector<OptionSpec> render_option_specs() {
+    std::vector<OptionSpec> specs = {
+        {"--output", "-o", "FILE",
+         "output image: .exr (all AOVs), .hdr, .pfm or .png (default out.png); with --frames, "
+         "#### in the name becomes the frame number"},
+        {"--method", "", "NAME",
+         "rendering method: " + method_names() + " (default pt; each listed below)"},
+        {"--spp", "", "N", "samples per pixel (default: the scene's render.spp, else 16)"},
+        {"--seed", "", "N", "random seed (default: the scene's render.seed, else 0)"},
+        {"--width", "", "N", "image width in pixels (default: the scene camera's)"},
+        {"--height", "", "N", "image height in pixels (default: the scene camera's)"},
+        {"--frames", "", "A:B", "render frames A to B of an animated scene, one image each"},
+        {"-D", "", "KEY=VALUE",
+         "override a render default: method, spp, time, max_depth, rr_depth, seed, exposure", true},
+        {"--exposure", "", "STOPS", "exposure applied before 8-bit encoding (default 0)"},
+        {"--half", "", "", ".exr: store half floats"},
+        {"--aovs", "", "LIST", ".exr: the layers to write, comma-separated (default all)"},
+        {"--stats", "", "FILE", "write timings and counts as JSON"},
+        {"--quiet", "-q", "", "print nothing but errors"},
+    };
+    for (const MethodEntry& method : method_registry()) {
+        std::string layers;
+        for (const std::string& aov : method.aovs) {
+            layers += (layers.empty() ? "" : ", ") + aov;
+        }
+        specs[1].help +=
+            "\n      " + method.name + ": " + method.summary + " (layers " + layers + ")";
+    }
+    for (OptionSpec& spec : method_option_specs()) {
+        specs.push_back(std::move(spec));
+    }
+    for (OptionSpec& spec : device_option_specs()) {
+        specs.push_back(std::move(spec));
+    }
+    return specs;
+}
+
+namespace {
+
+FrameRange parse_frames(const std::string& text) {
+    static const std::regex form(R"(^(-?\d+):(-?\d+)$)");
+    std::smatch match;
+    if (!std::regex_match(text, match, form)) {
+        throw Error("--frames: expected A:B, got '" + text + "'", kExitUsage);
+    }
+    FrameRange range;
+    range.first = std::stoi(match[1].str());
+    range.last = std::stoi(match[2].str());
+    range.given = true;
+    if (range.last < range.first) {
+        throw Error("--frames: " + text + " ends before it starts", kExitUsage);
+    }
+    return range;
+}
+
+std::vector<std::string> parse_layers(const std::string& text) {
+    std::vector<std::string> layers;
+    std::stringstream list(text);
+    for (std::string layer; std::getline(list, layer, ',');) {
+        if (!layer.empty()) {
+            layers.push_back(layer);
+        }
+    }
+    if (layers.empty()) {
+        throw Error("--aovs: expected a comma-separated list of layers", kExitUsage);
+    }
+    return layers;
+}
+
+}  // namespace
+
+RenderJob read_render_job(const ParsedArguments& arguments) {
+    if (arguments.positionals().size() != 1) {
+        throw Error("radcache render needs exactly one scene file (see radcache render --help)",
+                    kExitUsage);
+    }
+    RenderJob job;
+    job.scene = arguments.positionals()[0];
+    job.output_pattern = arguments.value("--output", "out.png");
+    if (arguments.has("--frames")) {
+        job.frames = parse_frames(arguments.value("--frames"));
+    }
+    if (job.frames.given && job.frames.first != job.frames.last &&
+        job.output_pattern.find('#') == std::string::npos) {
+        throw Error(
+            "--output " + job.output_pattern + ": several frames need a #### pattern in the name",
+            kExitUsage);
+    }
+    check_output_path(frame_path(job.output_pattern, job.frames.first));
+    job.stats = arguments.value("--stats");
+    if (!job.stats.empty()) {
+        check_writable_parent(job.stats, "--stats");
+    }
+    RenderSettings overrides_only;
+    for (const std::string& assignment : arguments.values("-D")) {
+        overrides_only.apply_override(assignment);  // validates the keys before loading
+    }
+    job.write_options.half = arguments.has("--half");
+    if (arguments.has("--aovs")) {
+        job.layers = parse_layers(arguments.value("--aovs"));
+    }
+    return job;
+}
+
+RenderSettings render_settings(const ParsedArguments& arguments, RenderSettings settings) {
+    for (const std::string& assignment : arguments.values("-D")) {
+        settings.apply_override(assignment);
+    }
+    settings.method = arguments.value("--method", settings.method);
+    settings.spp = static_cast<int>(arguments.integer("--spp", settings.spp, 1, 1 << 24));
+    settings.seed = static_cast<uint64_t>(
+        arguments.integer("--seed", static_cast<long long>(settings.seed), 0, 1LL << 62));
+    settings.exposure =
+        static_cast<float>(arguments.number("--exposure", settings.exposure, -64.0, 64.0));
+    return settings;
+}
+
+MethodSettings method_settings(const ParsedArguments& arguments, const RenderSettings& settings,
+                               const RenderJob& job, int first, int last) {
+    MethodSettings method;
+    method.width = static_cast<int>(arguments.integer("--width", 0, 1, 1 << 16));
+    method.height = static_cast<int>(arguments.integer("--height", 0, 1, 1 << 16));
+    method.spp = settings.spp;
+    method.time = settings.time;
+    method.seed = settings.seed;
+    method.max_depth = settings.max_depth;
+    method.rr_depth = settings.rr_depth;
+    const long long frames = static_cast<long long>(last) - first + 1;
+    method.frame_count = static_cast<int>(std::min<long long>(frames, 1 << 30));
+    method.layers = job.layers;
+    return method;
+}
+
+std::filesystem::path frame_path(const std::string& pattern, int frame) {
+    const size_t first = pattern.find('#');
+    if (first == std::string::npos) {
+        return pattern;
+    }
+    const size_t last = pattern.find_first_not_of('#', first);
+    const size_t width = (last == std::string::npos ? pattern.size() : last) - first;
+    char number[32];
+    std::snprintf(number, sizeof number, "%0*d", static_cast<int>(width), frame);
+    return pattern.substr(0, first) + number + pattern.substr(first + width);
+}
+
+std::filesystem::path intermediate_path(const std::filesystem::path& output, int spp) {
+    std::filesystem::path path = output;
+    path.replace_filename(output.stem().string() + ".spp" + std::to_string(spp) +
+                          output.extension().string());
+    return path;
+}
+
+}  // namespace rc

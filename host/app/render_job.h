@@ -1,0 +1,52 @@
+// What `radcache render` was asked to do, read from its command line before any work: the
+// options every method shares, the output names of frames, the layers, the stats file.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "image/image_io.h"
+#include "methods/method.h"
+#include "scene/render_settings.h"
+#include "util/cli.h"
+
+namespace rc {
+
+// The render command's options: those every method shares, every method's (methods/registry),
+// and the device options.
+std::vector<OptionSpec> render_option_specs();
+
+struct FrameRange {
+    int first = 0;
+    int last = 0;
+    bool given = false;  // --frames A:B; otherwise the scene's first frame alone
+};
+
+struct RenderJob {
+    std::filesystem::path scene;
+    std::string output_pattern;  // #### becomes the frame number
+    FrameRange frames;
+    std::filesystem::path stats;  // empty: no stats file
+    std::vector<std::string> layers;
+    ImageWriteOptions write_options;
+};
+
+// Checks everything that can be checked before loading the scene (output and stats paths,
+// --frames, --aovs, -D keys); Error (exit status 2) naming the option otherwise.
+RenderJob read_render_job(const ParsedArguments& arguments);
+
+// The scene's render defaults overridden by -D and then by --method, --spp, --seed, --exposure.
+RenderSettings render_settings(const ParsedArguments& arguments, RenderSettings scene_defaults);
+
+// What every method reads, for frames first..last.
+MethodSettings method_settings(const ParsedArguments& arguments, const RenderSettings& settings,
+                               const RenderJob& job, int first, int last);
+
+// The output name of a frame: the run of '#' replaced by the zero-padded frame number.
+std::filesystem::path frame_path(const std::string& pattern, int frame);
+
+// name.ext -> name.sppN.ext
+std::filesystem::path intermediate_path(const std::filesystem::path& output, int spp);
+
+}  // namespace rc

@@ -1,0 +1,90 @@
+#include "app/render_stats.h"
+
+#include "util/log.h"
+
+namespace rc {
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void RenderTotals::add_frame(int frame, const std::filesystem::path& output,
+                             const FrameResult& result) {
+    nlohmann::json entry = result.stats;
+    entry["frame"] = frame;
+    entry["output"] = output.string();
+    frames_.push_back(entry);
+    rays_ += result.rays;
+    nonfinite_ += result.nonfinite_samples;
+    if (first_nonfinite_pixel_ < 0) {
+        first_nonfinite_pixel_ = result.first_nonfinite_pixel;
+    }
+    spp_ = result.spp;
+    width_ = result.image.width;
+    height_ = result.image.height;
+    if (result.nonfinite_samples > 0) {
+        const int64_t pixel = result.first_nonfinite_pixel;
+        log_warning(std::to_string(result.nonfinite_samples) +
+                    " samples were NaN or infinite and were dropped (first at pixel " +
+                    std::to_string(pixel % width_) + ", " + std::to_string(pixel / width_) + ")");
+    }
+}
+
+namespace {
+
+nlohmann::json kernel_times_json(const Context& context) {
+    nlohmann::json kernels = nlohmann::json::object();
+    for (const auto& [name, time] : context.kernel_times()) {
+        kernels[name] = {
+            {"seconds", time.seconds}, {"launches", time.launches}, {"items", time.items}};
+    }
+    return kernels;
+}
+
+nlohmann::json program_builds_json(const Context& context) {
+    nlohmann::json builds = nlohmann::json::array();
+    for (const ProgramBuildReport& build : context.program_builds()) {
+        builds.push_back({{"program", build.entry},
+                          {"seconds", build.seconds},
+                          {"from_cache", build.from_cache}});
+    }
+    return builds;
+}
+
+}  // namespace
+
+nlohmann::json RenderTotals::json(const RenderSettings& settings, const Scene& scene,
+                                  const Context& context, const Bvh& bvh,
+                                  double total_seconds) const {
+    double kernel_seconds = 0.0;
+    for (const auto& [name, time] : context.kernel_times()) {
+        kernel_seconds += time.seconds;
+    }
+    nlohmann::json stats;
+    stats["method"] = settings.method;
+    stats["device"] = context.device().name;
+    stats["scene"] = scene.path.string();
+    stats["triangles"] = scene.mesh.triangle_count();
+    stats["lights"] = scene.lights.lights.size();
+    stats["dropped_degenerate_triangles"] = scene.dropped_degenerate;
+    stats["resolution"] = {width_, height_};
+    stats["spp"] = spp_;
+    stats["seed"] = settings.seed;
+    stats["max_depth"] = settings.max_depth;
+    stats["frames"] = frames_;
+    stats["seconds"] = seconds_;
+    stats["seconds"]["total"] = total_seconds;
+    stats["kernels"] = kernel_times_json(context);
+    stats["rays"] = rays_;
+    stats["mrays_per_second"] = kernel_seconds > 0.0 ? rays_ / kernel_seconds * 1e-6 : 0.0;
+    stats["nonfinite_samples"] = nonfinite_;
+    stats["first_nonfinite_pixel"] = first_nonfinite_pixel_;
+    stats["program_builds"] = program_builds_json(context);
+    stats["bvh"] = {{"nodes", bvh.nodes.size()},
+                    {"leaves", bvh.leaf_count},
+                    {"depth", bvh.depth},
+                    {"bytes", bvh.device_bytes()}};
+    return stats;
+}
+
+}  // namespace rc

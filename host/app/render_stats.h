@@ -1,0 +1,46 @@
+// The figures of a `radcache render` run: totals over its frames, warnings for dropped samples,
+// and the --stats JSON file.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "bvh/bvh.h"
+#include "device/context.h"
+#include "methods/method.h"
+#include "scene/render_settings.h"
+#include "scene/scene.h"
+
+namespace rc {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start);
+
+class RenderTotals {
+   public:
+    // Seconds of the phases every render has: load, device, bvh, upload, render, write.
+    double& phase(const std::string& name) { return seconds_[name]; }
+
+    // Adds a frame (its output, counts and the method's figures); warns about dropped samples.
+    void add_frame(int frame, const std::filesystem::path& output, const FrameResult& result);
+
+    // The stats file's JSON.
+    nlohmann::json json(const RenderSettings& settings, const Scene& scene, const Context& context,
+                        const Bvh& bvh, double total_seconds) const;
+
+   private:
+    std::map<std::string, double> seconds_;
+    nlohmann::json frames_ = nlohmann::json::array();
+    uint64_t rays_ = 0;
+    uint64_t nonfinite_ = 0;
+    int64_t first_nonfinite_pixel_ = -1;
+    int spp_ = 0;
+    int width_ = 0;
+    int height_ = 0;
+};
+
+}  // namespace rc

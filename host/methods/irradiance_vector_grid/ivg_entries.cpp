@@ -1,0 +1,78 @@
+// `--method ivg` (the grid read at the camera's hit) and `--method ivg-gather` (final gathering
+// into the grid) as registered methods (DESIGN.md §6.3).
+#include <memory>
+
+#include "methods/irradiance_vector_grid/ivg_method.h"
+#include "methods/irradiance_vector_grid/ivg_options.h"
+#include "methods/method.h"
+
+namespace rc {
+namespace {
+
+constexpr int kDefaultGatherRays = 16;
+
+const OptionSpec kGatherRaysOption = {"--gather-rays", "", "N",
+                                      "ivg-gather: gather rays per camera sample (default 16)"};
+
+class GridRendering final : public Method {
+   public:
+    GridRendering(const ParsedArguments& arguments, const MethodSettings& settings, int gather_rays)
+        : settings_(settings),
+          grid_options_(ivg_options(arguments, settings)),
+          gather_rays_(gather_rays) {}
+
+    FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
+        FrameResult result;
+        const std::unique_ptr<IrradianceVectorGrid> grid =
+            build_frame_grid(frame, grid_options_, hooks, &result);
+        IvgMethod method(frame.context, frame.scene, frame.bvh, frame.device_scene, *grid);
+        IvgRenderOptions options;
+        options.width = settings_.width;
+        options.height = settings_.height;
+        options.spp = settings_.spp;
+        options.seed = settings_.seed;
+        options.gather_rays = gather_rays_;
+        IvgRenderStats stats;
+        result.image = method.render(options, &stats);
+        result.spp = settings_.spp;
+        result.rays += stats.rays;
+        result.nonfinite_samples = stats.nonfinite_samples;
+        result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
+        result.stats["spp"] = settings_.spp;
+        result.stats["gather_rays"] = gather_rays_;
+        result.stats["shading_rays"] = stats.rays;
+        result.stats["seconds"] = {{"shading", stats.seconds}};
+        return result;
+    }
+
+   private:
+    MethodSettings settings_;
+    IvgOptions grid_options_;
+    int gather_rays_;
+};
+
+std::vector<std::string> grid_aovs() { return {std::begin(kIvgAovs), std::end(kIvgAovs)}; }
+
+}  // namespace
+
+MethodEntry ivg_method_entry() {
+    return {"ivg", "the irradiance vector grid read at the camera's hit (no gather rays)",
+            ivg_option_specs(), grid_aovs(),
+            [](const ParsedArguments& arguments, const MethodSettings& settings) {
+                return std::make_unique<GridRendering>(arguments, settings, 0);
+            }};
+}
+
+MethodEntry ivg_gather_method_entry() {
+    std::vector<OptionSpec> options = ivg_option_specs();
+    options.push_back(kGatherRaysOption);
+    return {"ivg-gather",
+            "final gathering: gather rays read the irradiance vector grid at their hits", options,
+            grid_aovs(), [](const ParsedArguments& arguments, const MethodSettings& settings) {
+                const int gather_rays = static_cast<int>(
+                    arguments.integer("--gather-rays", kDefaultGatherRays, 1, 1 << 16));
+                return std::make_unique<GridRendering>(arguments, settings, gather_rays);
+            }};
+}
+
+}  // namespace rc

@@ -1,0 +1,92 @@
+// The method interface (DESIGN.md §2, "Methods share one interface"). A method is named,
+// declares its command-line options and its AOV layers, is created once per render from the
+// options (which it validates), renders frame after frame — keeping whatever state it wants from
+// one frame to the next — and reports each frame's statistics. Methods are listed in one place,
+// methods/registry.cpp; the render command loops over frames and knows no method by name.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "bvh/device_bvh.h"
+#include "device/context.h"
+#include "image/image.h"
+#include "scene/device_scene.h"
+#include "scene/scene.h"
+#include "util/cli.h"
+
+namespace rc {
+
+// The settings every method reads: the scene's render defaults, overridden by -D and the
+// command line's shared options.
+struct MethodSettings {
+    int width = 0;  // 0: the scene camera's
+    int height = 0;
+    int spp = 16;
+    double time = 0.0;  // the scene's or -D's time budget (seconds); methods may ignore it
+    uint64_t seed = 0;
+    int max_depth = 64;
+    int rr_depth = 3;
+    int frame_count = 1;              // frames this render will ask for
+    std::vector<std::string> layers;  // the AOV layers that will be written (empty: all)
+
+    // Whether `layer` will be written.
+    bool writes_layer(const std::string& layer) const;
+};
+
+// One frame as the method sees it: the device, the scene posed at the frame, its BVH and scene
+// buffers on the device (rebuilt for every frame).
+struct FrameScene {
+    Context& context;
+    const Scene& scene;
+    const DeviceBvh& bvh;
+    const DeviceScene& device_scene;
+    int frame = 0;
+};
+
+// What the frame loop offers a method while it renders.
+struct FrameHooks {
+    // Progress of the frame in [0, 1], with a short note ("12 spp", "photons").
+    std::function<void(double fraction, const std::string& note)> progress;
+    // Writes an intermediate image of the frame after `spp` samples per pixel (name.sppN.ext).
+    std::function<void(int spp, const Image& image)> intermediate;
+};
+
+// A rendered frame: its image (every layer of the method), the counts the frame loop adds up,
+// and the method's own figures for the stats file (phases, records, photons, ...).
+struct FrameResult {
+    Image image;
+    int spp = 0;
+    uint64_t rays = 0;
+    uint64_t nonfinite_samples = 0;  // dropped; each names a bug
+    int64_t first_nonfinite_pixel = -1;
+    nlohmann::json stats = nlohmann::json::object();
+};
+
+class Method {
+   public:
+    virtual ~Method() = default;
+    // Renders one frame. Called for the frames in order; a method may keep state between calls.
+    virtual FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) = 0;
+};
+
+// A method as the registry lists it.
+struct MethodEntry {
+    std::string name;     // --method NAME
+    std::string summary;  // one line for --help
+    // Its own options (those shared by every method are the render command's). An option that
+    // several methods declare is one option; given to a method that does not declare it, it is
+    // refused by name.
+    std::vector<OptionSpec> options;
+    std::vector<std::string> aovs;  // its layers, in channel order ("beauty" first)
+    // Reads and validates the method's options (Error with exit status 2 naming the option).
+    std::function<std::unique_ptr<Method>(const ParsedArguments& arguments,
+                                          const MethodSettings& settings)>
+        create;
+};
+
+}  // namespace rc

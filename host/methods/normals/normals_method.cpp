@@ -1,0 +1,43 @@
+// `--method normals`: the geometry preview as a registered method.
+#include <memory>
+
+#include "methods/method.h"
+#include "methods/normals/normals.h"
+
+namespace rc {
+namespace {
+
+class NormalsPreview final : public Method {
+   public:
+    explicit NormalsPreview(const MethodSettings& settings) : settings_(settings) {}
+
+    FrameResult render_frame(const FrameScene& frame, const FrameHooks&) override {
+        NormalsMethod method(frame.context, frame.scene, frame.bvh);
+        NormalsOptions options;
+        options.width = settings_.width;
+        options.height = settings_.height;
+        options.samples_per_pixel = static_cast<unsigned>(settings_.spp);
+        options.seed = settings_.seed;
+        FrameResult result;
+        result.image = method.render(options);
+        result.spp = settings_.spp;
+        return result;
+    }
+
+   private:
+    MethodSettings settings_;
+};
+
+}  // namespace
+
+MethodEntry normals_method_entry() {
+    return {"normals",
+            "geometry preview: the first hit's shading normal",
+            {},
+            {"beauty"},
+            [](const ParsedArguments&, const MethodSettings& settings) {
+                return std::make_unique<NormalsPreview>(settings);
+            }};
+}
+
+}  // namespace rc

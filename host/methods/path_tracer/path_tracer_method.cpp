@@ -1,0 +1,68 @@
+// `--method pt`: the reference path tracer (DESIGN.md §6.1) as a registered method.
+#include <memory>
+
+#include "methods/method.h"
+#include "methods/path_tracer/path_tracer.h"
+
+namespace rc {
+namespace {
+
+const std::vector<OptionSpec> kPathTracerOptions = {
+    {"--time", "", "SECONDS",
+     "pt: render passes until this much time has passed, not to --spp (also -D time=SECONDS)"},
+    {"--save-every-pow2", "", "",
+     "pt: also write the image after 1, 2, 4, 8, ... samples per pixel (name.sppN.ext)"},
+};
+
+class PathTracerMethod final : public Method {
+   public:
+    PathTracerMethod(const ParsedArguments& arguments, const MethodSettings& settings)
+        : settings_(settings), save_every_pow2_(arguments.has("--save-every-pow2")) {
+        settings_.time = arguments.number("--time", settings.time, 0.0, 1e7);
+    }
+
+    FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
+        PathTracer tracer(frame.context, frame.scene, frame.bvh, frame.device_scene);
+        PathTracerOptions options;
+        options.width = settings_.width;
+        options.height = settings_.height;
+        options.spp = settings_.spp;
+        options.time_limit = settings_.time;
+        options.seed = settings_.seed;
+        options.max_depth = settings_.max_depth;
+        options.rr_depth = settings_.rr_depth;
+        if (save_every_pow2_) {
+            options.on_power_of_two = hooks.intermediate;
+        }
+        options.on_progress = [&](double fraction, int spp) {
+            hooks.progress(fraction, std::to_string(spp) + " spp");
+        };
+        PathTracerStats stats;
+        FrameResult result;
+        result.image = tracer.render(options, &stats);
+        result.spp = stats.spp;
+        result.rays = stats.rays;
+        result.nonfinite_samples = stats.nonfinite_samples;
+        result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
+        result.stats = {{"spp", stats.spp}, {"rays", stats.rays}, {"seconds", stats.seconds}};
+        return result;
+    }
+
+   private:
+    MethodSettings settings_;
+    bool save_every_pow2_;
+};
+
+}  // namespace
+
+MethodEntry path_tracer_method_entry() {
+    return {"pt",
+            "the reference path tracer: next-event estimation, MIS, Russian roulette",
+            kPathTracerOptions,
+            {std::begin(kPathTracerAovs), std::end(kPathTracerAovs)},
+            [](const ParsedArguments& arguments, const MethodSettings& settings) {
+                return std::make_unique<PathTracerMethod>(arguments, settings);
+            }};
+}
+
+}  // namespace rc

@@ -1,0 +1,98 @@
+#include "methods/registry.h"
+
+#include <algorithm>
+#include <set>
+
+#include "util/error.h"
+
+// One line per method: X(entry function), defined in the method's folder as
+// `MethodEntry <entry>_entry();`. The order is --help's.
+#define RC_METHODS(X)          \
+    X(path_tracer_method)      \
+    X(irradiance_cache_method) \
+    X(ivg_method)              \
+    X(ivg_gather_method)       \
+    X(normals_method)
+
+namespace rc {
+
+#define RC_DECLARE_METHOD(entry) MethodEntry entry##_entry();
+RC_METHODS(RC_DECLARE_METHOD)
+#undef RC_DECLARE_METHOD
+
+const std::vector<MethodEntry>& method_registry() {
+#define RC_LIST_METHOD(entry) entry##_entry(),
+    static const std::vector<MethodEntry> methods = {RC_METHODS(RC_LIST_METHOD)};
+#undef RC_LIST_METHOD
+    return methods;
+}
+
+std::string method_names() {
+    std::string names;
+    for (const MethodEntry& method : method_registry()) {
+        names += (names.empty() ? "" : ", ") + method.name;
+    }
+    return names;
+}
+
+const MethodEntry& find_method(const std::string& name) {
+    for (const MethodEntry& method : method_registry()) {
+        if (method.name == name) {
+            return method;
+        }
+    }
+    throw Error("--method: unknown method '" + name + "' (implemented: " + method_names() + ")",
+                kExitUsage);
+}
+
+std::vector<OptionSpec> method_option_specs() {
+    std::vector<OptionSpec> specs;
+    std::set<std::string> seen;
+    for (const MethodEntry& method : method_registry()) {
+        for (const OptionSpec& spec : method.options) {
+            if (seen.insert(spec.name).second) {
+                specs.push_back(spec);
+            }
+        }
+    }
+    return specs;
+}
+
+namespace {
+
+bool declares(const MethodEntry& method, const std::string& option) {
+    return std::any_of(method.options.begin(), method.options.end(),
+                       [&](const OptionSpec& spec) { return spec.name == option; });
+}
+
+}  // namespace
+
+void refuse_foreign_options(const MethodEntry& method, const ParsedArguments& arguments) {
+    for (const OptionSpec& spec : method_option_specs()) {
+        if (!arguments.has(spec.name) || declares(method, spec.name)) {
+            continue;
+        }
+        std::vector<std::string> owners;
+        for (const MethodEntry& other : method_registry()) {
+            if (declares(other, spec.name)) {
+                owners.push_back(other.name);
+            }
+        }
+        std::string list = owners[0];
+        for (size_t i = 1; i < owners.size(); ++i) {
+            list += (i + 1 == owners.size() ? " or " : ", ") + owners[i];
+        }
+        throw Error(spec.name + " applies to --method " + list + " only", kExitUsage);
+    }
+}
+
+void check_layers(const MethodEntry& method, const std::vector<std::string>& layers) {
+    for (const std::string& layer : layers) {
+        if (std::find(method.aovs.begin(), method.aovs.end(), layer) == method.aovs.end()) {
+            throw Error("--aovs: method " + method.name + " has no layer '" + layer + "'",
+                        kExitUsage);
+        }
+    }
+}
+
+}  // namespace rc
