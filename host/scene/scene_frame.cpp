@@ -1,0 +1,252 @@
+// Scene::set_frame: the world data of one frame — the animated camera, every shape's triangles,
+// shading and area lights in world space, the point, spot and environment emitters, and the
+// light-selection distribution by power.
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
+#include <limits>
+
+#include "scene/scene.h"
+#include "scene/transform.h"
+#include "util/error.h"
+
+namespace rc {
+namespace {
+
+float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+shared::float4 float4_of(glm::vec3 v, float w = 0.0f) { return {v.x, v.y, v.z, w}; }
+
+constexpr float kPi = 3.14159265f;
+
+// The material slot of a shape's triangle t (slot 0 for a bad or missing index).
+size_t material_slot(const Shape& shape, size_t t) {
+    const int slot = shape.mesh.materials.empty() ? 0 : shape.mesh.materials[t];
+    return slot >= 0 && static_cast<size_t>(slot) < shape.materials.size()
+               ? static_cast<size_t>(slot)
+               : size_t{0};
+}
+
+// The area lights of one shape: one per emitting material slot that has triangles, with the
+// primitives and areas of their triangles.
+struct ShapeLights {
+    std::vector<int> light_of_slot;  // -1: the slot does not emit
+    std::vector<std::vector<unsigned>> triangles;
+    std::vector<std::vector<float>> areas;
+};
+
+// Adds a light (power to be set) for every emitting slot of `shape` with triangles.
+ShapeLights open_area_lights(const Shape& shape, LightSet& lights, std::vector<float>& power) {
+    std::vector<size_t> slot_triangles(shape.materials.size(), 0);
+    for (size_t t = 0; t < shape.mesh.triangles.size(); ++t) {
+        ++slot_triangles[material_slot(shape, t)];
+    }
+    ShapeLights result;
+    result.light_of_slot.assign(shape.materials.size(), -1);
+    result.triangles.resize(shape.materials.size());
+    result.areas.resize(shape.materials.size());
+    for (size_t slot = 0; slot < shape.emission.size() && slot < shape.materials.size(); ++slot) {
+        const glm::vec3 radiance = shape.emission[slot];
+        if (radiance == glm::vec3(0.0f) || slot_triangles[slot] == 0) {
+            continue;
+        }
+        shared::Light light{};
+        light.radiance = float4_of(radiance);
+        light.info = {RC_LIGHT_AREA, 0, 0, 0};
+        result.light_of_slot[slot] = static_cast<int>(lights.lights.size());
+        lights.lights.push_back(light);
+        power.push_back(0.0f);
+    }
+    return result;
+}
+
+// Appends shape s's world triangles, vertices, normals, uvs and shading; records the triangles of
+// its area lights.
+void add_shape_triangles(Scene& scene, size_t s, ShapeLights& shape_lights) {
+    Shape& shape = scene.shapes[s];
+    TriangleMesh& mesh = scene.mesh;
+    const glm::mat4 to_world =
+        scene.animation.motion(TrackTarget::kShape, shape.name, scene.frame) * shape.transform;
+    // A mirroring transform reverses the winding; undo that so the winding normal stays on
+    // the side the object-space winding named (and flip_normals flips it on purpose).
+    const bool mirrored = glm::determinant(glm::mat3(to_world)) < 0.0f;
+    const bool flip = mirrored != shape.flip_normals;
+    const auto base = static_cast<unsigned>(mesh.positions.size());
+    const int normal_base =
+        shape.mesh.normals.empty() ? -1 : static_cast<int>(scene.normals.size());
+    const int uv_base = shape.mesh.uvs.empty() ? -1 : static_cast<int>(scene.uvs.size());
+    for (const glm::vec3& p : shape.mesh.positions) {
+        mesh.positions.push_back(transform_point(to_world, p));
+    }
+    for (const glm::vec3& n : shape.mesh.normals) {
+        const glm::vec3 world = transform_normal(to_world, n);
+        scene.normals.push_back(shape.flip_normals ? -world : world);
+    }
+    scene.uvs.insert(scene.uvs.end(), shape.mesh.uvs.begin(), shape.mesh.uvs.end());
+
+    shape.first_triangle = mesh.triangles.size();
+    shape.triangle_count = shape.mesh.triangles.size();
+    for (size_t t = 0; t < shape.mesh.triangles.size(); ++t) {
+        glm::uvec3 local = shape.mesh.triangles[t];
+        if (flip) {
+            std::swap(local.y, local.z);
+        }
+        const auto primitive = static_cast<unsigned>(mesh.triangles.size());
+        mesh.triangles.push_back(local + glm::uvec3(base));
+        const size_t slot = material_slot(shape, t);
+        const int light = shape_lights.light_of_slot[slot];
+        shared::TriangleShading sh{};
+        sh.normals = {-1, -1, -1, shape.materials[slot]};
+        sh.uvs = {-1, -1, -1, light};
+        if (normal_base >= 0) {
+            sh.normals.x = normal_base + static_cast<int>(local.x);
+            sh.normals.y = normal_base + static_cast<int>(local.y);
+            sh.normals.z = normal_base + static_cast<int>(local.z);
+        }
+        if (uv_base >= 0) {
+            sh.uvs.x = uv_base + static_cast<int>(local.x);
+            sh.uvs.y = uv_base + static_cast<int>(local.y);
+            sh.uvs.z = uv_base + static_cast<int>(local.z);
+        }
+        scene.shading.push_back(sh);
+        scene.triangle_shape.push_back(static_cast<unsigned>(s));
+        if (light >= 0) {
+            const glm::uvec3& w = mesh.triangles.back();
+            const float area =
+                0.5f * glm::length(glm::cross(mesh.positions[w.y] - mesh.positions[w.x],
+                                              mesh.positions[w.z] - mesh.positions[w.x]));
+            shape_lights.triangles[slot].push_back(primitive);
+            shape_lights.areas[slot].push_back(area);
+        }
+    }
+}
+
+// Completes the shape's area lights: total area, triangle distribution by area, power.
+void close_area_lights(const Shape& shape, const ShapeLights& shape_lights, LightSet& lights,
+                       std::vector<float>& power) {
+    for (size_t slot = 0; slot < shape.materials.size(); ++slot) {
+        const int l = shape_lights.light_of_slot[slot];
+        if (l < 0) {
+            continue;
+        }
+        const std::vector<float>& areas = shape_lights.areas[slot];
+        const std::vector<unsigned>& triangles = shape_lights.triangles[slot];
+        double total = 0.0;
+        for (float a : areas) {
+            total += a;
+        }
+        if (!(total > 0.0)) {
+            throw Error("shape '" + shape.name + "': emitter has zero area");
+        }
+        shared::Light& light = lights.lights[l];
+        light.info.y = static_cast<int>(lights.triangles.size());
+        light.info.z = static_cast<int>(triangles.size());
+        light.shape = {static_cast<float>(total), 0.0f, 0.0f, 0.0f};
+        double running = 0.0;
+        for (size_t i = 0; i < triangles.size(); ++i) {
+            running += areas[i];
+            lights.triangles.push_back(triangles[i]);
+            lights.triangle_cdf.push_back(
+                i + 1 == triangles.size() ? 1.0f : static_cast<float>(running / total));
+        }
+        power[l] = kPi * static_cast<float>(total) *
+                   luminance(glm::vec3(light.radiance.x, light.radiance.y, light.radiance.z));
+    }
+}
+
+// Half the diagonal of the frame's bounding box (1 for an empty scene).
+float scene_radius(const TriangleMesh& mesh) {
+    glm::vec3 lower(std::numeric_limits<float>::max());
+    glm::vec3 upper(-std::numeric_limits<float>::max());
+    for (const glm::vec3& p : mesh.positions) {
+        lower = glm::min(lower, p);
+        upper = glm::max(upper, p);
+    }
+    return mesh.positions.empty() ? 1.0f : std::max(0.5f * glm::length(upper - lower), 1e-6f);
+}
+
+// The device light of a point, spot or environment emitter at the frame, and its power.
+shared::Light emitter_light(const Emitter& emitter, const glm::mat4& motion, float radius,
+                            float* power) {
+    shared::Light light{};
+    if (emitter.kind == EmitterKind::kConstant) {
+        light.info = {RC_LIGHT_CONSTANT, 0, 0, 0};
+        light.radiance = float4_of(emitter.radiance);
+        *power = kPi * kPi * radius * radius * luminance(emitter.radiance);
+        return light;
+    }
+    const glm::vec3 position = transform_point(motion, emitter.position);
+    light.position = float4_of(position, 1.0f);
+    if (emitter.kind == EmitterKind::kPoint) {
+        light.info = {RC_LIGHT_POINT, 0, 0, 0};
+        light.radiance = float4_of(emitter.intensity);
+        *power = 4.0f * kPi * luminance(emitter.intensity);
+        return light;
+    }
+    const glm::vec3 axis = glm::normalize(transform_point(motion, emitter.look_at) - position);
+    const float cutoff = glm::radians(emitter.cutoff_angle);
+    const float beam = glm::radians(emitter.beam_width);
+    light.info = {RC_LIGHT_SPOT, 0, 0, 0};
+    light.axis = float4_of(axis, std::cos(cutoff));
+    light.radiance = float4_of(emitter.intensity, std::cos(beam));
+    light.shape = {0.0f, cutoff, beam, 0.0f};
+    *power = 2.0f * kPi * (1.0f - std::cos(0.5f * (cutoff + beam))) * luminance(emitter.intensity);
+    return light;
+}
+
+// Selection by power (uniform when every light is black).
+std::vector<float> selection_cdf(const std::vector<float>& power) {
+    double total_power = 0.0;
+    for (float p : power) {
+        total_power += p;
+    }
+    std::vector<float> cdf;
+    double running = 0.0;
+    for (size_t l = 0; l < power.size(); ++l) {
+        running += total_power > 0.0 ? power[l] : 1.0;
+        const double total = total_power > 0.0 ? total_power : static_cast<double>(power.size());
+        cdf.push_back(l + 1 == power.size() ? 1.0f : static_cast<float>(running / total));
+    }
+    return cdf;
+}
+
+}  // namespace
+
+void Scene::set_frame(double new_frame) {
+    frame = new_frame;
+    mesh = TriangleMesh{};
+    normals.clear();
+    uvs.clear();
+    shading.clear();
+    triangle_shape.clear();
+    lights = LightSet{};
+
+    const glm::mat4 camera_motion = animation.motion(TrackTarget::kCamera, "", frame);
+    camera = base_camera;
+    camera.position = transform_point(camera_motion, base_camera.position);
+    camera.look_at = transform_point(camera_motion, base_camera.look_at);
+    camera.up = transform_direction(camera_motion, base_camera.up);
+
+    std::vector<float> power;
+    for (size_t s = 0; s < shapes.size(); ++s) {
+        ShapeLights shape_lights = open_area_lights(shapes[s], lights, power);
+        add_shape_triangles(*this, s, shape_lights);
+        close_area_lights(shapes[s], shape_lights, lights, power);
+    }
+    const float radius = scene_radius(mesh);
+    for (const Emitter& emitter : emitters) {
+        const glm::mat4 motion = animation.motion(TrackTarget::kEmitter, emitter.name, frame);
+        float light_power = 0.0f;
+        if (emitter.kind == EmitterKind::kConstant) {
+            lights.environment = static_cast<int>(lights.lights.size());
+        }
+        lights.lights.push_back(emitter_light(emitter, motion, radius, &light_power));
+        power.push_back(light_power);
+    }
+    lights.cdf = selection_cdf(power);
+}
+
+}  // namespace rc
