@@ -47,8 +47,8 @@ __kernel void ic_gbuffer(uint begin, uint end, IcParams params, CameraParams cam
 // Item i: cell i % (M N) of batch record i / (M N): the first hit of its ray, where the next cache
 // level must cover it (footprint: rc_ic_deeper_pixel_width at the hit distance).
 __kernel void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
-                             __global const IrradianceRecord* records,
-                             __global const float4* origins, __global GBufferSample* hits) {
+                             __global const Record* records, __global const float4* origins,
+                             __global GBufferSample* hits) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {
         return;
@@ -66,7 +66,7 @@ __kernel void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PAR
 }
 
 // The ray of item i of a record batch: cell i % (M N) of batch record i / (M N).
-RC_FUNC Ray rc_ic_batch_cell_ray(const IcParams* params, __global const IrradianceRecord* records,
+RC_FUNC Ray rc_ic_batch_cell_ray(const IcParams* params, __global const Record* records,
                                  __global const float4* origins, uint i, RngStream* rng) {
     const uint per_record = (uint)(params->sampling.x * params->sampling.y);
     const uint b = i / per_record;
@@ -85,9 +85,8 @@ RC_FUNC void rc_ic_store_cell(__global float4* cells, __global uint* counters, u
 // distance to what it hits, as (L.rgb, distance) in cells[i]. The light beyond the hit is path
 // traced. counters[0] counts the rays traced.
 __kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
-                              __global const IrradianceRecord* records,
-                              __global const float4* origins, __global float4* cells,
-                              __global uint* counters) {
+                              __global const Record* records, __global const float4* origins,
+                              __global float4* cells, __global uint* counters) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {
         return;
@@ -104,18 +103,18 @@ __kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PA
 
 // As ic_record_cells, with the diffuse indirect light at each hit from the next cache level.
 __kernel void ic_record_cells_cached(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
-                                     __global const IrradianceRecord* records,
-                                     __global const float4* origins, RecordGrid grid,
-                                     __global const int* cell_start,
+                                     __global const Record* records, __global const float4* origins,
+                                     RecordGrid grid, __global const int* cell_start,
                                      __global const int* cell_records,
-                                     __global const IrradianceRecord* next_level,
+                                     __global const Record* next_level,
+                                     __global const IrradiancePayload* next_payloads,
                                      __global float4* cells, __global uint* counters) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {
         return;
     }
     const SceneData scene = RC_SCENE_DATA();
-    const RecordCache cache = {grid, cell_start, cell_records, next_level};
+    const RecordCache cache = {grid, cell_start, cell_records, next_level, next_payloads};
     RngStream rng;
     const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
     const CachedRadiance c = rc_ic_cached_radiance(&scene, &params, &cache, ray, &rng,
@@ -127,9 +126,8 @@ __kernel void ic_record_cells_cached(uint begin, uint end, IcParams params, RC_S
 // instead of path-traced continuation (--ic-ivg): direct light there by next-event estimation
 // (unless the grid holds it), rho_d / pi E from the grid, other lobes by path tracing.
 __kernel void ic_record_cells_grid(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
-                                   __global const IrradianceRecord* records,
-                                   __global const float4* origins, IvgParams grid_params,
-                                   __global const float* grid_values,
+                                   __global const Record* records, __global const float4* origins,
+                                   IvgParams grid_params, __global const float* grid_values,
                                    __global const half* grid_packed, __global float4* cells,
                                    __global uint* counters) {
     const uint i = begin + (uint)get_global_id(0);
@@ -146,10 +144,11 @@ __kernel void ic_record_cells_grid(uint begin, uint end, IcParams params, RC_SCE
     rc_ic_store_cell(cells, counters, i, c.direct + c.indirect, c.distance, c.rays);
 }
 
-// Item b: irradiance, gradients (into records[b]) and (harmonic mean, minimum) hit distance
+// Item b: irradiance and gradients (into payloads[b]) and (harmonic mean, minimum) hit distance
 // (into distances[b]) of batch record b.
 __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global const float4* cells,
-                               __global IrradianceRecord* records, __global float4* distances) {
+                               __global const Record* records, __global IrradiancePayload* payloads,
+                               __global float4* distances) {
     const uint b = begin + (uint)get_global_id(0);
     if (b >= end) {
         return;
@@ -157,7 +156,7 @@ __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global c
     const uint per_record = (uint)(params.sampling.x * params.sampling.y);
     const RecordEstimate e = rc_ic_reduce(&params, (uint)params.sampling.z + b,
                                           records[b].normal.xyz, cells + (size_t)b * per_record);
-    __global IrradianceRecord* r = records + b;
+    __global IrradiancePayload* r = payloads + b;
     r->irradiance = (float4)(e.irradiance, 0.0f);
     r->rotation_r = (float4)(e.rotation[0], 0.0f);
     r->rotation_g = (float4)(e.rotation[1], 0.0f);
@@ -176,7 +175,8 @@ __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global c
 // host sorts them).
 __kernel void ic_uncovered(uint begin, uint end, IcParams params, RecordGrid grid,
                            __global const int* cell_start, __global const int* cell_records,
-                           __global const IrradianceRecord* records,
+                           __global const Record* records,
+                           __global const IrradiancePayload* payloads,
                            __global const GBufferSample* gbuffer, __global uint* uncovered,
                            __global uint* count) {
     const uint q = begin + (uint)get_global_id(0);
@@ -192,8 +192,9 @@ __kernel void ic_uncovered(uint begin, uint end, IcParams params, RecordGrid gri
     const uint i =
         stride == 0 ? q : (y * (uint)params.image.x + x) * (uint)params.image.z + q % per_pixel;
     const GBufferSample g = gbuffer[i];
-    if (g.info.w == 0 || rc_ic_covered(&grid, cell_start, cell_records, records, g.position.xyz,
-                                       g.normal.xyz, params.weights.x, params.weights.y)) {
+    if (g.info.w == 0 ||
+        rc_ic_covered(&grid, cell_start, cell_records, records, payloads, g.position.xyz,
+                      g.normal.xyz, params.weights.x, params.weights.y)) {
         return;
     }
     uncovered[atomic_inc(&count[0])] = i;
@@ -212,7 +213,7 @@ __kernel void ic_gbuffer_select(uint begin, uint end, __global const GBufferSamp
 // Item q: (sum w E', sum w) of the records covering G-buffer entry queries[q].
 __kernel void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
                         __global const int* cell_start, __global const int* cell_records,
-                        __global const IrradianceRecord* records,
+                        __global const Record* records, __global const IrradiancePayload* payloads,
                         __global const GBufferSample* gbuffer, __global const int* queries,
                         __global float4* out) {
     const uint q = begin + (uint)get_global_id(0);
@@ -220,8 +221,8 @@ __kernel void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
         return;
     }
     const GBufferSample g = gbuffer[queries[q]];
-    out[q] = rc_ic_gather(&grid, cell_start, cell_records, records, g.position.xyz, g.normal.xyz,
-                          params.weights.x, params.weights.y);
+    out[q] = rc_ic_gather(&grid, cell_start, cell_records, records, payloads, g.position.xyz,
+                          g.normal.xyz, params.weights.x, params.weights.y);
 }
 
 // The render pass (splat accumulation). Every camera sample gets the sums sum w E' and sum w of
@@ -234,14 +235,15 @@ __kernel void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
 // counters: [0] rays traced, [1] non-finite samples (dropped), [2] first pixel with one.
 __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camera,
                        RC_SCENE_PARAMETERS, RecordGrid grid, __global const int* cell_start,
-                       __global const int* cell_records, __global const IrradianceRecord* records,
-                       __global float4* film, __global uint* counters) {
+                       __global const int* cell_records, __global const Record* records,
+                       __global const IrradiancePayload* payloads, __global float4* film,
+                       __global uint* counters) {
     const uint pixel = begin + (uint)get_global_id(0);
     if (pixel >= end) {
         return;
     }
     const SceneData scene = RC_SCENE_DATA();
-    const RecordCache cache = {grid, cell_start, cell_records, records};
+    const RecordCache cache = {grid, cell_start, cell_records, records, payloads};
     float3 sums[7] = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f), (float3)(0.0f),
                       (float3)(0.0f), (float3)(0.0f), (float3)(0.0f)};
     uint rays = 0;

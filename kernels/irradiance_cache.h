@@ -56,7 +56,8 @@ typedef struct RecordCache {
     RecordGrid grid;
     RC_GLOBAL const int* cell_start;
     RC_GLOBAL const int* cell_records;
-    RC_GLOBAL const IrradianceRecord* records;
+    RC_GLOBAL const Record* records;
+    RC_GLOBAL const IrradiancePayload* payloads;  // entry i: records[i]'s
 } RecordCache;
 
 // Light arriving along `ray`: at its hit, emission (if count_emission) and direct light as the
@@ -78,9 +79,9 @@ RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcPar
     }
     SurfaceMaterial traced = rc_without_diffuse(&material);  // the lobes left to path tracing
     if (rc_luminance(material.diffuse) > 0.0f) {
-        const float4 gathered =
-            rc_ic_gather(&cache->grid, cache->cell_start, cache->cell_records, cache->records,
-                         sp.position, sp.shading.n, params->weights.x, params->weights.y);
+        const float4 gathered = rc_ic_gather(&cache->grid, cache->cell_start, cache->cell_records,
+                                             cache->records, cache->payloads, sp.position,
+                                             sp.shading.n, params->weights.x, params->weights.y);
         c.coverage = gathered.w;
         c.served = true;
         if (gathered.w > 0.0f) {
@@ -102,9 +103,9 @@ RC_FUNC float3 rc_ic_record_marks(const RecordCache* cache, float accuracy, floa
         return marks;
     }
     for (int i = cache->cell_start[cell]; i < cache->cell_start[cell + 1]; ++i) {
-        RC_GLOBAL const IrradianceRecord* record = cache->records + cache->cell_records[i];
+        RC_GLOBAL const Record* record = cache->records + cache->cell_records[i];
         const float d = length(p - record->position.xyz);
-        const float influence = accuracy * record->position.w;
+        const float influence = accuracy * record->radius;
         if (d < fmax(0.08f * influence, 1.5f * footprint)) {
             marks.x = 1.0f;
         } else if (fabs(d - influence) < footprint) {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <glm/geometric.hpp>
 
@@ -41,6 +42,8 @@ Scene scene_from_json(const std::string& name, const std::string& json) {
     return load_scene(dir / "scene.json");
 }
 
+glm::vec3 vec3_of(const shared::float4& v) { return {v.x, v.y, v.z}; }
+
 RecordSite site_at(glm::dvec3 position, glm::dvec3 normal) {
     RecordSite site;
     site.position = glm::vec3(position);
@@ -69,19 +72,22 @@ TEST(IcRecord, ConstantSkyGivesPiLAndNoGradients) {
     const std::vector<RecordSite> sites = {site_at({0, 0, 0}, {0, 1, 0}),
                                            site_at({3, 0, -2}, {0, 1, 0}),
                                            site_at({0, 1, 0}, {0.3, 1, 0.2})};
-    const std::vector<CacheRecord> records = f.cache.compute_records(sites, 0, sampling);
+    const std::vector<ComputedRecord> records = f.cache.compute_records(sites, 0, sampling);
     ASSERT_EQ(records.size(), sites.size());
     const double pi = 3.14159265358979;
     const double radiance[3] = {1.0, 0.5, 0.25};
     for (size_t i = 0; i < records.size(); ++i) {
-        const CacheRecord& r = records[i];
+        const shared::IrradiancePayload& r = records[i].payload;
+        const glm::vec3 irradiance = vec3_of(r.irradiance);
+        const shared::float4 translation[3] = {r.translation_r, r.translation_g, r.translation_b};
+        const shared::float4 rotation[3] = {r.rotation_r, r.rotation_g, r.rotation_b};
         for (int c = 0; c < 3; ++c) {
-            EXPECT_NEAR(r.irradiance[c], pi * radiance[c], 1e-5 * pi * radiance[c]) << i;
-            EXPECT_LT(glm::length(r.translation[c]), 1e-6f) << i;
-            EXPECT_LT(glm::length(r.rotation[c]), 1e-5f * r.irradiance[c]) << i;
+            EXPECT_NEAR(irradiance[c], pi * radiance[c], 1e-5 * pi * radiance[c]) << i;
+            EXPECT_LT(glm::length(vec3_of(translation[c])), 1e-6f) << i;
+            EXPECT_LT(glm::length(vec3_of(rotation[c])), 1e-5f * irradiance[c]) << i;
         }
-        EXPECT_TRUE(std::isinf(r.harmonic_distance)) << i;
-        EXPECT_TRUE(std::isinf(r.min_distance)) << i;
+        EXPECT_TRUE(std::isinf(records[i].host.harmonic_distance)) << i;
+        EXPECT_TRUE(std::isinf(records[i].host.min_distance)) << i;
     }
 }
 
@@ -150,10 +156,11 @@ TEST(IcRecord, GradientsMatchFiniteDifferencesUnderATiltedEmitter) {
     sampling.seed = 11;
     const glm::dvec3 p(0.1, -0.2, 0.0);
     const glm::dvec3 n(0.0, 0.0, 1.0);
-    const CacheRecord r = f.cache.compute_records({site_at(p, n)}, 0, sampling)[0];
+    const shared::IrradiancePayload r =
+        f.cache.compute_records({site_at(p, n)}, 0, sampling)[0].payload;
     const double e = emitter.irradiance(p, n);
     ASSERT_GT(e, 0.5);
-    EXPECT_NEAR(r.irradiance.r, e, 0.005 * e);
+    EXPECT_NEAR(r.irradiance.x, e, 0.005 * e);
 
     const double h = 1e-4;
     glm::dvec3 translational;
@@ -171,7 +178,7 @@ TEST(IcRecord, GradientsMatchFiniteDifferencesUnderATiltedEmitter) {
     }
     // The record's gradient is the tangent-plane part of E's gradient.
     translational -= glm::dot(translational, n) * n;
-    const glm::dvec3 measured_translation(r.translation[0]);
+    const glm::dvec3 measured_translation(vec3_of(r.translation_r));
     EXPECT_LT(glm::length(measured_translation - translational), 0.03 * glm::length(translational))
         << "record (" << measured_translation.x << ", " << measured_translation.y << ", "
         << measured_translation.z << ") finite differences (" << translational.x << ", "
@@ -179,7 +186,7 @@ TEST(IcRecord, GradientsMatchFiniteDifferencesUnderATiltedEmitter) {
     // The rotational gradient predicts dE = (n x n') . grad_r for n' = n + omega x n, that is
     // (n x (omega x n)) . grad_r = omega . (grad_r - (grad_r . n) n) for unit n: the derivative
     // about axis k is the tangential part of grad_r along k.
-    const glm::dvec3 grad_r(r.rotation[0]);
+    const glm::dvec3 grad_r(vec3_of(r.rotation_r));
     const glm::dvec3 predicted = grad_r - glm::dot(grad_r, n) * n;
     EXPECT_LT(glm::length(predicted - rotational), 0.03 * glm::length(rotational))
         << "record (" << predicted.x << ", " << predicted.y << ", " << predicted.z
@@ -196,15 +203,14 @@ TEST(IcRecord, RecordsAreDeterministic) {
     sampling.include_emission = true;
     const std::vector<RecordSite> sites = {site_at({0, 0, 0}, {0, 0, 1}),
                                            site_at({0.5, 0, 0}, {0.1, 0, 1})};
-    const std::vector<CacheRecord> a = f.cache.compute_records(sites, 7, sampling);
-    const std::vector<CacheRecord> b = f.cache.compute_records(sites, 7, sampling);
+    const std::vector<ComputedRecord> a = f.cache.compute_records(sites, 7, sampling);
+    const std::vector<ComputedRecord> b = f.cache.compute_records(sites, 7, sampling);
     for (size_t i = 0; i < sites.size(); ++i) {
-        EXPECT_EQ(a[i].irradiance, b[i].irradiance);
-        EXPECT_EQ(a[i].translation[0], b[i].translation[0]);
-        EXPECT_EQ(a[i].rotation[0], b[i].rotation[0]);
+        EXPECT_EQ(0, std::memcmp(&a[i].payload, &b[i].payload, sizeof a[i].payload)) << i;
     }
     sampling.seed = 1;
-    EXPECT_NE(f.cache.compute_records(sites, 7, sampling)[0].irradiance, a[0].irradiance);
+    EXPECT_NE(vec3_of(f.cache.compute_records(sites, 7, sampling)[0].payload.irradiance),
+              vec3_of(a[0].payload.irradiance));
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
-// The irradiance cache's record store (host/methods/irradiance_records.cpp) and the device's
-// weighted interpolation (rc_ic_gather) against brute force on the host.
+// Irradiance caching's records in the shared store (host/methods/irradiance_cache/
+// irradiance_records.cpp: the gradient limit on R, the gradients scaled when the clamp raised R)
+// and the device's weighted interpolation (rc_ic_gather) against brute force on the host.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <glm/geometric.hpp>
 #include <random>
 
@@ -22,151 +24,87 @@ glm::vec3 random_unit(std::mt19937& rng) {
     return glm::normalize(glm::vec3(normal(rng), normal(rng), normal(rng)));
 }
 
-// A record with random irradiance and gradients at a random place in a 10-unit box; its
-// harmonic mean distance spans four decades, so neighbor clamping has work to do.
-CacheRecord random_record(std::mt19937& rng) {
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    CacheRecord r;
-    r.position = 10.0f * glm::vec3(unit(rng), unit(rng), unit(rng));
-    r.normal = random_unit(rng);
-    r.irradiance = glm::vec3(0.5f + unit(rng), 0.5f + unit(rng), 0.5f + unit(rng));
-    for (int c = 0; c < 3; ++c) {
-        r.rotation[c] = 0.3f * (unit(rng) - 0.5f) * random_unit(rng);
-        glm::vec3 t = 0.5f * unit(rng) * random_unit(rng);
-        r.translation[c] = t - glm::dot(t, r.normal) * r.normal;
-    }
-    r.harmonic_distance = std::pow(10.0f, -2.0f + 4.0f * unit(rng));
-    r.min_distance = 0.5f * r.harmonic_distance;
-    r.r_min = 0.0f;
-    r.r_max = 1e30f;
-    return r;
-}
+shared::float4 float4_of(glm::vec3 v) { return {v.x, v.y, v.z, 0.0f}; }
+glm::dvec3 dvec3_of(const shared::float4& v) { return {v.x, v.y, v.z}; }
 
-// After every insertion every pair of overlapping records satisfies R_j <= R_k + |p_j - p_k| on
-// the unclamped radii (neighbor clamping), and no insertion raises a radius.
-TEST(IcRecords, NeighborClampingKeepsTheTriangleInequalityAfterEveryInsertion) {
-    std::mt19937 rng(17);
-    RecordStore store(0.3f);
-    std::vector<float> before;
-    size_t clamped = 0;
-    for (int i = 0; i < 300; ++i) {
-        CacheRecord record = random_record(rng);
-        if (i % 3 == 0) {
-            record.r_max = 0.5f;  // some records capped from above
-        }
-        const size_t j = store.insert(record);
-        const std::vector<CacheRecord>& records = store.records();
-        ASSERT_EQ(j, records.size() - 1);
-        EXPECT_LE(records[j].radius, record.harmonic_distance);
-        EXPECT_LE(records[j].radius, record.r_max);
-        clamped += records[j].radius < std::min(record.harmonic_distance, record.r_max) ? 1 : 0;
-        for (size_t k = 0; k < before.size(); ++k) {
-            ASSERT_LE(records[k].radius, before[k]) << "insertion " << i << " raised record " << k;
-        }
-        for (size_t a = 0; a < records.size(); ++a) {
-            for (size_t b = 0; b < records.size(); ++b) {
-                const float d = glm::length(records[a].position - records[b].position);
-                if (a != b && d < records[a].radius + records[b].radius) {
-                    ASSERT_LE(records[a].radius, records[b].radius + d * (1.0f + 1e-6f))
-                        << "after insertion " << i << ": records " << a << " and " << b;
-                }
-            }
-        }
-        before.clear();
-        for (const CacheRecord& r : records) {
-            before.push_back(r.radius);
-        }
+// A record with random irradiance and gradients at a random place in a 10-unit box; its
+// harmonic mean distance spans four decades.
+ComputedRecord random_record(std::mt19937& rng) {
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    ComputedRecord r;
+    const glm::vec3 n = random_unit(rng);
+    r.record = make_record(10.0f * glm::vec3(unit(rng), unit(rng), unit(rng)), n);
+    r.payload.irradiance =
+        float4_of(glm::vec3(0.5f + unit(rng), 0.5f + unit(rng), 0.5f + unit(rng)));
+    shared::float4* rotation[3] = {&r.payload.rotation_r, &r.payload.rotation_g,
+                                   &r.payload.rotation_b};
+    shared::float4* translation[3] = {&r.payload.translation_r, &r.payload.translation_g,
+                                      &r.payload.translation_b};
+    for (int c = 0; c < 3; ++c) {
+        *rotation[c] = float4_of(0.3f * (unit(rng) - 0.5f) * random_unit(rng));
+        glm::vec3 t = 0.5f * unit(rng) * random_unit(rng);
+        *translation[c] = float4_of(t - glm::dot(t, n) * n);
     }
-    EXPECT_GT(clamped, 30u);  // the test exercised clamping
+    r.host.harmonic_distance = std::pow(10.0f, -2.0f + 4.0f * unit(rng));
+    r.host.min_distance = 0.5f * r.host.harmonic_distance;
+    r.host.r_min = 0.0f;
+    r.host.r_max = 1e30f;
+    return r;
 }
 
 // R is limited by the translational gradient: |grad E| R <= E (luminance).
 TEST(IcRecords, GradientLimitsTheRadius) {
-    RecordStore store(0.5f);
-    CacheRecord r;
-    r.irradiance = glm::vec3(2.0f);
-    for (int c = 0; c < 3; ++c) {
-        r.translation[c] = glm::vec3(8.0f, 0.0f, 0.0f);
-    }
-    r.harmonic_distance = 10.0f;
-    r.r_max = 100.0f;
-    store.insert(r);
+    RecordStore store = irradiance_store(0.5f);
+    ComputedRecord r;
+    r.payload.irradiance = float4_of(glm::vec3(2.0f));
+    r.payload.translation_r = r.payload.translation_g = r.payload.translation_b =
+        float4_of(glm::vec3(8.0f, 0.0f, 0.0f));
+    r.host.harmonic_distance = 10.0f;
+    r.host.r_max = 100.0f;
+    EXPECT_FLOAT_EQ(irradiance_radius_limit(r.payload), 0.25f);
+    insert_irradiance_record(store, r);
+    EXPECT_FLOAT_EQ(store.host_data()[0].radius, 0.25f);
     EXPECT_FLOAT_EQ(store.records()[0].radius, 0.25f);
+    // No gradient: no limit.
+    r.payload.translation_r = r.payload.translation_g = r.payload.translation_b = {};
+    EXPECT_TRUE(std::isinf(irradiance_radius_limit(r.payload)));
 }
 
-// The device form clamps R to [R_min, R_max] and, when that raised R, scales the gradients by
-// R / R' so extrapolation to the larger border changes E no more than it would have at R.
-TEST(IcRecords, DeviceRecordClampsTheRadiusAndScalesTheGradients) {
-    RecordStore store(0.5f);
-    CacheRecord r;
-    r.irradiance = glm::vec3(1.0f);
-    r.rotation[1] = glm::vec3(0.0f, 0.4f, 0.0f);
-    r.translation[2] = glm::vec3(0.2f, 0.0f, 0.0f);
-    r.harmonic_distance = 1.0f;
-    r.r_min = 4.0f;
-    r.r_max = 8.0f;
-    store.insert(r);
-    r.position = glm::vec3(100.0f, 0.0f, 0.0f);
-    r.harmonic_distance = 50.0f;
-    store.insert(r);
-    const shared::IrradianceRecord raised = store.device_record(0);
-    EXPECT_FLOAT_EQ(raised.position.w, 4.0f);
+// The kernels' form clamps R to [R_min, R_max] and, when that raised R, scales the gradients by
+// R / R' so extrapolation to the larger border changes E no more than it would have at R; the
+// store keeps the payload as computed.
+TEST(IcRecords, DevicePayloadClampsTheRadiusAndScalesTheGradients) {
+    RecordStore store = irradiance_store(0.5f);
+    ComputedRecord r;
+    r.payload.irradiance = float4_of(glm::vec3(1.0f));
+    r.payload.rotation_g = float4_of(glm::vec3(0.0f, 0.4f, 0.0f));
+    r.payload.translation_b = float4_of(glm::vec3(0.2f, 0.0f, 0.0f));
+    r.host.harmonic_distance = 1.0f;
+    r.host.r_min = 4.0f;
+    r.host.r_max = 8.0f;
+    insert_irradiance_record(store, r);
+    r.record = make_record(glm::vec3(100.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f));
+    r.host.harmonic_distance = 50.0f;
+    insert_irradiance_record(store, r);
+    EXPECT_FLOAT_EQ(store.records()[0].radius, 4.0f);
+    const shared::IrradiancePayload raised = device_payload(store, 0);
     EXPECT_FLOAT_EQ(raised.rotation_g.y, 0.1f);
     EXPECT_FLOAT_EQ(raised.translation_b.x, 0.05f);
-    const shared::IrradianceRecord lowered = store.device_record(1);
-    EXPECT_FLOAT_EQ(lowered.position.w, 8.0f);
-    EXPECT_FLOAT_EQ(lowered.rotation_g.y, 0.4f);  // lowering R keeps the gradients
-}
-
-// Every record whose influence sphere contains a point is listed in the point's grid cell.
-TEST(IcRecords, GridListsEveryRecordCoveringAPoint) {
-    std::mt19937 rng(5);
-    RecordStore store(0.4f);
-    for (int i = 0; i < 400; ++i) {
-        store.insert(random_record(rng));
-    }
-    const RecordGridData data = store.build_grid(4096);
-    const std::vector<shared::IrradianceRecord> device = store.device_records();
-    std::uniform_real_distribution<float> coordinate(-1.0f, 11.0f);
-    size_t covered = 0;
-    for (int q = 0; q < 5000; ++q) {
-        const glm::vec3 p(coordinate(rng), coordinate(rng), coordinate(rng));
-        const glm::vec3 g =
-            (p - glm::vec3(data.grid.origin.x, data.grid.origin.y, data.grid.origin.z)) *
-            data.grid.inv_cell.x;
-        const glm::ivec3 c(glm::floor(g));
-        const bool inside = c.x >= 0 && c.y >= 0 && c.z >= 0 && c.x < data.grid.dims.x &&
-                            c.y < data.grid.dims.y && c.z < data.grid.dims.z;
-        std::vector<int> listed;
-        if (inside) {
-            const int cell = (c.z * data.grid.dims.y + c.y) * data.grid.dims.x + c.x;
-            listed.assign(data.cell_records.begin() + data.cell_start[cell],
-                          data.cell_records.begin() + data.cell_start[cell + 1]);
-        }
-        for (size_t i = 0; i < device.size(); ++i) {
-            const glm::vec3 centre(device[i].position.x, device[i].position.y,
-                                   device[i].position.z);
-            if (glm::length(p - centre) < store.accuracy() * device[i].position.w) {
-                ++covered;
-                ASSERT_TRUE(inside) << "query " << q;
-                ASSERT_NE(std::find(listed.begin(), listed.end(), static_cast<int>(i)),
-                          listed.end())
-                    << "query " << q << ", record " << i;
-            }
-        }
-    }
-    EXPECT_GT(covered, 200u);
+    EXPECT_FLOAT_EQ(raised.irradiance.x, 1.0f);
+    EXPECT_FLOAT_EQ(store.payload<shared::IrradiancePayload>(0).rotation_g.y, 0.4f);
+    EXPECT_FLOAT_EQ(store.records()[1].radius, 8.0f);
+    EXPECT_FLOAT_EQ(device_payload(store, 1).rotation_g.y, 0.4f);  // lowering R keeps them
 }
 
 // The weighted sum of one record at (p, n), in double precision from the definitions: Ward's
 // weight less 1/a, capped; zero behind the point, past the nearest occluder and beyond the
 // influence border; extrapolation by both gradients, clamped at zero.
-void add_record(const shared::IrradianceRecord& r, glm::dvec3 p, glm::dvec3 n, double a,
-                glm::dvec4& sum) {
-    const glm::dvec3 pi(r.position.x, r.position.y, r.position.z);
-    const glm::dvec3 ni = glm::normalize(glm::dvec3(r.normal.x, r.normal.y, r.normal.z));
-    const glm::dvec3 o(r.occluder.x, r.occluder.y, r.occluder.z);
-    const double radius = r.position.w;
+void add_record(const shared::Record& record, const shared::IrradiancePayload& r, glm::dvec3 p,
+                glm::dvec3 n, double a, glm::dvec4& sum) {
+    const glm::dvec3 pi = dvec3_of(record.position);
+    const glm::dvec3 ni = glm::normalize(dvec3_of(record.normal));
+    const glm::dvec3 o = dvec3_of(r.occluder);
+    const double radius = record.radius;
     const glm::dvec3 offset = p - pi;
     if (glm::dot(offset, 0.5 * (n + ni)) < -1e-3 * a * radius ||
         glm::dot(offset, o) > glm::dot(o, o)) {
@@ -204,29 +142,36 @@ TEST(IcRecords, GatherEqualsBruteForceWeightedAverage) {
 
     std::mt19937 rng(23);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    std::vector<CacheRecord> records;
+    std::vector<shared::Record> records;
+    std::vector<RecordHostData> host;
+    std::vector<std::byte> payloads(500 * sizeof(shared::IrradiancePayload));
     for (int i = 0; i < 500; ++i) {
-        CacheRecord r = random_record(rng);
-        r.radius = 0.5f + 3.0f * unit(rng);
+        ComputedRecord r = random_record(rng);
+        r.host.radius = 0.5f + 3.0f * unit(rng);
         // Every other record sees a near occluder beside it.
         if (i % 2 == 0) {
-            const glm::vec3 side = glm::normalize(glm::cross(r.normal, random_unit(rng)));
-            r.occluder = (0.2f + unit(rng)) * side;
+            const glm::vec3 side =
+                glm::normalize(glm::cross(record_normal(r.record), random_unit(rng)));
+            r.payload.occluder = float4_of((0.2f + unit(rng)) * side);
         }
-        records.push_back(r);
+        records.push_back(r.record);
+        host.push_back(r.host);
+        std::memcpy(payloads.data() + i * sizeof r.payload, &r.payload, sizeof r.payload);
     }
-    RecordStore store(0.4f);
-    store.restore(records);
-    const std::vector<shared::IrradianceRecord> device = store.device_records();
+    RecordStore store = irradiance_store(0.4f);
+    store.restore(records, host, payloads);
+    const std::vector<shared::IrradiancePayload> device = device_payloads(store);
 
     // Queries near records: within their influence, off the tangent plane a little, normals
     // turned a little.
     std::vector<shared::GBufferSample> queries;
     for (int q = 0; q < 4000; ++q) {
-        const CacheRecord& r = records[rng() % records.size()];
-        const glm::vec3 p =
-            r.position + 0.5f * r.radius * unit(rng) * random_unit(rng) + 0.01f * random_unit(rng);
-        const glm::vec3 n = glm::normalize(r.normal + 0.3f * unit(rng) * random_unit(rng));
+        const size_t k = rng() % records.size();
+        const glm::vec3 p = record_position(records[k]) +
+                            0.5f * host[k].radius * unit(rng) * random_unit(rng) +
+                            0.01f * random_unit(rng);
+        const glm::vec3 n =
+            glm::normalize(record_normal(records[k]) + 0.3f * unit(rng) * random_unit(rng));
         shared::GBufferSample g{};
         g.position = {p.x, p.y, p.z, 0.0f};
         g.normal = {n.x, n.y, n.z, 1.0f};
@@ -241,8 +186,8 @@ TEST(IcRecords, GatherEqualsBruteForceWeightedAverage) {
         const glm::dvec3 n = glm::normalize(
             glm::dvec3(queries[q].normal.x, queries[q].normal.y, queries[q].normal.z));
         glm::dvec4 expected(0.0);
-        for (const shared::IrradianceRecord& r : device) {
-            add_record(r, p, n, store.accuracy(), expected);
+        for (size_t i = 0; i < device.size(); ++i) {
+            add_record(store.records()[i], device[i], p, n, store.accuracy(), expected);
         }
         const double got[4] = {gathered[q].x, gathered[q].y, gathered[q].z, gathered[q].w};
         for (int c = 0; c < 4; ++c) {

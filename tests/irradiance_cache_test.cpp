@@ -14,7 +14,8 @@
 #include "bvh/device_bvh.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
-#include "methods/irradiance_cache/irradiance_cache_file.h"
+#include "methods/irradiance_cache/irradiance_records.h"
+#include "methods/records/cache_file.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
@@ -27,7 +28,7 @@ namespace {
 struct Render {
     Image image;
     IrradianceCacheStats stats;
-    std::vector<CacheRecord> records;  // first level
+    RecordStore records = irradiance_store(0.0f);  // first level
 };
 
 Render render(const Scene& scene, const IrradianceCacheOptions& options, Context& context) {
@@ -37,7 +38,7 @@ Render render(const Scene& scene, const IrradianceCacheOptions& options, Context
     IrradianceCache cache(context, scene, device_bvh, device_scene);
     Render r;
     r.image = cache.render(options, &r.stats);
-    r.records = cache.store(0).records();
+    r.records = cache.store(0);
     return r;
 }
 
@@ -72,26 +73,13 @@ bool bitwise_equal(const Image& a, const Image& b) {
            std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
 }
 
-bool same_records(const std::vector<CacheRecord>& a, const std::vector<CacheRecord>& b) {
-    if (a.size() != b.size()) {
-        return false;
-    }
-    for (size_t i = 0; i < a.size(); ++i) {
-        if (a[i].position != b[i].position || a[i].normal != b[i].normal ||
-            a[i].irradiance != b[i].irradiance || a[i].radius != b[i].radius ||
-            a[i].r_min != b[i].r_min || a[i].r_max != b[i].r_max ||
-            a[i].harmonic_distance != b[i].harmonic_distance ||
-            a[i].min_distance != b[i].min_distance || a[i].occluder != b[i].occluder) {
-            return false;
-        }
-        for (int c = 0; c < 3; ++c) {
-            if (a[i].rotation[c] != b[i].rotation[c] ||
-                a[i].translation[c] != b[i].translation[c]) {
-                return false;
-            }
-        }
-    }
-    return true;
+// The same records bit for bit: shared parts, host-only data and payloads.
+bool same_records(const RecordStore& a, const RecordStore& b) {
+    return a.size() == b.size() && a.payloads() == b.payloads() &&
+           std::memcmp(a.records().data(), b.records().data(), a.size() * sizeof(shared::Record)) ==
+               0 &&
+           std::memcmp(a.host_data().data(), b.host_data().data(),
+                       a.size() * sizeof(RecordHostData)) == 0;
 }
 
 IrradianceCacheOptions small_cornell_options() {
@@ -236,11 +224,11 @@ TEST(IrradianceCache, CacheFileRoundTripsExactlyAndIsReused) {
     IrradianceCache cache(context, scene, device_bvh, device_scene);
     IrradianceCacheStats stats;
     const Image first = cache.render(options, &stats);
-    const std::vector<std::vector<CacheRecord>> levels =
-        read_irradiance_cache(options.cache_out, scene, options.accuracy);
+    const std::vector<RecordStore> levels =
+        read_cache_file(options.cache_out, irradiance_cache_key(scene, options.accuracy));
     ASSERT_EQ(levels.size(), 2u);
-    EXPECT_TRUE(same_records(levels[0], cache.store(0).records()));
-    EXPECT_TRUE(same_records(levels[1], cache.store(1).records()));
+    EXPECT_TRUE(same_records(levels[0], cache.store(0)));
+    EXPECT_TRUE(same_records(levels[1], cache.store(1)));
     EXPECT_GT(levels[1].size(), 0u);
 
     IrradianceCacheOptions reuse = options;
@@ -256,7 +244,7 @@ TEST(IrradianceCache, CacheFileRoundTripsExactlyAndIsReused) {
 void expect_refused(const std::filesystem::path& file, const Scene& scene, float accuracy,
                     const std::string& message) {
     try {
-        read_irradiance_cache(file, scene, accuracy);
+        read_cache_file(file, irradiance_cache_key(scene, accuracy));
         ADD_FAILURE() << file << " was accepted";
     } catch (const Error& error) {
         EXPECT_NE(std::string(error.what()).find(message), std::string::npos) << error.what();
@@ -276,7 +264,7 @@ TEST(IrradianceCache, CorruptAndMismatchedCacheFilesAreRefused) {
     render(scene, options);
     const std::string bytes = read_file(good);
     ASSERT_GT(bytes.size(), 200u);
-    EXPECT_NO_THROW(read_irradiance_cache(good, scene, options.accuracy));
+    EXPECT_NO_THROW(read_cache_file(good, irradiance_cache_key(scene, options.accuracy)));
 
     std::string flipped = bytes;
     flipped[bytes.size() / 2] ^= 0x10;

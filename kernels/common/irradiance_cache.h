@@ -165,16 +165,17 @@ RC_FUNC RecordEstimate rc_ic_reduce(const IcParams* params, uint record, float3 
 // the nearest hit's tangent offset o, (p - p_i) . o > o . o. This keeps records from reaching
 // through a thin wall to the coplanar surface on its other side (a ceiling running over it), where
 // the raise to R_min would otherwise carry light.
-RC_FUNC float rc_ic_weight(RC_GLOBAL const IrradianceRecord* record, float3 p, float3 n,
+RC_FUNC float rc_ic_weight(RC_GLOBAL const Record* record,
+                           RC_GLOBAL const IrradiancePayload* payload, float3 p, float3 n,
                            float accuracy, float max_weight) {
     const float3 offset = p - record->position.xyz;
-    const float radius = record->position.w;
+    const float radius = record->radius;
     const float3 ni = record->normal.xyz;
     // Behind test: P_i in front of P, beyond a small tolerance of the influence radius.
     if (dot(offset, 0.5f * (n + ni)) < -1e-3f * accuracy * radius) {
         return 0.0f;
     }
-    const float3 occluder = record->occluder.xyz;
+    const float3 occluder = payload->occluder.xyz;
     if (dot(offset, occluder) > dot(occluder, occluder)) {
         return 0.0f;
     }
@@ -189,15 +190,16 @@ RC_FUNC float rc_ic_weight(RC_GLOBAL const IrradianceRecord* record, float3 p, f
 
 // A record's irradiance extrapolated to p, n by its gradients, never negative:
 // E_i + (n_i x n) . grad_r E_i + (p - p_i) . grad_t E_i.
-RC_FUNC float3 rc_ic_extrapolate(RC_GLOBAL const IrradianceRecord* record, float3 p, float3 n) {
+RC_FUNC float3 rc_ic_extrapolate(RC_GLOBAL const Record* record,
+                                 RC_GLOBAL const IrradiancePayload* payload, float3 p, float3 n) {
     const float3 axis = cross(record->normal.xyz, n);
     const float3 offset = p - record->position.xyz;
     const float3 e =
-        record->irradiance.xyz +
-        (float3)(dot(axis, record->rotation_r.xyz), dot(axis, record->rotation_g.xyz),
-                 dot(axis, record->rotation_b.xyz)) +
-        (float3)(dot(offset, record->translation_r.xyz), dot(offset, record->translation_g.xyz),
-                 dot(offset, record->translation_b.xyz));
+        payload->irradiance.xyz +
+        (float3)(dot(axis, payload->rotation_r.xyz), dot(axis, payload->rotation_g.xyz),
+                 dot(axis, payload->rotation_b.xyz)) +
+        (float3)(dot(offset, payload->translation_r.xyz), dot(offset, payload->translation_g.xyz),
+                 dot(offset, payload->translation_b.xyz));
     return fmax(e, (float3)(0.0f));
 }
 
@@ -219,8 +221,8 @@ RC_FUNC int rc_ic_grid_cell(const RecordGrid* grid, float3 p) {
 // Weighted sum of the records covering (p, n): rgb = sum w E', w = sum w, in the order the grid
 // cell lists them (so the result is deterministic).
 RC_FUNC float4 rc_ic_gather(const RecordGrid* grid, RC_GLOBAL const int* cell_start,
-                            RC_GLOBAL const int* cell_records,
-                            RC_GLOBAL const IrradianceRecord* records, float3 p, float3 n,
+                            RC_GLOBAL const int* cell_records, RC_GLOBAL const Record* records,
+                            RC_GLOBAL const IrradiancePayload* payloads, float3 p, float3 n,
                             float accuracy, float max_weight) {
     const int cell = rc_ic_grid_cell(grid, p);
     float4 sum = (float4)(0.0f);
@@ -228,10 +230,11 @@ RC_FUNC float4 rc_ic_gather(const RecordGrid* grid, RC_GLOBAL const int* cell_st
         return sum;
     }
     for (int i = cell_start[cell]; i < cell_start[cell + 1]; ++i) {
-        RC_GLOBAL const IrradianceRecord* record = records + cell_records[i];
-        const float w = rc_ic_weight(record, p, n, accuracy, max_weight);
+        RC_GLOBAL const Record* record = records + cell_records[i];
+        RC_GLOBAL const IrradiancePayload* payload = payloads + cell_records[i];
+        const float w = rc_ic_weight(record, payload, p, n, accuracy, max_weight);
         if (w > 0.0f) {
-            sum += (float4)(w * rc_ic_extrapolate(record, p, n), w);
+            sum += (float4)(w * rc_ic_extrapolate(record, payload, p, n), w);
         }
     }
     return sum;
@@ -239,15 +242,16 @@ RC_FUNC float4 rc_ic_gather(const RecordGrid* grid, RC_GLOBAL const int* cell_st
 
 // Whether any record covers (p, n) with a positive weight (the weighted sum's support).
 RC_FUNC bool rc_ic_covered(const RecordGrid* grid, RC_GLOBAL const int* cell_start,
-                           RC_GLOBAL const int* cell_records,
-                           RC_GLOBAL const IrradianceRecord* records, float3 p, float3 n,
+                           RC_GLOBAL const int* cell_records, RC_GLOBAL const Record* records,
+                           RC_GLOBAL const IrradiancePayload* payloads, float3 p, float3 n,
                            float accuracy, float max_weight) {
     const int cell = rc_ic_grid_cell(grid, p);
     if (cell < 0) {
         return false;
     }
     for (int i = cell_start[cell]; i < cell_start[cell + 1]; ++i) {
-        if (rc_ic_weight(records + cell_records[i], p, n, accuracy, max_weight) > 0.0f) {
+        if (rc_ic_weight(records + cell_records[i], payloads + cell_records[i], p, n, accuracy,
+                         max_weight) > 0.0f) {
             return true;
         }
     }

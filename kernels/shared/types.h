@@ -4,6 +4,7 @@
 #pragma once
 
 #include "compat.h"
+#include "records.h"
 
 // Leaf triangles in one BVH leaf at most; Embree's builder is told the same.
 #define RC_BVH_MAX_LEAF_SIZE 8
@@ -117,29 +118,6 @@ typedef struct GBufferSample {
                       // when the cache serves it (a hit with a diffuse lobe)
 } GBufferSample;
 
-// An irradiance record (DESIGN.md §6.2) as the kernels use it: position, normal, the radius of
-// its influence, the indirect irradiance and its gradients (per RGB channel).
-typedef struct IrradianceRecord {
-    float4 position;    // xyz; w: R, the validity radius (influence radius = accuracy * R)
-    float4 normal;      // xyz; w: unused
-    float4 irradiance;  // rgb: E; w: unused
-    float4 rotation_r;  // xyz: rotational gradient of the red channel (Ward and Heckbert 1992)
-    float4 rotation_g;
-    float4 rotation_b;
-    float4 translation_r;  // xyz: translational gradient of the red channel
-    float4 translation_g;
-    float4 translation_b;
-    float4 occluder;  // xyz: tangent-plane offset of the nearest hemisphere hit (rc_ic_weight)
-} IrradianceRecord;
-
-// A uniform world-space grid over records: cell c lists the records whose influence sphere
-// touches it, as cell_records[cell_start[c] .. cell_start[c + 1]).
-typedef struct RecordGrid {
-    float4 origin;    // xyz: the lower corner
-    float4 inv_cell;  // xyz: cells per unit length
-    int4 dims;        // xyz: cells along each axis; w: total cells
-} RecordGrid;
-
 // Parameters of the irradiance-caching kernels.
 typedef struct IcParams {
     int4 image;      // x: width, y: height, z: camera samples per pixel, w: record count
@@ -233,21 +211,7 @@ RC_SHARED_END
     FIELD(GBufferSample, normal)           \
     FIELD(GBufferSample, origin)           \
     FIELD(GBufferSample, info)             \
-    STRUCT(IrradianceRecord)               \
-    FIELD(IrradianceRecord, position)      \
-    FIELD(IrradianceRecord, normal)        \
-    FIELD(IrradianceRecord, irradiance)    \
-    FIELD(IrradianceRecord, rotation_r)    \
-    FIELD(IrradianceRecord, rotation_g)    \
-    FIELD(IrradianceRecord, rotation_b)    \
-    FIELD(IrradianceRecord, translation_r) \
-    FIELD(IrradianceRecord, translation_g) \
-    FIELD(IrradianceRecord, translation_b) \
-    FIELD(IrradianceRecord, occluder)      \
-    STRUCT(RecordGrid)                     \
-    FIELD(RecordGrid, origin)              \
-    FIELD(RecordGrid, inv_cell)            \
-    FIELD(RecordGrid, dims)                \
+    RC_RECORD_LAYOUTS(STRUCT, FIELD)       \
     STRUCT(IcParams)                       \
     FIELD(IcParams, image)                 \
     FIELD(IcParams, sampling)              \
@@ -281,8 +245,6 @@ static_assert(sizeof(rc::shared::TriangleShading) == 32);
 static_assert(sizeof(rc::shared::Light) == 80);
 static_assert(sizeof(rc::shared::PathTracerParams) == 48);
 static_assert(sizeof(rc::shared::GBufferSample) == 64);
-static_assert(sizeof(rc::shared::IrradianceRecord) == 160);
-static_assert(sizeof(rc::shared::RecordGrid) == 48);
 static_assert(sizeof(rc::shared::IcParams) == 96);
 static_assert(sizeof(rc::shared::IvgParams) == 128);
 #endif

@@ -8,7 +8,8 @@
 #include <regex>
 #include <unordered_map>
 
-#include "methods/irradiance_cache/irradiance_cache_file.h"
+#include "methods/records/cache_file.h"
+#include "methods/records/record_grid.h"
 #include "methods/scene_arguments.h"
 #include "scene/camera.h"
 #include "util/error.h"
@@ -32,19 +33,24 @@ constexpr size_t kMaxBatchCells = size_t{1} << 23;  // hemisphere cells per reco
 shared::float4 float4_of(glm::vec3 v, float w = 0.0f) { return {v.x, v.y, v.z, w}; }
 glm::vec3 vec3_of(const shared::float4& v) { return {v.x, v.y, v.z}; }
 
-// The device copy of a record store: records and their grid.
+// The device copy of a record store: records, their payloads and their grid.
 struct DeviceRecords {
     DeviceRecords(Context& context, const RecordStore& store) {
-        const RecordGridData data = store.build_grid();
+        const RecordGridData data = build_record_grid(store.records(), store.accuracy());
         grid = data.grid;
-        records = Buffer<shared::IrradianceRecord>(context, store.device_records(), "ic_records");
+        records = Buffer<shared::Record>(context, store.records(), "ic_records");
+        payloads =
+            Buffer<shared::IrradiancePayload>(context, device_payloads(store), "ic_payloads");
         cell_start = Buffer<int>(context, data.cell_start, "ic_cell_start");
         cell_records = Buffer<int>(context, data.cell_records, "ic_cell_records");
     }
-    size_t bytes() const { return records.bytes() + cell_start.bytes() + cell_records.bytes(); }
+    size_t bytes() const {
+        return records.bytes() + payloads.bytes() + cell_start.bytes() + cell_records.bytes();
+    }
 
     shared::RecordGrid grid{};
-    Buffer<shared::IrradianceRecord> records;
+    Buffer<shared::Record> records;
+    Buffer<shared::IrradiancePayload> payloads;
     Buffer<int> cell_start;
     Buffer<int> cell_records;
 };
@@ -154,7 +160,7 @@ void IrradianceCache::reset(const RecordSampling& sampling) {
                     kExitUsage);
     }
     sampling_ = sampling;
-    stores_.assign(static_cast<size_t>(sampling.levels), RecordStore(sampling.accuracy));
+    stores_.assign(static_cast<size_t>(sampling.levels), irradiance_store(sampling.accuracy));
     stats_ = IrradianceCacheStats{};
     stats_.strata_m = sampling.m;
     stats_.strata_n = sampling.n;
@@ -171,13 +177,13 @@ shared::IcParams IrradianceCache::level_params(int level) const {
     return params;
 }
 
-std::vector<CacheRecord> IrradianceCache::compute_records(const std::vector<RecordSite>& sites,
-                                                          uint32_t first_index,
-                                                          const RecordSampling& sampling,
-                                                          uint64_t* rays) {
+std::vector<ComputedRecord> IrradianceCache::compute_records(const std::vector<RecordSite>& sites,
+                                                             uint32_t first_index,
+                                                             const RecordSampling& sampling,
+                                                             uint64_t* rays) {
     reset(sampling);
     first_index_ = first_index;
-    std::vector<CacheRecord> computed = compute_level(0, sites);
+    std::vector<ComputedRecord> computed = compute_level(0, sites);
     first_index_ = 0;
     if (rays != nullptr) {
         *rays += stats_.record_rays;
@@ -185,9 +191,9 @@ std::vector<CacheRecord> IrradianceCache::compute_records(const std::vector<Reco
     return computed;
 }
 
-std::vector<CacheRecord> IrradianceCache::compute_level(int level,
-                                                        const std::vector<RecordSite>& sites) {
-    std::vector<CacheRecord> computed;
+std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
+                                                           const std::vector<RecordSite>& sites) {
+    std::vector<ComputedRecord> computed;
     computed.reserve(sites.size());
     const bool cached = level + 1 < sampling_.levels;
     const size_t per_record = static_cast<size_t>(sampling_.m) * sampling_.n;
@@ -198,16 +204,16 @@ std::vector<CacheRecord> IrradianceCache::compute_level(int level,
     Buffer<unsigned> counters(context_, 1, "ic_record_counters");
     for (size_t begin = 0; begin < sites.size(); begin += batch_limit) {
         const size_t count = std::min(batch_limit, sites.size() - begin);
-        std::vector<shared::IrradianceRecord> records(count);
+        std::vector<shared::Record> records(count);
         std::vector<shared::float4> origins(count);
         for (size_t b = 0; b < count; ++b) {
             const RecordSite& site = sites[begin + b];
-            records[b].position = float4_of(site.position);
-            records[b].normal = float4_of(site.normal);
+            records[b] = make_record(site.position, site.normal);
             origins[b] = float4_of(site.origin);
         }
-        Buffer<shared::IrradianceRecord> record_buffer(context_, records, "ic_batch_records");
+        const Buffer<shared::Record> record_buffer(context_, records, "ic_batch_records");
         const Buffer<shared::float4> origin_buffer(context_, origins, "ic_batch_origins");
+        Buffer<shared::IrradiancePayload> payload_buffer(context_, count, "ic_batch_payloads");
         Buffer<shared::float4> cells(context_, count * per_record, "ic_cells");
         Buffer<shared::float4> distances(context_, count, "ic_distances");
         shared::IcParams params = level_params(level);
@@ -224,7 +230,7 @@ std::vector<CacheRecord> IrradianceCache::compute_level(int level,
             const DeviceRecords next(context_, stores_[level + 1]);
             context_.launch(cached_cells_kernel_, count * per_record, params, scene, record_buffer,
                             origin_buffer, next.grid, next.cell_start, next.cell_records,
-                            next.records, cells, counters);
+                            next.records, next.payloads, cells, counters);
         } else if (sampling_.grid != nullptr) {
             context_.launch(grid_cells_kernel_, count * per_record, params, scene, record_buffer,
                             origin_buffer, *sampling_.grid, cells, counters);
@@ -232,28 +238,20 @@ std::vector<CacheRecord> IrradianceCache::compute_level(int level,
             context_.launch(cells_kernel_, count * per_record, params, scene, record_buffer,
                             origin_buffer, cells, counters);
         }
-        context_.launch(reduce_kernel_, count, params, cells, record_buffer, distances);
-        const std::vector<shared::IrradianceRecord> result = record_buffer.download();
+        context_.launch(reduce_kernel_, count, params, cells, record_buffer, payload_buffer,
+                        distances);
+        const std::vector<shared::IrradiancePayload> payloads = payload_buffer.download();
         const std::vector<shared::float4> distance = distances.download();
         stats_.record_rays += counters.download()[0];
         for (size_t b = 0; b < count; ++b) {
             const RecordSite& site = sites[begin + b];
-            CacheRecord r;
-            r.position = site.position;
-            r.normal = site.normal;
-            r.irradiance = vec3_of(result[b].irradiance);
-            r.rotation[0] = vec3_of(result[b].rotation_r);
-            r.rotation[1] = vec3_of(result[b].rotation_g);
-            r.rotation[2] = vec3_of(result[b].rotation_b);
-            r.translation[0] = vec3_of(result[b].translation_r);
-            r.translation[1] = vec3_of(result[b].translation_g);
-            r.translation[2] = vec3_of(result[b].translation_b);
-            r.harmonic_distance = distance[b].x;
-            r.min_distance = distance[b].y;
-            r.occluder = vec3_of(result[b].occluder);
-            r.r_min = site.r_min;
-            r.r_max = site.r_max;
-
+            ComputedRecord r;
+            r.record = records[b];
+            r.payload = payloads[b];
+            r.host.harmonic_distance = distance[b].x;
+            r.host.min_distance = distance[b].y;
+            r.host.r_min = site.r_min;
+            r.host.r_max = site.r_max;
             computed.push_back(r);
         }
     }
@@ -280,8 +278,8 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
             const DeviceRecords records(context_, stores_[level]);
             uncovered_count.fill_zero();
             context_.launch(uncovered_kernel_, candidates, params, records.grid, records.cell_start,
-                            records.cell_records, records.records, samples, uncovered_buffer,
-                            uncovered_count);
+                            records.cell_records, records.records, records.payloads, samples,
+                            uncovered_buffer, uncovered_count);
             const size_t count = uncovered_count.download()[0];
             if (count > 0) {
                 std::vector<unsigned> indices(count);
@@ -320,13 +318,13 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
             site.r_max = std::max(site.r_min, bound(sampling_.max_spacing, g.position.w));
             sites.push_back(site);
         }
-        const std::vector<CacheRecord> computed = compute_level(level, sites);
+        const std::vector<ComputedRecord> computed = compute_level(level, sites);
         if (timed) {
             stats_.record_seconds += seconds_since(start);
         }
         start = Clock::now();
-        for (const CacheRecord& record : computed) {
-            stores_[level].insert(record);
+        for (const ComputedRecord& record : computed) {
+            insert_irradiance_record(stores_[level], record);
         }
         if (timed) {
             stats_.insertion_seconds += seconds_since(start);
@@ -348,7 +346,8 @@ std::vector<shared::float4> IrradianceCache::gather(
     shared::IcParams params{};
     params.weights = {store.accuracy(), kIrradianceCacheMaxWeight, 0.0f, 0.0f};
     context_.launch(gather_kernel_, queries.size(), params, records.grid, records.cell_start,
-                    records.cell_records, records.records, samples, index_buffer, out);
+                    records.cell_records, records.records, records.payloads, samples, index_buffer,
+                    out);
     return out.download();
 }
 
@@ -410,11 +409,11 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     // were covered, so every pass checks all candidates again. (Indirect light needs two
     // bounces; below that the cache is never read.)
     if (!options.cache_in.empty()) {
-        std::vector<std::vector<CacheRecord>> loaded =
-            read_irradiance_cache(options.cache_in, scene_, options.accuracy);
+        std::vector<RecordStore> loaded =
+            read_cache_file(options.cache_in, irradiance_cache_key(scene_, options.accuracy));
         for (size_t level = 0; level < loaded.size() && level < stores_.size(); ++level) {
             stats_.loaded_records += loaded[level].size();
-            stores_[level].restore(std::move(loaded[level]));
+            stores_[level] = std::move(loaded[level]);
         }
     }
     if (options.max_depth >= 2) {
@@ -431,7 +430,8 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     }
     stats_.records = stores_[0].size();
     if (!options.cache_out.empty()) {
-        write_irradiance_cache(options.cache_out, scene_, stores_);
+        write_cache_file(options.cache_out, irradiance_cache_key(scene_, options.accuracy),
+                         stores_);
     }
 
     // 5. Shading.
@@ -444,7 +444,7 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     Buffer<unsigned> counters(context_, 3, "ic_counters");
     counters.upload({0u, 0u, 0xffffffffu});
     context_.launch(shade_kernel_, pixels, params, camera, scene, records.grid, records.cell_start,
-                    records.cell_records, records.records, film, counters);
+                    records.cell_records, records.records, records.payloads, film, counters);
     const std::vector<shared::float4> sums = film.download();
     const std::vector<unsigned> c = counters.download();
     stats_.shading_rays = c[0];

@@ -125,15 +125,17 @@ class IrradianceCache {
     // First-level records at arbitrary sites, numbered from `first_index` (their random streams);
     // with sampling.levels > 1 the deeper levels start empty and get the records the hemisphere
     // rays need.
-    std::vector<CacheRecord> compute_records(const std::vector<RecordSite>& sites,
-                                             uint32_t first_index, const RecordSampling& sampling,
-                                             uint64_t* rays = nullptr);
+    std::vector<ComputedRecord> compute_records(const std::vector<RecordSite>& sites,
+                                                uint32_t first_index,
+                                                const RecordSampling& sampling,
+                                                uint64_t* rays = nullptr);
 
     // (sum w E', sum w) of `store`'s records at G-buffer-like query points.
     std::vector<shared::float4> gather(const RecordStore& store,
                                        const std::vector<shared::GBufferSample>& queries);
 
-    // The records of cache level `level` (0: the one the camera samples read) after render().
+    // The records of cache level `level` (0: the one the camera samples read) after render():
+    // irradiance payloads (irradiance_records.h).
     const RecordStore& store(int level = 0) const { return stores_.at(level); }
 
    private:
@@ -142,7 +144,7 @@ class IrradianceCache {
     void cover(int level, const Buffer<shared::GBufferSample>& samples, shared::int4 placement,
                size_t candidates, bool until_covered);
     // Records of `level` at `sites`, numbered from the level's current size.
-    std::vector<CacheRecord> compute_level(int level, const std::vector<RecordSite>& sites);
+    std::vector<ComputedRecord> compute_level(int level, const std::vector<RecordSite>& sites);
     void reset(const RecordSampling& sampling);
     shared::IcParams level_params(int level) const;
 

@@ -1,0 +1,178 @@
+#include "methods/records/cache_file.h"
+
+#include <OpenImageIO/hash.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "util/error.h"
+#include "util/file_io.h"
+
+namespace rc {
+namespace {
+
+constexpr char kMagic[8] = {'R', 'C', 'I', 'R', 'C', 'A', 'C', 'H'};
+constexpr uint32_t kVersion = 2;
+constexpr size_t kRecordBytes = sizeof(shared::Record) + sizeof(RecordHostData);
+constexpr uint32_t kMaxLevels = 64;
+
+struct Header {
+    char magic[8];
+    uint32_t version;
+    uint32_t record_bytes;
+    char method[16];
+    uint32_t payload_bytes;
+    uint32_t levels;
+    uint64_t scene;
+    float accuracy;
+    uint32_t reserved;
+    uint64_t count;
+};
+static_assert(sizeof(Header) == 64);
+
+uint64_t checksum(const char* data, size_t size) {
+    return OIIO::farmhash::Fingerprint64(data, size);
+}
+
+template <class T>
+void append(std::string& bytes, const T* values, size_t count) {
+    bytes.append(reinterpret_cast<const char*>(values), count * sizeof(T));
+}
+
+std::string method_of(const Header& header) {
+    return std::string(header.method, strnlen(header.method, sizeof header.method));
+}
+
+// The header after checks that need nothing but the file: magic, version, sizes, checksum.
+Header checked_header(const std::string& name, const std::string& bytes, const CacheFileKey& key) {
+    const std::string what = key.method + " cache";
+    Header header;
+    if (bytes.size() < sizeof header + sizeof(uint64_t) ||
+        std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) {
+        throw Error(name + ": not a radcache " + what + " file");
+    }
+    std::memcpy(&header, bytes.data(), sizeof header);
+    if (header.version != kVersion) {
+        throw Error(name + ": " + what + " version " + std::to_string(header.version) +
+                    "; this radcache reads version " + std::to_string(kVersion));
+    }
+    const size_t fixed = sizeof header + sizeof(uint64_t);
+    const size_t per_record = kRecordBytes + header.payload_bytes;
+    const bool sizes_fit =
+        header.record_bytes == kRecordBytes && header.levels <= kMaxLevels &&
+        header.count <= (bytes.size() - fixed) / per_record &&
+        bytes.size() == fixed + header.levels * sizeof(uint64_t) + header.count * per_record;
+    if (!sizes_fit) {
+        throw Error(name + ": corrupt " + what + " (" + std::to_string(bytes.size()) +
+                    " bytes do not match its header)");
+    }
+    uint64_t stored_sum;
+    std::memcpy(&stored_sum, bytes.data() + bytes.size() - sizeof stored_sum, sizeof stored_sum);
+    if (checksum(bytes.data(), bytes.size() - sizeof stored_sum) != stored_sum) {
+        throw Error(name + ": corrupt " + what + " (checksum mismatch)");
+    }
+    return header;
+}
+
+// Refuses a sound file made for something else than `key`.
+void check_key(const std::string& name, const Header& header, const CacheFileKey& key) {
+    const std::string what = key.method + " cache";
+    if (method_of(header) != key.method) {
+        throw Error(name + ": holds " + method_of(header) + " records, not " + key.method +
+                    " records");
+    }
+    if (header.payload_bytes != key.payload_bytes) {
+        throw Error(name + ": " + what + " with " + std::to_string(header.payload_bytes) +
+                    "-byte record payloads; this radcache's have " +
+                    std::to_string(key.payload_bytes) + " bytes");
+    }
+    if (header.scene != key.scene) {
+        throw Error(name + ": " + what +
+                    " was made for another scene (or another frame of it) than " + key.scene_name);
+    }
+    if (header.accuracy != key.accuracy) {
+        throw Error(name + ": " + what + " was made with accuracy " +
+                    std::to_string(header.accuracy) + ", not " + std::to_string(key.accuracy));
+    }
+}
+
+}  // namespace
+
+void write_cache_file(const std::filesystem::path& path, const CacheFileKey& key,
+                      const std::vector<RecordStore>& levels) {
+    Header header{};
+    std::memcpy(header.magic, kMagic, sizeof kMagic);
+    header.version = kVersion;
+    header.record_bytes = static_cast<uint32_t>(kRecordBytes);
+    if (key.method.size() >= sizeof header.method) {
+        throw Error("cache file: method tag '" + key.method + "' is too long");
+    }
+    std::memcpy(header.method, key.method.data(), key.method.size());
+    header.payload_bytes = static_cast<uint32_t>(key.payload_bytes);
+    header.levels = static_cast<uint32_t>(levels.size());
+    header.scene = key.scene;
+    header.accuracy = key.accuracy;
+    std::vector<uint64_t> counts;
+    for (const RecordStore& store : levels) {
+        if (store.payload_bytes() != key.payload_bytes) {
+            throw Error("cache file: a store of " + std::to_string(store.payload_bytes()) +
+                        "-byte payloads written as " + std::to_string(key.payload_bytes));
+        }
+        counts.push_back(store.size());
+        header.count += store.size();
+    }
+    std::string bytes;
+    append(bytes, &header, 1);
+    append(bytes, counts.data(), counts.size());
+    for (const RecordStore& store : levels) {
+        for (size_t i = 0; i < store.size(); ++i) {
+            append(bytes, &store.records()[i], 1);
+            append(bytes, &store.host_data()[i], 1);
+            append(bytes, store.payloads().data() + i * key.payload_bytes, key.payload_bytes);
+        }
+    }
+    const uint64_t sum = checksum(bytes.data(), bytes.size());
+    append(bytes, &sum, 1);
+    write_file_atomically(path, bytes);
+}
+
+std::vector<RecordStore> read_cache_file(const std::filesystem::path& path,
+                                         const CacheFileKey& key) {
+    const std::string name = path.string();
+    if (!std::filesystem::is_regular_file(path)) {
+        throw Error(name + ": " + key.method + " cache file not found");
+    }
+    const std::string bytes = read_file(path);
+    const Header header = checked_header(name, bytes, key);
+    std::vector<uint64_t> counts(header.levels);
+    std::memcpy(counts.data(), bytes.data() + sizeof header, counts.size() * sizeof(uint64_t));
+    uint64_t total = 0;
+    for (uint64_t c : counts) {
+        total += std::min<uint64_t>(c, header.count + 1);
+    }
+    if (total != header.count) {
+        throw Error(name + ": corrupt " + key.method + " cache (level counts do not add up)");
+    }
+    check_key(name, header, key);
+
+    const char* in = bytes.data() + sizeof header + counts.size() * sizeof(uint64_t);
+    std::vector<RecordStore> levels;
+    for (uint64_t count : counts) {
+        std::vector<shared::Record> records(count);
+        std::vector<RecordHostData> host(count);
+        std::vector<std::byte> payloads(count * key.payload_bytes);
+        for (size_t i = 0; i < count; ++i) {
+            std::memcpy(&records[i], in, sizeof(shared::Record));
+            in += sizeof(shared::Record);
+            std::memcpy(&host[i], in, sizeof(RecordHostData));
+            in += sizeof(RecordHostData);
+            std::memcpy(payloads.data() + i * key.payload_bytes, in, key.payload_bytes);
+            in += key.payload_bytes;
+        }
+        levels.emplace_back(key.accuracy, key.payload_bytes);
+        levels.back().restore(std::move(records), std::move(host), std::move(payloads));
+    }
+    return levels;
+}
+
+}  // namespace rc

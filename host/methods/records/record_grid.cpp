@@ -1,0 +1,97 @@
+#include "methods/records/record_grid.h"
+
+#include <algorithm>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <limits>
+
+#include "methods/records/record_store.h"
+#include "util/error.h"
+
+namespace rc {
+namespace {
+
+shared::float4 float4_of(glm::vec3 v) { return {v.x, v.y, v.z, 0.0f}; }
+
+// The cells a record's influence sphere's bounding box touches, [from, to] inclusive.
+struct CellRange {
+    glm::ivec3 from;
+    glm::ivec3 to;
+};
+
+}  // namespace
+
+RecordGridData build_record_grid(const std::vector<shared::Record>& records, float accuracy,
+                                 size_t max_cells) {
+    RecordGridData data;
+    if (records.empty()) {
+        data.grid.origin = {0, 0, 0, 0};
+        data.grid.inv_cell = {1, 1, 1, 0};
+        data.grid.dims = {1, 1, 1, 1};
+        data.cell_start = {0, 0};
+        return data;
+    }
+    // 1. Bounds of every influence sphere and the cell size: about twice the median influence
+    // radius, larger if that would make too many cells.
+    glm::vec3 lower(std::numeric_limits<float>::max());
+    glm::vec3 upper(-std::numeric_limits<float>::max());
+    std::vector<float> influence(records.size());
+    for (size_t i = 0; i < records.size(); ++i) {
+        influence[i] = accuracy * records[i].radius;
+        lower = glm::min(lower, record_position(records[i]) - glm::vec3(influence[i]));
+        upper = glm::max(upper, record_position(records[i]) + glm::vec3(influence[i]));
+    }
+    std::vector<float> sorted = influence;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const glm::vec3 extent = glm::max(upper - lower, glm::vec3(1e-6f));
+    float cell = std::max(2.0f * sorted[sorted.size() / 2], 1e-6f * glm::length(extent));
+    auto count_for = [&](float size) {
+        const glm::vec3 dims = glm::ceil(extent / size);
+        return static_cast<double>(dims.x) * dims.y * dims.z;
+    };
+    while (count_for(cell) > static_cast<double>(max_cells)) {
+        cell *= 1.25f;
+    }
+    const glm::ivec3 dims = glm::max(glm::ivec3(glm::ceil(extent / cell)), glm::ivec3(1));
+    const size_t cells = static_cast<size_t>(dims.x) * dims.y * dims.z;
+    data.grid.origin = float4_of(lower);
+    data.grid.inv_cell = float4_of(glm::vec3(1.0f / cell));
+    data.grid.dims = {dims.x, dims.y, dims.z, static_cast<int>(cells)};
+
+    // 2. Counting sort of (cell, record) pairs; records ascend within each cell.
+    auto cell_range = [&](size_t i) {
+        const glm::vec3 p = record_position(records[i]);
+        return CellRange{
+            glm::clamp(glm::ivec3((p - influence[i] - lower) / cell), glm::ivec3(0), dims - 1),
+            glm::clamp(glm::ivec3((p + influence[i] - lower) / cell), glm::ivec3(0), dims - 1)};
+    };
+    auto for_each_cell = [&](size_t i, auto&& visit) {
+        const CellRange r = cell_range(i);
+        for (int z = r.from.z; z <= r.to.z; ++z) {
+            for (int y = r.from.y; y <= r.to.y; ++y) {
+                for (int x = r.from.x; x <= r.to.x; ++x) {
+                    visit((static_cast<size_t>(z) * dims.y + y) * dims.x + x);
+                }
+            }
+        }
+    };
+    std::vector<int> counts(cells + 1, 0);
+    for (size_t i = 0; i < records.size(); ++i) {
+        for_each_cell(i, [&](size_t c) { ++counts[c + 1]; });
+    }
+    for (size_t c = 0; c < cells; ++c) {
+        counts[c + 1] += counts[c];
+    }
+    if (counts[cells] > std::numeric_limits<int>::max() / 2) {
+        throw Error("record grid: too many record references");
+    }
+    data.cell_start = counts;
+    data.cell_records.assign(static_cast<size_t>(counts[cells]), 0);
+    std::vector<int> fill(counts.begin(), counts.end() - 1);
+    for (size_t i = 0; i < records.size(); ++i) {
+        for_each_cell(i, [&](size_t c) { data.cell_records[fill[c]++] = static_cast<int>(i); });
+    }
+    return data;
+}
+
+}  // namespace rc

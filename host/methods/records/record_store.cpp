@@ -1,0 +1,177 @@
+#include "methods/records/record_store.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <string>
+
+namespace rc {
+
+glm::vec3 record_position(const shared::Record& record) {
+    return {record.position.x, record.position.y, record.position.z};
+}
+
+glm::vec3 record_normal(const shared::Record& record) {
+    return {record.normal.x, record.normal.y, record.normal.z};
+}
+
+shared::Record make_record(glm::vec3 p, glm::vec3 n) {
+    shared::Record record{};
+    record.position = {p.x, p.y, p.z, 0.0f};
+    record.normal = {n.x, n.y, n.z, 0.0f};
+    return record;
+}
+
+RecordStore::RecordStore(float accuracy, size_t payload_bytes)
+    : accuracy_(accuracy), payload_bytes_(payload_bytes) {}
+
+void RecordStore::check_payload_size(size_t bytes) const {
+    if (bytes != payload_bytes_) {
+        throw Error("record store: a payload of " + std::to_string(bytes) +
+                    " bytes in a store of " + std::to_string(payload_bytes_) + "-byte payloads");
+    }
+}
+
+void RecordStore::set_radius(size_t i, float radius) {
+    host_[i].radius = radius;
+    records_[i].radius = std::clamp(radius, host_[i].r_min, host_[i].r_max);
+}
+
+float RecordStore::gradient_scale(size_t i) const {
+    const float radius = host_[i].radius;
+    const float clamped = records_[i].radius;
+    return radius < clamped ? radius / clamped : 1.0f;
+}
+
+size_t RecordStore::insert_bytes(const shared::Record& record, const RecordHostData& host,
+                                 const void* payload, float radius_limit) {
+    // R from the harmonic mean distance, limited by the method's limit (irradiance caching: the
+    // translational gradient, course "Gradient Limit on Record Spacing") and by r_max, above
+    // which R never matters (this keeps neighbor searches local; the lower clamp comes only
+    // after neighbor clamping).
+    float radius = std::isfinite(host.harmonic_distance) ? host.harmonic_distance : host.r_max;
+    radius = std::min(radius, radius_limit);
+    radius = std::min(radius, host.r_max);
+
+    // Neighbor clamping: first the new record by every record it overlaps, then the others by it,
+    // and on from every record that changed. (The course clamps one ring of neighbors; the
+    // relaxation only goes further if a neighbor's R had been loaded from elsewhere. The result,
+    // R_j <= R_k + |p_j - p_k| for every pair, does not depend on the visiting order: a record
+    // that lowers R_j always overlaps it.)
+    const glm::vec3 p = record_position(record);
+    for (uint32_t k : overlapping(p, radius)) {
+        const float d = glm::length(p - record_position(records_[k]));
+        if (d < radius + host_[k].radius) {
+            radius = std::min(radius, host_[k].radius + d);
+        }
+    }
+    const size_t j = records_.size();
+    records_.push_back(record);
+    host_.push_back(host);
+    const std::byte* bytes = static_cast<const std::byte*>(payload);
+    payloads_.insert(payloads_.end(), bytes, bytes + payload_bytes_);
+    set_radius(j, radius);
+    index_record(static_cast<uint32_t>(j));
+    std::vector<size_t> changed = {j};
+    while (!changed.empty()) {
+        const size_t a = changed.back();
+        changed.pop_back();
+        const glm::vec3 pa = record_position(records_[a]);
+        for (uint32_t b : overlapping(pa, host_[a].radius)) {
+            if (b == a) {
+                continue;
+            }
+            const float d = glm::length(pa - record_position(records_[b]));
+            if (d < host_[a].radius + host_[b].radius && host_[b].radius > host_[a].radius + d) {
+                set_radius(b, host_[a].radius + d);
+                changed.push_back(b);
+            }
+        }
+    }
+    return j;
+}
+
+namespace {
+
+// The radius class of R: the smallest L with R <= 2^L.
+int radius_class(float radius) {
+    if (!(radius > 0.0f)) {
+        return -126;
+    }
+    if (!std::isfinite(radius)) {
+        return 127;
+    }
+    int exponent = 0;
+    const float mantissa = std::frexp(radius, &exponent);  // radius = mantissa 2^exponent
+    return mantissa == 0.5f ? exponent - 1 : exponent;
+}
+
+glm::ivec3 cell_of(glm::vec3 p, float cell) {
+    const glm::vec3 c =
+        glm::clamp(glm::floor(p / cell), glm::vec3(-1048576.0f), glm::vec3(1048575.0f));
+    return glm::ivec3(c);
+}
+
+uint64_t cell_key(glm::ivec3 c) {
+    return (static_cast<uint64_t>(static_cast<uint32_t>(c.x) & 0x1fffffu) << 42) |
+           (static_cast<uint64_t>(static_cast<uint32_t>(c.y) & 0x1fffffu) << 21) |
+           static_cast<uint64_t>(static_cast<uint32_t>(c.z) & 0x1fffffu);
+}
+
+}  // namespace
+
+std::vector<uint32_t> RecordStore::overlapping(glm::vec3 p, float radius) const {
+    std::vector<uint32_t> found;
+    for (const auto& [level, radius_class] : classes_) {
+        // Class members have R_k <= cell, so overlapping ones lie within radius + cell of p.
+        const float cell = std::ldexp(1.0f, level);
+        const float reach = radius + cell;
+        const glm::ivec3 from = cell_of(p - glm::vec3(reach), cell);
+        const glm::ivec3 to = cell_of(p + glm::vec3(reach), cell);
+        const glm::dvec3 span = glm::dvec3(to - from) + 1.0;
+        if (!std::isfinite(reach) || span.x * span.y * span.z > radius_class.records.size()) {
+            found.insert(found.end(), radius_class.records.begin(), radius_class.records.end());
+            continue;
+        }
+        for (int z = from.z; z <= to.z; ++z) {
+            for (int y = from.y; y <= to.y; ++y) {
+                for (int x = from.x; x <= to.x; ++x) {
+                    const auto it = radius_class.cells.find(cell_key({x, y, z}));
+                    if (it != radius_class.cells.end()) {
+                        found.insert(found.end(), it->second.begin(), it->second.end());
+                    }
+                }
+            }
+        }
+    }
+    return found;
+}
+
+void RecordStore::index_record(uint32_t index) {
+    // R only shrinks after insertion, so the class chosen now stays an upper bound.
+    const int level = radius_class(host_[index].radius);
+    RadiusClass& radius_class = classes_[level];
+    radius_class.records.push_back(index);
+    radius_class.cells[cell_key(cell_of(record_position(records_[index]), std::ldexp(1.0f, level)))]
+        .push_back(index);
+}
+
+void RecordStore::restore(std::vector<shared::Record> records, std::vector<RecordHostData> host,
+                          std::vector<std::byte> payloads) {
+    if (host.size() != records.size() || payloads.size() != records.size() * payload_bytes_) {
+        throw Error("record store: " + std::to_string(records.size()) + " records with " +
+                    std::to_string(host.size()) + " host entries and " +
+                    std::to_string(payloads.size()) + " payload bytes");
+    }
+    records_ = std::move(records);
+    host_ = std::move(host);
+    payloads_ = std::move(payloads);
+    classes_.clear();
+    for (uint32_t i = 0; i < records_.size(); ++i) {
+        set_radius(i, host_[i].radius);
+        index_record(i);
+    }
+}
+
+}  // namespace rc

@@ -1,0 +1,107 @@
+// The record store every caching method shares (DESIGN.md §2, §6.2 step 4): records inserted in
+// record-index order with their validity radius R limited by the harmonic mean distance, by a
+// limit the method supplies and by R_max; neighbor clamping; the [R_min, R_max] clamp, with the
+// factor a method scales its payload's gradients by when the clamp raised R. A record is its
+// shared part (shared::Record, kernels/shared/records.h), the host-only data below and the
+// method's payload, stored once, as bytes the store never interprets.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <glm/vec3.hpp>
+#include <type_traits>
+#include <unordered_map>
+#include <vector>
+
+#include "shared/records.h"
+#include "util/error.h"
+
+namespace rc {
+
+// What the host keeps about a record beside its shared part and payload.
+struct RecordHostData {
+    float harmonic_distance = 0.0f;  // of the record's hemisphere hits (infinite: none)
+    float min_distance = 0.0f;
+    float r_min = 0.0f;  // bounds on the validity radius R, from the footprint where it was made
+    float r_max = 0.0f;
+    // R before the [r_min, r_max] clamp: the harmonic mean distance limited by the method's limit
+    // and by r_max, then by neighbor clamping (set by RecordStore::insert).
+    float radius = 0.0f;
+};
+static_assert(sizeof(RecordHostData) == 20);
+
+glm::vec3 record_position(const shared::Record& record);
+glm::vec3 record_normal(const shared::Record& record);
+// A record's shared part at p with normal n, radius 0 (set on insertion).
+shared::Record make_record(glm::vec3 p, glm::vec3 n);
+
+class RecordStore {
+   public:
+    // `accuracy` a: a record influences points within a R. Every payload has `payload_bytes`.
+    RecordStore(float accuracy, size_t payload_bytes);
+
+    // Adds a record: R = min(harmonic distance (r_max if infinite), radius_limit, r_max), then
+    // neighbor clamping (course "Neighbor Clamping", "Summary of Implementation Details") with
+    // every record whose sphere of radius R overlaps: R_j = min(R_j, R_k + |p_j - p_k|), then
+    // R_k = min(R_k, R_j + |p_j - p_k|), propagated until every overlapping pair satisfies the
+    // triangle inequality. The shared part's radius is kept at clamp(R, r_min, r_max). Returns
+    // the new record's index.
+    template <class Payload>
+    size_t insert(const shared::Record& record, const RecordHostData& host, const Payload& payload,
+                  float radius_limit) {
+        static_assert(std::is_trivially_copyable_v<Payload>);
+        check_payload_size(sizeof(Payload));
+        return insert_bytes(record, host, &payload, radius_limit);
+    }
+
+    // Restores records as they were stored (host.radius already final), for cache files.
+    void restore(std::vector<shared::Record> records, std::vector<RecordHostData> host,
+                 std::vector<std::byte> payloads);
+
+    // The shared parts, radius clamped to [r_min, r_max]: what the kernels read.
+    const std::vector<shared::Record>& records() const { return records_; }
+    const std::vector<RecordHostData>& host_data() const { return host_; }
+    // Every payload, record by record, payload_bytes() each.
+    const std::vector<std::byte>& payloads() const { return payloads_; }
+    template <class Payload>
+    Payload payload(size_t i) const {
+        static_assert(std::is_trivially_copyable_v<Payload>);
+        check_payload_size(sizeof(Payload));
+        Payload p;
+        std::memcpy(&p, payloads_.data() + i * payload_bytes_, sizeof p);
+        return p;
+    }
+    // R / R' when the [r_min, r_max] clamp raised R to R', else 1: the method scales its
+    // payload's gradients by it so extrapolation to the larger border stays as bounded as at R.
+    float gradient_scale(size_t i) const;
+
+    size_t size() const { return records_.size(); }
+    float accuracy() const { return accuracy_; }
+    size_t payload_bytes() const { return payload_bytes_; }
+
+   private:
+    // Records hashed by position, one grid per radius class: the records of class L have
+    // R <= 2^L and sit in cells of size 2^L.
+    struct RadiusClass {
+        std::vector<uint32_t> records;
+        std::unordered_map<uint64_t, std::vector<uint32_t>> cells;
+    };
+    size_t insert_bytes(const shared::Record& record, const RecordHostData& host,
+                        const void* payload, float radius_limit);
+    void check_payload_size(size_t bytes) const;
+    // Sets the unclamped R of record i and its shared part's clamped radius.
+    void set_radius(size_t i, float radius);
+    // Indices of every record k with |p - p_k| < radius + R_k, and maybe a few more.
+    std::vector<uint32_t> overlapping(glm::vec3 p, float radius) const;
+    void index_record(uint32_t index);
+
+    float accuracy_;
+    size_t payload_bytes_;
+    std::vector<shared::Record> records_;
+    std::vector<RecordHostData> host_;
+    std::vector<std::byte> payloads_;
+    std::unordered_map<int, RadiusClass> classes_;
+};
+
+}  // namespace rc

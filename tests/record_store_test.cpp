@@ -1,0 +1,155 @@
+// The shared record store (host/methods/records/record_store.cpp) with a payload that is not
+// irradiance caching's: the radius limits, neighbor clamping against brute force over every pair,
+// the [R_min, R_max] clamp and its gradient scale, payloads kept byte for byte, and restoring.
+#include "methods/records/record_store.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <random>
+
+namespace rc {
+namespace {
+
+// A payload of another method's size (37 floats: neither IC's nor a multiple of 4).
+struct DummyPayload {
+    float values[37];
+};
+
+DummyPayload dummy_payload(std::mt19937& rng) {
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    DummyPayload p;
+    for (float& v : p.values) {
+        v = unit(rng);
+    }
+    return p;
+}
+
+bool same_payload(const DummyPayload& a, const DummyPayload& b) {
+    return std::equal(std::begin(a.values), std::end(a.values), std::begin(b.values));
+}
+
+// A record at a random place in a 10-unit box; its harmonic mean distance spans four decades,
+// so neighbor clamping has work to do.
+void random_record(std::mt19937& rng, shared::Record& record, RecordHostData& host) {
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    record = make_record(10.0f * glm::vec3(unit(rng), unit(rng), unit(rng)),
+                         glm::vec3(0.0f, 0.0f, 1.0f));
+    host = RecordHostData{};
+    host.harmonic_distance = std::pow(10.0f, -2.0f + 4.0f * unit(rng));
+    host.min_distance = 0.5f * host.harmonic_distance;
+    host.r_min = 0.0f;
+    host.r_max = 1e30f;
+}
+
+// After every insertion every pair of overlapping records satisfies R_j <= R_k + |p_j - p_k| on
+// the unclamped radii (checked over all pairs), no insertion raises a radius, each radius is at
+// most its harmonic distance, its method's limit and R_max, the shared part's radius is the
+// clamped one, and every payload is the one inserted.
+TEST(RecordStore, NeighborClampingKeepsTheTriangleInequalityAfterEveryInsertion) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    RecordStore store(0.3f, sizeof(DummyPayload));
+    std::vector<float> before;
+    std::vector<DummyPayload> inserted;
+    size_t clamped = 0;
+    for (int i = 0; i < 300; ++i) {
+        shared::Record record;
+        RecordHostData host;
+        random_record(rng, record, host);
+        if (i % 3 == 0) {
+            host.r_max = 0.5f;  // some records capped from above
+        }
+        if (i % 5 == 0) {
+            host.r_min = 0.3f;  // and some raised from below
+        }
+        const float limit = i % 4 == 0 ? 0.2f + unit(rng) : INFINITY;
+        inserted.push_back(dummy_payload(rng));
+        const size_t j = store.insert(record, host, inserted.back(), limit);
+        const std::vector<RecordHostData>& h = store.host_data();
+        const std::vector<shared::Record>& records = store.records();
+        ASSERT_EQ(j, records.size() - 1);
+        EXPECT_LE(h[j].radius, host.harmonic_distance);
+        EXPECT_LE(h[j].radius, host.r_max);
+        EXPECT_LE(h[j].radius, limit);
+        clamped += h[j].radius < std::min({host.harmonic_distance, host.r_max, limit}) ? 1 : 0;
+        for (size_t k = 0; k < before.size(); ++k) {
+            ASSERT_LE(h[k].radius, before[k]) << "insertion " << i << " raised record " << k;
+        }
+        for (size_t a = 0; a < records.size(); ++a) {
+            ASSERT_EQ(records[a].radius, std::clamp(h[a].radius, h[a].r_min, h[a].r_max));
+            for (size_t b = 0; b < records.size(); ++b) {
+                const float d =
+                    glm::length(record_position(records[a]) - record_position(records[b]));
+                if (a != b && d < h[a].radius + h[b].radius) {
+                    ASSERT_LE(h[a].radius, h[b].radius + d * (1.0f + 1e-6f))
+                        << "after insertion " << i << ": records " << a << " and " << b;
+                }
+            }
+        }
+        before.clear();
+        for (const RecordHostData& r : h) {
+            before.push_back(r.radius);
+        }
+    }
+    EXPECT_GT(clamped, 30u);  // the test exercised clamping
+    for (size_t i = 0; i < inserted.size(); ++i) {
+        ASSERT_TRUE(same_payload(store.payload<DummyPayload>(i), inserted[i])) << i;
+    }
+}
+
+// An infinite harmonic distance (no hit) gives R_max; R_min raises the shared part's radius and
+// hands back R / R' as the gradient scale; a payload of the wrong size is refused.
+TEST(RecordStore, ClampsToTheBoundsAndReportsTheGradientScale) {
+    std::mt19937 rng(3);
+    RecordStore store(0.5f, sizeof(DummyPayload));
+    RecordHostData host;
+    host.harmonic_distance = INFINITY;
+    host.r_min = 1.0f;
+    host.r_max = 6.0f;
+    store.insert(make_record(glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f)), host,
+                 dummy_payload(rng), INFINITY);
+    EXPECT_EQ(store.host_data()[0].radius, 6.0f);
+    EXPECT_EQ(store.gradient_scale(0), 1.0f);
+    host.harmonic_distance = 0.25f;
+    store.insert(make_record(glm::vec3(100.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)), host,
+                 dummy_payload(rng), INFINITY);
+    EXPECT_EQ(store.host_data()[1].radius, 0.25f);
+    EXPECT_EQ(store.records()[1].radius, 1.0f);
+    EXPECT_EQ(store.gradient_scale(1), 0.25f);
+    EXPECT_THROW(store.insert(store.records()[0], host, 1.0f, INFINITY), Error);
+}
+
+// Restoring a store's records gives the same shared parts, host data, payloads and neighbor
+// search: a record inserted next is clamped as in the original.
+TEST(RecordStore, RestoredStoreClampsTheNextRecordAsTheOriginal) {
+    std::mt19937 rng(29);
+    RecordStore store(0.4f, sizeof(DummyPayload));
+    for (int i = 0; i < 200; ++i) {
+        shared::Record record;
+        RecordHostData host;
+        random_record(rng, record, host);
+        store.insert(record, host, dummy_payload(rng), INFINITY);
+    }
+    RecordStore copy(0.4f, sizeof(DummyPayload));
+    copy.restore(store.records(), store.host_data(), store.payloads());
+    EXPECT_EQ(copy.payloads(), store.payloads());
+    for (int i = 0; i < 50; ++i) {
+        shared::Record record;
+        RecordHostData host;
+        random_record(rng, record, host);
+        const DummyPayload p = dummy_payload(rng);
+        store.insert(record, host, p, INFINITY);
+        copy.insert(record, host, p, INFINITY);
+    }
+    ASSERT_EQ(copy.size(), store.size());
+    for (size_t i = 0; i < store.size(); ++i) {
+        ASSERT_EQ(copy.host_data()[i].radius, store.host_data()[i].radius) << i;
+        ASSERT_EQ(copy.records()[i].radius, store.records()[i].radius) << i;
+    }
+}
+
+}  // namespace
+}  // namespace rc
