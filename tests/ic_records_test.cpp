@@ -1,5 +1,5 @@
-// The irradiance cache's record store (host/methods/irradiance_records.cpp) and the device's
-// weighted interpolation (rc_ic_gather) against brute force on the host.
+// The irradiance cache's record store (host/methods/irradiance_records.cpp): neighbor clamping, the
+// radius limits and the record grid. The device's weighted interpolation is in ic_gather_test.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,11 +7,7 @@
 #include <glm/geometric.hpp>
 #include <random>
 
-#include "bvh/bvh.h"
-#include "bvh/device_bvh.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/irradiance_cache/irradiance_records.h"
-#include "scene/device_scene.h"
 #include "test_support.h"
 
 namespace rc {
@@ -156,102 +152,6 @@ TEST(IcRecords, GridListsEveryRecordCoveringAPoint) {
         }
     }
     EXPECT_GT(covered, 200u);
-}
-
-// The weighted sum of one record at (p, n), in double precision from the definitions: Ward's
-// weight less 1/a, capped; zero behind the point, past the nearest occluder and beyond the
-// influence border; extrapolation by both gradients, clamped at zero.
-void add_record(const shared::IrradianceRecord& r, glm::dvec3 p, glm::dvec3 n, double a,
-                glm::dvec4& sum) {
-    const glm::dvec3 pi(r.position.x, r.position.y, r.position.z);
-    const glm::dvec3 ni = glm::normalize(glm::dvec3(r.normal.x, r.normal.y, r.normal.z));
-    const glm::dvec3 o(r.occluder.x, r.occluder.y, r.occluder.z);
-    const double radius = r.position.w;
-    const glm::dvec3 offset = p - pi;
-    if (glm::dot(offset, 0.5 * (n + ni)) < -1e-3 * a * radius ||
-        glm::dot(offset, o) > glm::dot(o, o)) {
-        return;
-    }
-    const double error =
-        glm::length(offset) / radius + std::sqrt(std::max(0.0, 1.0 - glm::dot(n, ni)));
-    if (error >= a) {
-        return;
-    }
-    const double w = std::min(1.0 / std::max(error, 1e-12) - 1.0 / a,
-                              static_cast<double>(kIrradianceCacheMaxWeight));
-    const glm::dvec3 axis = glm::cross(ni, n);
-    const shared::float4 rotation[3] = {r.rotation_r, r.rotation_g, r.rotation_b};
-    const shared::float4 translation[3] = {r.translation_r, r.translation_g, r.translation_b};
-    const double e[3] = {r.irradiance.x, r.irradiance.y, r.irradiance.z};
-    for (int c = 0; c < 3; ++c) {
-        const double extrapolated =
-            e[c] + glm::dot(axis, glm::dvec3(rotation[c].x, rotation[c].y, rotation[c].z)) +
-            glm::dot(offset, glm::dvec3(translation[c].x, translation[c].y, translation[c].z));
-        sum[c] += w * std::max(0.0, extrapolated);
-    }
-    sum.w += w;
-}
-
-// The device's sums over random records at random query points equal the host's brute force
-// over every record within 1e-5 relative.
-TEST(IcRecords, GatherEqualsBruteForceWeightedAverage) {
-    const Scene scene = test::load_cornell_box();
-    const Bvh bvh = build_bvh(scene.mesh);
-    Context& context = test::shared_context();
-    const DeviceBvh device_bvh(context, bvh);
-    const DeviceScene device_scene(context, scene);
-    IrradianceCache cache(context, scene, device_bvh, device_scene);
-
-    std::mt19937 rng(23);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-    std::vector<CacheRecord> records;
-    for (int i = 0; i < 500; ++i) {
-        CacheRecord r = random_record(rng);
-        r.radius = 0.5f + 3.0f * unit(rng);
-        // Every other record sees a near occluder beside it.
-        if (i % 2 == 0) {
-            const glm::vec3 side = glm::normalize(glm::cross(r.normal, random_unit(rng)));
-            r.occluder = (0.2f + unit(rng)) * side;
-        }
-        records.push_back(r);
-    }
-    RecordStore store(0.4f);
-    store.restore(records);
-    const std::vector<shared::IrradianceRecord> device = store.device_records();
-
-    // Queries near records: within their influence, off the tangent plane a little, normals
-    // turned a little.
-    std::vector<shared::GBufferSample> queries;
-    for (int q = 0; q < 4000; ++q) {
-        const CacheRecord& r = records[rng() % records.size()];
-        const glm::vec3 p =
-            r.position + 0.5f * r.radius * unit(rng) * random_unit(rng) + 0.01f * random_unit(rng);
-        const glm::vec3 n = glm::normalize(r.normal + 0.3f * unit(rng) * random_unit(rng));
-        shared::GBufferSample g{};
-        g.position = {p.x, p.y, p.z, 0.0f};
-        g.normal = {n.x, n.y, n.z, 1.0f};
-        g.info = {0, q, 0, 1};
-        queries.push_back(g);
-    }
-    const std::vector<shared::float4> gathered = cache.gather(store, queries);
-    ASSERT_EQ(gathered.size(), queries.size());
-    size_t covered = 0;
-    for (size_t q = 0; q < queries.size(); ++q) {
-        const glm::dvec3 p(queries[q].position.x, queries[q].position.y, queries[q].position.z);
-        const glm::dvec3 n = glm::normalize(
-            glm::dvec3(queries[q].normal.x, queries[q].normal.y, queries[q].normal.z));
-        glm::dvec4 expected(0.0);
-        for (const shared::IrradianceRecord& r : device) {
-            add_record(r, p, n, store.accuracy(), expected);
-        }
-        const double got[4] = {gathered[q].x, gathered[q].y, gathered[q].z, gathered[q].w};
-        for (int c = 0; c < 4; ++c) {
-            EXPECT_NEAR(got[c], expected[c], 1e-5 * std::max(1.0, std::fabs(expected[c])))
-                << "query " << q << ", component " << c;
-        }
-        covered += expected.w > 0.0 ? 1 : 0;
-    }
-    EXPECT_GT(covered, queries.size() / 4);
 }
 
 }  // namespace
