@@ -389,14 +389,6 @@ TEST(Cli, DefinesOverrideRenderDefaultsAndStatsRecordThem) {
     EXPECT_EQ(nlohmann::json::parse(read_file(dir / "stats2.json"))["spp"], 2);
 }
 
-TEST(Cli, TimeBudgetRendersAtLeastOnePass) {
-    const auto dir = test::scratch_dir("cli_time");
-    const test::CommandResult result = test::run_radcache(
-        {"render", cornell_box(), "-o", (dir / "out.png").string(), "--time", "0.3", "--width",
-         "16", "--height", "16", "--quiet", "--stats", (dir / "stats.json").string()});
-    ASSERT_EQ(result.exit_code, 0) << result.output;
-    EXPECT_GE(nlohmann::json::parse(read_file(dir / "stats.json"))["spp"].get<int>(), 1);
-}
 
 TEST(Cli, RenderBadInputsFailBeforeWritingAnything) {
     const auto dir = test::scratch_dir("cli_render_bad");

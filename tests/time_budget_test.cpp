@@ -1,0 +1,68 @@
+// `render --time T` bounds the render by time, not by --spp: with an absurd --spp the process still
+// ends (CTest's TIMEOUT on this test turns an ignored --time into a failure instead of a hang),
+// renders at least one pass and far fewer than --spp, and reports at least T seconds of rendering.
+// Methods without a time budget refuse --time. Only the command line is used.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "image/image.h"
+#include "image/image_io.h"
+#include "test_support.h"
+#include "util/file_io.h"
+
+namespace rc {
+namespace {
+
+std::string cornell_box() {
+    return (test::source_dir() / "scenes/cornell-box/scene.json").string();
+}
+
+// The largest --spp the command line accepts: at 16 x 16 pixels, rendering all of it would take
+// hours, far beyond the test's TIMEOUT.
+constexpr int kAbsurdSpp = 1 << 24;
+
+TEST(TimeBudget, StopsByTimeLongBeforeAnAbsurdSampleCount) {
+    const auto dir = test::scratch_dir("time_budget");
+    const double budget = 0.5;
+    const test::CommandResult result = test::run_radcache(
+        {"render", cornell_box(), "-o", (dir / "out.exr").string(), "--method", "pt", "--time",
+         "0.5", "--spp", std::to_string(kAbsurdSpp), "--width", "16", "--height", "16", "--quiet",
+         "--stats", (dir / "stats.json").string()});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const nlohmann::json stats = nlohmann::json::parse(read_file(dir / "stats.json"));
+    const int spp = stats["spp"].get<int>();
+    EXPECT_GE(spp, 1);
+    // (A pass of 256 paths a microsecond is beyond any device: the budget, not --spp, ended it.)
+    EXPECT_LT(spp, kAbsurdSpp / 16) << "the render went on to a sample count, not a time";
+    ASSERT_EQ(stats["frames"].size(), 1u);
+    EXPECT_EQ(stats["frames"][0]["spp"].get<int>(), spp);
+    // The passes ran until the budget was spent: the frame's own clock and the render phase.
+    EXPECT_GE(stats["frames"][0]["seconds"].get<double>(), budget);
+    EXPECT_GE(stats["seconds"]["render"].get<double>(), budget);
+    // The image is the passes' mean: finite and lit.
+    const Image image = select_layers(read_image(dir / "out.exr"), {"beauty"});
+    double sum = 0.0;
+    for (float v : image.pixels) {
+        ASSERT_TRUE(std::isfinite(v));
+        sum += v;
+    }
+    EXPECT_GT(sum, 0.0);
+}
+
+TEST(TimeBudget, MethodsWithoutATimeBudgetRefuseIt) {
+    const auto dir = test::scratch_dir("time_budget_refused");
+    for (const char* method : {"normals", "ic", "ivg", "ivg-gather"}) {
+        const test::CommandResult result = test::run_radcache(
+            {"render", cornell_box(), "-o", (dir / "out.png").string(), "--method", method,
+             "--time", "0.5", "--width", "8", "--height", "8", "--quiet"});
+        EXPECT_EQ(result.exit_code, 2) << method << ": " << result.output;
+        EXPECT_NE(result.output.find("--time"), std::string::npos)
+            << method << ": " << result.output;
+        EXPECT_FALSE(std::filesystem::exists(dir / "out.png")) << method;
+    }
+}
+
+}  // namespace
+}  // namespace rc
