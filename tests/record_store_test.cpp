@@ -120,6 +120,10 @@ TEST(RecordStore, ClampsToTheBoundsAndReportsTheGradientScale) {
     EXPECT_EQ(store.records()[1].radius, 1.0f);
     EXPECT_EQ(store.gradient_scale(1), 0.25f);
     EXPECT_THROW(store.insert(store.records()[0], host, 1.0f, INFINITY), Error);
+    const std::vector<float> floats(36, 0.0f);
+    EXPECT_THROW(store.insert_bytes(store.records()[0], host, floats.data(),
+                                    floats.size() * sizeof(float), INFINITY),
+                 Error);
 }
 
 // Restoring a store's records gives the same shared parts, host data, payloads and neighbor
@@ -142,7 +146,7 @@ TEST(RecordStore, RestoredStoreClampsTheNextRecordAsTheOriginal) {
         random_record(rng, record, host);
         const DummyPayload p = dummy_payload(rng);
         store.insert(record, host, p, INFINITY);
-        copy.insert(record, host, p, INFINITY);
+        copy.insert_bytes(record, host, p.values, sizeof p.values, INFINITY);  // the untyped form
     }
     ASSERT_EQ(copy.size(), store.size());
     for (size_t i = 0; i < store.size(); ++i) {

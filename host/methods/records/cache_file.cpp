@@ -128,7 +128,7 @@ void write_cache_file(const std::filesystem::path& path, const CacheFileKey& key
         for (size_t i = 0; i < store.size(); ++i) {
             append(bytes, &store.records()[i], 1);
             append(bytes, &store.host_data()[i], 1);
-            append(bytes, store.payloads().data() + i * key.payload_bytes, key.payload_bytes);
+            append(bytes, store.payload_data(i), key.payload_bytes);
         }
     }
     const uint64_t sum = checksum(bytes.data(), bytes.size());

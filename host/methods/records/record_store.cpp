@@ -45,7 +45,8 @@ float RecordStore::gradient_scale(size_t i) const {
 }
 
 size_t RecordStore::insert_bytes(const shared::Record& record, const RecordHostData& host,
-                                 const void* payload, float radius_limit) {
+                                 const void* payload, size_t bytes, float radius_limit) {
+    check_payload_size(bytes);
     // R from the harmonic mean distance, limited by the method's limit (irradiance caching: the
     // translational gradient, course "Gradient Limit on Record Spacing") and by r_max, above
     // which R never matters (this keeps neighbor searches local; the lower clamp comes only
@@ -69,8 +70,8 @@ size_t RecordStore::insert_bytes(const shared::Record& record, const RecordHostD
     const size_t j = records_.size();
     records_.push_back(record);
     host_.push_back(host);
-    const std::byte* bytes = static_cast<const std::byte*>(payload);
-    payloads_.insert(payloads_.end(), bytes, bytes + payload_bytes_);
+    const std::byte* data = static_cast<const std::byte*>(payload);
+    payloads_.insert(payloads_.end(), data, data + payload_bytes_);
     set_radius(j, radius);
     index_record(static_cast<uint32_t>(j));
     std::vector<size_t> changed = {j};

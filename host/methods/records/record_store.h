@@ -51,9 +51,11 @@ class RecordStore {
     size_t insert(const shared::Record& record, const RecordHostData& host, const Payload& payload,
                   float radius_limit) {
         static_assert(std::is_trivially_copyable_v<Payload>);
-        check_payload_size(sizeof(Payload));
-        return insert_bytes(record, host, &payload, radius_limit);
+        return insert_bytes(record, host, &payload, sizeof(Payload), radius_limit);
     }
+    // The same for a payload whose size is chosen at run time: `bytes` must be payload_bytes().
+    size_t insert_bytes(const shared::Record& record, const RecordHostData& host,
+                        const void* payload, size_t bytes, float radius_limit);
 
     // Restores records as they were stored (host.radius already final), for cache files.
     void restore(std::vector<shared::Record> records, std::vector<RecordHostData> host,
@@ -64,12 +66,13 @@ class RecordStore {
     const std::vector<RecordHostData>& host_data() const { return host_; }
     // Every payload, record by record, payload_bytes() each.
     const std::vector<std::byte>& payloads() const { return payloads_; }
+    const std::byte* payload_data(size_t i) const { return payloads_.data() + i * payload_bytes_; }
     template <class Payload>
     Payload payload(size_t i) const {
         static_assert(std::is_trivially_copyable_v<Payload>);
         check_payload_size(sizeof(Payload));
         Payload p;
-        std::memcpy(&p, payloads_.data() + i * payload_bytes_, sizeof p);
+        std::memcpy(&p, payload_data(i), sizeof p);
         return p;
     }
     // R / R' when the [r_min, r_max] clamp raised R to R', else 1: the method scales its
@@ -87,8 +90,6 @@ class RecordStore {
         std::vector<uint32_t> records;
         std::unordered_map<uint64_t, std::vector<uint32_t>> cells;
     };
-    size_t insert_bytes(const shared::Record& record, const RecordHostData& host,
-                        const void* payload, float radius_limit);
     void check_payload_size(size_t bytes) const;
     // Sets the unclamped R of record i and its shared part's clamped radius.
     void set_radius(size_t i, float radius);
