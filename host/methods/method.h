@@ -36,6 +36,20 @@ struct MethodSettings {
 
     // Whether `layer` will be written.
     bool writes_layer(const std::string& layer) const;
+
+    // Copies what a method's own options struct shares with these settings: the image size,
+    // samples per pixel, seed and (where it has them) the path depth limits.
+    template <class Options>
+    void apply_to(Options& options) const {
+        options.width = width;
+        options.height = height;
+        options.spp = spp;
+        options.seed = seed;
+        if constexpr (requires { options.max_depth; }) {
+            options.max_depth = max_depth;
+            options.rr_depth = rr_depth;
+        }
+    }
 };
 
 // One frame as the method sees it: the device, the scene posed at the frame, its BVH and scene

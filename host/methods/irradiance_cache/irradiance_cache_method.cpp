@@ -59,12 +59,7 @@ IrradianceCacheOptions parse_options(const ParsedArguments& arguments,
     if (settings.frame_count > 1 && (!ic.cache_in.empty() || !ic.cache_out.empty())) {
         throw Error("--cache-in/--cache-out take one frame", kExitUsage);
     }
-    ic.width = settings.width;
-    ic.height = settings.height;
-    ic.spp = settings.spp;
-    ic.seed = settings.seed;
-    ic.max_depth = settings.max_depth;
-    ic.rr_depth = settings.rr_depth;
+    settings.apply_to(ic);
     ic.records_overlay = settings.writes_layer("records");
     return ic;
 }

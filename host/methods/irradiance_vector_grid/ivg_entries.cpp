@@ -27,10 +27,7 @@ class GridRendering final : public Method {
             build_frame_grid(frame, grid_options_, hooks, &result);
         IvgMethod method(frame.context, frame.scene, frame.bvh, frame.device_scene, *grid);
         IvgRenderOptions options;
-        options.width = settings_.width;
-        options.height = settings_.height;
-        options.spp = settings_.spp;
-        options.seed = settings_.seed;
+        settings_.apply_to(options);
         options.gather_rays = gather_rays_;
         IvgRenderStats stats;
         result.image = method.render(options, &stats);

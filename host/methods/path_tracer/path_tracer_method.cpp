@@ -24,13 +24,8 @@ class PathTracerMethod final : public Method {
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         PathTracer tracer(frame.context, frame.scene, frame.bvh, frame.device_scene);
         PathTracerOptions options;
-        options.width = settings_.width;
-        options.height = settings_.height;
-        options.spp = settings_.spp;
+        settings_.apply_to(options);
         options.time_limit = settings_.time;
-        options.seed = settings_.seed;
-        options.max_depth = settings_.max_depth;
-        options.rr_depth = settings_.rr_depth;
         if (save_every_pow2_) {
             options.on_power_of_two = hooks.intermediate;
         }
