@@ -137,16 +137,16 @@ IrradianceCache::IrradianceCache(Context& context, const Scene& scene, const Dev
       scene_(scene),
       bvh_(bvh),
       device_scene_(device_scene),
-      gbuffer_kernel_(context.kernel("irradiance_cache.cl", "ic_gbuffer")),
-      hits_kernel_(context.kernel("irradiance_cache.cl", "ic_record_hits")),
-      cells_kernel_(context.kernel("irradiance_cache.cl", "ic_record_cells")),
-      cached_cells_kernel_(context.kernel("irradiance_cache.cl", "ic_record_cells_cached")),
-      grid_cells_kernel_(context.kernel("irradiance_cache.cl", "ic_record_cells_grid")),
-      reduce_kernel_(context.kernel("irradiance_cache.cl", "ic_record_reduce")),
-      gather_kernel_(context.kernel("irradiance_cache.cl", "ic_gather")),
-      uncovered_kernel_(context.kernel("irradiance_cache.cl", "ic_uncovered")),
-      select_kernel_(context.kernel("irradiance_cache.cl", "ic_gbuffer_select")),
-      shade_kernel_(context.kernel("irradiance_cache.cl", "ic_shade")) {}
+      gbuffer_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer")),
+      hits_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_hits")),
+      cells_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_cells")),
+      cached_cells_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_cells_cached")),
+      grid_cells_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_cells_grid")),
+      reduce_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_reduce")),
+      gather_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gather")),
+      uncovered_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_uncovered")),
+      select_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer_select")),
+      shade_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_shade")) {}
 
 void IrradianceCache::reset(const RecordSampling& sampling) {
     if (sampling.levels < 1 || sampling.m < 1 || sampling.n < 1) {

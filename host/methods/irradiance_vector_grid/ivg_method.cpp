@@ -45,7 +45,7 @@ IvgMethod::IvgMethod(Context& context, const Scene& scene, const DeviceBvh& bvh,
       bvh_(bvh),
       device_scene_(device_scene),
       grid_(grid),
-      shade_kernel_(context.kernel("irradiance_vector_grid.cl", "ivg_shade")) {}
+      shade_kernel_(context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_shade")) {}
 
 Image IvgMethod::render(const IvgRenderOptions& options, IvgRenderStats* stats) {
     const int width = options.width > 0 ? options.width : scene_.camera.width;

@@ -9,7 +9,7 @@ NormalsMethod::NormalsMethod(Context& context, const Scene& scene, const DeviceB
     : context_(context),
       scene_(scene),
       bvh_(bvh),
-      kernel_(context.kernel("normals.cl", "render_normals")) {}
+      kernel_(context.kernel("normals/normals.cl", "render_normals")) {}
 
 Image NormalsMethod::render(const NormalsOptions& options) {
     const int width = options.width > 0 ? options.width : scene_.camera.width;

@@ -16,7 +16,7 @@ const char* const kPathTracerAovs[6] = {"beauty", "direct", "indirect",
 
 namespace {
 
-constexpr size_t kFilmSlots = 6;  // float4 sums per pixel (see kernels/path_tracer.cl)
+constexpr size_t kFilmSlots = 6;  // float4 sums per pixel (see kernels/path_tracer/path_tracer.cl)
 
 std::string gibibytes(double bytes) {
     char text[32];
@@ -32,7 +32,7 @@ PathTracer::PathTracer(Context& context, const Scene& scene, const DeviceBvh& bv
       scene_(scene),
       bvh_(bvh),
       device_scene_(device_scene),
-      kernel_(context.kernel("path_tracer.cl", "path_trace_pass")) {}
+      kernel_(context.kernel("path_tracer/path_tracer.cl", "path_trace_pass")) {}
 
 Image PathTracer::resolve(const Buffer<shared::float4>& film, int width, int height) const {
     const std::vector<shared::float4> sums = film.download();

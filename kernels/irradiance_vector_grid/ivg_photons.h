@@ -5,7 +5,7 @@
 
 #include "common/cached_radiance.h"
 #include "common/camera.h"
-#include "common/irradiance_vector_grid.h"
+#include "irradiance_vector_grid/ivg_lookup.h"
 #include "common/sampling.h"
 
 // Photon streams are keyed apart from the camera's and the records' streams.

@@ -1,7 +1,7 @@
 // Entry kernel of the path tracer (host/methods/path_tracer.cpp): one sample for every pixel,
 // accumulated into the film. Each pixel is written by one work item per pass, so the sums are
 // deterministic.
-#include "path_tracer.h"
+#include "path_tracer/path_tracer.h"
 #include "scene_arguments.h"
 
 // film: for each pixel 6 float4 sums: beauty, beauty squared, direct, indirect, albedo, normal.

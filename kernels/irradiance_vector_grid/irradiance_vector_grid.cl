@@ -1,8 +1,8 @@
 // Entry kernels of the irradiance vector grid (host/methods/irradiance_vector_grid.cpp,
 // host/methods/ivg_method.cpp): photon tracing, deposition of given segments (tests),
 // normalisation, lookups (tests) and the render pass of `ivg` and `ivg-gather`.
-#include "camera_film.h"
-#include "irradiance_vector_grid.h"
+#include "common/camera_film.h"
+#include "irradiance_vector_grid/ivg_photons.h"
 #include "scene_arguments.h"
 
 // Item i: photon params.photons.y + i, traced and deposited into accum (64-bit fixed point).

@@ -1,9 +1,9 @@
 // Entry kernels of irradiance caching (host/methods/irradiance_cache.cpp): the G-buffer, record
 // hemisphere sampling and its reduction, record gathering (coverage and interpolation), and the
 // final shading pass.
-#include "camera_film.h"
-#include "irradiance_cache.h"
-#include "irradiance_vector_grid.h"
+#include "common/camera_film.h"
+#include "irradiance_cache/ic_shading.h"
+#include "irradiance_vector_grid/ivg_photons.h"
 #include "scene_arguments.h"
 
 // The G-buffer entry of a ray's first hit, with the hit distance for the footprint (position.w)

@@ -5,7 +5,7 @@
 
 #include "common/cached_radiance.h"
 #include "common/camera.h"
-#include "common/irradiance_cache.h"
+#include "irradiance_cache/ic_records.h"
 
 // World size of a pixel at distance t along the camera ray through pixel (x, y).
 RC_FUNC float rc_ic_pixel_footprint(const CameraParams* camera, float x, float y, float t) {
