@@ -229,8 +229,10 @@ TEST(IcRecords, GatherEqualsBruteForceWeightedAverage) {
         const glm::vec3 n = glm::normalize(r.normal + 0.3f * unit(rng) * random_unit(rng));
         shared::GBufferSample g{};
         g.position = {p.x, p.y, p.z, 0.0f};
-        g.normal = {n.x, n.y, n.z, 1.0f};
-        g.info = {0, q, 0, 1};
+        g.normal = {n.x, n.y, n.z, 0.0f};
+        g.diffuse = 1.0f;
+        g.primitive = 0;
+        g.served = 1;
         queries.push_back(g);
     }
     const std::vector<shared::float4> gathered = cache.gather(store, queries);

@@ -71,8 +71,9 @@ TEST(ProgramBuild, BrokenKernelReportsTheBuildLogWithFileAndLine) {
         FAIL() << "no error";
     } catch (const Error& error) {
         const std::string message = error.what();
-        EXPECT_NE(message.find("clBuildProgram(normals/normals.cl) failed: CL_BUILD_PROGRAM_FAILURE"),
-                  std::string::npos)
+        EXPECT_NE(
+            message.find("clBuildProgram(normals/normals.cl) failed: CL_BUILD_PROGRAM_FAILURE"),
+            std::string::npos)
             << message;
         EXPECT_NE(message.find("build log"), std::string::npos) << message;
         EXPECT_NE(message.find("normals/normals.h:"), std::string::npos) << message;

@@ -6,22 +6,26 @@
 #include "irradiance_vector_grid/ivg_photons.h"
 #include "scene_arguments.h"
 
-// The G-buffer entry of a ray's first hit, with the hit distance for the footprint (position.w)
-// and `owner` in info.y, info.z.
-RC_FUNC GBufferSample rc_ic_gbuffer_sample(const SceneData* scene, Ray ray, int2 owner) {
+// The G-buffer entry of a ray's first hit, with the hit distance as its footprint (to be scaled
+// by the caller).
+RC_FUNC GBufferSample rc_ic_gbuffer_sample(const SceneData* scene, Ray ray) {
     const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
     GBufferSample g;
-    g.info = (int4)(-1, owner.x, owner.y, 0);
     g.position = g.normal = g.origin = (float4)(0.0f);
+    g.footprint = g.diffuse = 0.0f;
+    g.primitive = -1;
+    g.served = 0;
     if (hit.primitive != RC_NO_HIT) {
         const SurfacePoint sp = rc_surface_point(scene, ray, hit);
         const SurfaceMaterial material = rc_surface_material(scene, &sp);
         const float diffuse = rc_luminance(material.diffuse);
-        g.position = (float4)(sp.position, hit.t);
-        g.normal = (float4)(sp.shading.n, diffuse);
+        g.position = (float4)(sp.position, 0.0f);
+        g.normal = (float4)(sp.shading.n, 0.0f);
         g.origin = (float4)(sp.origin, 0.0f);
-        g.info.x = (int)hit.primitive;
-        g.info.w = diffuse > 0.0f ? 1 : 0;
+        g.footprint = hit.t;
+        g.diffuse = diffuse;
+        g.primitive = (int)hit.primitive;
+        g.served = diffuse > 0.0f ? 1 : 0;
     }
     return g;
 }
@@ -34,13 +38,13 @@ __kernel void ic_gbuffer(uint begin, uint end, IcParams params, CameraParams cam
         return;
     }
     const SceneData scene = RC_SCENE_DATA();
-    const uint spp = (uint)params.image.z;
+    const uint spp = (uint)params.camera_spp;
     const uint pixel = i / spp;
     RngStream rng;
     float x, y;
     const Ray ray = rc_ic_camera_ray(&params, &camera, pixel, i % spp, &rng, &x, &y);
-    GBufferSample g = rc_ic_gbuffer_sample(&scene, ray, (int2)((int)pixel, (int)(i % spp)));
-    g.position.w = rc_ic_pixel_footprint(&camera, x, y, g.position.w);
+    GBufferSample g = rc_ic_gbuffer_sample(&scene, ray);
+    g.footprint = rc_ic_pixel_footprint(&camera, x, y, g.footprint);
     gbuffer[i] = g;
 }
 
@@ -54,23 +58,23 @@ __kernel void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PAR
         return;
     }
     const SceneData scene = RC_SCENE_DATA();
-    const uint per_record = (uint)(params.sampling.x * params.sampling.y);
+    const uint per_record = (uint)(params.strata_m * params.strata_n);
     const uint b = i / per_record;
     const uint cell = i % per_record;
     RngStream rng;
-    const Ray ray = rc_ic_cell_ray(&params, (uint)params.sampling.z + b, cell,
+    const Ray ray = rc_ic_cell_ray(&params, (uint)params.first_record + b, cell,
                                    records[b].normal.xyz, origins[b].xyz, &rng);
-    GBufferSample g = rc_ic_gbuffer_sample(&scene, ray, (int2)((int)b, (int)cell));
-    g.position.w *= rc_ic_deeper_pixel_width(&params);
+    GBufferSample g = rc_ic_gbuffer_sample(&scene, ray);
+    g.footprint *= rc_ic_deeper_pixel_width(&params);
     hits[i] = g;
 }
 
 // The ray of item i of a record batch: cell i % (M N) of batch record i / (M N).
 RC_FUNC Ray rc_ic_batch_cell_ray(const IcParams* params, __global const IrradianceRecord* records,
                                  __global const float4* origins, uint i, RngStream* rng) {
-    const uint per_record = (uint)(params->sampling.x * params->sampling.y);
+    const uint per_record = (uint)(params->strata_m * params->strata_n);
     const uint b = i / per_record;
-    return rc_ic_cell_ray(params, (uint)params->sampling.z + b, i % per_record,
+    return rc_ic_cell_ray(params, (uint)params->first_record + b, i % per_record,
                           records[b].normal.xyz, origins[b].xyz, rng);
 }
 
@@ -97,8 +101,8 @@ __kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PA
     const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
     // The hemisphere ray is a bounce of the record's level; its hit's own emission is direct
     // light (left to next-event estimation at the shading point) unless the tests ask for it.
-    const PathSample s = rc_path_radiance(&scene, ray, &rng, params.depth.z + 1, params.depth.x,
-                                          params.depth.y, params.sampling.w != 0);
+    const PathSample s = rc_path_radiance(&scene, ray, &rng, params.level + 1, params.max_depth,
+                                          params.rr_depth, params.count_emission != 0);
     rc_ic_store_cell(cells, counters, i, s.radiance, s.distance, s.rays);
 }
 
@@ -119,7 +123,7 @@ __kernel void ic_record_cells_cached(uint begin, uint end, IcParams params, RC_S
     RngStream rng;
     const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
     const CachedRadiance c = rc_ic_cached_radiance(&scene, &params, &cache, ray, &rng,
-                                                   params.sampling.w != 0, params.depth.z + 1);
+                                                   params.count_emission != 0, params.level + 1);
     rc_ic_store_cell(cells, counters, i, c.direct + c.indirect, c.distance, c.rays);
 }
 
@@ -141,8 +145,8 @@ __kernel void ic_record_cells_grid(uint begin, uint end, IcParams params, RC_SCE
     RngStream rng;
     const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
     float3 grid_term;
-    const CachedRadiance c = rc_ivg_radiance(&scene, &grid, ray, &rng, params.sampling.w != 0,
-                                             params.depth.z + 1, &grid_term);
+    const CachedRadiance c = rc_ivg_radiance(&scene, &grid, ray, &rng, params.count_emission != 0,
+                                             params.level + 1, &grid_term);
     rc_ic_store_cell(cells, counters, i, c.direct + c.indirect, c.distance, c.rays);
 }
 
@@ -154,8 +158,8 @@ __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global c
     if (b >= end) {
         return;
     }
-    const uint per_record = (uint)(params.sampling.x * params.sampling.y);
-    const RecordEstimate e = rc_ic_reduce(&params, (uint)params.sampling.z + b,
+    const uint per_record = (uint)(params.strata_m * params.strata_n);
+    const RecordEstimate e = rc_ic_reduce(&params, (uint)params.first_record + b,
                                           records[b].normal.xyz, cells + (size_t)b * per_record);
     __global IrradianceRecord* r = records + b;
     r->irradiance = (float4)(e.irradiance, 0.0f);
@@ -169,7 +173,7 @@ __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global c
     distances[b] = (float4)(e.harmonic_distance, e.min_distance, 0.0f, 0.0f);
 }
 
-// Item q: candidate q of a placement pass (params.placement): with C candidate columns, stride s
+// Item q: candidate q of a placement pass (params.placement_*): with C candidate columns, stride s
 // and S samples per candidate pixel, candidate q is camera sample q % S of pixel
 // (s (q / S % C), s (q / S / C)); with stride 0, entry q. Appends the G-buffer index of each
 // candidate the cache serves but no record covers to uncovered[], counting them in count[0] (the
@@ -183,17 +187,17 @@ __kernel void ic_uncovered(uint begin, uint end, IcParams params, RecordGrid gri
     if (q >= end) {
         return;
     }
-    const uint stride = (uint)params.placement.x;
-    const uint per_pixel = (uint)max(params.placement.y, 1);
-    const uint columns = (uint)max(params.placement.z, 1);
+    const uint stride = (uint)params.placement_stride;
+    const uint per_pixel = (uint)max(params.placement_spp, 1);
+    const uint columns = (uint)max(params.placement_columns, 1);
     const uint c = q / per_pixel;
     const uint x = stride * (c % columns);
     const uint y = stride * (c / columns);
     const uint i =
-        stride == 0 ? q : (y * (uint)params.image.x + x) * (uint)params.image.z + q % per_pixel;
+        stride == 0 ? q : (y * (uint)params.width + x) * (uint)params.camera_spp + q % per_pixel;
     const GBufferSample g = gbuffer[i];
-    if (g.info.w == 0 || rc_ic_covered(&grid, cell_start, cell_records, records, g.position.xyz,
-                                       g.normal.xyz, params.weights.x, params.weights.y)) {
+    if (g.served == 0 || rc_ic_covered(&grid, cell_start, cell_records, records, g.position.xyz,
+                                       g.normal.xyz, params.accuracy, params.max_weight)) {
         return;
     }
     uncovered[atomic_inc(&count[0])] = i;
@@ -221,7 +225,7 @@ __kernel void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
     }
     const GBufferSample g = gbuffer[queries[q]];
     out[q] = rc_ic_gather(&grid, cell_start, cell_records, records, g.position.xyz, g.normal.xyz,
-                          params.weights.x, params.weights.y);
+                          params.accuracy, params.max_weight);
 }
 
 // The render pass (splat accumulation). Every camera sample gets the sums sum w E' and sum w of
@@ -247,7 +251,7 @@ __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camer
     uint rays = 0;
     uint finite = 0;
     float coverage = INFINITY;
-    for (uint s = 0; s < (uint)params.image.z; ++s) {
+    for (uint s = 0; s < (uint)params.camera_spp; ++s) {
         const CachedShading c = rc_ic_shade(&scene, &camera, &params, &cache, pixel, s);
         const CachedRadiance l = c.light;
         if (!rc_add_camera_sample(&l, sums, &rays, counters, pixel)) {

@@ -2,20 +2,19 @@
 // §6.3): photon segments deposited at voxel-face crossings, and the lookup of the irradiance a
 // surface point receives.
 //
-// Layout: vertex v = (k (cells.y + 1) + j) (cells.x + 1) + i holds 54 values, direction d (0: +x,
-// 1: -x, 2: +y, 3: -y, 4: +z, 5: -z), channel c (r, g, b), component (x, y, z) at
+// Layout: vertex v = (k (cells.y + 1) + j) (cells.x + 1) + i holds RC_IVG_VALUES_PER_VERTEX values:
+// direction d (0: +x, 1: -x, 2: +y, 3: -y, 4: +z, 5: -z), channel c (r, g, b), component (x, y, z)
+// at
 // ((v 6 + d) 3 + c) 3 + component. The "+x" vector holds the light that arrives from the +x side
 // (photons travelling towards -x), which a surface facing +x receives. Accumulation is in 64-bit
-// fixed point (params.origin.w units per unit of flux), so sums do not depend on the order of the
-// atomic additions; the normalised grid is float. The compressed layout keeps, per vertex and
-// direction, 6 half floats: |I_r|, |I_g|, |I_b| and the unit direction of I_r + I_g + I_b (§4.2).
+// fixed point (params.fixed_point_scale units per unit of flux), so sums do not depend on the order
+// of the atomic additions; the normalised grid is float. The compressed layout keeps, per vertex
+// and direction, 6 half floats: |I_r|, |I_g|, |I_b| and the unit direction of I_r + I_g + I_b
+// (§4.2).
 #pragma once
 
 #include "common/math.h"
 #include "shared/types.h"
-
-#define RC_IVG_VALUES_PER_VERTEX 54
-#define RC_IVG_PACKED_PER_VERTEX 36
 
 RC_FUNC float rc_ivg_component(float3 v, int axis) {
     return axis == 0 ? v.x : (axis == 1 ? v.y : v.z);
@@ -31,11 +30,11 @@ RC_FUNC int rc_ivg_vertex(const IvgParams* p, int i, int j, int k) {
 
 // The fixed-point amount one crossing adds for colour channel value `flux` and component
 // `incident` of the incident direction: flux * incident / cosine * units, where cosine is the
-// travel direction's |cosine| to the face's normal (at least p->cell.w). Photons cross a face in
-// proportion to that cosine, so the sum over crossings per unit area estimates Arvo's irradiance
+// travel direction's |cosine| to the face's normal (at least p->min_cosine). Photons cross a face
+// in proportion to that cosine, so the sum over crossings per unit area estimates Arvo's irradiance
 // vector, the integral of L(w) w over the hemisphere; the report's §3.3 formula omits the
 // division, which makes a parallel beam's vector E cos(theta) w instead of E w. With the segment
-// d and its length, incident / cosine = -d_k / max(|d_A|, cell.w |d|): no normalisation, so the
+// d and its length, incident / cosine = -d_k / max(|d_A|, min_cosine |d|): no normalisation, so the
 // amounts are exact functions of the segment. Saturates at +-2^52.
 RC_FUNC long rc_ivg_fixed(float flux, float minus_d_k, float denominator, float units) {
     RC_NO_FP_CONTRACT
@@ -50,7 +49,7 @@ RC_FUNC long rc_ivg_fixed(float flux, float minus_d_k, float denominator, float 
 // Adds the crossings of the segment from a to b (travel direction w = (b - a) / |b - a|) carrying
 // `flux` to accum: at every crossing of a grid plane of axis A strictly after a (a segment leaving
 // a surface that lies on a plane does not cross it) and up to b (a photon that ends on a surface
-// lying on a plane has reached it), flux * (-w) / max(|w_A|, cell.w) is added to the vector of
+// lying on a plane has reached it), flux * (-w) / max(|w_A|, min_cosine) is added to the vector of
 // the nearest vertex on that plane (rounding half up), for the direction -sign(w_A) A. Crossings
 // outside the grid's faces are left out. Positions are computed per crossing from the plane's
 // index, so they do not depend on the order of the walk. Returns the number of crossings.
@@ -79,7 +78,7 @@ RC_FUNC uint rc_ivg_deposit_segment(const IvgParams* p, float3 a, float3 b, floa
         const float high = (fmax(a_a, b_a) - origin_a) / cell_a;
         const int first = max(0, (int)floor(low) - 1);
         const int last = min(planes, (int)ceil(high) + 1);
-        const float denominator = fmax(fabs(da), p->cell.w * length_d);
+        const float denominator = fmax(fabs(da), p->min_cosine * length_d);
         const int direction = 2 * axis + (da < 0.0f ? 0 : 1);
         for (int n = first; n <= last; ++n) {
             const float plane = origin_a + (float)n * cell_a;
@@ -116,7 +115,7 @@ RC_FUNC uint rc_ivg_deposit_segment(const IvgParams* p, float3 a, float3 b, floa
             for (int c = 0; c < 3; ++c) {
                 for (int k = 0; k < 3; ++k) {
                     const long amount =
-                        rc_ivg_fixed(channel[c], minus_d[k], denominator, p->origin.w);
+                        rc_ivg_fixed(channel[c], minus_d[k], denominator, p->fixed_point_scale);
                     if (amount != 0) {
                         rc_atomic_add_long(slot + 3 * c + k, amount);
                     }
@@ -154,7 +153,7 @@ RC_FUNC void rc_ivg_vertex_vectors(const IvgParams* p, RC_GLOBAL const float* va
     j = clamp(j, 0, p->cells.y);
     k = clamp(k, 0, p->cells.z);
     const size_t v = (size_t)rc_ivg_vertex(p, i, j, k);
-    if (p->lookup.y != 0) {
+    if (p->compressed != 0) {
         const size_t base = (v * 6 + (size_t)direction) * 6;
         const float3 colour = vload_half3(0, packed + base);
         const float3 unit = vload_half3(0, packed + base + 3);
@@ -220,7 +219,7 @@ RC_FUNC void rc_ivg_interpolate(const IvgParams* p, RC_GLOBAL const float* value
     const int3 base = rc_ivg_cell_base(p, g);
     const float3 t = g - (float3)((float)base.x, (float)base.y, (float)base.z);
     float3 vectors[3];
-    if (p->lookup.x == RC_IVG_TRICUBIC && visible == 0xff) {
+    if (p->interpolation == RC_IVG_TRICUBIC && visible == 0xff) {
         const float4 wx = rc_ivg_cubic_weights(t.x);
         const float4 wy = rc_ivg_cubic_weights(t.y);
         const float4 wz = rc_ivg_cubic_weights(t.z);

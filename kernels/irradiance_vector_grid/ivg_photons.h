@@ -5,8 +5,8 @@
 
 #include "common/cached_radiance.h"
 #include "common/camera.h"
-#include "irradiance_vector_grid/ivg_lookup.h"
 #include "common/sampling.h"
+#include "irradiance_vector_grid/ivg_lookup.h"
 
 // Photon streams are keyed apart from the camera's and the records' streams.
 #define RC_IVG_PHOTON_DOMAIN 0x9e3779b9u
@@ -86,13 +86,13 @@ RC_FUNC Photon rc_ivg_emit(const SceneData* scene, const IvgParams* p, RngStream
         photon.power = light.radiance.xyz *
                        (2.0f * RC_PI * (1.0f - cos_cutoff) * rc_spot_falloff(&light, direction));
     } else {
-        const float radius = p->sphere.w;
+        const float radius = p->sphere_radius;
         direction = rc_ivg_direction_about((float3)(0.0f, 0.0f, 1.0f), 1.0f - 2.0f * u1, u2);
         const float2 disk = rc_concentric_disk(u3, u4);
         float3 t;
         float3 b;
         rc_orthonormal_basis(direction, &t, &b);
-        origin = p->sphere.xyz + radius * (disk.x * t + disk.y * b - direction);
+        origin = p->sphere_centre.xyz + radius * (disk.x * t + disk.y * b - direction);
         photon.power = light.radiance.xyz * (4.0f * RC_PI * RC_PI * radius * radius);
     }
     photon.power /= selection;
@@ -103,29 +103,29 @@ RC_FUNC Photon rc_ivg_emit(const SceneData* scene, const IvgParams* p, RngStream
 }
 
 // Traces photon `index` (its own random stream) and deposits its segments into accum: every
-// segment after the first bounce, and the first too when p->photons.z (direct light). A photon
+// segment after the first bounce, and the first too when p->include_direct (direct light). A photon
 // reflects by BRDF sampling with Russian roulette from the Russian-roulette depth (survival
 // probability the largest channel of f cos / pdf, at most 1), for at most max depth - 1 bounces
 // (the camera path's bounce at the surface that reads the grid is the last). Counts the rays in
 // *rays; returns the crossings deposited.
 RC_FUNC uint rc_ivg_trace_photon(const SceneData* scene, const IvgParams* p, uint index,
                                  RC_GLOBAL volatile long* accum, uint* rays) {
-    RngStream rng = rc_rng_stream(p->seed.x ^ RC_IVG_PHOTON_DOMAIN, p->seed.y, index, 0);
+    RngStream rng = rc_rng_stream(p->seed_lo ^ RC_IVG_PHOTON_DOMAIN, p->seed_hi, index, 0);
     Photon photon = rc_ivg_emit(scene, p, &rng);
     uint crossings = 0;
     if (!photon.alive) {
         return 0;
     }
-    const int max_depth = p->depth.x;
-    const int rr_depth = p->depth.y;
+    const int max_depth = p->max_depth;
+    const int rr_depth = p->rr_depth;
     for (int bounces = 0;; ++bounces) {
         const Ray ray = photon.ray;
         const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
         ++*rays;
-        const float far = length(ray.origin.xyz - p->sphere.xyz) + 2.0f * p->sphere.w;
+        const float far = length(ray.origin.xyz - p->sphere_centre.xyz) + 2.0f * p->sphere_radius;
         const float3 end =
             ray.origin.xyz + ray.direction.xyz * (hit.primitive == RC_NO_HIT ? far : hit.t);
-        if (bounces > 0 || p->photons.z != 0) {
+        if (bounces > 0 || p->include_direct != 0) {
             crossings += rc_ivg_deposit_segment(p, ray.origin.xyz, end, photon.power, accum);
         }
         if (hit.primitive == RC_NO_HIT || bounces + 2 > max_depth) {
@@ -178,7 +178,7 @@ RC_FUNC float3 rc_ivg_diffuse(const SceneData* scene, const VectorGrid* grid,
 }
 
 // Light arriving along `ray` when the grid provides the diffuse lobe's indirect light at its hit
-// (and its direct light too when the grid holds direct light, params.photons.z): emission (if
+// (and its direct light too when the grid holds direct light, params.include_direct): emission (if
 // count_emission), next-event estimation, rho_d / pi E from the grid, and the other lobes by a
 // path sampled from them. *grid_term: the grid's part. `bounces`: the bounces the ray's path made
 // before.
@@ -189,8 +189,8 @@ RC_FUNC CachedRadiance rc_ivg_radiance(const SceneData* scene, const VectorGrid*
     SurfacePoint sp;
     SurfaceMaterial material;
     float3 wo;
-    const int max_depth = grid->params.depth.x;
-    const bool direct_in_grid = grid->params.photons.z != 0;
+    const int max_depth = grid->params.max_depth;
+    const bool direct_in_grid = grid->params.include_direct != 0;
     *grid_term = (float3)(0.0f);
     if (!rc_cached_vertex(scene, ray, rng, count_emission, !direct_in_grid, bounces, max_depth, &c,
                           &sp, &material, &wo)) {
@@ -204,7 +204,7 @@ RC_FUNC CachedRadiance rc_ivg_radiance(const SceneData* scene, const VectorGrid*
     }
     if (indirect) {
         const SurfaceMaterial traced = rc_without_diffuse(&material);
-        rc_trace_lobes(scene, &sp, &traced, wo, rng, bounces, max_depth, grid->params.depth.y, &c);
+        rc_trace_lobes(scene, &sp, &traced, wo, rng, bounces, max_depth, grid->params.rr_depth, &c);
     }
     return c;
 }
@@ -212,13 +212,13 @@ RC_FUNC CachedRadiance rc_ivg_radiance(const SceneData* scene, const VectorGrid*
 // The camera ray of sample s of a pixel, and its random stream.
 RC_FUNC Ray rc_ivg_camera_ray(const IvgParams* p, const CameraParams* camera, uint pixel, uint s,
                               RngStream* rng) {
-    *rng = rc_rng_stream(p->seed.x, p->seed.y, pixel, s);
+    *rng = rc_rng_stream(p->seed_lo, p->seed_hi, pixel, s);
     const float x = (float)(pixel % (uint)camera->resolution.x) + rc_rng_next_float(rng);
     const float y = (float)(pixel / (uint)camera->resolution.x) + rc_rng_next_float(rng);
     return rc_camera_ray(camera, x, y);
 }
 
-// Camera sample s of a pixel with final gathering (params.depth.z gather rays): exact direct
+// Camera sample s of a pixel with final gathering (params.gather_rays gather rays): exact direct
 // light at the camera's hit; its diffuse lobe's indirect light from cosine-distributed, stratified
 // gather rays whose hits give direct light plus the grid's diffuse light; the
 // other lobes by path tracing. *grid_term: the grid read at the camera's hit (the `grid` layer).
@@ -231,7 +231,7 @@ RC_FUNC CachedRadiance rc_ivg_gather(const SceneData* scene, const VectorGrid* g
     SurfacePoint sp;
     SurfaceMaterial material;
     float3 wo;
-    const int max_depth = grid->params.depth.x;
+    const int max_depth = grid->params.max_depth;
     *grid_term = (float3)(0.0f);
     if (!rc_cached_vertex(scene, ray, &rng, true, true, 0, max_depth, &c, &sp, &material, &wo) ||
         1 >= max_depth) {
@@ -243,7 +243,7 @@ RC_FUNC CachedRadiance rc_ivg_gather(const SceneData* scene, const VectorGrid* g
         c.served = true;
         // Gather rays stratified over m x n cells of the cosine-weighted hemisphere (cos^2 theta
         // = 1 - u1, phi = 2 pi u2), m the largest divisor of their count up to its square root.
-        const int gathers = max(grid->params.depth.z, 1);
+        const int gathers = max(grid->params.gather_rays, 1);
         int m = (int)(sqrt((float)gathers) + 0.5f);
         while (m * m > gathers || gathers % m != 0) {
             --m;
@@ -270,6 +270,6 @@ RC_FUNC CachedRadiance rc_ivg_gather(const SceneData* scene, const VectorGrid* g
         // Cosine sampling: f cos / pdf = rho_d per ray.
         c.indirect += material.diffuse * sum / (float)gathers;
     }
-    rc_trace_lobes(scene, &sp, &traced, wo, &rng, 0, max_depth, grid->params.depth.y, &c);
+    rc_trace_lobes(scene, &sp, &traced, wo, &rng, 0, max_depth, grid->params.rr_depth, &c);
     return c;
 }

@@ -20,10 +20,10 @@ class RenderGrid : public KernelArgumentGroup {
    public:
     RenderGrid(const IrradianceVectorGrid& grid, const IvgRenderOptions& options) : grid_(grid) {
         params_ = grid.params();
-        params_.depth.z = options.gather_rays;
-        params_.depth.w = options.spp;
-        params_.seed = {static_cast<unsigned>(options.seed),
-                        static_cast<unsigned>(options.seed >> 32), 0, 0};
+        params_.gather_rays = options.gather_rays;
+        params_.camera_spp = options.spp;
+        params_.seed_lo = static_cast<unsigned>(options.seed);
+        params_.seed_hi = static_cast<unsigned>(options.seed >> 32);
     }
     unsigned set_kernel_args(Kernel& kernel, unsigned first) const override {
         const unsigned count = grid_.set_kernel_args(kernel, first);
@@ -45,7 +45,8 @@ IvgMethod::IvgMethod(Context& context, const Scene& scene, const DeviceBvh& bvh,
       bvh_(bvh),
       device_scene_(device_scene),
       grid_(grid),
-      shade_kernel_(context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_shade")) {}
+      shade_kernel_(
+          context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_shade")) {}
 
 Image IvgMethod::render(const IvgRenderOptions& options, IvgRenderStats* stats) {
     const int width = options.width > 0 ? options.width : scene_.camera.width;

@@ -91,10 +91,12 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
     Buffer<unsigned> counters(context_, 3, "path_counters");
 
     shared::PathTracerParams params{};
-    params.image = {width, height, 0, 0};
-    params.depth = {options.max_depth, options.rr_depth, 0, 0};
-    params.seed = {static_cast<unsigned>(options.seed), static_cast<unsigned>(options.seed >> 32),
-                   0, 0};
+    params.width = width;
+    params.height = height;
+    params.max_depth = options.max_depth;
+    params.rr_depth = options.rr_depth;
+    params.seed_lo = static_cast<unsigned>(options.seed);
+    params.seed_hi = static_cast<unsigned>(options.seed >> 32);
     const shared::CameraParams camera = camera_params(scene_.camera, width, height);
 
     PathTracerStats result;
@@ -107,7 +109,7 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
                                      : pass >= options.spp) {
             break;
         }
-        params.image.z = pass;
+        params.sample = pass;
         const std::vector<unsigned> zero = {0u, 0u, 0xffffffffu};
         counters.upload(zero);
         context_.launch(kernel_, count, params, camera, SceneArguments(bvh_, device_scene_), film,
