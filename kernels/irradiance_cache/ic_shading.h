@@ -5,6 +5,7 @@
 
 #include "common/cached_radiance.h"
 #include "common/camera.h"
+#include "common/camera_film.h"
 #include "irradiance_cache/ic_records.h"
 
 // World size of a pixel at distance t along the camera ray through pixel (x, y).
@@ -114,24 +115,29 @@ RC_FUNC float3 rc_ic_record_marks(const RecordCache* cache, float accuracy, floa
     return marks;
 }
 
-// Camera sample s of a pixel, shaded with the first cache level.
-typedef struct CachedShading {
-    CachedRadiance light;
-    float3 marks;  // record centres (red) and influence borders (green), when drawn
-} CachedShading;
+// What the render pass's camera samples read (rc_shade_pixel).
+struct PixelShader {
+    const SceneData* scene;
+    const CameraParams* camera;
+    const IcParams* params;
+    const RecordCache* cache;  // the first cache level
+};
 
-RC_FUNC CachedShading rc_ic_shade(const SceneData* scene, const CameraParams* camera,
-                                  const IcParams* params, const RecordCache* cache, uint pixel,
-                                  uint s) {
-    CachedShading c;
+// Camera sample s of a pixel, shaded with the first cache level. Its layer is the records
+// overlay: record centres (red) and influence borders (green), when drawn, over the image at half
+// brightness.
+RC_FUNC FilmSample rc_shade_camera_sample(const PixelShader* shader, uint pixel, uint s) {
+    const IcParams* params = shader->params;
+    FilmSample c;
     RngStream rng;
     float x, y;
-    const Ray ray = rc_ic_camera_ray(params, camera, pixel, s, &rng, &x, &y);
-    c.light = rc_ic_cached_radiance(scene, params, cache, ray, &rng, true, 0);
-    c.marks = (float3)(0.0f);
+    const Ray ray = rc_ic_camera_ray(params, shader->camera, pixel, s, &rng, &x, &y);
+    c.light = rc_ic_cached_radiance(shader->scene, params, shader->cache, ray, &rng, true, 0);
+    float3 marks = (float3)(0.0f);
     if (params->draw_records != 0 && isfinite(c.light.distance)) {
-        c.marks = rc_ic_record_marks(cache, params->accuracy, c.light.position,
-                                     rc_ic_pixel_footprint(camera, x, y, c.light.distance));
+        marks = rc_ic_record_marks(shader->cache, params->accuracy, c.light.position,
+                                   rc_ic_pixel_footprint(shader->camera, x, y, c.light.distance));
     }
+    c.layer = any(marks > 0.0f) ? marks : 0.5f * (c.light.direct + c.light.indirect);
     return c;
 }

@@ -1,9 +1,8 @@
 // Entry kernels of irradiance caching (host/methods/irradiance_cache.cpp): the G-buffer, record
 // hemisphere sampling and its reduction, record gathering (coverage and interpolation), and the
 // final shading pass.
-#include "common/camera_film.h"
 #include "irradiance_cache/ic_shading.h"
-#include "irradiance_vector_grid/ivg_photons.h"
+#include "irradiance_vector_grid/ivg_radiance.h"
 #include "scene_arguments.h"
 
 // The G-buffer entry of a ray's first hit, with the hit distance as its footprint (to be scaled
@@ -231,10 +230,8 @@ __kernel void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
 // The render pass (splat accumulation). Every camera sample gets the sums sum w E' and sum w of
 // the records whose influence sphere covers it, gathered through the grid in the grid's order:
 // the sums a splat of every record over the samples it covers would give, deterministic without
-// atomics. Item = pixel: shades its camera samples and writes the pixel's means to film (7 float4
-// per pixel: beauty, direct, indirect, albedo, normal, (coverage, 0, 0, 0), records overlay), where
-// coverage is the smallest sum of record weights over the samples the cache serves (0 when one
-// of them is uncovered or none is served).
+// atomics. Item = pixel: shades its camera samples and writes the pixel's means to film
+// (RC_CACHED_FILM_SLOTS per pixel; rc_shade_pixel), the records overlay as its layer.
 // counters: [0] rays traced, [1] non-finite samples (dropped), [2] first pixel with one.
 __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camera,
                        RC_SCENE_PARAMETERS, RecordGrid grid, __global const int* cell_start,
@@ -246,28 +243,6 @@ __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camer
     }
     const SceneData scene = RC_SCENE_DATA();
     const RecordCache cache = {grid, cell_start, cell_records, records};
-    float3 sums[7] = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f), (float3)(0.0f),
-                      (float3)(0.0f), (float3)(0.0f), (float3)(0.0f)};
-    uint rays = 0;
-    uint finite = 0;
-    float coverage = INFINITY;
-    for (uint s = 0; s < (uint)params.camera_spp; ++s) {
-        const CachedShading c = rc_ic_shade(&scene, &camera, &params, &cache, pixel, s);
-        const CachedRadiance l = c.light;
-        if (!rc_add_camera_sample(&l, sums, &rays, counters, pixel)) {
-            continue;
-        }
-        ++finite;
-        if (l.served) {
-            coverage = fmin(coverage, l.coverage);
-        }
-        // The records overlay: marks over the image at half brightness.
-        sums[6] += any(c.marks > 0.0f) ? c.marks : 0.5f * (l.direct + l.indirect);
-    }
-    atomic_add(&counters[0], rays);
-    const float inv = finite > 0 ? 1.0f / (float)finite : 0.0f;
-    for (int k = 0; k < 7; ++k) {
-        film[7 * (size_t)pixel + k] = (float4)(sums[k] * inv, 0.0f);
-    }
-    film[7 * (size_t)pixel + 5] = (float4)(isfinite(coverage) ? coverage : 0.0f, 0.0f, 0.0f, 0.0f);
+    const PixelShader shader = {&scene, &camera, &params, &cache};
+    rc_shade_pixel(&shader, (uint)params.camera_spp, pixel, film, counters);
 }

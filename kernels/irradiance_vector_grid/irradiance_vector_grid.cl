@@ -1,8 +1,8 @@
-// Entry kernels of the irradiance vector grid (host/methods/irradiance_vector_grid.cpp,
-// host/methods/ivg_method.cpp): photon tracing, deposition of given segments (tests),
+// Entry kernels of the irradiance vector grid (host/methods/irradiance_vector_grid/: the grid,
+// ivg_method.cpp): photon tracing, deposition of given segments (tests),
 // normalisation, lookups (tests) and the render pass of `ivg` and `ivg-gather`.
-#include "common/camera_film.h"
 #include "irradiance_vector_grid/ivg_photons.h"
+#include "irradiance_vector_grid/ivg_shading.h"
 #include "scene_arguments.h"
 
 // Item i: photon params.first_photon + i, traced and deposited into accum (64-bit fixed point).
@@ -71,10 +71,9 @@ __kernel void ivg_lookup(uint begin, uint end, IvgParams params, __global const 
                  0.0f);
 }
 
-// The render pass. Item = pixel: shades its params.camera_spp camera samples and writes the pixel's
-// means to film (6 float4 per pixel: beauty, direct, indirect, albedo, normal, grid). With
-// params.gather_rays gather rays per sample, final gathering (`ivg-gather`); with none, the grid
-// read directly at the camera's hit (`ivg`). counters: [0] rays, [1] NaN or infinite samples
+// The render pass. Item = pixel: shades its params.camera_spp camera samples and writes the
+// pixel's means to film (RC_CACHED_FILM_SLOTS per pixel; rc_shade_pixel), the grid's diffuse
+// light at the camera's hit as its layer. counters: [0] rays, [1] NaN or infinite samples
 // (dropped), [2] the first pixel that had one.
 __kernel void ivg_shade(uint begin, uint end, IvgParams params, __global const float* values,
                         __global const half* packed, CameraParams camera, RC_SCENE_PARAMETERS,
@@ -85,29 +84,6 @@ __kernel void ivg_shade(uint begin, uint end, IvgParams params, __global const f
     }
     const SceneData scene = RC_SCENE_DATA();
     const VectorGrid grid = {params, values, packed};
-    float3 sums[6] = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f),
-                      (float3)(0.0f), (float3)(0.0f), (float3)(0.0f)};
-    uint rays = 0;
-    uint finite = 0;
-    for (uint s = 0; s < (uint)params.camera_spp; ++s) {
-        float3 grid_term;
-        CachedRadiance l;
-        if (params.gather_rays > 0) {
-            l = rc_ivg_gather(&scene, &grid, &camera, pixel, s, &grid_term);
-        } else {
-            RngStream rng;
-            const Ray ray = rc_ivg_camera_ray(&params, &camera, pixel, s, &rng);
-            l = rc_ivg_radiance(&scene, &grid, ray, &rng, true, 0, &grid_term);
-        }
-        if (!rc_add_camera_sample(&l, sums, &rays, counters, pixel)) {
-            continue;
-        }
-        ++finite;
-        sums[5] += grid_term;
-    }
-    atomic_add(&counters[0], rays);
-    const float inv = finite > 0 ? 1.0f / (float)finite : 0.0f;
-    for (int k = 0; k < 6; ++k) {
-        film[6 * (size_t)pixel + k] = (float4)(sums[k] * inv, 0.0f);
-    }
+    const PixelShader shader = {&scene, &grid, &camera};
+    rc_shade_pixel(&shader, (uint)params.camera_spp, pixel, film, counters);
 }

@@ -8,9 +8,11 @@
 #include <regex>
 #include <unordered_map>
 
+#include "image/film.h"
 #include "methods/irradiance_cache/irradiance_cache_file.h"
 #include "methods/scene_arguments.h"
 #include "scene/camera.h"
+#include "shared/film.h"
 #include "util/error.h"
 
 namespace rc {
@@ -26,7 +28,6 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-constexpr size_t kFilmSlots = 7;  // float4 per pixel (kernels/irradiance_cache.cl)
 constexpr size_t kMaxBatchCells = size_t{1} << 23;  // hemisphere cells per record launch
 
 shared::float4 float4_of(glm::vec3 v, float w = 0.0f) { return {v.x, v.y, v.z, w}; }
@@ -455,7 +456,7 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     stats_.cache_bytes = records.bytes();
     stats_.insertion_seconds += seconds_since(start);
     start = Clock::now();
-    Buffer<shared::float4> film(context_, pixels * kFilmSlots, "ic_film");
+    Buffer<shared::float4> film(context_, pixels * RC_CACHED_FILM_SLOTS, "ic_film");
     Buffer<unsigned> counters(context_, 3, "ic_counters");
     counters.upload({0u, 0u, 0xffffffffu});
     context_.launch(shade_kernel_, pixels, params, camera, scene, records.grid, records.cell_start,
@@ -467,28 +468,14 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     stats_.first_nonfinite_pixel = c[1] > 0 ? static_cast<int64_t>(c[2]) : -1;
     stats_.splatting_seconds = seconds_since(start);
 
-    const int channels = options.records_overlay ? 19 : 16;
-    Image image(width, height, channels);
-    image.channel_names = {"R",          "G",          "B",          "direct.R",   "direct.G",
-                           "direct.B",   "indirect.R", "indirect.G", "indirect.B", "albedo.R",
-                           "albedo.G",   "albedo.B",   "normal.R",   "normal.G",   "normal.B",
-                           "coverage.Y", "records.R",  "records.G",  "records.B"};
-    image.channel_names.resize(channels);
-    for (size_t p = 0; p < pixels; ++p) {
-        const shared::float4* s = &sums[kFilmSlots * p];
-        float* out = &image.pixels[p * channels];
-        for (int k = 0; k < 5; ++k) {
-            out[3 * k + 0] = s[k].x;
-            out[3 * k + 1] = s[k].y;
-            out[3 * k + 2] = s[k].z;
-        }
-        out[15] = s[5].x;
-        if (options.records_overlay) {
-            out[16] = s[6].x;
-            out[17] = s[6].y;
-            out[18] = s[6].z;
-        }
+    std::vector<FilmLayer> layers = {
+        {"beauty", RC_CACHED_FILM_BEAUTY},     {"direct", RC_CACHED_FILM_DIRECT},
+        {"indirect", RC_CACHED_FILM_INDIRECT}, {"albedo", RC_CACHED_FILM_ALBEDO},
+        {"normal", RC_CACHED_FILM_NORMAL},     {"coverage", RC_CACHED_FILM_COVERAGE, 1}};
+    if (options.records_overlay) {
+        layers.push_back({"records", RC_CACHED_FILM_LAYER});
     }
+    Image image = unpack_film(sums, RC_CACHED_FILM_SLOTS, width, height, layers);
     if (stats != nullptr) {
         *stats = stats_;
     }
