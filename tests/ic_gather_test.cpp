@@ -92,8 +92,10 @@ std::vector<glm::dvec4> device_gather(const std::vector<PaperRecord>& records,
     for (size_t q = 0; q < queries.size(); ++q) {
         shared::GBufferSample g{};
         g.position = {queries[q].position.x, queries[q].position.y, queries[q].position.z, 0.0f};
-        g.normal = {queries[q].normal.x, queries[q].normal.y, queries[q].normal.z, 1.0f};
-        g.info = {0, static_cast<int>(q), 0, 1};
+        g.normal = {queries[q].normal.x, queries[q].normal.y, queries[q].normal.z, 0.0f};
+        g.diffuse = 1.0f;
+        g.primitive = 0;
+        g.served = 1;
         samples.push_back(g);
     }
     std::vector<glm::dvec4> sums;

@@ -42,10 +42,13 @@ GridFixture& fixture() {
 
 shared::IvgParams unit_grid(int n, float units) {
     shared::IvgParams p{};
-    p.origin = {0.0f, 0.0f, 0.0f, units};
-    p.cell = {1.0f, 1.0f, 1.0f, 0.1f};
-    p.cells = {n, n, n, (n + 1) * (n + 1) * (n + 1)};
-    p.photons = {1, 0, 0, 0};
+    p.origin = {0.0f, 0.0f, 0.0f, 0.0f};
+    p.fixed_point_scale = units;
+    p.cell = {1.0f, 1.0f, 1.0f, 0.0f};
+    p.min_cosine = 0.1f;
+    p.cells = {n, n, n, 0};
+    p.vertex_count = (n + 1) * (n + 1) * (n + 1);
+    p.photon_count = 1;
     return p;
 }
 
@@ -61,7 +64,7 @@ size_t slot(const shared::IvgParams& p, int i, int j, int k, int direction) {
 // NormalisedGridFollowsTheReportsFaceCrossingRules below.
 std::vector<int64_t> reference_deposit(const shared::IvgParams& p,
                                        const std::vector<PhotonSegment>& segments) {
-    std::vector<int64_t> sums(static_cast<size_t>(p.cells.w) * 54, 0);
+    std::vector<int64_t> sums(static_cast<size_t>(p.vertex_count) * RC_IVG_VALUES_PER_VERTEX, 0);
     const float origin[3] = {p.origin.x, p.origin.y, p.origin.z};
     const float cell[3] = {p.cell.x, p.cell.y, p.cell.z};
     const int cells[3] = {p.cells.x, p.cells.y, p.cells.z};
@@ -104,11 +107,11 @@ std::vector<int64_t> reference_deposit(const shared::IvgParams& p,
                 }
                 const int direction = 2 * axis + (d[axis] < 0.0f ? 0 : 1);
                 const float denominator =
-                    std::max(std::fabs(d[axis]), p.cell.w * static_cast<float>(length));
+                    std::max(std::fabs(d[axis]), p.min_cosine * static_cast<float>(length));
                 const size_t base = slot(p, index[0], index[1], index[2], direction);
                 for (int c = 0; c < 3; ++c) {
                     for (int k = 0; k < 3; ++k) {
-                        const float value = flux[c] * -d[k] / denominator * p.origin.w;
+                        const float value = flux[c] * -d[k] / denominator * p.fixed_point_scale;
                         sums[base + 3 * c + k] += static_cast<int64_t>(std::rint(value));
                     }
                 }
@@ -138,7 +141,8 @@ TEST(IvgDeposit, MatchesBruteForceIncludingEdgesCornersAndEnds) {
     size_t nonzero = 0;
     for (size_t i = 0; i < expected.size(); ++i) {
         ASSERT_EQ(device[i], expected[i])
-            << "value " << i << " (vertex " << i / 54 << ", direction " << i / 9 % 6 << ")";
+            << "value " << i << " (vertex " << i / RC_IVG_VALUES_PER_VERTEX << ", direction "
+            << i / 9 % 6 << ")";
         nonzero += expected[i] != 0;
     }
     EXPECT_GT(nonzero, 100u);
@@ -176,11 +180,13 @@ struct ReportGrid {
 // The one place that fills the kernel's parameter block for this grid.
 shared::IvgParams report_grid_params(const ReportGrid& g, float units) {
     shared::IvgParams p{};
-    p.origin = {float(g.origin.x), float(g.origin.y), float(g.origin.z), units};
-    p.cell = {float(g.cell.x), float(g.cell.y), float(g.cell.z), 0.1f};
-    p.cells = {g.cells.x, g.cells.y, g.cells.z,
-               (g.cells.x + 1) * (g.cells.y + 1) * (g.cells.z + 1)};
-    p.photons = {static_cast<unsigned>(g.photons), 0, 0, 0};
+    p.origin = {float(g.origin.x), float(g.origin.y), float(g.origin.z), 0.0f};
+    p.fixed_point_scale = units;
+    p.cell = {float(g.cell.x), float(g.cell.y), float(g.cell.z), 0.0f};
+    p.min_cosine = 0.1f;
+    p.cells = {g.cells.x, g.cells.y, g.cells.z, 0};
+    p.vertex_count = (g.cells.x + 1) * (g.cells.y + 1) * (g.cells.z + 1);
+    p.photon_count = static_cast<unsigned>(g.photons);
     return p;
 }
 
@@ -342,7 +348,7 @@ TEST(IvgNormalize, ParallelBeamGivesItsIrradianceVectorAtEveryVertex) {
     float flux = 0.0f;
     const std::vector<PhotonSegment> beam = parallel_beam(toward_light, irradiance, 600, &flux);
     shared::IvgParams p = unit_grid(4, 1e6f / flux);
-    p.photons.x = 1;  // the flux per photon already includes the division by the count
+    p.photon_count = 1;  // the flux per photon already includes the division by the count
     GridFixture& f = fixture();
     const std::vector<float> values = f.grid.normalize(p, f.grid.deposit(p, beam));
     const int directions[3] = {0, 2, 5};  // +x, +y, -z: the sides the light comes from
@@ -432,7 +438,7 @@ TEST(IvgNormalize, IsotropicFieldGivesOppositeVectorsOfEqualLength) {
 // A grid whose vectors are given by a function of the vertex's position and direction.
 std::vector<float> field(const shared::IvgParams& p,
                          const std::function<glm::vec3(glm::vec3, int direction, int c)>& f) {
-    std::vector<float> values(static_cast<size_t>(p.cells.w) * 54);
+    std::vector<float> values(static_cast<size_t>(p.vertex_count) * RC_IVG_VALUES_PER_VERTEX);
     for (int k = 0; k <= p.cells.z; ++k) {
         for (int j = 0; j <= p.cells.y; ++j) {
             for (int i = 0; i <= p.cells.x; ++i) {
@@ -455,10 +461,14 @@ std::vector<float> field(const shared::IvgParams& p,
 
 shared::IvgParams lookup_grid(int interpolation, bool compressed) {
     shared::IvgParams p{};
-    p.origin = {-1.0f, 0.5f, 2.0f, 1.0f};
-    p.cell = {0.5f, 0.25f, 1.0f, 0.1f};
-    p.cells = {6, 5, 4, 7 * 6 * 5};
-    p.lookup = {interpolation, compressed ? 1 : 0, 0, 0};
+    p.origin = {-1.0f, 0.5f, 2.0f, 0.0f};
+    p.fixed_point_scale = 1.0f;
+    p.cell = {0.5f, 0.25f, 1.0f, 0.0f};
+    p.min_cosine = 0.1f;
+    p.cells = {6, 5, 4, 0};
+    p.vertex_count = 7 * 6 * 5;
+    p.interpolation = interpolation;
+    p.compressed = compressed ? 1 : 0;
     return p;
 }
 

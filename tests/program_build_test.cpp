@@ -37,52 +37,53 @@ void append(const std::filesystem::path& file, const std::string& text) {
 
 TEST(ProgramBuild, ExpandsEveryIncludeOnceWithLineMarkers) {
     const KernelSources sources;
-    const std::string text = sources.expand("normals.cl");
+    const std::string text = sources.expand("normals/normals.cl");
     EXPECT_EQ(occurrences(text, "#line 1 \"shared/types.h\""), 1u);
     EXPECT_EQ(occurrences(text, "#line 1 \"common/bvh_traversal.h\""), 1u);
-    EXPECT_EQ(occurrences(text, "#line 1 \"normals.cl\""), 1u);
+    EXPECT_EQ(occurrences(text, "#line 1 \"normals/normals.cl\""), 1u);
     EXPECT_EQ(occurrences(text, "#include \""), 0u);
     EXPECT_EQ(occurrences(text, "#pragma once"), 0u);
 }
 
 TEST(ProgramBuild, OverrideDirectoryIsReadAndMissingIncludesAreNamed) {
     const std::filesystem::path dir = copy_of_kernels("missing_include");
-    append(dir / "normals.h", "\n#include \"common/does_not_exist.h\"\n");
+    append(dir / "normals" / "normals.h", "\n#include \"common/does_not_exist.h\"\n");
     const KernelSources sources(dir);
     try {
-        sources.expand("normals.cl");
+        sources.expand("normals/normals.cl");
         FAIL() << "no error";
     } catch (const Error& error) {
         const std::string message = error.what();
-        EXPECT_NE(message.find("normals.h:"), std::string::npos) << message;
+        EXPECT_NE(message.find("normals/normals.h:"), std::string::npos) << message;
         EXPECT_NE(message.find("common/does_not_exist.h"), std::string::npos) << message;
     }
 }
 
 TEST(ProgramBuild, BrokenKernelReportsTheBuildLogWithFileAndLine) {
     const std::filesystem::path dir = copy_of_kernels("broken_kernel");
-    append(dir / "normals.h", "\nthis_is_not_opencl_c broken;\n");
+    append(dir / "normals" / "normals.h", "\nthis_is_not_opencl_c broken;\n");
     ContextOptions options = test::default_context_options();
     options.kernel_dir = dir;
     options.cache_dir.clear();
     Context context(options);
     try {
-        context.kernel("normals.cl", "render_normals");
+        context.kernel("normals/normals.cl", "render_normals");
         FAIL() << "no error";
     } catch (const Error& error) {
         const std::string message = error.what();
-        EXPECT_NE(message.find("clBuildProgram(normals.cl) failed: CL_BUILD_PROGRAM_FAILURE"),
-                  std::string::npos)
+        EXPECT_NE(
+            message.find("clBuildProgram(normals/normals.cl) failed: CL_BUILD_PROGRAM_FAILURE"),
+            std::string::npos)
             << message;
         EXPECT_NE(message.find("build log"), std::string::npos) << message;
-        EXPECT_NE(message.find("normals.h:"), std::string::npos) << message;
+        EXPECT_NE(message.find("normals/normals.h:"), std::string::npos) << message;
         EXPECT_NE(message.find("this_is_not_opencl_c"), std::string::npos) << message;
     }
 }
 
 TEST(ProgramBuild, BrokenKernelThroughTheCommandLineExitsNonZeroWithTheLog) {
     const std::filesystem::path dir = copy_of_kernels("broken_kernel_cli");
-    append(dir / "normals.h", "\nthis_is_not_opencl_c broken;\n");
+    append(dir / "normals" / "normals.h", "\nthis_is_not_opencl_c broken;\n");
     const auto output = dir.parent_path() / "out.png";
     const test::CommandResult result = test::run_radcache(
         {"render", (test::source_dir() / "scenes/cornell-box/scene.json").string(), "-o",

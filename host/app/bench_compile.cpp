@@ -15,12 +15,12 @@
 namespace rc {
 namespace {
 
-// Every entry file (a .cl at the top of kernels/) of the embedded sources.
+// Every entry file (a .cl anywhere under kernels/) of the embedded sources.
 std::vector<std::string> program_entries() {
     std::vector<std::string> entries;
     for (size_t i = 0; i < kEmbeddedSourceCount; ++i) {
         const std::string path = kEmbeddedSources[i].path;
-        if (path.size() > 3 && path.ends_with(".cl") && path.find('/') == std::string::npos) {
+        if (path.size() > 3 && path.ends_with(".cl")) {
             entries.push_back(path);
         }
     }

@@ -1,6 +1,7 @@
 // Sampling of directions.
 #pragma once
 
+#include "common/math.h"
 #include "shared/types.h"
 
 // Point on the unit disk from (u1, u2) in [0,1)^2, area-preserving: Shirley and Chiu, "A Low
@@ -43,4 +44,11 @@ RC_FUNC float3 rc_to_world(float3 v, float3 n) {
     float3 t, b;
     rc_orthonormal_basis(n, &t, &b);
     return v.x * t + v.y * b + v.z * n;
+}
+
+// A unit direction about axis `n` at polar cosine cos_theta and azimuth 2 pi u.
+RC_FUNC float3 rc_direction_about(float3 n, float cos_theta, float u) {
+    const float sin_theta = sqrt(fmax(0.0f, 1.0f - cos_theta * cos_theta));
+    const float phi = 2.0f * RC_PI * u;
+    return rc_to_world((float3)(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta), n);
 }

@@ -101,64 +101,96 @@ typedef struct Light {
 
 // Per-pass parameters of the path tracer.
 typedef struct PathTracerParams {
-    int4 image;  // x: width, y: height, z: index of the pass's sample, w: unused
-    int4 depth;  // x: maximum depth (bounces), y: depth where Russian roulette starts, z, w:
-                 // unused
-    uint4 seed;  // x, y: the 64-bit seed
+    int width;  // of the image, in pixels
+    int height;
+    int sample;  // index of the pass's sample (its random streams)
+    int max_depth;
+    int rr_depth;  // the depth where Russian roulette starts
+    uint seed_lo;  // the 64-bit seed
+    uint seed_hi;
+    int pad0;
 } PathTracerParams;
 
 // The first hit of one camera sample (irradiance caching's G-buffer; sample s of pixel p is entry
-// p * spp + s) or of one ray of a record's hemisphere (where the next cache level is read).
+// p * spp + s) or of one ray of a record's hemisphere (cell c of batch record b is entry
+// b * M N + c; where the next cache level is read).
 typedef struct GBufferSample {
-    float4 position;  // xyz: hit point; w: the footprint there (world size of a pixel, or of the
-                      // hemisphere stratum's cone)
-    float4 normal;    // xyz: shading normal facing the ray; w: diffuse reflectance (luminance)
+    float4 position;  // xyz: hit point
+    float4 normal;    // xyz: shading normal facing the ray
     float4 origin;    // xyz: where rays leaving the surface start (offset off it)
-    int4 info;        // x: primitive or -1 (no hit), y: pixel (record), z: sample (cell), w: 1
-                      // when the cache serves it (a hit with a diffuse lobe)
+    float footprint;  // world size of a pixel (or of the hemisphere stratum's cone) at the hit
+    float diffuse;    // diffuse reflectance there (luminance)
+    int primitive;    // the primitive hit, or -1 (no hit)
+    int served;       // 1 when the cache serves it (a hit with a diffuse lobe)
 } GBufferSample;
 
 // Parameters of the irradiance-caching kernels.
 typedef struct IcParams {
-    int4 image;      // x: width, y: height, z: camera samples per pixel, w: record count
-    int4 sampling;   // x: M (polar strata), y: N (azimuthal strata), z: first record of the
-                     // launch, w: 1 to count emission seen by hemisphere rays (tests)
-    int4 depth;      // x: maximum depth, y: Russian-roulette depth, z: cache level of the
-                     // records being computed (0: the camera's), w: unused
-    uint4 seed;      // x, y: the 64-bit seed
-    float4 weights;  // x: accuracy a, y: largest weight (near a record's centre), z: 1 to draw
-                     // the records overlay
-    int4 placement;  // a placement pass's candidates: x: pixel stride, y: camera samples per
-                     // candidate pixel, z: candidate columns, w: unused
+    int width;  // of the camera's image, in pixels
+    int height;
+    int camera_spp;      // camera samples per pixel
+    int draw_records;    // 1 to draw the records overlay (ic_shade)
+    int strata_m;        // M: polar strata of a record's hemisphere
+    int strata_n;        // N: azimuthal strata
+    int first_record;    // stream index of the launch's first record (within its level)
+    int count_emission;  // 1 to count emission seen by hemisphere rays (tests)
+    int max_depth;       // bounces of a path
+    int rr_depth;        // the depth where Russian roulette starts
+    int level;           // cache level of the records being computed (0: the camera's)
+    int pad0;
+    uint seed_lo;  // the 64-bit seed
+    uint seed_hi;
+    float accuracy;    // a: records influence points within a R
+    float max_weight;  // the largest weight (near a record's centre)
+    // A placement pass's candidates (ic_uncovered).
+    int placement_stride;   // pixel stride (0: every entry)
+    int placement_spp;      // camera samples per candidate pixel
+    int placement_columns;  // candidate columns
+    int pad1;
 } IcParams;
 
-// Irradiance vector grid interpolation (IvgParams::lookup.x).
+// Irradiance vector grid interpolation (IvgParams::interpolation).
 #define RC_IVG_TRILINEAR 0
 #define RC_IVG_TRICUBIC 1
+
+// Values per grid vertex: six directions (+x, -x, +y, -y, +z, -z), an irradiance vector (x, y, z)
+// per colour channel (kernels/irradiance_vector_grid/ivg_lookup.h gives the order).
+#define RC_IVG_VALUES_PER_VERTEX 54
+// Half floats per vertex in the compressed layout: per direction |I_r|, |I_g|, |I_b| and a unit
+// direction (§4.2).
+#define RC_IVG_PACKED_PER_VERTEX 36
 
 // Parameters of the irradiance-vector-grid kernels (Pacanowski et al., INRIA RR-6983). The grid
 // has cells.x x cells.y x cells.z voxels and (cells + 1) vertices along each axis; a vertex holds
 // six irradiance vectors (+x, -x, +y, -y, +z, -z), one 3-vector per colour channel.
 typedef struct IvgParams {
-    float4 origin;  // xyz: the grid's lower corner; w: fixed-point units per unit of flux
-    float4 cell;    // xyz: the cell size along each axis; w: the smallest |cosine| to a face's
-                    // normal a crossing's weight is divided by
-    float4 sphere;  // xyz, w: centre and radius of a sphere around the scene (environment)
-    int4 cells;     // xyz: voxels along each axis; w: vertices in all
-    uint4 photons;  // x: photons of the whole grid, y: first photon of the launch, z: 1 to
-                    // record unbounced (direct) segments, w: unused
-    int4 depth;     // x: maximum depth (bounces of a camera path), y: Russian-roulette depth,
-                    // z: gather rays per camera sample (ivg-gather), w: camera samples per pixel
-    uint4 seed;     // x, y: the 64-bit seed
-    int4 lookup;    // x: RC_IVG_TRILINEAR or RC_IVG_TRICUBIC, y: 1 to read the compressed
-                    // layout, z, w: unused
+    float4 origin;            // xyz: the grid's lower corner
+    float4 cell;              // xyz: the cell size along each axis
+    float4 sphere_centre;     // xyz: centre of a sphere around the scene (environment photons)
+    int4 cells;               // xyz: voxels along each axis
+    float sphere_radius;      // radius of that sphere
+    float fixed_point_scale;  // fixed-point units per unit of flux (deposition)
+    float min_cosine;  // the smallest |cosine| to a face's normal a crossing's weight is divided by
+    int vertex_count;  // vertices in all
+    uint photon_count;   // photons of the whole grid
+    uint first_photon;   // first photon of the launch
+    int include_direct;  // 1 to record unbounced (direct) segments
+    int interpolation;   // RC_IVG_TRILINEAR or RC_IVG_TRICUBIC
+    int compressed;      // 1 to read the compressed layout
+    int max_depth;       // bounces of a camera path
+    int rr_depth;        // the depth where Russian roulette starts
+    int gather_rays;     // per camera sample (ivg-gather); 0: the grid read at the camera's hit
+    int camera_spp;      // camera samples per pixel
+    uint seed_lo;        // the 64-bit seed
+    uint seed_hi;
+    int pad0;
 } IvgParams;
 
 RC_SHARED_END
 
 // Every shared struct and field, for the host/device layout comparison.
 // clang-format off
-#define RC_SHARED_LAYOUTS(STRUCT, FIELD) \
+#define RC_SHARED_LAYOUTS(STRUCT, FIELD)   \
     STRUCT(Ray)                            \
     FIELD(Ray, origin)                     \
     FIELD(Ray, direction)                  \
@@ -203,31 +235,61 @@ RC_SHARED_END
     FIELD(Light, shape)                    \
     FIELD(Light, info)                     \
     STRUCT(PathTracerParams)               \
-    FIELD(PathTracerParams, image)         \
-    FIELD(PathTracerParams, depth)         \
-    FIELD(PathTracerParams, seed)          \
+    FIELD(PathTracerParams, width)         \
+    FIELD(PathTracerParams, height)        \
+    FIELD(PathTracerParams, sample)        \
+    FIELD(PathTracerParams, max_depth)     \
+    FIELD(PathTracerParams, rr_depth)      \
+    FIELD(PathTracerParams, seed_lo)       \
+    FIELD(PathTracerParams, seed_hi)       \
     STRUCT(GBufferSample)                  \
     FIELD(GBufferSample, position)         \
     FIELD(GBufferSample, normal)           \
     FIELD(GBufferSample, origin)           \
-    FIELD(GBufferSample, info)             \
+    FIELD(GBufferSample, footprint)        \
+    FIELD(GBufferSample, diffuse)          \
+    FIELD(GBufferSample, primitive)        \
+    FIELD(GBufferSample, served)           \
     RC_RECORD_LAYOUTS(STRUCT, FIELD)       \
     STRUCT(IcParams)                       \
-    FIELD(IcParams, image)                 \
-    FIELD(IcParams, sampling)              \
-    FIELD(IcParams, depth)                 \
-    FIELD(IcParams, seed)                  \
-    FIELD(IcParams, weights)               \
-    FIELD(IcParams, placement)             \
+    FIELD(IcParams, width)                 \
+    FIELD(IcParams, height)                \
+    FIELD(IcParams, camera_spp)            \
+    FIELD(IcParams, draw_records)          \
+    FIELD(IcParams, strata_m)              \
+    FIELD(IcParams, strata_n)              \
+    FIELD(IcParams, first_record)          \
+    FIELD(IcParams, count_emission)        \
+    FIELD(IcParams, max_depth)             \
+    FIELD(IcParams, rr_depth)              \
+    FIELD(IcParams, level)                 \
+    FIELD(IcParams, seed_lo)               \
+    FIELD(IcParams, seed_hi)               \
+    FIELD(IcParams, accuracy)              \
+    FIELD(IcParams, max_weight)            \
+    FIELD(IcParams, placement_stride)      \
+    FIELD(IcParams, placement_spp)         \
+    FIELD(IcParams, placement_columns)     \
     STRUCT(IvgParams)                      \
     FIELD(IvgParams, origin)               \
     FIELD(IvgParams, cell)                 \
-    FIELD(IvgParams, sphere)               \
+    FIELD(IvgParams, sphere_centre)        \
     FIELD(IvgParams, cells)                \
-    FIELD(IvgParams, photons)              \
-    FIELD(IvgParams, depth)                \
-    FIELD(IvgParams, seed)                 \
-    FIELD(IvgParams, lookup)
+    FIELD(IvgParams, sphere_radius)        \
+    FIELD(IvgParams, fixed_point_scale)    \
+    FIELD(IvgParams, min_cosine)           \
+    FIELD(IvgParams, vertex_count)         \
+    FIELD(IvgParams, photon_count)         \
+    FIELD(IvgParams, first_photon)         \
+    FIELD(IvgParams, include_direct)       \
+    FIELD(IvgParams, interpolation)        \
+    FIELD(IvgParams, compressed)           \
+    FIELD(IvgParams, max_depth)            \
+    FIELD(IvgParams, rr_depth)             \
+    FIELD(IvgParams, gather_rays)          \
+    FIELD(IvgParams, camera_spp)           \
+    FIELD(IvgParams, seed_lo)              \
+    FIELD(IvgParams, seed_hi)
 // clang-format on
 
 #ifndef __OPENCL_VERSION__
@@ -243,8 +305,9 @@ static_assert(sizeof(rc::shared::Material) == 64);
 static_assert(sizeof(rc::shared::TextureInfo) == 16);
 static_assert(sizeof(rc::shared::TriangleShading) == 32);
 static_assert(sizeof(rc::shared::Light) == 80);
-static_assert(sizeof(rc::shared::PathTracerParams) == 48);
+static_assert(sizeof(rc::shared::PathTracerParams) == 32);
 static_assert(sizeof(rc::shared::GBufferSample) == 64);
-static_assert(sizeof(rc::shared::IcParams) == 96);
+static_assert(sizeof(rc::shared::IcParams) == 80);
 static_assert(sizeof(rc::shared::IvgParams) == 128);
+static_assert(offsetof(rc::shared::IvgParams, sphere_radius) == 64);
 #endif

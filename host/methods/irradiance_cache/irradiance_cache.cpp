@@ -8,10 +8,12 @@
 #include <regex>
 #include <unordered_map>
 
+#include "image/film.h"
 #include "methods/records/cache_file.h"
 #include "methods/records/record_grid.h"
 #include "methods/scene_arguments.h"
 #include "scene/camera.h"
+#include "shared/film.h"
 #include "util/error.h"
 
 namespace rc {
@@ -27,7 +29,6 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-constexpr size_t kFilmSlots = 7;  // float4 per pixel (kernels/irradiance_cache.cl)
 constexpr size_t kMaxBatchCells = size_t{1} << 23;  // hemisphere cells per record launch
 
 shared::float4 float4_of(glm::vec3 v, float w = 0.0f) { return {v.x, v.y, v.z, w}; }
@@ -143,16 +144,18 @@ IrradianceCache::IrradianceCache(Context& context, const Scene& scene, const Dev
       scene_(scene),
       bvh_(bvh),
       device_scene_(device_scene),
-      gbuffer_kernel_(context.kernel("irradiance_cache.cl", "ic_gbuffer")),
-      hits_kernel_(context.kernel("irradiance_cache.cl", "ic_record_hits")),
-      cells_kernel_(context.kernel("irradiance_cache.cl", "ic_record_cells")),
-      cached_cells_kernel_(context.kernel("irradiance_cache.cl", "ic_record_cells_cached")),
-      grid_cells_kernel_(context.kernel("irradiance_cache.cl", "ic_record_cells_grid")),
-      reduce_kernel_(context.kernel("irradiance_cache.cl", "ic_record_reduce")),
-      gather_kernel_(context.kernel("irradiance_cache.cl", "ic_gather")),
-      uncovered_kernel_(context.kernel("irradiance_cache.cl", "ic_uncovered")),
-      select_kernel_(context.kernel("irradiance_cache.cl", "ic_gbuffer_select")),
-      shade_kernel_(context.kernel("irradiance_cache.cl", "ic_shade")) {}
+      gbuffer_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer")),
+      hits_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_hits")),
+      cells_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_cells")),
+      cached_cells_kernel_(
+          context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_cells_cached")),
+      grid_cells_kernel_(
+          context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_cells_grid")),
+      reduce_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_reduce")),
+      gather_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gather")),
+      uncovered_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_uncovered")),
+      select_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer_select")),
+      shade_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_shade")) {}
 
 void IrradianceCache::reset(const RecordSampling& sampling) {
     if (sampling.levels < 1 || sampling.m < 1 || sampling.n < 1) {
@@ -168,12 +171,19 @@ void IrradianceCache::reset(const RecordSampling& sampling) {
 
 shared::IcParams IrradianceCache::level_params(int level) const {
     shared::IcParams params{};
-    params.sampling = {sampling_.m, sampling_.n, 0, sampling_.include_emission ? 1 : 0};
-    params.depth = {sampling_.max_depth, sampling_.rr_depth, level, 0};
-    params.seed = {static_cast<unsigned>(sampling_.seed),
-                   static_cast<unsigned>(sampling_.seed >> 32), 0, 0};
-    params.weights = {sampling_.accuracy, kIrradianceCacheMaxWeight, 0.0f, 0.0f};
-    params.image = image_;
+    params.width = width_;
+    params.height = height_;
+    params.camera_spp = camera_spp_;
+    params.strata_m = sampling_.m;
+    params.strata_n = sampling_.n;
+    params.count_emission = sampling_.include_emission ? 1 : 0;
+    params.max_depth = sampling_.max_depth;
+    params.rr_depth = sampling_.rr_depth;
+    params.level = level;
+    params.seed_lo = static_cast<unsigned>(sampling_.seed);
+    params.seed_hi = static_cast<unsigned>(sampling_.seed >> 32);
+    params.accuracy = sampling_.accuracy;
+    params.max_weight = kIrradianceCacheMaxWeight;
     return params;
 }
 
@@ -219,14 +229,14 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
         shared::IcParams params = level_params(level);
         // Streams: records are numbered within their level.
         const size_t first = (level == 0 ? first_index_ : 0) + stores_[level].size() + begin;
-        params.sampling.z = static_cast<int>(first);
+        params.first_record = static_cast<int>(first);
         counters.fill_zero();
         if (cached) {
             // The next level must cover every hit of these rays before they read it.
             Buffer<shared::GBufferSample> hits(context_, count * per_record, "ic_record_hits");
             context_.launch(hits_kernel_, count * per_record, params, scene, record_buffer,
                             origin_buffer, hits);
-            cover(level + 1, hits, {0, 1, 1, 0}, count * per_record, true);
+            cover(level + 1, hits, {0, 1, 1}, count * per_record, true);
             const DeviceRecords next(context_, stores_[level + 1]);
             context_.launch(cached_cells_kernel_, count * per_record, params, scene, record_buffer,
                             origin_buffer, next.grid, next.cell_start, next.cell_records,
@@ -259,11 +269,13 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
 }
 
 void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samples,
-                            shared::int4 placement, size_t candidates, bool until_covered) {
+                            Candidates placement, size_t candidates, bool until_covered) {
     Buffer<unsigned> uncovered_buffer(context_, candidates, "ic_uncovered");
     Buffer<unsigned> uncovered_count(context_, 1, "ic_uncovered_count");
     shared::IcParams params = level_params(level);
-    params.placement = placement;
+    params.placement_stride = placement.stride;
+    params.placement_spp = placement.spp;
+    params.placement_columns = placement.columns;
     const float a = sampling_.accuracy;
     auto bound = [a](const Spacing& spacing, float footprint) {
         return (spacing.world ? spacing.value : spacing.value * footprint) / a;
@@ -293,7 +305,7 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
         }
         std::vector<float> min_influence(uncovered.size());
         for (size_t c = 0; c < uncovered.size(); ++c) {
-            min_influence[c] = a * bound(sampling_.min_spacing, uncovered[c].position.w);
+            min_influence[c] = a * bound(sampling_.min_spacing, uncovered[c].footprint);
         }
         const std::vector<size_t> chosen = thin_candidates(uncovered, min_influence);
         if (timed) {
@@ -304,7 +316,8 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
         }
         // Listed in the order passes start (deeper levels' passes follow the pass they serve).
         const size_t entry = stats_.passes.size();
-        stats_.passes.push_back({level, placement.x, candidates, uncovered.size(), chosen.size()});
+        stats_.passes.push_back(
+            {level, placement.stride, candidates, uncovered.size(), chosen.size()});
         start = Clock::now();
         std::vector<RecordSite> sites;
         sites.reserve(chosen.size());
@@ -314,8 +327,8 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
             site.position = vec3_of(g.position);
             site.normal = vec3_of(g.normal);
             site.origin = vec3_of(g.origin);
-            site.r_min = bound(sampling_.min_spacing, g.position.w);
-            site.r_max = std::max(site.r_min, bound(sampling_.max_spacing, g.position.w));
+            site.r_min = bound(sampling_.min_spacing, g.footprint);
+            site.r_max = std::max(site.r_min, bound(sampling_.max_spacing, g.footprint));
             sites.push_back(site);
         }
         const std::vector<ComputedRecord> computed = compute_level(level, sites);
@@ -344,7 +357,8 @@ std::vector<shared::float4> IrradianceCache::gather(
     const Buffer<int> index_buffer(context_, indices, "ic_query_indices");
     Buffer<shared::float4> out(context_, queries.size(), "ic_gathered");
     shared::IcParams params{};
-    params.weights = {store.accuracy(), kIrradianceCacheMaxWeight, 0.0f, 0.0f};
+    params.accuracy = store.accuracy();
+    params.max_weight = kIrradianceCacheMaxWeight;
     context_.launch(gather_kernel_, queries.size(), params, records.grid, records.cell_start,
                     records.cell_records, records.records, records.payloads, samples, index_buffer,
                     out);
@@ -388,12 +402,14 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     sampling.min_spacing = options.min_spacing;
     sampling.max_spacing = options.max_spacing;
     reset(sampling);
-    image_ = {width, height, options.spp, 0};
+    width_ = width;
+    height_ = height;
+    camera_spp_ = options.spp;
 
     const shared::CameraParams camera = camera_params(scene_.camera, width, height);
     const SceneArguments scene(bvh_, device_scene_);
     shared::IcParams params = level_params(0);
-    params.weights.z = options.records_overlay ? 1.0f : 0.0f;
+    params.draw_records = options.records_overlay ? 1 : 0;
 
     // 1. G-buffer.
     auto start = Clock::now();
@@ -421,7 +437,7 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
             const int columns = (width + stride - 1) / stride;
             const int rows = (height + stride - 1) / stride;
             const int per_pixel = stride == 1 ? options.spp : 1;
-            cover(0, gbuffer, {stride, per_pixel, columns, 0},
+            cover(0, gbuffer, {stride, per_pixel, columns},
                   static_cast<size_t>(columns) * rows * per_pixel, stride == 1);
         }
     }
@@ -440,7 +456,7 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     stats_.cache_bytes = records.bytes();
     stats_.insertion_seconds += seconds_since(start);
     start = Clock::now();
-    Buffer<shared::float4> film(context_, pixels * kFilmSlots, "ic_film");
+    Buffer<shared::float4> film(context_, pixels * RC_CACHED_FILM_SLOTS, "ic_film");
     Buffer<unsigned> counters(context_, 3, "ic_counters");
     counters.upload({0u, 0u, 0xffffffffu});
     context_.launch(shade_kernel_, pixels, params, camera, scene, records.grid, records.cell_start,
@@ -452,28 +468,14 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     stats_.first_nonfinite_pixel = c[1] > 0 ? static_cast<int64_t>(c[2]) : -1;
     stats_.splatting_seconds = seconds_since(start);
 
-    const int channels = options.records_overlay ? 19 : 16;
-    Image image(width, height, channels);
-    image.channel_names = {"R",          "G",          "B",          "direct.R",   "direct.G",
-                           "direct.B",   "indirect.R", "indirect.G", "indirect.B", "albedo.R",
-                           "albedo.G",   "albedo.B",   "normal.R",   "normal.G",   "normal.B",
-                           "coverage.Y", "records.R",  "records.G",  "records.B"};
-    image.channel_names.resize(channels);
-    for (size_t p = 0; p < pixels; ++p) {
-        const shared::float4* s = &sums[kFilmSlots * p];
-        float* out = &image.pixels[p * channels];
-        for (int k = 0; k < 5; ++k) {
-            out[3 * k + 0] = s[k].x;
-            out[3 * k + 1] = s[k].y;
-            out[3 * k + 2] = s[k].z;
-        }
-        out[15] = s[5].x;
-        if (options.records_overlay) {
-            out[16] = s[6].x;
-            out[17] = s[6].y;
-            out[18] = s[6].z;
-        }
+    std::vector<FilmLayer> layers = {
+        {"beauty", RC_CACHED_FILM_BEAUTY},     {"direct", RC_CACHED_FILM_DIRECT},
+        {"indirect", RC_CACHED_FILM_INDIRECT}, {"albedo", RC_CACHED_FILM_ALBEDO},
+        {"normal", RC_CACHED_FILM_NORMAL},     {"coverage", RC_CACHED_FILM_COVERAGE, 1}};
+    if (options.records_overlay) {
+        layers.push_back({"records", RC_CACHED_FILM_LAYER});
     }
+    Image image = unpack_film(sums, RC_CACHED_FILM_SLOTS, width, height, layers);
     if (stats != nullptr) {
         *stats = stats_;
     }

@@ -139,9 +139,17 @@ class IrradianceCache {
     const RecordStore& store(int level = 0) const { return stores_.at(level); }
 
    private:
-    // Places records at `level` where candidates of `samples` are not covered: candidate q as
-    // ic_uncovered maps it with `placement`. One pass, or passes until all are covered.
-    void cover(int level, const Buffer<shared::GBufferSample>& samples, shared::int4 placement,
+    // A placement pass's candidates (IcParams::placement_*): with `columns` candidate columns,
+    // candidate q is camera sample q % spp of pixel (stride (q / spp % columns),
+    // stride (q / spp / columns)); with stride 0, entry q.
+    struct Candidates {
+        int stride = 0;
+        int spp = 1;
+        int columns = 1;
+    };
+    // Places records at `level` where candidates of `samples` are not covered. One pass, or
+    // passes until all are covered.
+    void cover(int level, const Buffer<shared::GBufferSample>& samples, Candidates placement,
                size_t candidates, bool until_covered);
     // Records of `level` at `sites`, numbered from the level's current size.
     std::vector<ComputedRecord> compute_level(int level, const std::vector<RecordSite>& sites);
@@ -163,8 +171,10 @@ class IrradianceCache {
     Kernel select_kernel_;
     Kernel shade_kernel_;
     RecordSampling sampling_;
-    shared::int4 image_{0, 0, 1, 0};  // width, height, camera samples per pixel (render)
-    uint32_t first_index_ = 0;        // stream offset of first-level records (compute_records)
+    int width_ = 0;  // of the image render() makes
+    int height_ = 0;
+    int camera_spp_ = 1;
+    uint32_t first_index_ = 0;  // stream offset of first-level records (compute_records)
     std::vector<RecordStore> stores_;
     IrradianceCacheStats stats_;
 };

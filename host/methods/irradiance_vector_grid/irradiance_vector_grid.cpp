@@ -20,8 +20,6 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-constexpr int kValuesPerVertex = 54;  // RC_IVG_VALUES_PER_VERTEX
-constexpr int kPackedPerVertex = 36;  // RC_IVG_PACKED_PER_VERTEX
 constexpr uint64_t kPhotonsPerLaunch = uint64_t{1} << 22;
 constexpr uint64_t kMaxPhotons = uint64_t{1} << 31;
 // Crossings at grazing angles are divided by at least this |cosine| (see rc_ivg_fixed).
@@ -119,10 +117,14 @@ IrradianceVectorGrid::IrradianceVectorGrid(Context& context, const Scene& scene,
       scene_(scene),
       bvh_(bvh),
       device_scene_(device_scene),
-      trace_kernel_(context.kernel("irradiance_vector_grid.cl", "ivg_trace_photons")),
-      deposit_kernel_(context.kernel("irradiance_vector_grid.cl", "ivg_deposit_segments")),
-      normalize_kernel_(context.kernel("irradiance_vector_grid.cl", "ivg_normalize")),
-      lookup_kernel_(context.kernel("irradiance_vector_grid.cl", "ivg_lookup")),
+      trace_kernel_(
+          context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_trace_photons")),
+      deposit_kernel_(context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl",
+                                     "ivg_deposit_segments")),
+      normalize_kernel_(
+          context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_normalize")),
+      lookup_kernel_(
+          context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_lookup")),
       values_(context, 1, "ivg_values"),
       packed_(context, 1, "ivg_packed") {}
 
@@ -148,16 +150,24 @@ shared::IvgParams IrradianceVectorGrid::layout(const IvgOptions& options) const 
     }
     const glm::vec3 centre = 0.5f * (lower + upper);
     const float radius = 0.5f * glm::length(glm::vec3(cells[0], cells[1], cells[2]) * cell);
-    p.origin = {lower.x, lower.y, lower.z, 1.0f};
-    p.cell = {cell.x, cell.y, cell.z, kSmallestCosine};
-    p.sphere = {centre.x, centre.y, centre.z, std::max(radius, 1e-6f)};
-    p.cells = {cells[0], cells[1], cells[2], static_cast<int>(vertex_count(cells))};
-    const float flux = largest_photon_flux(scene_, p.sphere.w);
-    p.origin.w = flux > 0.0f ? static_cast<float>(kLargestAmount * kSmallestCosine / flux) : 1.0f;
-    p.photons = {0, 0, options.include_direct ? 1u : 0u, 0};
-    p.depth = {options.max_depth, options.rr_depth, 0, 1};
-    p.seed = {static_cast<unsigned>(options.seed), static_cast<unsigned>(options.seed >> 32), 0, 0};
-    p.lookup = {options.interpolation, options.compressed ? 1 : 0, 0, 0};
+    p.origin = {lower.x, lower.y, lower.z, 0.0f};
+    p.cell = {cell.x, cell.y, cell.z, 0.0f};
+    p.min_cosine = kSmallestCosine;
+    p.sphere_centre = {centre.x, centre.y, centre.z, 0.0f};
+    p.sphere_radius = std::max(radius, 1e-6f);
+    p.cells = {cells[0], cells[1], cells[2], 0};
+    p.vertex_count = static_cast<int>(vertex_count(cells));
+    const float flux = largest_photon_flux(scene_, p.sphere_radius);
+    p.fixed_point_scale =
+        flux > 0.0f ? static_cast<float>(kLargestAmount * kSmallestCosine / flux) : 1.0f;
+    p.include_direct = options.include_direct ? 1 : 0;
+    p.max_depth = options.max_depth;
+    p.rr_depth = options.rr_depth;
+    p.camera_spp = 1;
+    p.seed_lo = static_cast<unsigned>(options.seed);
+    p.seed_hi = static_cast<unsigned>(options.seed >> 32);
+    p.interpolation = options.interpolation;
+    p.compressed = options.compressed ? 1 : 0;
     return p;
 }
 
@@ -171,11 +181,11 @@ void IrradianceVectorGrid::build(const IvgOptions& options, IvgStats* stats) {
         const auto start = Clock::now();
         const GridFile file = read_grid_file(options.grid_in, scene_);
         check_grid_file(file, options, options.grid_in.string());
-        params_.origin = {file.origin.x, file.origin.y, file.origin.z, params_.origin.w};
-        params_.cell = {file.cell.x, file.cell.y, file.cell.z, params_.cell.w};
-        params_.cells = {file.cells[0], file.cells[1], file.cells[2],
-                         static_cast<int>(vertex_count(file.cells))};
-        params_.photons.x = static_cast<unsigned>(std::min<uint64_t>(file.photons, kMaxPhotons));
+        params_.origin = {file.origin.x, file.origin.y, file.origin.z, 0.0f};
+        params_.cell = {file.cell.x, file.cell.y, file.cell.z, 0.0f};
+        params_.cells = {file.cells[0], file.cells[1], file.cells[2], 0};
+        params_.vertex_count = static_cast<int>(vertex_count(file.cells));
+        params_.photon_count = static_cast<unsigned>(std::min<uint64_t>(file.photons, kMaxPhotons));
         values = file.values;
         s.loaded = true;
         s.photons = file.photons;
@@ -188,15 +198,15 @@ void IrradianceVectorGrid::build(const IvgOptions& options, IvgStats* stats) {
                             std::to_string(photons),
                         kExitUsage);
         }
-        params_.photons.x = static_cast<unsigned>(photons);
+        params_.photon_count = static_cast<unsigned>(photons);
         auto start = Clock::now();
-        Buffer<int64_t> accum(context_, vertices * kValuesPerVertex, "ivg_accum");
+        Buffer<int64_t> accum(context_, vertices * RC_IVG_VALUES_PER_VERTEX, "ivg_accum");
         accum.fill_zero();
         Buffer<unsigned> counters(context_, 2, "ivg_counters");
         const SceneArguments scene(bvh_, device_scene_);
         for (uint64_t first = 0; first < photons; first += kPhotonsPerLaunch) {
             shared::IvgParams launch = params_;
-            launch.photons.y = static_cast<unsigned>(first);
+            launch.first_photon = static_cast<unsigned>(first);
             counters.fill_zero();
             context_.launch(trace_kernel_, std::min(kPhotonsPerLaunch, photons - first), launch,
                             scene, accum, counters);
@@ -208,7 +218,7 @@ void IrradianceVectorGrid::build(const IvgOptions& options, IvgStats* stats) {
         context_.finish();
         s.trace_seconds = seconds_since(start);
         start = Clock::now();
-        Buffer<float> normalized(context_, vertices * kValuesPerVertex, "ivg_values");
+        Buffer<float> normalized(context_, vertices * RC_IVG_VALUES_PER_VERTEX, "ivg_values");
         context_.launch(normalize_kernel_, vertices, params_, accum, normalized);
         values = normalized.download();
         s.normalize_seconds += seconds_since(start);
@@ -237,16 +247,17 @@ void IrradianceVectorGrid::build(const IvgOptions& options, IvgStats* stats) {
 }
 
 void IrradianceVectorGrid::upload_values(const std::vector<float>& values) {
-    const size_t vertices = static_cast<size_t>(params_.cells.w);
-    if (values.size() != vertices * kValuesPerVertex) {
+    const size_t vertices = static_cast<size_t>(params_.vertex_count);
+    if (values.size() != vertices * RC_IVG_VALUES_PER_VERTEX) {
         throw Error("irradiance vector grid: " + std::to_string(values.size()) +
                     " values for a grid of " + std::to_string(vertices) + " vertices");
     }
     values_ = Buffer<float>(context_, values, "ivg_values");
     // The compressed layout (§4.2): per vertex and direction, |I_r|, |I_g|, |I_b| and the unit
     // direction of I_r + I_g + I_b, as half floats.
-    std::vector<uint16_t> packed(params_.lookup.y != 0 ? vertices * kPackedPerVertex : 1, 0);
-    if (params_.lookup.y != 0) {
+    std::vector<uint16_t> packed(params_.compressed != 0 ? vertices * RC_IVG_PACKED_PER_VERTEX : 1,
+                                 0);
+    if (params_.compressed != 0) {
         for (size_t slot = 0; slot < vertices * 6; ++slot) {
             const float* v = values.data() + slot * 9;
             glm::vec3 channel[3];
@@ -285,8 +296,8 @@ void IrradianceVectorGrid::set_values(const std::vector<float>& values) { upload
 
 std::vector<int64_t> IrradianceVectorGrid::deposit(const shared::IvgParams& params,
                                                    const std::vector<PhotonSegment>& segments) {
-    const size_t vertices = static_cast<size_t>(params.cells.w);
-    Buffer<int64_t> accum(context_, vertices * kValuesPerVertex, "ivg_accum");
+    const size_t vertices = static_cast<size_t>(params.vertex_count);
+    Buffer<int64_t> accum(context_, vertices * RC_IVG_VALUES_PER_VERTEX, "ivg_accum");
     accum.fill_zero();
     std::vector<shared::float4> from(segments.size());
     std::vector<shared::float4> to(segments.size());
@@ -306,9 +317,9 @@ std::vector<int64_t> IrradianceVectorGrid::deposit(const shared::IvgParams& para
 
 std::vector<float> IrradianceVectorGrid::normalize(const shared::IvgParams& params,
                                                    const std::vector<int64_t>& accum) {
-    const size_t vertices = static_cast<size_t>(params.cells.w);
+    const size_t vertices = static_cast<size_t>(params.vertex_count);
     const Buffer<int64_t> sums(context_, accum, "ivg_accum");
-    Buffer<float> normalized(context_, vertices * kValuesPerVertex, "ivg_values");
+    Buffer<float> normalized(context_, vertices * RC_IVG_VALUES_PER_VERTEX, "ivg_values");
     context_.launch(normalize_kernel_, vertices, params, sums, normalized);
     return normalized.download();
 }

@@ -14,7 +14,6 @@ namespace {
 
 constexpr char kMagic[8] = {'R', 'C', 'I', 'V', 'G', 'R', 'I', 'D'};
 constexpr uint32_t kVersion = 1;
-constexpr uint32_t kValuesPerVertex = 54;
 
 struct Header {
     char magic[8];
@@ -46,7 +45,7 @@ void write_grid_file(const std::filesystem::path& path, const Scene& scene, cons
     Header header{};
     std::memcpy(header.magic, kMagic, sizeof kMagic);
     header.version = kVersion;
-    header.values_per_vertex = kValuesPerVertex;
+    header.values_per_vertex = RC_IVG_VALUES_PER_VERTEX;
     header.scene = scene_fingerprint(scene);
     for (int axis = 0; axis < 3; ++axis) {
         header.cells[axis] = grid.cells[axis];
@@ -81,15 +80,16 @@ GridFile read_grid_file(const std::filesystem::path& path, const Scene& scene) {
         throw Error(name + ": irradiance vector grid version " + std::to_string(header.version) +
                     "; this radcache reads version " + std::to_string(kVersion));
     }
-    bool sizes_fit = header.values_per_vertex == kValuesPerVertex;
+    bool sizes_fit = header.values_per_vertex == RC_IVG_VALUES_PER_VERTEX;
     uint64_t vertices = 1;
     for (int axis = 0; axis < 3; ++axis) {
         sizes_fit = sizes_fit && header.cells[axis] >= 1 && header.cells[axis] <= 1024;
         vertices *= static_cast<uint64_t>(std::max(header.cells[axis], 0) + 1);
     }
-    sizes_fit = sizes_fit && bytes.size() == sizeof header +
-                                                 vertices * kValuesPerVertex * sizeof(float) +
-                                                 sizeof(uint64_t);
+    sizes_fit =
+        sizes_fit && bytes.size() == sizeof header +
+                                         vertices * RC_IVG_VALUES_PER_VERTEX * sizeof(float) +
+                                         sizeof(uint64_t);
     if (!sizes_fit) {
         throw Error(name + ": corrupt irradiance vector grid (" + std::to_string(bytes.size()) +
                     " bytes do not match its header)");
@@ -114,7 +114,7 @@ GridFile read_grid_file(const std::filesystem::path& path, const Scene& scene) {
     grid.include_direct = header.include_direct != 0;
     grid.photons = header.photons;
     grid.max_depth = header.max_depth;
-    grid.values.resize(vertices * kValuesPerVertex);
+    grid.values.resize(vertices * RC_IVG_VALUES_PER_VERTEX);
     std::memcpy(grid.values.data(), bytes.data() + sizeof header,
                 grid.values.size() * sizeof(float));
     return grid;

@@ -3,8 +3,10 @@
 #include <chrono>
 #include <limits>
 
+#include "image/film.h"
 #include "methods/scene_arguments.h"
 #include "scene/camera.h"
+#include "shared/film.h"
 #include "util/error.h"
 
 namespace rc {
@@ -13,17 +15,15 @@ const char* const kIvgAovs[6] = {"beauty", "direct", "indirect", "albedo", "norm
 
 namespace {
 
-constexpr size_t kFilmSlots = 6;  // float4 per pixel (kernels/irradiance_vector_grid.cl)
-
 // The grid's parameters with this render's camera samples and gather rays.
 class RenderGrid : public KernelArgumentGroup {
    public:
     RenderGrid(const IrradianceVectorGrid& grid, const IvgRenderOptions& options) : grid_(grid) {
         params_ = grid.params();
-        params_.depth.z = options.gather_rays;
-        params_.depth.w = options.spp;
-        params_.seed = {static_cast<unsigned>(options.seed),
-                        static_cast<unsigned>(options.seed >> 32), 0, 0};
+        params_.gather_rays = options.gather_rays;
+        params_.camera_spp = options.spp;
+        params_.seed_lo = static_cast<unsigned>(options.seed);
+        params_.seed_hi = static_cast<unsigned>(options.seed >> 32);
     }
     unsigned set_kernel_args(Kernel& kernel, unsigned first) const override {
         const unsigned count = grid_.set_kernel_args(kernel, first);
@@ -45,7 +45,8 @@ IvgMethod::IvgMethod(Context& context, const Scene& scene, const DeviceBvh& bvh,
       bvh_(bvh),
       device_scene_(device_scene),
       grid_(grid),
-      shade_kernel_(context.kernel("irradiance_vector_grid.cl", "ivg_shade")) {}
+      shade_kernel_(
+          context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_shade")) {}
 
 Image IvgMethod::render(const IvgRenderOptions& options, IvgRenderStats* stats) {
     const int width = options.width > 0 ? options.width : scene_.camera.width;
@@ -65,27 +66,20 @@ Image IvgMethod::render(const IvgRenderOptions& options, IvgRenderStats* stats) 
     const shared::CameraParams camera = camera_params(scene_.camera, width, height);
     const SceneArguments scene(bvh_, device_scene_);
     const RenderGrid grid(grid_, options);
-    Buffer<shared::float4> film(context_, pixels * kFilmSlots, "ivg_film");
+    Buffer<shared::float4> film(context_, pixels * RC_CACHED_FILM_SLOTS, "ivg_film");
     Buffer<unsigned> counters(context_, 3, "ivg_counters");
     counters.upload({0u, 0u, 0xffffffffu});
     context_.launch(shade_kernel_, pixels, grid, camera, scene, film, counters);
     const std::vector<shared::float4> sums = film.download();
     const std::vector<unsigned> c = counters.download();
 
-    Image image(width, height, 18);
-    image.channel_names = {"R",        "G",          "B",          "direct.R",   "direct.G",
-                           "direct.B", "indirect.R", "indirect.G", "indirect.B", "albedo.R",
-                           "albedo.G", "albedo.B",   "normal.R",   "normal.G",   "normal.B",
-                           "grid.R",   "grid.G",     "grid.B"};
-    for (size_t p = 0; p < pixels; ++p) {
-        const shared::float4* s = &sums[kFilmSlots * p];
-        float* out = &image.pixels[p * 18];
-        for (size_t k = 0; k < kFilmSlots; ++k) {
-            out[3 * k + 0] = s[k].x;
-            out[3 * k + 1] = s[k].y;
-            out[3 * k + 2] = s[k].z;
-        }
-    }
+    Image image = unpack_film(sums, RC_CACHED_FILM_SLOTS, width, height,
+                              {{"beauty", RC_CACHED_FILM_BEAUTY},
+                               {"direct", RC_CACHED_FILM_DIRECT},
+                               {"indirect", RC_CACHED_FILM_INDIRECT},
+                               {"albedo", RC_CACHED_FILM_ALBEDO},
+                               {"normal", RC_CACHED_FILM_NORMAL},
+                               {"grid", RC_CACHED_FILM_LAYER}});
     if (stats != nullptr) {
         stats->rays = c[0];
         stats->nonfinite_samples = c[1];

@@ -1,5 +1,6 @@
 #include "methods/normals/normals.h"
 
+#include "image/film.h"
 #include "scene/camera.h"
 #include "util/error.h"
 
@@ -9,7 +10,7 @@ NormalsMethod::NormalsMethod(Context& context, const Scene& scene, const DeviceB
     : context_(context),
       scene_(scene),
       bvh_(bvh),
-      kernel_(context.kernel("normals.cl", "render_normals")) {}
+      kernel_(context.kernel("normals/normals.cl", "render_normals")) {}
 
 Image NormalsMethod::render(const NormalsOptions& options) {
     const int width = options.width > 0 ? options.width : scene_.camera.width;
@@ -24,14 +25,7 @@ Image NormalsMethod::render(const NormalsOptions& options) {
     const auto seed_hi = static_cast<unsigned>(options.seed >> 32);
     context_.launch(kernel_, pixels, camera, bvh_.nodes, bvh_.triangles, bvh_.triangle_of_primitive,
                     options.samples_per_pixel, seed_lo, seed_hi, film);
-    const std::vector<shared::float4> rgba = film.download();
-    Image image(width, height, 3);
-    for (size_t i = 0; i < pixels; ++i) {
-        image.pixels[3 * i + 0] = rgba[i].x;
-        image.pixels[3 * i + 1] = rgba[i].y;
-        image.pixels[3 * i + 2] = rgba[i].z;
-    }
-    return image;
+    return unpack_film(film.download(), 1, width, height, {{"beauty", 0}});
 }
 
 }  // namespace rc

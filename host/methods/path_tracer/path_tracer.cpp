@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "image/film.h"
 #include "methods/scene_arguments.h"
 #include "scene/camera.h"
+#include "shared/film.h"
 #include "util/error.h"
 
 namespace rc {
@@ -15,8 +17,6 @@ const char* const kPathTracerAovs[6] = {"beauty", "direct", "indirect",
                                         "albedo", "normal", "stddev"};
 
 namespace {
-
-constexpr size_t kFilmSlots = 6;  // float4 sums per pixel (see kernels/path_tracer.cl)
 
 std::string gibibytes(double bytes) {
     char text[32];
@@ -32,47 +32,43 @@ PathTracer::PathTracer(Context& context, const Scene& scene, const DeviceBvh& bv
       scene_(scene),
       bvh_(bvh),
       device_scene_(device_scene),
-      kernel_(context.kernel("path_tracer.cl", "path_trace_pass")) {}
+      kernel_(context.kernel("path_tracer/path_tracer.cl", "path_trace_pass")) {}
 
 Image PathTracer::resolve(const Buffer<shared::float4>& film, int width, int height) const {
-    const std::vector<shared::float4> sums = film.download();
-    Image image(width, height, 18);
-    image.channel_names.clear();
-    for (const char* aov : kPathTracerAovs) {
-        for (const char* c : {"R", "G", "B"}) {
-            image.channel_names.push_back(
-                std::string(aov) == "beauty" ? std::string(c) : std::string(aov) + "." + c);
-        }
-    }
+    // The sums become means over the pixel's finite samples (the beauty slot's w), and the sums
+    // of squares the standard deviation of one sample, unbiased variance estimate (that of the
+    // mean is stddev / sqrt(n)): unlike the mean's variance it keeps its precision in half floats.
+    std::vector<shared::float4> means = film.download();
     const size_t pixels = static_cast<size_t>(width) * height;
     for (size_t p = 0; p < pixels; ++p) {
-        const shared::float4* s = &sums[kFilmSlots * p];
-        const float n = s[0].w;  // finite samples of this pixel
+        shared::float4* s = &means[RC_PT_FILM_SLOTS * p];
+        const float n = s[RC_PT_FILM_BEAUTY].w;
         const float inv = n > 0.0f ? 1.0f / n : 0.0f;
-        float* out = &image.pixels[p * 18];
-        const float mean[3] = {s[0].x * inv, s[0].y * inv, s[0].z * inv};
-        const float square[3] = {s[1].x * inv, s[1].y * inv, s[1].z * inv};
+        for (int k = 0; k < RC_PT_FILM_SLOTS; ++k) {
+            s[k] = {s[k].x * inv, s[k].y * inv, s[k].z * inv, 0.0f};
+        }
+        const float* mean = &s[RC_PT_FILM_BEAUTY].x;
+        float* square = &s[RC_PT_FILM_BEAUTY_SQUARED].x;
         for (int c = 0; c < 3; ++c) {
-            out[c] = mean[c];
-            out[3 + c] = (&s[2].x)[c] * inv;
-            out[6 + c] = (&s[3].x)[c] * inv;
-            out[9 + c] = (&s[4].x)[c] * inv;
-            out[12 + c] = (&s[5].x)[c] * inv;
-            // Standard deviation of one sample, unbiased variance estimate (that of the mean is
-            // stddev / sqrt(n)): unlike the mean's variance it keeps its precision in half floats.
-            out[15 + c] =
+            square[c] =
                 n > 1.0f ? std::sqrt(std::max(0.0f, square[c] - mean[c] * mean[c]) * n / (n - 1.0f))
                          : 0.0f;
         }
     }
-    return image;
+    return unpack_film(means, RC_PT_FILM_SLOTS, width, height,
+                       {{"beauty", RC_PT_FILM_BEAUTY},
+                        {"direct", RC_PT_FILM_DIRECT},
+                        {"indirect", RC_PT_FILM_INDIRECT},
+                        {"albedo", RC_PT_FILM_ALBEDO},
+                        {"normal", RC_PT_FILM_NORMAL},
+                        {"stddev", RC_PT_FILM_BEAUTY_SQUARED}});
 }
 
 Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stats) {
     const int width = options.width > 0 ? options.width : scene_.camera.width;
     const int height = options.height > 0 ? options.height : scene_.camera.height;
     const double pixels = static_cast<double>(width) * static_cast<double>(height);
-    const double film_bytes = pixels * kFilmSlots * sizeof(shared::float4);
+    const double film_bytes = pixels * RC_PT_FILM_SLOTS * sizeof(shared::float4);
     if (pixels >= 4294967296.0 ||
         film_bytes > static_cast<double>(context_.device().max_allocation)) {
         throw Error("resolution " + std::to_string(width) + "x" + std::to_string(height) +
@@ -86,15 +82,17 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
         throw Error("samples per pixel must be at least 1", kExitUsage);
     }
     const auto count = static_cast<size_t>(pixels);
-    Buffer<shared::float4> film(context_, count * kFilmSlots, "film");
+    Buffer<shared::float4> film(context_, count * RC_PT_FILM_SLOTS, "film");
     film.fill_zero();
     Buffer<unsigned> counters(context_, 3, "path_counters");
 
     shared::PathTracerParams params{};
-    params.image = {width, height, 0, 0};
-    params.depth = {options.max_depth, options.rr_depth, 0, 0};
-    params.seed = {static_cast<unsigned>(options.seed), static_cast<unsigned>(options.seed >> 32),
-                   0, 0};
+    params.width = width;
+    params.height = height;
+    params.max_depth = options.max_depth;
+    params.rr_depth = options.rr_depth;
+    params.seed_lo = static_cast<unsigned>(options.seed);
+    params.seed_hi = static_cast<unsigned>(options.seed >> 32);
     const shared::CameraParams camera = camera_params(scene_.camera, width, height);
 
     PathTracerStats result;
@@ -107,7 +105,7 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
                                      : pass >= options.spp) {
             break;
         }
-        params.image.z = pass;
+        params.sample = pass;
         const std::vector<unsigned> zero = {0u, 0u, 0xffffffffu};
         counters.upload(zero);
         context_.launch(kernel_, count, params, camera, SceneArguments(bvh_, device_scene_), film,

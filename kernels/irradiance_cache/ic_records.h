@@ -10,20 +10,20 @@
 // Random-number domain of record sampling, kept apart from camera samples.
 #define RC_IC_RNG_DOMAIN 0x49434331u
 
-// The random stream of cell `cell` of record `record` of cache level params->depth.z (0: the
+// The random stream of cell `cell` of record `record` of cache level params->level (0: the
 // records the camera samples read). Its words 0 and 1 are the cell's jitter (zeta, xi), so the
 // reduction and the deeper levels' placement regenerate the sampled directions.
 RC_FUNC uint rc_ic_level_key(const IcParams* params) {
-    return params->seed.y ^ ((uint)params->depth.z * 0x9e3779b9u);
+    return params->seed_hi ^ ((uint)params->level * 0x9e3779b9u);
 }
 
 RC_FUNC RngStream rc_ic_cell_stream(const IcParams* params, uint record, uint cell) {
-    return rc_rng_stream(params->seed.x ^ RC_IC_RNG_DOMAIN, rc_ic_level_key(params), record, cell);
+    return rc_rng_stream(params->seed_lo ^ RC_IC_RNG_DOMAIN, rc_ic_level_key(params), record, cell);
 }
 
 RC_FUNC void rc_ic_cell_jitter(const IcParams* params, uint record, uint cell, float* zeta,
                                float* xi) {
-    const uint lo = params->seed.x ^ RC_IC_RNG_DOMAIN;
+    const uint lo = params->seed_lo ^ RC_IC_RNG_DOMAIN;
     const uint hi = rc_ic_level_key(params);
     *zeta = rc_uint_to_unit_float(rc_rng_word(lo, hi, record, cell, 0u));
     *xi = rc_uint_to_unit_float(rc_rng_word(lo, hi, record, cell, 1u));
@@ -77,8 +77,8 @@ typedef struct RecordEstimate {
 // distances (a miss is infinitely far).
 RC_FUNC RecordEstimate rc_ic_reduce(const IcParams* params, uint record, float3 n,
                                     RC_GLOBAL const float4* cells) {
-    const int m = params->sampling.x;
-    const int nn = params->sampling.y;
+    const int m = params->strata_m;
+    const int nn = params->strata_n;
     const Frame frame = rc_ic_record_frame(n);
     RecordEstimate e;
     float3 sum = (float3)(0.0f);

@@ -9,11 +9,11 @@
 
 RC_FUNC PathSample rc_path_sample(const SceneData* scene, const CameraParams* camera,
                                   const PathTracerParams* params, uint pixel) {
-    RngStream rng = rc_rng_stream(params->seed.x, params->seed.y, pixel, (uint)params->image.z);
-    const uint px = pixel % (uint)params->image.x;
-    const uint py = pixel / (uint)params->image.x;
+    RngStream rng = rc_rng_stream(params->seed_lo, params->seed_hi, pixel, (uint)params->sample);
+    const uint px = pixel % (uint)params->width;
+    const uint py = pixel / (uint)params->width;
     const float jx = rc_rng_next_float(&rng);
     const float jy = rc_rng_next_float(&rng);
     const Ray ray = rc_camera_ray(camera, (float)px + jx, (float)py + jy);
-    return rc_path_radiance(scene, ray, &rng, 0, params->depth.x, params->depth.y, true);
+    return rc_path_radiance(scene, ray, &rng, 0, params->max_depth, params->rr_depth, true);
 }

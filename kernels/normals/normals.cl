@@ -1,5 +1,5 @@
 // Entry kernel of the geometry preview (host/methods/normals.cpp).
-#include "normals.h"
+#include "normals/normals.h"
 
 __kernel void render_normals(uint begin, uint end, CameraParams camera,
                              __global const BvhNode* nodes, __global const Triangle* triangles,

@@ -1,11 +1,11 @@
-// Entry kernels of the irradiance vector grid (host/methods/irradiance_vector_grid.cpp,
-// host/methods/ivg_method.cpp): photon tracing, deposition of given segments (tests),
+// Entry kernels of the irradiance vector grid (host/methods/irradiance_vector_grid/: the grid,
+// ivg_method.cpp): photon tracing, deposition of given segments (tests),
 // normalisation, lookups (tests) and the render pass of `ivg` and `ivg-gather`.
-#include "camera_film.h"
-#include "irradiance_vector_grid.h"
+#include "irradiance_vector_grid/ivg_photons.h"
+#include "irradiance_vector_grid/ivg_shading.h"
 #include "scene_arguments.h"
 
-// Item i: photon params.photons.y + i, traced and deposited into accum (64-bit fixed point).
+// Item i: photon params.first_photon + i, traced and deposited into accum (64-bit fixed point).
 // counters[0] counts crossings, counters[1] rays.
 __kernel void ivg_trace_photons(uint begin, uint end, IvgParams params, RC_SCENE_PARAMETERS,
                                 __global long* accum, __global uint* counters) {
@@ -15,7 +15,8 @@ __kernel void ivg_trace_photons(uint begin, uint end, IvgParams params, RC_SCENE
     }
     const SceneData scene = RC_SCENE_DATA();
     uint rays = 0;
-    const uint crossings = rc_ivg_trace_photon(&scene, &params, params.photons.y + i, accum, &rays);
+    const uint crossings =
+        rc_ivg_trace_photon(&scene, &params, params.first_photon + i, accum, &rays);
     atomic_add(&counters[0], crossings);
     atomic_add(&counters[1], rays);
 }
@@ -31,8 +32,9 @@ __kernel void ivg_deposit_segments(uint begin, uint end, IvgParams params,
     rc_ivg_deposit_segment(&params, from[i].xyz, to[i].xyz, flux[i].xyz, accum);
 }
 
-// Item v: vertex v's 54 sums turned into irradiance vectors (§3.3): divided by the fixed-point
-// units, the photon count and the area of the vertex's face cell for each direction.
+// Item v: vertex v's RC_IVG_VALUES_PER_VERTEX sums turned into irradiance vectors (§3.3): divided
+// by the fixed-point units, the photon count and the area of the vertex's face cell for each
+// direction.
 __kernel void ivg_normalize(uint begin, uint end, IvgParams params, __global const long* accum,
                             __global float* values) {
     const uint v = begin + (uint)get_global_id(0);
@@ -44,10 +46,10 @@ __kernel void ivg_normalize(uint begin, uint end, IvgParams params, __global con
     const int i = (int)v % columns;
     const int j = ((int)v / columns) % rows;
     const int k = (int)v / (columns * rows);
-    const float photons = (float)max(params.photons.x, 1u);
+    const float photons = (float)max(params.photon_count, 1u);
     for (int direction = 0; direction < 6; ++direction) {
-        const float scale =
-            1.0f / (params.origin.w * photons * rc_ivg_face_area(&params, direction / 2, i, j, k));
+        const float scale = 1.0f / (params.fixed_point_scale * photons *
+                                    rc_ivg_face_area(&params, direction / 2, i, j, k));
         for (int n = 0; n < 9; ++n) {
             const size_t slot = ((size_t)v * 6 + (size_t)direction) * 9 + (size_t)n;
             values[slot] = (float)accum[slot] * scale;
@@ -69,11 +71,10 @@ __kernel void ivg_lookup(uint begin, uint end, IvgParams params, __global const 
                  0.0f);
 }
 
-// The render pass. Item = pixel: shades its params.depth.w camera samples and writes the pixel's
-// means to film (6 float4 per pixel: beauty, direct, indirect, albedo, normal, grid). With
-// params.depth.z gather rays per sample, final gathering (`ivg-gather`); with none, the grid read
-// directly at the camera's hit (`ivg`). counters: [0] rays, [1] NaN or infinite samples (dropped),
-// [2] the first pixel that had one.
+// The render pass. Item = pixel: shades its params.camera_spp camera samples and writes the
+// pixel's means to film (RC_CACHED_FILM_SLOTS per pixel; rc_shade_pixel), the grid's diffuse
+// light at the camera's hit as its layer. counters: [0] rays, [1] NaN or infinite samples
+// (dropped), [2] the first pixel that had one.
 __kernel void ivg_shade(uint begin, uint end, IvgParams params, __global const float* values,
                         __global const half* packed, CameraParams camera, RC_SCENE_PARAMETERS,
                         __global float4* film, __global uint* counters) {
@@ -83,29 +84,6 @@ __kernel void ivg_shade(uint begin, uint end, IvgParams params, __global const f
     }
     const SceneData scene = RC_SCENE_DATA();
     const VectorGrid grid = {params, values, packed};
-    float3 sums[6] = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f),
-                      (float3)(0.0f), (float3)(0.0f), (float3)(0.0f)};
-    uint rays = 0;
-    uint finite = 0;
-    for (uint s = 0; s < (uint)params.depth.w; ++s) {
-        float3 grid_term;
-        CachedRadiance l;
-        if (params.depth.z > 0) {
-            l = rc_ivg_gather(&scene, &grid, &camera, pixel, s, &grid_term);
-        } else {
-            RngStream rng;
-            const Ray ray = rc_ivg_camera_ray(&params, &camera, pixel, s, &rng);
-            l = rc_ivg_radiance(&scene, &grid, ray, &rng, true, 0, &grid_term);
-        }
-        if (!rc_add_camera_sample(&l, sums, &rays, counters, pixel)) {
-            continue;
-        }
-        ++finite;
-        sums[5] += grid_term;
-    }
-    atomic_add(&counters[0], rays);
-    const float inv = finite > 0 ? 1.0f / (float)finite : 0.0f;
-    for (int k = 0; k < 6; ++k) {
-        film[6 * (size_t)pixel + k] = (float4)(sums[k] * inv, 0.0f);
-    }
+    const PixelShader shader = {&scene, &grid, &camera};
+    rc_shade_pixel(&shader, (uint)params.camera_spp, pixel, film, counters);
 }

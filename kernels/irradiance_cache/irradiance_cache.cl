@@ -1,27 +1,30 @@
 // Entry kernels of irradiance caching (host/methods/irradiance_cache.cpp): the G-buffer, record
 // hemisphere sampling and its reduction, record gathering (coverage and interpolation), and the
 // final shading pass.
-#include "camera_film.h"
-#include "irradiance_cache.h"
-#include "irradiance_vector_grid.h"
+#include "irradiance_cache/ic_shading.h"
+#include "irradiance_vector_grid/ivg_radiance.h"
 #include "scene_arguments.h"
 
-// The G-buffer entry of a ray's first hit, with the hit distance for the footprint (position.w)
-// and `owner` in info.y, info.z.
-RC_FUNC GBufferSample rc_ic_gbuffer_sample(const SceneData* scene, Ray ray, int2 owner) {
+// The G-buffer entry of a ray's first hit, with the hit distance as its footprint (to be scaled
+// by the caller).
+RC_FUNC GBufferSample rc_ic_gbuffer_sample(const SceneData* scene, Ray ray) {
     const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
     GBufferSample g;
-    g.info = (int4)(-1, owner.x, owner.y, 0);
     g.position = g.normal = g.origin = (float4)(0.0f);
+    g.footprint = g.diffuse = 0.0f;
+    g.primitive = -1;
+    g.served = 0;
     if (hit.primitive != RC_NO_HIT) {
         const SurfacePoint sp = rc_surface_point(scene, ray, hit);
         const SurfaceMaterial material = rc_surface_material(scene, &sp);
         const float diffuse = rc_luminance(material.diffuse);
-        g.position = (float4)(sp.position, hit.t);
-        g.normal = (float4)(sp.shading.n, diffuse);
+        g.position = (float4)(sp.position, 0.0f);
+        g.normal = (float4)(sp.shading.n, 0.0f);
         g.origin = (float4)(sp.origin, 0.0f);
-        g.info.x = (int)hit.primitive;
-        g.info.w = diffuse > 0.0f ? 1 : 0;
+        g.footprint = hit.t;
+        g.diffuse = diffuse;
+        g.primitive = (int)hit.primitive;
+        g.served = diffuse > 0.0f ? 1 : 0;
     }
     return g;
 }
@@ -34,13 +37,13 @@ __kernel void ic_gbuffer(uint begin, uint end, IcParams params, CameraParams cam
         return;
     }
     const SceneData scene = RC_SCENE_DATA();
-    const uint spp = (uint)params.image.z;
+    const uint spp = (uint)params.camera_spp;
     const uint pixel = i / spp;
     RngStream rng;
     float x, y;
     const Ray ray = rc_ic_camera_ray(&params, &camera, pixel, i % spp, &rng, &x, &y);
-    GBufferSample g = rc_ic_gbuffer_sample(&scene, ray, (int2)((int)pixel, (int)(i % spp)));
-    g.position.w = rc_ic_pixel_footprint(&camera, x, y, g.position.w);
+    GBufferSample g = rc_ic_gbuffer_sample(&scene, ray);
+    g.footprint = rc_ic_pixel_footprint(&camera, x, y, g.footprint);
     gbuffer[i] = g;
 }
 
@@ -54,23 +57,23 @@ __kernel void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PAR
         return;
     }
     const SceneData scene = RC_SCENE_DATA();
-    const uint per_record = (uint)(params.sampling.x * params.sampling.y);
+    const uint per_record = (uint)(params.strata_m * params.strata_n);
     const uint b = i / per_record;
     const uint cell = i % per_record;
     RngStream rng;
-    const Ray ray = rc_ic_cell_ray(&params, (uint)params.sampling.z + b, cell,
+    const Ray ray = rc_ic_cell_ray(&params, (uint)params.first_record + b, cell,
                                    records[b].normal.xyz, origins[b].xyz, &rng);
-    GBufferSample g = rc_ic_gbuffer_sample(&scene, ray, (int2)((int)b, (int)cell));
-    g.position.w *= rc_ic_deeper_pixel_width(&params);
+    GBufferSample g = rc_ic_gbuffer_sample(&scene, ray);
+    g.footprint *= rc_ic_deeper_pixel_width(&params);
     hits[i] = g;
 }
 
 // The ray of item i of a record batch: cell i % (M N) of batch record i / (M N).
 RC_FUNC Ray rc_ic_batch_cell_ray(const IcParams* params, __global const Record* records,
                                  __global const float4* origins, uint i, RngStream* rng) {
-    const uint per_record = (uint)(params->sampling.x * params->sampling.y);
+    const uint per_record = (uint)(params->strata_m * params->strata_n);
     const uint b = i / per_record;
-    return rc_ic_cell_ray(params, (uint)params->sampling.z + b, i % per_record,
+    return rc_ic_cell_ray(params, (uint)params->first_record + b, i % per_record,
                           records[b].normal.xyz, origins[b].xyz, rng);
 }
 
@@ -96,8 +99,8 @@ __kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PA
     const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
     // The hemisphere ray is a bounce of the record's level; its hit's own emission is direct
     // light (left to next-event estimation at the shading point) unless the tests ask for it.
-    const PathSample s = rc_path_radiance(&scene, ray, &rng, params.depth.z + 1, params.depth.x,
-                                          params.depth.y, params.sampling.w != 0);
+    const PathSample s = rc_path_radiance(&scene, ray, &rng, params.level + 1, params.max_depth,
+                                          params.rr_depth, params.count_emission != 0);
     rc_ic_store_cell(cells, counters, i, s.radiance, s.distance, s.rays);
 }
 
@@ -118,7 +121,7 @@ __kernel void ic_record_cells_cached(uint begin, uint end, IcParams params, RC_S
     RngStream rng;
     const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
     const CachedRadiance c = rc_ic_cached_radiance(&scene, &params, &cache, ray, &rng,
-                                                   params.sampling.w != 0, params.depth.z + 1);
+                                                   params.count_emission != 0, params.level + 1);
     rc_ic_store_cell(cells, counters, i, c.direct + c.indirect, c.distance, c.rays);
 }
 
@@ -139,8 +142,8 @@ __kernel void ic_record_cells_grid(uint begin, uint end, IcParams params, RC_SCE
     RngStream rng;
     const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
     float3 grid_term;
-    const CachedRadiance c = rc_ivg_radiance(&scene, &grid, ray, &rng, params.sampling.w != 0,
-                                             params.depth.z + 1, &grid_term);
+    const CachedRadiance c = rc_ivg_radiance(&scene, &grid, ray, &rng, params.count_emission != 0,
+                                             params.level + 1, &grid_term);
     rc_ic_store_cell(cells, counters, i, c.direct + c.indirect, c.distance, c.rays);
 }
 
@@ -153,8 +156,8 @@ __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global c
     if (b >= end) {
         return;
     }
-    const uint per_record = (uint)(params.sampling.x * params.sampling.y);
-    const RecordEstimate e = rc_ic_reduce(&params, (uint)params.sampling.z + b,
+    const uint per_record = (uint)(params.strata_m * params.strata_n);
+    const RecordEstimate e = rc_ic_reduce(&params, (uint)params.first_record + b,
                                           records[b].normal.xyz, cells + (size_t)b * per_record);
     __global IrradiancePayload* r = payloads + b;
     r->irradiance = (float4)(e.irradiance, 0.0f);
@@ -168,7 +171,7 @@ __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global c
     distances[b] = (float4)(e.harmonic_distance, e.min_distance, 0.0f, 0.0f);
 }
 
-// Item q: candidate q of a placement pass (params.placement): with C candidate columns, stride s
+// Item q: candidate q of a placement pass (params.placement_*): with C candidate columns, stride s
 // and S samples per candidate pixel, candidate q is camera sample q % S of pixel
 // (s (q / S % C), s (q / S / C)); with stride 0, entry q. Appends the G-buffer index of each
 // candidate the cache serves but no record covers to uncovered[], counting them in count[0] (the
@@ -183,18 +186,18 @@ __kernel void ic_uncovered(uint begin, uint end, IcParams params, RecordGrid gri
     if (q >= end) {
         return;
     }
-    const uint stride = (uint)params.placement.x;
-    const uint per_pixel = (uint)max(params.placement.y, 1);
-    const uint columns = (uint)max(params.placement.z, 1);
+    const uint stride = (uint)params.placement_stride;
+    const uint per_pixel = (uint)max(params.placement_spp, 1);
+    const uint columns = (uint)max(params.placement_columns, 1);
     const uint c = q / per_pixel;
     const uint x = stride * (c % columns);
     const uint y = stride * (c / columns);
     const uint i =
-        stride == 0 ? q : (y * (uint)params.image.x + x) * (uint)params.image.z + q % per_pixel;
+        stride == 0 ? q : (y * (uint)params.width + x) * (uint)params.camera_spp + q % per_pixel;
     const GBufferSample g = gbuffer[i];
-    if (g.info.w == 0 ||
+    if (g.served == 0 ||
         rc_ic_covered(&grid, cell_start, cell_records, records, payloads, g.position.xyz,
-                      g.normal.xyz, params.weights.x, params.weights.y)) {
+                      g.normal.xyz, params.accuracy, params.max_weight)) {
         return;
     }
     uncovered[atomic_inc(&count[0])] = i;
@@ -222,16 +225,14 @@ __kernel void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
     }
     const GBufferSample g = gbuffer[queries[q]];
     out[q] = rc_ic_gather(&grid, cell_start, cell_records, records, payloads, g.position.xyz,
-                          g.normal.xyz, params.weights.x, params.weights.y);
+                          g.normal.xyz, params.accuracy, params.max_weight);
 }
 
 // The render pass (splat accumulation). Every camera sample gets the sums sum w E' and sum w of
 // the records whose influence sphere covers it, gathered through the grid in the grid's order:
 // the sums a splat of every record over the samples it covers would give, deterministic without
-// atomics. Item = pixel: shades its camera samples and writes the pixel's means to film (7 float4
-// per pixel: beauty, direct, indirect, albedo, normal, (coverage, 0, 0, 0), records overlay), where
-// coverage is the smallest sum of record weights over the samples the cache serves (0 when one
-// of them is uncovered or none is served).
+// atomics. Item = pixel: shades its camera samples and writes the pixel's means to film
+// (RC_CACHED_FILM_SLOTS per pixel; rc_shade_pixel), the records overlay as its layer.
 // counters: [0] rays traced, [1] non-finite samples (dropped), [2] first pixel with one.
 __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camera,
                        RC_SCENE_PARAMETERS, RecordGrid grid, __global const int* cell_start,
@@ -244,28 +245,6 @@ __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camer
     }
     const SceneData scene = RC_SCENE_DATA();
     const RecordCache cache = {grid, cell_start, cell_records, records, payloads};
-    float3 sums[7] = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f), (float3)(0.0f),
-                      (float3)(0.0f), (float3)(0.0f), (float3)(0.0f)};
-    uint rays = 0;
-    uint finite = 0;
-    float coverage = INFINITY;
-    for (uint s = 0; s < (uint)params.image.z; ++s) {
-        const CachedShading c = rc_ic_shade(&scene, &camera, &params, &cache, pixel, s);
-        const CachedRadiance l = c.light;
-        if (!rc_add_camera_sample(&l, sums, &rays, counters, pixel)) {
-            continue;
-        }
-        ++finite;
-        if (l.served) {
-            coverage = fmin(coverage, l.coverage);
-        }
-        // The records overlay: marks over the image at half brightness.
-        sums[6] += any(c.marks > 0.0f) ? c.marks : 0.5f * (l.direct + l.indirect);
-    }
-    atomic_add(&counters[0], rays);
-    const float inv = finite > 0 ? 1.0f / (float)finite : 0.0f;
-    for (int k = 0; k < 7; ++k) {
-        film[7 * (size_t)pixel + k] = (float4)(sums[k] * inv, 0.0f);
-    }
-    film[7 * (size_t)pixel + 5] = (float4)(isfinite(coverage) ? coverage : 0.0f, 0.0f, 0.0f, 0.0f);
+    const PixelShader shader = {&scene, &camera, &params, &cache};
+    rc_shade_pixel(&shader, (uint)params.camera_spp, pixel, film, counters);
 }

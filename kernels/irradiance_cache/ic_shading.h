@@ -5,7 +5,8 @@
 
 #include "common/cached_radiance.h"
 #include "common/camera.h"
-#include "common/irradiance_cache.h"
+#include "common/camera_film.h"
+#include "irradiance_cache/ic_records.h"
 
 // World size of a pixel at distance t along the camera ray through pixel (x, y).
 RC_FUNC float rc_ic_pixel_footprint(const CameraParams* camera, float x, float y, float t) {
@@ -19,34 +20,34 @@ RC_FUNC float rc_ic_pixel_footprint(const CameraParams* camera, float x, float y
 // spaced more finely than the hemisphere rays that read them: spacing them by whole strata left
 // visible bias on the Cornell box (docs/irradiance-caching.md).
 RC_FUNC float rc_ic_deeper_pixel_width(const IcParams* params) {
-    return 0.25f * sqrt(2.0f * RC_PI / (float)(params->sampling.x * params->sampling.y));
+    return 0.25f * sqrt(2.0f * RC_PI / (float)(params->strata_m * params->strata_n));
 }
 
 // The camera ray of sample s of a pixel (the same jitter in every pass that regenerates it).
 RC_FUNC Ray rc_ic_camera_ray(const IcParams* params, const CameraParams* camera, uint pixel, uint s,
                              RngStream* rng, float* x, float* y) {
-    *rng = rc_rng_stream(params->seed.x, params->seed.y, pixel, s);
-    *x = (float)(pixel % (uint)params->image.x) + rc_rng_next_float(rng);
-    *y = (float)(pixel / (uint)params->image.x) + rc_rng_next_float(rng);
+    *rng = rc_rng_stream(params->seed_lo, params->seed_hi, pixel, s);
+    *x = (float)(pixel % (uint)params->width) + rc_rng_next_float(rng);
+    *y = (float)(pixel / (uint)params->width) + rc_rng_next_float(rng);
     return rc_camera_ray(camera, *x, *y);
 }
 
 // The ray through cell `cell` (row j = cell / N, column k = cell % N) of record `record` (its
-// random stream; params->depth.z its level), leaving `origin` about normal n; *rng continues
+// random stream; params->level its level), leaving `origin` about normal n; *rng continues
 // the cell's stream after the jitter.
 RC_FUNC Ray rc_ic_cell_ray(const IcParams* params, uint record, uint cell, float3 n, float3 origin,
                            RngStream* rng) {
     *rng = rc_ic_cell_stream(params, record, cell);
     const float zeta = rc_rng_next_float(rng);
     const float xi = rc_rng_next_float(rng);
-    const int j = (int)cell / params->sampling.y;
-    const int k = (int)cell % params->sampling.y;
+    const int j = (int)cell / params->strata_n;
+    const int k = (int)cell % params->strata_n;
     const Frame frame = rc_ic_record_frame(n);
     Ray ray;
     ray.origin = (float4)(origin, 0.0f);
     ray.direction =
-        (float4)(rc_from_local(&frame, rc_ic_cell_direction(j, k, params->sampling.x,
-                                                            params->sampling.y, zeta, xi)),
+        (float4)(rc_from_local(&frame, rc_ic_cell_direction(j, k, params->strata_m,
+                                                            params->strata_n, zeta, xi)),
                  INFINITY);
     return ray;
 }
@@ -72,16 +73,16 @@ RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcPar
     SurfacePoint sp;
     SurfaceMaterial material;
     float3 wo;
-    if (!rc_cached_vertex(scene, ray, rng, count_emission, true, bounces, params->depth.x, &c, &sp,
-                          &material, &wo) ||
-        bounces + 1 >= params->depth.x) {
+    if (!rc_cached_vertex(scene, ray, rng, count_emission, true, bounces, params->max_depth, &c,
+                          &sp, &material, &wo) ||
+        bounces + 1 >= params->max_depth) {
         return c;
     }
     SurfaceMaterial traced = rc_without_diffuse(&material);  // the lobes left to path tracing
     if (rc_luminance(material.diffuse) > 0.0f) {
         const float4 gathered = rc_ic_gather(&cache->grid, cache->cell_start, cache->cell_records,
                                              cache->records, cache->payloads, sp.position,
-                                             sp.shading.n, params->weights.x, params->weights.y);
+                                             sp.shading.n, params->accuracy, params->max_weight);
         c.coverage = gathered.w;
         c.served = true;
         if (gathered.w > 0.0f) {
@@ -90,7 +91,7 @@ RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcPar
             traced = material;
         }
     }
-    rc_trace_lobes(scene, &sp, &traced, wo, rng, bounces, params->depth.x, params->depth.y, &c);
+    rc_trace_lobes(scene, &sp, &traced, wo, rng, bounces, params->max_depth, params->rr_depth, &c);
     return c;
 }
 
@@ -115,24 +116,29 @@ RC_FUNC float3 rc_ic_record_marks(const RecordCache* cache, float accuracy, floa
     return marks;
 }
 
-// Camera sample s of a pixel, shaded with the first cache level.
-typedef struct CachedShading {
-    CachedRadiance light;
-    float3 marks;  // record centres (red) and influence borders (green), when drawn
-} CachedShading;
+// What the render pass's camera samples read (rc_shade_pixel).
+struct PixelShader {
+    const SceneData* scene;
+    const CameraParams* camera;
+    const IcParams* params;
+    const RecordCache* cache;  // the first cache level
+};
 
-RC_FUNC CachedShading rc_ic_shade(const SceneData* scene, const CameraParams* camera,
-                                  const IcParams* params, const RecordCache* cache, uint pixel,
-                                  uint s) {
-    CachedShading c;
+// Camera sample s of a pixel, shaded with the first cache level. Its layer is the records
+// overlay: record centres (red) and influence borders (green), when drawn, over the image at half
+// brightness.
+RC_FUNC FilmSample rc_shade_camera_sample(const PixelShader* shader, uint pixel, uint s) {
+    const IcParams* params = shader->params;
+    FilmSample c;
     RngStream rng;
     float x, y;
-    const Ray ray = rc_ic_camera_ray(params, camera, pixel, s, &rng, &x, &y);
-    c.light = rc_ic_cached_radiance(scene, params, cache, ray, &rng, true, 0);
-    c.marks = (float3)(0.0f);
-    if (params->weights.z != 0.0f && isfinite(c.light.distance)) {
-        c.marks = rc_ic_record_marks(cache, params->weights.x, c.light.position,
-                                     rc_ic_pixel_footprint(camera, x, y, c.light.distance));
+    const Ray ray = rc_ic_camera_ray(params, shader->camera, pixel, s, &rng, &x, &y);
+    c.light = rc_ic_cached_radiance(shader->scene, params, shader->cache, ray, &rng, true, 0);
+    float3 marks = (float3)(0.0f);
+    if (params->draw_records != 0 && isfinite(c.light.distance)) {
+        marks = rc_ic_record_marks(shader->cache, params->accuracy, c.light.position,
+                                   rc_ic_pixel_footprint(shader->camera, x, y, c.light.distance));
     }
+    c.layer = any(marks > 0.0f) ? marks : 0.5f * (c.light.direct + c.light.indirect);
     return c;
 }

@@ -1,10 +1,11 @@
 // Entry kernel of the path tracer (host/methods/path_tracer.cpp): one sample for every pixel,
 // accumulated into the film. Each pixel is written by one work item per pass, so the sums are
 // deterministic.
-#include "path_tracer.h"
+#include "path_tracer/path_tracer.h"
 #include "scene_arguments.h"
+#include "shared/film.h"
 
-// film: for each pixel 6 float4 sums: beauty, beauty squared, direct, indirect, albedo, normal.
+// film: for each pixel RC_PT_FILM_SLOTS float4 sums (kernels/shared/film.h).
 // counters: [0] rays traced, [1] non-finite samples (dropped), [2] first pixel with one.
 __kernel void path_trace_pass(uint begin, uint end, PathTracerParams params, CameraParams camera,
                               RC_SCENE_PARAMETERS, __global float4* film, __global uint* counters) {
@@ -20,11 +21,11 @@ __kernel void path_trace_pass(uint begin, uint end, PathTracerParams params, Cam
         atomic_min(&counters[2], pixel);
         return;
     }
-    __global float4* sums = film + 6 * (size_t)pixel;
-    sums[0] += (float4)(s.radiance, 1.0f);
-    sums[1] += (float4)(s.radiance * s.radiance, 0.0f);
-    sums[2] += (float4)(s.direct, 0.0f);
-    sums[3] += (float4)(s.indirect, 0.0f);
-    sums[4] += (float4)(s.albedo, 0.0f);
-    sums[5] += (float4)(s.normal, 0.0f);
+    __global float4* sums = film + RC_PT_FILM_SLOTS * (size_t)pixel;
+    sums[RC_PT_FILM_BEAUTY] += (float4)(s.radiance, 1.0f);
+    sums[RC_PT_FILM_BEAUTY_SQUARED] += (float4)(s.radiance * s.radiance, 0.0f);
+    sums[RC_PT_FILM_DIRECT] += (float4)(s.direct, 0.0f);
+    sums[RC_PT_FILM_INDIRECT] += (float4)(s.indirect, 0.0f);
+    sums[RC_PT_FILM_ALBEDO] += (float4)(s.albedo, 0.0f);
+    sums[RC_PT_FILM_NORMAL] += (float4)(s.normal, 0.0f);
 }

@@ -1,0 +1,66 @@
+// The light a ray brings back when the diffuse indirect light at its hit is read from the
+// irradiance vector grid: what the grid's render pass and the grid as a radiance source
+// (ivg_source.h) share. Lookup only: no deposition (64-bit atomics) here.
+#pragma once
+
+#include "common/cached_radiance.h"
+#include "irradiance_vector_grid/ivg_lookup.h"
+
+// The grid as the kernels read it.
+typedef struct VectorGrid {
+    IvgParams params;
+    RC_GLOBAL const float* values;
+    RC_GLOBAL const half* packed;
+} VectorGrid;
+
+// The diffuse light the grid gives a surface point: rho_d / pi E (§3.2, eq. 1), interpolated
+// over the corners of its cell the point sees (a shadow ray from the point's ray origin to just
+// short of each corner; counted in *rays): corners behind a wall hold the other side's light.
+RC_FUNC float3 rc_ivg_diffuse(const SceneData* scene, const VectorGrid* grid,
+                              const SurfaceMaterial* material, const SurfacePoint* sp, uint* rays) {
+    const IvgParams* p = &grid->params;
+    const int3 base = rc_ivg_cell_base(p, rc_ivg_grid_coordinates(p, sp->position));
+    int visible = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const float3 vertex = rc_ivg_corner_position(p, base, corner);
+        const float3 target = vertex + 0.01f * (sp->origin - vertex);
+        if (!rc_occluded(scene, sp->origin, target, false, target - sp->origin)) {
+            visible |= 1 << corner;
+        }
+    }
+    *rays += 8;
+    return material->diffuse * RC_INV_PI *
+           rc_ivg_irradiance(p, grid->values, grid->packed, sp->position, sp->shading.n, visible);
+}
+
+// Light arriving along `ray` when the grid provides the diffuse lobe's indirect light at its hit
+// (and its direct light too when the grid holds direct light, params.include_direct): emission (if
+// count_emission), next-event estimation, rho_d / pi E from the grid, and the other lobes by a
+// path sampled from them. *grid_term: the grid's part. `bounces`: the bounces the ray's path made
+// before.
+RC_FUNC CachedRadiance rc_ivg_radiance(const SceneData* scene, const VectorGrid* grid, Ray ray,
+                                       RngStream* rng, bool count_emission, int bounces,
+                                       float3* grid_term) {
+    CachedRadiance c;
+    SurfacePoint sp;
+    SurfaceMaterial material;
+    float3 wo;
+    const int max_depth = grid->params.max_depth;
+    const bool direct_in_grid = grid->params.include_direct != 0;
+    *grid_term = (float3)(0.0f);
+    if (!rc_cached_vertex(scene, ray, rng, count_emission, !direct_in_grid, bounces, max_depth, &c,
+                          &sp, &material, &wo)) {
+        return c;
+    }
+    const bool indirect = bounces + 1 < max_depth;
+    if (rc_luminance(material.diffuse) > 0.0f && (indirect || direct_in_grid)) {
+        *grid_term = rc_ivg_diffuse(scene, grid, &material, &sp, &c.rays);
+        c.indirect += *grid_term;
+        c.served = true;
+    }
+    if (indirect) {
+        const SurfaceMaterial traced = rc_without_diffuse(&material);
+        rc_trace_lobes(scene, &sp, &traced, wo, rng, bounces, max_depth, grid->params.rr_depth, &c);
+    }
+    return c;
+}
