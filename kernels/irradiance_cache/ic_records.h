@@ -218,20 +218,17 @@ RC_FUNC int rc_ic_grid_cell(const RecordGrid* grid, float3 p) {
     return (z * grid->dims.y + y) * grid->dims.x + x;
 }
 
-// Weighted sum of the records covering (p, n): rgb = sum w E', w = sum w, in the order the grid
-// cell lists them (so the result is deterministic).
-RC_FUNC float4 rc_ic_gather(const RecordGrid* grid, RC_GLOBAL const int* cell_start,
-                            RC_GLOBAL const int* cell_records, RC_GLOBAL const Record* records,
-                            RC_GLOBAL const IrradiancePayload* payloads, float3 p, float3 n,
-                            float accuracy, float max_weight) {
-    const int cell = rc_ic_grid_cell(grid, p);
+// Weighted sum over the records list[begin .. end) at (p, n): rgb = sum w E', w = sum w, in list
+// order (so the result is deterministic). Records of the list that do not cover (p, n) add
+// nothing: any superset of the covering records in the same order gives the same sums.
+RC_FUNC float4 rc_ic_weighted_sum(RC_GLOBAL const int* list, int begin, int end,
+                                  RC_GLOBAL const Record* records,
+                                  RC_GLOBAL const IrradiancePayload* payloads, float3 p, float3 n,
+                                  float accuracy, float max_weight) {
     float4 sum = (float4)(0.0f);
-    if (cell < 0) {
-        return sum;
-    }
-    for (int i = cell_start[cell]; i < cell_start[cell + 1]; ++i) {
-        RC_GLOBAL const Record* record = records + cell_records[i];
-        RC_GLOBAL const IrradiancePayload* payload = payloads + cell_records[i];
+    for (int i = begin; i < end; ++i) {
+        RC_GLOBAL const Record* record = records + list[i];
+        RC_GLOBAL const IrradiancePayload* payload = payloads + list[i];
         const float w = rc_ic_weight(record, payload, p, n, accuracy, max_weight);
         if (w > 0.0f) {
             sum += (float4)(w * rc_ic_extrapolate(record, payload, p, n), w);
@@ -240,20 +237,16 @@ RC_FUNC float4 rc_ic_gather(const RecordGrid* grid, RC_GLOBAL const int* cell_st
     return sum;
 }
 
-// Whether any record covers (p, n) with a positive weight (the weighted sum's support).
-RC_FUNC bool rc_ic_covered(const RecordGrid* grid, RC_GLOBAL const int* cell_start,
-                           RC_GLOBAL const int* cell_records, RC_GLOBAL const Record* records,
-                           RC_GLOBAL const IrradiancePayload* payloads, float3 p, float3 n,
-                           float accuracy, float max_weight) {
+// The gather: the weighted sum at (p, n) over the records the world-space grid lists in p's
+// cell (every record whose influence sphere touches the cell, in record order).
+RC_FUNC float4 rc_ic_gather(const RecordGrid* grid, RC_GLOBAL const int* cell_start,
+                            RC_GLOBAL const int* cell_records, RC_GLOBAL const Record* records,
+                            RC_GLOBAL const IrradiancePayload* payloads, float3 p, float3 n,
+                            float accuracy, float max_weight) {
     const int cell = rc_ic_grid_cell(grid, p);
     if (cell < 0) {
-        return false;
+        return (float4)(0.0f);
     }
-    for (int i = cell_start[cell]; i < cell_start[cell + 1]; ++i) {
-        if (rc_ic_weight(records + cell_records[i], payloads + cell_records[i], p, n, accuracy,
-                         max_weight) > 0.0f) {
-            return true;
-        }
-    }
-    return false;
+    return rc_ic_weighted_sum(cell_records, cell_start[cell], cell_start[cell + 1], records,
+                              payloads, p, n, accuracy, max_weight);
 }

@@ -65,9 +65,11 @@ typedef struct RecordCache {
 // path tracer's vertex computes them, indirect light of the diffuse lobe from the cache
 // (rho_d / pi E, Ward et al. 1988), indirect light of the specular lobe (phong, ward) by a path
 // sampled from that lobe. Where no record covers the hit, the diffuse lobe is path traced too.
-// `bounces`: the bounces the ray's path made before (for the depth limit).
+// `bounces`: the bounces the ray's path made before (for the depth limit). `splat`: the hit's
+// entry of the splat buffer (sum w E', sum w) for a camera sample, or 0: gathered from the cache.
 RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcParams* params,
-                                             const RecordCache* cache, Ray ray, RngStream* rng,
+                                             const RecordCache* cache,
+                                             RC_GLOBAL const float4* splat, Ray ray, RngStream* rng,
                                              bool count_emission, int bounces) {
     CachedRadiance c;
     SurfacePoint sp;
@@ -80,9 +82,11 @@ RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcPar
     }
     SurfaceMaterial traced = rc_without_diffuse(&material);  // the lobes left to path tracing
     if (rc_luminance(material.diffuse) > 0.0f) {
-        const float4 gathered = rc_ic_gather(&cache->grid, cache->cell_start, cache->cell_records,
-                                             cache->records, cache->payloads, sp.position,
-                                             sp.shading.n, params->accuracy, params->max_weight);
+        const float4 gathered =
+            splat != 0 ? *splat
+                       : rc_ic_gather(&cache->grid, cache->cell_start, cache->cell_records,
+                                      cache->records, cache->payloads, sp.position, sp.shading.n,
+                                      params->accuracy, params->max_weight);
         c.coverage = gathered.w;
         c.served = true;
         if (gathered.w > 0.0f) {
@@ -121,7 +125,8 @@ struct PixelShader {
     const SceneData* scene;
     const CameraParams* camera;
     const IcParams* params;
-    const RecordCache* cache;  // the first cache level
+    const RecordCache* cache;       // the first cache level
+    RC_GLOBAL const float4* splat;  // the splat buffer: entry pixel * spp + s per camera sample
 };
 
 // Camera sample s of a pixel, shaded with the first cache level. Its layer is the records
@@ -133,7 +138,9 @@ RC_FUNC FilmSample rc_shade_camera_sample(const PixelShader* shader, uint pixel,
     RngStream rng;
     float x, y;
     const Ray ray = rc_ic_camera_ray(params, shader->camera, pixel, s, &rng, &x, &y);
-    c.light = rc_ic_cached_radiance(shader->scene, params, shader->cache, ray, &rng, true, 0);
+    RC_GLOBAL const float4* splat = shader->splat + (size_t)pixel * (uint)params->camera_spp + s;
+    c.light =
+        rc_ic_cached_radiance(shader->scene, params, shader->cache, splat, ray, &rng, true, 0);
     float3 marks = (float3)(0.0f);
     if (params->draw_records != 0 && isfinite(c.light.distance)) {
         marks = rc_ic_record_marks(shader->cache, params->accuracy, c.light.position,

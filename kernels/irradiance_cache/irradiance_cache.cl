@@ -2,6 +2,7 @@
 // hemisphere sampling and its reduction, record gathering (coverage and interpolation), and the
 // final shading pass.
 #include "irradiance_cache/ic_shading.h"
+#include "irradiance_cache/ic_splat.h"
 #include "irradiance_vector_grid/ivg_radiance.h"
 #include "scene_arguments.h"
 
@@ -120,7 +121,7 @@ __kernel void ic_record_cells_cached(uint begin, uint end, IcParams params, RC_S
     const RecordCache cache = {grid, cell_start, cell_records, next_level, next_payloads};
     RngStream rng;
     const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
-    const CachedRadiance c = rc_ic_cached_radiance(&scene, &params, &cache, ray, &rng,
+    const CachedRadiance c = rc_ic_cached_radiance(&scene, &params, &cache, 0, ray, &rng,
                                                    params.count_emission != 0, params.level + 1);
     rc_ic_store_cell(cells, counters, i, c.direct + c.indirect, c.distance, c.rays);
 }
@@ -171,36 +172,21 @@ __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global c
     distances[b] = (float4)(e.harmonic_distance, e.min_distance, 0.0f, 0.0f);
 }
 
-// Item q: candidate q of a placement pass (params.placement_*): with C candidate columns, stride s
-// and S samples per candidate pixel, candidate q is camera sample q % S of pixel
-// (s (q / S % C), s (q / S / C)); with stride 0, entry q. Appends the G-buffer index of each
-// candidate the cache serves but no record covers to uncovered[], counting them in count[0] (the
-// host sorts them).
-__kernel void ic_uncovered(uint begin, uint end, IcParams params, RecordGrid grid,
-                           __global const int* cell_start, __global const int* cell_records,
-                           __global const Record* records,
-                           __global const IrradiancePayload* payloads,
-                           __global const GBufferSample* gbuffer, __global uint* uncovered,
-                           __global uint* count) {
+// Item q: candidate q of a placement pass (rc_ic_candidate), G-buffer entry i: appends i to
+// uncovered[] when the cache serves it but no record covers it (sums[q], the candidate's splat or
+// gather, has no weight; course, "Radiance Cache Splatting", Algorithm 2 step 4), counting them in
+// count[0] (the host sorts them).
+__kernel void ic_uncovered(uint begin, uint end, IcParams params,
+                           __global const GBufferSample* gbuffer, __global const float4* sums,
+                           __global uint* uncovered, __global uint* count) {
     const uint q = begin + (uint)get_global_id(0);
     if (q >= end) {
         return;
     }
-    const uint stride = (uint)params.placement_stride;
-    const uint per_pixel = (uint)max(params.placement_spp, 1);
-    const uint columns = (uint)max(params.placement_columns, 1);
-    const uint c = q / per_pixel;
-    const uint x = stride * (c % columns);
-    const uint y = stride * (c / columns);
-    const uint i =
-        stride == 0 ? q : (y * (uint)params.width + x) * (uint)params.camera_spp + q % per_pixel;
-    const GBufferSample g = gbuffer[i];
-    if (g.served == 0 ||
-        rc_ic_covered(&grid, cell_start, cell_records, records, payloads, g.position.xyz,
-                      g.normal.xyz, params.accuracy, params.max_weight)) {
-        return;
+    const uint i = rc_ic_candidate(&params, q);
+    if (gbuffer[i].served != 0 && sums[q].w == 0.0f) {
+        uncovered[atomic_inc(&count[0])] = i;
     }
-    uncovered[atomic_inc(&count[0])] = i;
 }
 
 // Item k: G-buffer entry indices[k], copied to out[k].
@@ -213,38 +199,59 @@ __kernel void ic_gbuffer_select(uint begin, uint end, __global const GBufferSamp
     out[k] = gbuffer[indices[k]];
 }
 
-// Item q: (sum w E', sum w) of the records covering G-buffer entry queries[q].
+// Item q: the gather at candidate q (rc_ic_candidate), G-buffer entry i: (sum w E', sum w) of
+// the records the world-space grid lists at its point, into sums[q]. For points that are not
+// camera samples (a deeper cache level's hemisphere hits); 0 where the cache does not serve i.
 __kernel void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
                         __global const int* cell_start, __global const int* cell_records,
                         __global const Record* records, __global const IrradiancePayload* payloads,
-                        __global const GBufferSample* gbuffer, __global const int* queries,
-                        __global float4* out) {
+                        __global const GBufferSample* gbuffer, __global float4* sums) {
     const uint q = begin + (uint)get_global_id(0);
     if (q >= end) {
         return;
     }
-    const GBufferSample g = gbuffer[queries[q]];
-    out[q] = rc_ic_gather(&grid, cell_start, cell_records, records, payloads, g.position.xyz,
-                          g.normal.xyz, params.accuracy, params.max_weight);
+    const GBufferSample g = gbuffer[rc_ic_candidate(&params, q)];
+    sums[q] = g.served == 0
+                  ? (float4)(0.0f)
+                  : rc_ic_gather(&grid, cell_start, cell_records, records, payloads, g.position.xyz,
+                                 g.normal.xyz, params.accuracy, params.max_weight);
 }
 
-// The render pass (splat accumulation). Every camera sample gets the sums sum w E' and sum w of
-// the records whose influence sphere covers it, gathered through the grid in the grid's order:
-// the sums a splat of every record over the samples it covers would give, deterministic without
-// atomics. Item = pixel: shades its camera samples and writes the pixel's means to film
-// (RC_CACHED_FILM_SLOTS per pixel; rc_shade_pixel), the records overlay as its layer.
-// counters: [0] rays traced, [1] non-finite samples (dropped), [2] first pixel with one.
+// Item q: radiance cache splatting at candidate q (rc_ic_candidate), camera sample i: the
+// weighted sum over the records splatted into its tile, into the splat buffer sums[q]
+// (ic_splat.h); 0 where the cache does not serve i.
+__kernel void ic_splat(uint begin, uint end, IcParams params, SplatTileGrid tiles,
+                       __global const int* tile_start, __global const int* tile_records,
+                       __global const Record* records, __global const IrradiancePayload* payloads,
+                       __global const GBufferSample* gbuffer, __global float4* sums) {
+    const uint q = begin + (uint)get_global_id(0);
+    if (q >= end) {
+        return;
+    }
+    const uint i = rc_ic_candidate(&params, q);
+    const GBufferSample g = gbuffer[i];
+    sums[q] = g.served == 0 ? (float4)(0.0f)
+                            : rc_ic_splat_sum(&params, &tiles, tile_start, tile_records, records,
+                                              payloads, i, g.position.xyz, g.normal.xyz);
+}
+
+// The render pass (course, "Radiance Cache Splatting", Algorithm 2 step 5): every camera sample
+// reads its entry of the splat buffer (ic_splat over every camera sample) for the diffuse lobe's
+// cached light. Item = pixel: shades its camera samples and writes the pixel's means to film
+// (RC_CACHED_FILM_SLOTS per pixel; rc_shade_pixel), the records overlay (from the world-space
+// grid) as its layer. counters: [0] rays traced, [1] non-finite samples (dropped), [2] first
+// pixel with one.
 __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camera,
                        RC_SCENE_PARAMETERS, RecordGrid grid, __global const int* cell_start,
                        __global const int* cell_records, __global const Record* records,
-                       __global const IrradiancePayload* payloads, __global float4* film,
-                       __global uint* counters) {
+                       __global const IrradiancePayload* payloads, __global const float4* splat,
+                       __global float4* film, __global uint* counters) {
     const uint pixel = begin + (uint)get_global_id(0);
     if (pixel >= end) {
         return;
     }
     const SceneData scene = RC_SCENE_DATA();
     const RecordCache cache = {grid, cell_start, cell_records, records, payloads};
-    const PixelShader shader = {&scene, &camera, &params, &cache};
+    const PixelShader shader = {&scene, &camera, &params, &cache, splat};
     rc_shade_pixel(&shader, (uint)params.camera_spp, pixel, film, counters);
 }

@@ -48,6 +48,16 @@ typedef struct RecordGrid {
     int4 dims;        // xyz: cells along each axis; w: total cells
 } RecordGrid;
 
+// Radiance cache splatting's screen tiles (host/methods/irradiance_cache/splat_tiles.h): the
+// image in tiles of tile_size pixels, tile (tx, ty) listing the records whose influence sphere's
+// projection touches it as tile_records[tile_start[t] .. tile_start[t + 1]), t = ty tiles_x + tx.
+typedef struct SplatTileGrid {
+    int tile_size;  // pixels per tile side
+    int tiles_x;
+    int tiles_y;
+    int pad0;
+} SplatTileGrid;
+
 RC_SHARED_END
 
 // The record structs and fields, for RC_SHARED_LAYOUTS (kernels/shared/types.h).
@@ -70,7 +80,11 @@ RC_SHARED_END
     STRUCT(RecordGrid)                        \
     FIELD(RecordGrid, origin)                 \
     FIELD(RecordGrid, inv_cell)               \
-    FIELD(RecordGrid, dims)
+    FIELD(RecordGrid, dims)                   \
+    STRUCT(SplatTileGrid)                     \
+    FIELD(SplatTileGrid, tile_size)           \
+    FIELD(SplatTileGrid, tiles_x)             \
+    FIELD(SplatTileGrid, tiles_y)
 // clang-format on
 
 #ifndef __OPENCL_VERSION__
@@ -78,4 +92,5 @@ static_assert(sizeof(rc::shared::Record) == 48);
 static_assert(offsetof(rc::shared::Record, radius) == 32);
 static_assert(sizeof(rc::shared::IrradiancePayload) == 128);
 static_assert(sizeof(rc::shared::RecordGrid) == 48);
+static_assert(sizeof(rc::shared::SplatTileGrid) == 16);
 #endif

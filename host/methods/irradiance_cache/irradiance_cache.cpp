@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "image/film.h"
+#include "methods/irradiance_cache/splat_tiles.h"
 #include "methods/records/cache_file.h"
 #include "methods/records/record_grid.h"
 #include "methods/scene_arguments.h"
@@ -36,8 +37,10 @@ glm::vec3 vec3_of(const shared::float4& v) { return {v.x, v.y, v.z}; }
 
 // The device copy of a record store: records, their payloads and their grid.
 struct DeviceRecords {
-    DeviceRecords(Context& context, const RecordStore& store) {
-        const RecordGridData data = build_record_grid(store.records(), store.accuracy());
+    // With `with_grid` false the grid is empty (one cell, no records): for splatting alone.
+    DeviceRecords(Context& context, const RecordStore& store, bool with_grid = true) {
+        const RecordGridData data = build_record_grid(
+            with_grid ? store.records() : std::vector<shared::Record>{}, store.accuracy());
         grid = data.grid;
         records = Buffer<shared::Record>(context, store.records(), "ic_records");
         payloads =
@@ -54,6 +57,26 @@ struct DeviceRecords {
     Buffer<shared::IrradiancePayload> payloads;
     Buffer<int> cell_start;
     Buffer<int> cell_records;
+};
+
+// The device copy of a record store's splat into the tiles of a camera's image (splat_tiles.h).
+struct DeviceSplat {
+    DeviceSplat(Context& context, const RecordStore& store, const shared::CameraParams& camera) {
+        std::vector<glm::vec3> centres;
+        std::vector<float> influence;
+        for (const shared::Record& record : store.records()) {
+            centres.push_back(record_position(record));
+            influence.push_back(store.accuracy() * record.radius);
+        }
+        const SplatTiles splat = splat_tiles(camera, centres, influence);
+        tiles = {splat.tile_size, splat.tiles_x, splat.tiles_y, 0};
+        tile_start = Buffer<int>(context, splat.tile_start, "ic_tile_start");
+        tile_records = Buffer<int>(context, splat.tile_records, "ic_tile_records");
+    }
+
+    shared::SplatTileGrid tiles{};
+    Buffer<int> tile_start;
+    Buffer<int> tile_records;
 };
 
 // Keeps, in order, the samples farther than their minimum influence radius from the ones kept
@@ -153,6 +176,7 @@ IrradianceCache::IrradianceCache(Context& context, const Scene& scene, const Dev
           context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_cells_grid")),
       reduce_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_reduce")),
       gather_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gather")),
+      splat_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_splat")),
       uncovered_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_uncovered")),
       select_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer_select")),
       shade_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_shade")) {}
@@ -268,14 +292,38 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
     return computed;
 }
 
-void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samples,
-                            Candidates placement, size_t candidates, bool until_covered) {
-    Buffer<unsigned> uncovered_buffer(context_, candidates, "ic_uncovered");
-    Buffer<unsigned> uncovered_count(context_, 1, "ic_uncovered_count");
+shared::IcParams IrradianceCache::candidate_params(int level, Candidates placement) const {
     shared::IcParams params = level_params(level);
     params.placement_stride = placement.stride;
     params.placement_spp = placement.spp;
     params.placement_columns = placement.columns;
+    return params;
+}
+
+Buffer<shared::float4> IrradianceCache::weighted_sums(const RecordStore& store,
+                                                      const Buffer<shared::GBufferSample>& samples,
+                                                      const shared::IcParams& params,
+                                                      size_t candidates,
+                                                      const shared::CameraParams* camera) {
+    Buffer<shared::float4> sums(context_, candidates, "ic_sums");
+    if (camera != nullptr) {
+        const DeviceSplat splat(context_, store, *camera);
+        const DeviceRecords records(context_, store, false);
+        context_.launch(splat_kernel_, candidates, params, splat.tiles, splat.tile_start,
+                        splat.tile_records, records.records, records.payloads, samples, sums);
+    } else {
+        const DeviceRecords records(context_, store);
+        context_.launch(gather_kernel_, candidates, params, records.grid, records.cell_start,
+                        records.cell_records, records.records, records.payloads, samples, sums);
+    }
+    return sums;
+}
+
+void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samples,
+                            Candidates placement, size_t candidates, bool until_covered) {
+    Buffer<unsigned> uncovered_buffer(context_, candidates, "ic_uncovered");
+    Buffer<unsigned> uncovered_count(context_, 1, "ic_uncovered_count");
+    const shared::IcParams params = candidate_params(level, placement);
     const float a = sampling_.accuracy;
     auto bound = [a](const Spacing& spacing, float footprint) {
         return (spacing.world ? spacing.value : spacing.value * footprint) / a;
@@ -287,11 +335,13 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
         auto start = Clock::now();
         std::vector<shared::GBufferSample> uncovered;
         {
-            const DeviceRecords records(context_, stores_[level]);
+            // Level 0's candidates are camera samples: splatted; deeper levels' are hemisphere
+            // hits: gathered.
+            const Buffer<shared::float4> sums = weighted_sums(
+                stores_[level], samples, params, candidates, level == 0 ? &camera_ : nullptr);
             uncovered_count.fill_zero();
-            context_.launch(uncovered_kernel_, candidates, params, records.grid, records.cell_start,
-                            records.cell_records, records.records, records.payloads, samples,
-                            uncovered_buffer, uncovered_count);
+            context_.launch(uncovered_kernel_, candidates, params, samples, sums, uncovered_buffer,
+                            uncovered_count);
             const size_t count = uncovered_count.download()[0];
             if (count > 0) {
                 std::vector<unsigned> indices(count);
@@ -348,21 +398,27 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
 
 std::vector<shared::float4> IrradianceCache::gather(
     const RecordStore& store, const std::vector<shared::GBufferSample>& queries) {
-    const DeviceRecords records(context_, store);
     const Buffer<shared::GBufferSample> samples(context_, queries, "ic_queries");
-    std::vector<int> indices(queries.size());
-    for (size_t i = 0; i < indices.size(); ++i) {
-        indices[i] = static_cast<int>(i);
-    }
-    const Buffer<int> index_buffer(context_, indices, "ic_query_indices");
-    Buffer<shared::float4> out(context_, queries.size(), "ic_gathered");
     shared::IcParams params{};
     params.accuracy = store.accuracy();
     params.max_weight = kIrradianceCacheMaxWeight;
-    context_.launch(gather_kernel_, queries.size(), params, records.grid, records.cell_start,
-                    records.cell_records, records.records, records.payloads, samples, index_buffer,
-                    out);
-    return out.download();
+    return weighted_sums(store, samples, params, queries.size(), nullptr).download();
+}
+
+std::vector<shared::float4> IrradianceCache::splat(
+    const RecordStore& store, const shared::CameraParams& camera, int spp,
+    const std::vector<shared::GBufferSample>& samples) {
+    const Buffer<shared::GBufferSample> buffer(context_, samples, "ic_queries");
+    shared::IcParams params{};
+    params.width = camera.resolution.x;
+    params.height = camera.resolution.y;
+    params.camera_spp = spp;
+    params.accuracy = store.accuracy();
+    params.max_weight = kIrradianceCacheMaxWeight;
+    params.placement_stride = 1;
+    params.placement_spp = spp;
+    params.placement_columns = camera.resolution.x;
+    return weighted_sums(store, buffer, params, samples.size(), &camera).download();
 }
 
 Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceCacheStats* stats) {
@@ -407,6 +463,7 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     camera_spp_ = options.spp;
 
     const shared::CameraParams camera = camera_params(scene_.camera, width, height);
+    camera_ = camera;
     const SceneArguments scene(bvh_, device_scene_);
     shared::IcParams params = level_params(0);
     params.draw_records = options.records_overlay ? 1 : 0;
@@ -450,23 +507,27 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
                          stores_);
     }
 
-    // 5. Shading.
+    // 5. Splatting every record over every camera sample (the splat buffer), then shading. The
+    // world-space grid of the first level is built only for the records overlay.
     start = Clock::now();
-    const DeviceRecords records(context_, stores_[0]);
-    stats_.cache_bytes = records.bytes();
-    stats_.insertion_seconds += seconds_since(start);
+    const Buffer<shared::float4> splat = weighted_sums(
+        stores_[0], gbuffer, candidate_params(0, {1, options.spp, width}), samples, &camera_);
+    context_.finish();
+    stats_.splatting_seconds = seconds_since(start);
     start = Clock::now();
+    const DeviceRecords records(context_, stores_[0], options.records_overlay);
+    stats_.cache_bytes = records.bytes() + splat.bytes();
     Buffer<shared::float4> film(context_, pixels * RC_CACHED_FILM_SLOTS, "ic_film");
     Buffer<unsigned> counters(context_, 3, "ic_counters");
     counters.upload({0u, 0u, 0xffffffffu});
     context_.launch(shade_kernel_, pixels, params, camera, scene, records.grid, records.cell_start,
-                    records.cell_records, records.records, records.payloads, film, counters);
+                    records.cell_records, records.records, records.payloads, splat, film, counters);
     const std::vector<shared::float4> sums = film.download();
     const std::vector<unsigned> c = counters.download();
     stats_.shading_rays = c[0];
     stats_.nonfinite_samples = c[1];
     stats_.first_nonfinite_pixel = c[1] > 0 ? static_cast<int64_t>(c[2]) : -1;
-    stats_.splatting_seconds = seconds_since(start);
+    stats_.shading_seconds = seconds_since(start);
 
     std::vector<FilmLayer> layers = {
         {"beauty", RC_CACHED_FILM_BEAUTY},     {"direct", RC_CACHED_FILM_DIRECT},

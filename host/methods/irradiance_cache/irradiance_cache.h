@@ -72,8 +72,9 @@ struct IrradianceCacheStats {
     double placement_seconds = 0.0;  // coverage queries and candidate selection, first level
     double record_seconds = 0.0;     // record computation, deeper levels' placement included
     double insertion_seconds = 0.0;  // host insertion and the device records and grid
-    double splatting_seconds = 0.0;  // the render pass: direct light and the records' splat sums
-    size_t cache_bytes = 0;          // records and grid of the first level on the device
+    double splatting_seconds = 0.0;  // the final splat of every record over every camera sample
+    double shading_seconds = 0.0;    // the render pass: direct light, the splat buffer, lobes
+    size_t cache_bytes = 0;  // the first level on the device: records, payloads, splat buffer
     uint64_t nonfinite_samples = 0;
     int64_t first_nonfinite_pixel = -1;
 };
@@ -130,9 +131,14 @@ class IrradianceCache {
                                                 const RecordSampling& sampling,
                                                 uint64_t* rays = nullptr);
 
-    // (sum w E', sum w) of `store`'s records at G-buffer-like query points.
+    // (sum w E', sum w) of `store`'s records at G-buffer-like query points, gathered through
+    // the world-space record grid.
     std::vector<shared::float4> gather(const RecordStore& store,
                                        const std::vector<shared::GBufferSample>& queries);
+    // The same sums by radiance cache splatting: `samples` are the camera samples of `camera`'s
+    // image, `spp` per pixel (entry pixel * spp + s), as the G-buffer holds them.
+    std::vector<shared::float4> splat(const RecordStore& store, const shared::CameraParams& camera,
+                                      int spp, const std::vector<shared::GBufferSample>& samples);
 
     // The records of cache level `level` (0: the one the camera samples read) after render():
     // irradiance payloads (irradiance_records.h).
@@ -147,6 +153,15 @@ class IrradianceCache {
         int spp = 1;
         int columns = 1;
     };
+    // The kernels' parameters of `level` with the candidates of a placement pass.
+    shared::IcParams candidate_params(int level, Candidates placement) const;
+    // (sum w E', sum w) of `store`'s records at the candidates `params` names (placement_*) of
+    // `samples`: splatted onto `camera`'s image (ic_splat) or, without a camera, gathered through
+    // the world-space record grid (ic_gather).
+    Buffer<shared::float4> weighted_sums(const RecordStore& store,
+                                         const Buffer<shared::GBufferSample>& samples,
+                                         const shared::IcParams& params, size_t candidates,
+                                         const shared::CameraParams* camera);
     // Places records at `level` where candidates of `samples` are not covered. One pass, or
     // passes until all are covered.
     void cover(int level, const Buffer<shared::GBufferSample>& samples, Candidates placement,
@@ -167,6 +182,7 @@ class IrradianceCache {
     Kernel grid_cells_kernel_;
     Kernel reduce_kernel_;
     Kernel gather_kernel_;
+    Kernel splat_kernel_;
     Kernel uncovered_kernel_;
     Kernel select_kernel_;
     Kernel shade_kernel_;
@@ -174,7 +190,8 @@ class IrradianceCache {
     int width_ = 0;  // of the image render() makes
     int height_ = 0;
     int camera_spp_ = 1;
-    uint32_t first_index_ = 0;  // stream offset of first-level records (compute_records)
+    shared::CameraParams camera_{};  // of the image render() makes (splatting)
+    uint32_t first_index_ = 0;       // stream offset of first-level records (compute_records)
     std::vector<RecordStore> stores_;
     IrradianceCacheStats stats_;
 };

@@ -123,11 +123,10 @@ class IrradianceCaching final : public Method {
         s["record_rays"] = stats.record_rays;
         s["shading_rays"] = stats.shading_rays;
         s["cache_bytes"] = stats.cache_bytes;
-        s["seconds"] = {{"gbuffer", stats.gbuffer_seconds},
-                        {"placement", stats.placement_seconds},
-                        {"records", stats.record_seconds},
-                        {"insertion", stats.insertion_seconds},
-                        {"splatting", stats.splatting_seconds}};
+        s["seconds"] = {
+            {"gbuffer", stats.gbuffer_seconds},     {"placement", stats.placement_seconds},
+            {"records", stats.record_seconds},      {"insertion", stats.insertion_seconds},
+            {"splatting", stats.splatting_seconds}, {"shading", stats.shading_seconds}};
     }
 
     IrradianceCacheOptions options_;

@@ -1,0 +1,41 @@
+// Radiance cache splatting (course, "Radiance Cache Splatting", §4.1 Algorithm 1 and §4.2
+// Algorithm 2) as the camera samples read it: the host splats every record's influence sphere
+// (radius a R, eq. 4) onto the image as the bounding rectangle of its projection, into the screen
+// tiles it covers, in record order (host/methods/irradiance_cache/splat_tiles.h); a camera sample
+// accumulates the weighted contribution w E' (eqs. 2 and 8, with the "Weighting Function
+// Revisited" shift) of its tile's records in that order into the splat buffer (sum w E', sum w):
+// the sums a GPU's ordered blending of the records' quads gives, without atomics.
+#pragma once
+
+#include "irradiance_cache/ic_records.h"
+
+// Candidate q of a placement pass (params->placement_*), as a G-buffer index: with C candidate
+// columns, stride s and S samples per candidate pixel, camera sample q % S of pixel
+// (s (q / S % C), s (q / S / C)); with stride 0, entry q itself.
+RC_FUNC uint rc_ic_candidate(const IcParams* params, uint q) {
+    const uint stride = (uint)params->placement_stride;
+    const uint per_pixel = (uint)max(params->placement_spp, 1);
+    const uint columns = (uint)max(params->placement_columns, 1);
+    const uint c = q / per_pixel;
+    const uint x = stride * (c % columns);
+    const uint y = stride * (c / columns);
+    return stride == 0 ? q
+                       : (y * (uint)params->width + x) * (uint)params->camera_spp + q % per_pixel;
+}
+
+// The splat buffer's entry of camera sample i (G-buffer entry i of an image of params->width
+// pixels a row, params->camera_spp samples a pixel) at (p, n): the weighted sum over the records
+// splatted into its pixel's tile.
+RC_FUNC float4 rc_ic_splat_sum(const IcParams* params, const SplatTileGrid* tiles,
+                               RC_GLOBAL const int* tile_start, RC_GLOBAL const int* tile_records,
+                               RC_GLOBAL const Record* records,
+                               RC_GLOBAL const IrradiancePayload* payloads, uint i, float3 p,
+                               float3 n) {
+    const uint pixel = i / (uint)params->camera_spp;
+    const uint x = pixel % (uint)params->width;
+    const uint y = pixel / (uint)params->width;
+    const uint tile =
+        (y / (uint)tiles->tile_size) * (uint)tiles->tiles_x + x / (uint)tiles->tile_size;
+    return rc_ic_weighted_sum(tile_records, tile_start[tile], tile_start[tile + 1], records,
+                              payloads, p, n, params->accuracy, params->max_weight);
+}
