@@ -372,7 +372,7 @@ int run_render_command(const std::vector<std::string>& args) {
             this_frame["seconds"] = {{"shading", stats.seconds}};
         } else if (settings.method == "ic") {
             IrradianceCache cache(context, scene, device_bvh, device_scene);
-            ic.grid = grid.get();
+            ic.source = grid.get();
             ic.width = width;
             ic.height = height;
             ic.spp = settings.spp;

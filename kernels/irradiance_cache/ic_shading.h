@@ -52,12 +52,14 @@ RC_FUNC Ray rc_ic_cell_ray(const IcParams* params, uint record, uint cell, float
     return ray;
 }
 
-// One cache level as the kernels read it.
+// One cache level as the kernels read it, and how its records are weighted.
 typedef struct RecordCache {
     RecordGrid grid;
     RC_GLOBAL const int* cell_start;
     RC_GLOBAL const int* cell_records;
     RC_GLOBAL const IrradianceRecord* records;
+    float accuracy;
+    float max_weight;
 } RecordCache;
 
 // Light arriving along `ray`: at its hit, emission (if count_emission) and direct light as the
@@ -65,23 +67,23 @@ typedef struct RecordCache {
 // (rho_d / pi E, Ward et al. 1988), indirect light of the specular lobe (phong, ward) by a path
 // sampled from that lobe. Where no record covers the hit, the diffuse lobe is path traced too.
 // `bounces`: the bounces the ray's path made before (for the depth limit).
-RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcParams* params,
-                                             const RecordCache* cache, Ray ray, RngStream* rng,
-                                             bool count_emission, int bounces) {
+RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const RecordCache* cache,
+                                             Ray ray, RngStream* rng, bool count_emission,
+                                             int bounces, int max_depth, int rr_depth) {
     CachedRadiance c;
     SurfacePoint sp;
     SurfaceMaterial material;
     float3 wo;
-    if (!rc_cached_vertex(scene, ray, rng, count_emission, true, bounces, params->max_depth, &c,
-                          &sp, &material, &wo) ||
-        bounces + 1 >= params->max_depth) {
+    if (!rc_cached_vertex(scene, ray, rng, count_emission, true, bounces, max_depth, &c, &sp,
+                          &material, &wo) ||
+        bounces + 1 >= max_depth) {
         return c;
     }
     SurfaceMaterial traced = rc_without_diffuse(&material);  // the lobes left to path tracing
     if (rc_luminance(material.diffuse) > 0.0f) {
         const float4 gathered =
             rc_ic_gather(&cache->grid, cache->cell_start, cache->cell_records, cache->records,
-                         sp.position, sp.shading.n, params->accuracy, params->max_weight);
+                         sp.position, sp.shading.n, cache->accuracy, cache->max_weight);
         c.coverage = gathered.w;
         c.served = true;
         if (gathered.w > 0.0f) {
@@ -90,7 +92,7 @@ RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcPar
             traced = material;
         }
     }
-    rc_trace_lobes(scene, &sp, &traced, wo, rng, bounces, params->max_depth, params->rr_depth, &c);
+    rc_trace_lobes(scene, &sp, &traced, wo, rng, bounces, max_depth, rr_depth, &c);
     return c;
 }
 
@@ -132,7 +134,8 @@ RC_FUNC FilmSample rc_shade_camera_sample(const PixelShader* shader, uint pixel,
     RngStream rng;
     float x, y;
     const Ray ray = rc_ic_camera_ray(params, shader->camera, pixel, s, &rng, &x, &y);
-    c.light = rc_ic_cached_radiance(shader->scene, params, shader->cache, ray, &rng, true, 0);
+    c.light = rc_ic_cached_radiance(shader->scene, shader->cache, ray, &rng, true, 0,
+                                    params->max_depth, params->rr_depth);
     float3 marks = (float3)(0.0f);
     if (params->draw_records != 0 && isfinite(c.light.distance)) {
         marks = rc_ic_record_marks(shader->cache, params->accuracy, c.light.position,

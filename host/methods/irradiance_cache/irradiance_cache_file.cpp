@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "scene/scene_fingerprint.h"
 #include "util/error.h"
 #include "util/file_io.h"
 
@@ -28,13 +29,6 @@ static_assert(sizeof(Header) == 40);
 
 constexpr uint32_t kMaxLevels = 64;
 
-template <class T>
-uint64_t hash_bytes(const std::vector<T>& values, uint64_t seed) {
-    const uint64_t h = OIIO::farmhash::Fingerprint64(reinterpret_cast<const char*>(values.data()),
-                                                     values.size() * sizeof(T));
-    return OIIO::farmhash::Fingerprint(OIIO::farmhash::Uint128(seed, h));
-}
-
 uint64_t checksum(const std::string& bytes) {
     return OIIO::farmhash::Fingerprint64(bytes.data(), bytes.size());
 }
@@ -52,21 +46,6 @@ glm::vec3 get_vec3(const float*& in) {
 }
 
 }  // namespace
-
-uint64_t scene_fingerprint(const Scene& scene) {
-    uint64_t h = 0x5243534345ull;
-    h = hash_bytes(scene.mesh.positions, h);
-    h = hash_bytes(scene.mesh.triangles, h);
-    h = hash_bytes(scene.shading, h);
-    h = hash_bytes(scene.normals, h);
-    std::vector<shared::Material> materials;
-    for (const Material& m : scene.materials) {
-        materials.push_back(to_device(m));
-    }
-    h = hash_bytes(materials, h);
-    h = hash_bytes(scene.lights.lights, h);
-    return h;
-}
 
 void write_irradiance_cache(const std::filesystem::path& path, const Scene& scene,
                             const std::vector<RecordStore>& levels) {

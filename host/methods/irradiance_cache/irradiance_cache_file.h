@@ -18,9 +18,6 @@
 
 namespace rc {
 
-// A fingerprint of the scene's world geometry, shading, materials and lights at its frame.
-uint64_t scene_fingerprint(const Scene& scene);
-
 // Writes the levels' records (every store made with the same accuracy).
 void write_irradiance_cache(const std::filesystem::path& path, const Scene& scene,
                             const std::vector<RecordStore>& levels);

@@ -4,8 +4,8 @@
 
 #include <cstring>
 
-#include "methods/irradiance_cache/irradiance_cache_file.h"
 #include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
+#include "scene/scene_fingerprint.h"
 #include "util/error.h"
 #include "util/file_io.h"
 
