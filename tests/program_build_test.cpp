@@ -201,6 +201,12 @@ TEST(ProgramBuild, DumpKernelsWritesTheExpandedSource) {
     const std::string dumped = read_file(options.dump_kernels_dir / "trace.cl");
     EXPECT_NE(dumped.find("rc_trace_closest"), std::string::npos);
     EXPECT_NE(dumped.find("-cl-std=CL1.2"), std::string::npos);
+    // Builds of one entry with other options go to files of their own.
+    context.program("irradiance_cache/ic_record_cells.cl",
+                    radiance_source_define(RC_RADIANCE_GRID));
+    const std::string grid = read_file(
+        options.dump_kernels_dir / "irradiance_cache_ic_record_cells._DRC_RADIANCE_SOURCE_2.cl");
+    EXPECT_NE(grid.find("-DRC_RADIANCE_SOURCE=2"), std::string::npos);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Irradiance caching's ray side (host/methods/irradiance_cache.cpp): camera samples, the rays of
+// Irradiance caching's ray side (host/methods/irradiance_cache/): camera samples, the rays of
 // a record's hemisphere, and the light a ray brings back when the diffuse indirect light at its
 // hit comes from a cache level.
 #pragma once
