@@ -1,7 +1,7 @@
-// The record kernels (kernels/common/irradiance_cache.h, rc_ic_reduce) against analytic answers:
-// a constant sky, and a tilted emitting rectangle whose irradiance at any point and orientation
-// Lambert's polygon formula gives exactly, so finite differences of it are the oracle for the
-// translational and rotational gradients.
+// The record kernels (kernels/irradiance_cache/ic_records.h, rc_ic_reduce) against analytic
+// answers: a constant sky, and a tilted emitting rectangle whose irradiance at any point and
+// orientation Lambert's polygon formula gives exactly, so finite differences of it are the oracle
+// for the translational and rotational gradients.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -185,7 +185,7 @@ TEST(IrradianceVectorGrid, IrradianceCacheWithTheGridIsCloseToTheReference) {
     IrradianceCache cache(test::shared_context(), s.scene, s.device_bvh, s.device_scene);
     IrradianceCacheOptions options;
     options.records_overlay = false;
-    options.grid = &s.grid;
+    options.source = &s.grid;
     const Image image = cache.render(options);
     const ImageError e =
         image_error(select_layers(image, {"indirect"}), reference_layer("indirect"));

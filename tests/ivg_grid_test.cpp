@@ -1,7 +1,7 @@
-// The irradiance vector grid's kernels (kernels/common/irradiance_vector_grid.h): photon
-// deposition against a brute-force host reference and against the report's rules (§3.3),
-// normalisation against known irradiance vectors (a parallel beam, an isotropic field), and the
-// lookup's interpolation and blending.
+// The irradiance vector grid's kernels (kernels/irradiance_vector_grid/ivg_deposit.h,
+// ivg_lookup.h): photon deposition against a brute-force host reference and against the report's
+// rules (§3.3), normalisation against known irradiance vectors (a parallel beam, an isotropic
+// field), and the lookup's interpolation and blending.
 #include <gtest/gtest.h>
 
 #include <algorithm>

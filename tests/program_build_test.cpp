@@ -6,6 +6,7 @@
 
 #include "device/binary_cache.h"
 #include "device/kernel_sources.h"
+#include "methods/radiance_source.h"
 #include "shared/rng.h"
 #include "test_support.h"
 #include "util/error.h"
@@ -43,6 +44,32 @@ TEST(ProgramBuild, ExpandsEveryIncludeOnceWithLineMarkers) {
     EXPECT_EQ(occurrences(text, "#line 1 \"normals/normals.cl\""), 1u);
     EXPECT_EQ(occurrences(text, "#include \""), 0u);
     EXPECT_EQ(occurrences(text, "#pragma once"), 0u);
+}
+
+// Irradiance caching reads the grid only through its lookup (the radiance source): its programs
+// hold none of the grid's deposition, which needs 64-bit atomics.
+TEST(ProgramBuild, IrradianceCachingLeavesTheGridsDepositionOut) {
+    const KernelSources sources;
+    for (const char* entry :
+         {"irradiance_cache/irradiance_cache.cl", "irradiance_cache/ic_record_cells.cl"}) {
+        const std::string text = sources.expand(entry);
+        EXPECT_EQ(occurrences(text, "#line 1 \"irradiance_vector_grid/ivg_deposit.h\""), 0u)
+            << entry;
+        EXPECT_EQ(occurrences(text, "rc_ivg_deposit_segment"), 0u) << entry;
+        EXPECT_EQ(occurrences(text, "rc_atomic_add_long("), 1u) << entry;  // compat.h's definition
+    }
+    const std::string grid = sources.expand("irradiance_vector_grid/irradiance_vector_grid.cl");
+    EXPECT_EQ(occurrences(grid, "#line 1 \"irradiance_vector_grid/ivg_deposit.h\""), 1u);
+}
+
+// The hemisphere rays' kernel builds for every radiance source (common/radiance_source.h).
+TEST(ProgramBuild, RecordCellsBuildForEveryRadianceSource) {
+    Context& context = test::shared_context();
+    for (int source : {RC_RADIANCE_PATH, RC_RADIANCE_RECORDS, RC_RADIANCE_GRID}) {
+        const Kernel kernel = context.kernel("irradiance_cache/ic_record_cells.cl",
+                                             "ic_record_cells", radiance_source_define(source));
+        EXPECT_EQ(kernel.name(), "ic_record_cells");
+    }
 }
 
 TEST(ProgramBuild, OverrideDirectoryIsReadAndMissingIncludesAreNamed) {
@@ -174,6 +201,12 @@ TEST(ProgramBuild, DumpKernelsWritesTheExpandedSource) {
     const std::string dumped = read_file(options.dump_kernels_dir / "trace.cl");
     EXPECT_NE(dumped.find("rc_trace_closest"), std::string::npos);
     EXPECT_NE(dumped.find("-cl-std=CL1.2"), std::string::npos);
+    // Builds of one entry with other options go to files of their own.
+    context.program("irradiance_cache/ic_record_cells.cl",
+                    radiance_source_define(RC_RADIANCE_GRID));
+    const std::string grid = read_file(
+        options.dump_kernels_dir / "irradiance_cache_ic_record_cells._DRC_RADIANCE_SOURCE_2.cl");
+    EXPECT_NE(grid.find("-DRC_RADIANCE_SOURCE=2"), std::string::npos);
 }
 
 }  // namespace

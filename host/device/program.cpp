@@ -2,6 +2,7 @@
 
 #include <CL/cl.h>
 
+#include <cctype>
 #include <chrono>
 
 #include "device/cl_error.h"
@@ -79,9 +80,18 @@ Program::Program(_cl_context* context, const DeviceInfo& device, const KernelSou
     const std::string all_options =
         options.empty() ? std::string(kBaseOptions) : std::string(kBaseOptions) + " " + options;
     if (!dump_dir.empty()) {
+        // One file per entry and options: "dir/entry.cl" built with "-DX=1" is dir_entry.DX_1.cl.
         std::string flat = entry;
         for (char& c : flat) {
             c = (c == '/') ? '_' : c;
+        }
+        if (!options.empty()) {
+            std::string tag = ".";
+            for (char c : options) {
+                tag += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+            }
+            const size_t dot = flat.rfind('.');
+            flat.insert(dot == std::string::npos ? flat.size() : dot, tag);
         }
         std::filesystem::create_directories(dump_dir);
         write_file_atomically(dump_dir / flat, "// build options: " + all_options + "\n" + source);

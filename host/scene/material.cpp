@@ -1,11 +1,8 @@
 #include "scene/material.h"
 
+#include "util/glm_helpers.h"
+
 namespace rc {
-namespace {
-
-float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
-}  // namespace
 
 const char* material_kind_name(MaterialKind kind) {
     switch (kind) {

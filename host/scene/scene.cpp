@@ -12,6 +12,7 @@
 #include "util/error.h"
 
 namespace rc {
+
 int default_material(Scene& scene) {
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         if (scene.materials[i].name == "default") {

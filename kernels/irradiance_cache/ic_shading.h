@@ -1,4 +1,4 @@
-// Irradiance caching's ray side (host/methods/irradiance_cache.cpp): camera samples, the rays of
+// Irradiance caching's ray side (host/methods/irradiance_cache/): camera samples, the rays of
 // a record's hemisphere, and the light a ray brings back when the diffuse indirect light at its
 // hit comes from a cache level.
 #pragma once
@@ -52,13 +52,15 @@ RC_FUNC Ray rc_ic_cell_ray(const IcParams* params, uint record, uint cell, float
     return ray;
 }
 
-// One cache level as the kernels read it.
+// One cache level as the kernels read it, and how its records are weighted.
 typedef struct RecordCache {
     RecordGrid grid;
     RC_GLOBAL const int* cell_start;
     RC_GLOBAL const int* cell_records;
     RC_GLOBAL const Record* records;
     RC_GLOBAL const IrradiancePayload* payloads;  // entry i: records[i]'s
+    float accuracy;
+    float max_weight;
 } RecordCache;
 
 // Light arriving along `ray`: at its hit, emission (if count_emission) and direct light as the
@@ -67,17 +69,17 @@ typedef struct RecordCache {
 // sampled from that lobe. Where no record covers the hit, the diffuse lobe is path traced too.
 // `bounces`: the bounces the ray's path made before (for the depth limit). `splat`: the hit's
 // entry of the splat buffer (sum w E', sum w) for a camera sample, or 0: gathered from the cache.
-RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcParams* params,
-                                             const RecordCache* cache,
-                                             RC_GLOBAL const float4* splat, Ray ray, RngStream* rng,
-                                             bool count_emission, int bounces) {
+RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const RecordCache* cache,
+                                             RC_GLOBAL const float4* splat, Ray ray,
+                                             RngStream* rng, bool count_emission, int bounces,
+                                             int max_depth, int rr_depth) {
     CachedRadiance c;
     SurfacePoint sp;
     SurfaceMaterial material;
     float3 wo;
-    if (!rc_cached_vertex(scene, ray, rng, count_emission, true, bounces, params->max_depth, &c,
-                          &sp, &material, &wo) ||
-        bounces + 1 >= params->max_depth) {
+    if (!rc_cached_vertex(scene, ray, rng, count_emission, true, bounces, max_depth, &c, &sp,
+                          &material, &wo) ||
+        bounces + 1 >= max_depth) {
         return c;
     }
     SurfaceMaterial traced = rc_without_diffuse(&material);  // the lobes left to path tracing
@@ -86,7 +88,7 @@ RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcPar
             splat != 0 ? *splat
                        : rc_ic_gather(&cache->grid, cache->cell_start, cache->cell_records,
                                       cache->records, cache->payloads, sp.position, sp.shading.n,
-                                      params->accuracy, params->max_weight);
+                                      cache->accuracy, cache->max_weight);
         c.coverage = gathered.w;
         c.served = true;
         if (gathered.w > 0.0f) {
@@ -95,7 +97,7 @@ RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const IcPar
             traced = material;
         }
     }
-    rc_trace_lobes(scene, &sp, &traced, wo, rng, bounces, params->max_depth, params->rr_depth, &c);
+    rc_trace_lobes(scene, &sp, &traced, wo, rng, bounces, max_depth, rr_depth, &c);
     return c;
 }
 
@@ -139,8 +141,8 @@ RC_FUNC FilmSample rc_shade_camera_sample(const PixelShader* shader, uint pixel,
     float x, y;
     const Ray ray = rc_ic_camera_ray(params, shader->camera, pixel, s, &rng, &x, &y);
     RC_GLOBAL const float4* splat = shader->splat + (size_t)pixel * (uint)params->camera_spp + s;
-    c.light =
-        rc_ic_cached_radiance(shader->scene, params, shader->cache, splat, ray, &rng, true, 0);
+    c.light = rc_ic_cached_radiance(shader->scene, shader->cache, splat, ray, &rng, true, 0,
+                                    params->max_depth, params->rr_depth);
     float3 marks = (float3)(0.0f);
     if (params->draw_records != 0 && isfinite(c.light.distance)) {
         marks = rc_ic_record_marks(shader->cache, params->accuracy, c.light.position,

@@ -1,9 +1,9 @@
-// Entry kernels of irradiance caching (host/methods/irradiance_cache.cpp): the G-buffer, record
-// hemisphere sampling and its reduction, record gathering (coverage and interpolation), and the
-// final shading pass.
+// Entry kernels of irradiance caching (host/methods/irradiance_cache/irradiance_cache.cpp): the
+// G-buffer, the hemisphere hits a deeper level must cover, the reduction of a record's hemisphere
+// samples (the sampling itself: ic_record_cells.cl), record gathering (coverage and
+// interpolation), and the final shading pass.
 #include "irradiance_cache/ic_shading.h"
 #include "irradiance_cache/ic_splat.h"
-#include "irradiance_vector_grid/ivg_radiance.h"
 #include "scene_arguments.h"
 
 // The G-buffer entry of a ray's first hit, with the hit distance as its footprint (to be scaled
@@ -67,85 +67,6 @@ __kernel void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PAR
     GBufferSample g = rc_ic_gbuffer_sample(&scene, ray);
     g.footprint *= rc_ic_deeper_pixel_width(&params);
     hits[i] = g;
-}
-
-// The ray of item i of a record batch: cell i % (M N) of batch record i / (M N).
-RC_FUNC Ray rc_ic_batch_cell_ray(const IcParams* params, __global const Record* records,
-                                 __global const float4* origins, uint i, RngStream* rng) {
-    const uint per_record = (uint)(params->strata_m * params->strata_n);
-    const uint b = i / per_record;
-    return rc_ic_cell_ray(params, (uint)params->first_record + b, i % per_record,
-                          records[b].normal.xyz, origins[b].xyz, rng);
-}
-
-// Stores a cell's (L.rgb, distance) (a NaN or infinite radiance as black) and counts its rays.
-RC_FUNC void rc_ic_store_cell(__global float4* cells, __global uint* counters, uint i,
-                              float3 radiance, float distance, uint rays) {
-    atomic_add(&counters[0], rays);
-    cells[i] = (float4)(all(isfinite(radiance)) ? radiance : (float3)(0.0f), distance);
-}
-
-// Item i: cell i % (M N) of batch record i / (M N): the radiance arriving through it and the
-// distance to what it hits, as (L.rgb, distance) in cells[i]. The light beyond the hit is path
-// traced. counters[0] counts the rays traced.
-__kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
-                              __global const Record* records, __global const float4* origins,
-                              __global float4* cells, __global uint* counters) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
-    const SceneData scene = RC_SCENE_DATA();
-    RngStream rng;
-    const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
-    // The hemisphere ray is a bounce of the record's level; its hit's own emission is direct
-    // light (left to next-event estimation at the shading point) unless the tests ask for it.
-    const PathSample s = rc_path_radiance(&scene, ray, &rng, params.level + 1, params.max_depth,
-                                          params.rr_depth, params.count_emission != 0);
-    rc_ic_store_cell(cells, counters, i, s.radiance, s.distance, s.rays);
-}
-
-// As ic_record_cells, with the diffuse indirect light at each hit from the next cache level.
-__kernel void ic_record_cells_cached(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
-                                     __global const Record* records, __global const float4* origins,
-                                     RecordGrid grid, __global const int* cell_start,
-                                     __global const int* cell_records,
-                                     __global const Record* next_level,
-                                     __global const IrradiancePayload* next_payloads,
-                                     __global float4* cells, __global uint* counters) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
-    const SceneData scene = RC_SCENE_DATA();
-    const RecordCache cache = {grid, cell_start, cell_records, next_level, next_payloads};
-    RngStream rng;
-    const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
-    const CachedRadiance c = rc_ic_cached_radiance(&scene, &params, &cache, 0, ray, &rng,
-                                                   params.count_emission != 0, params.level + 1);
-    rc_ic_store_cell(cells, counters, i, c.direct + c.indirect, c.distance, c.rays);
-}
-
-// As ic_record_cells, with the diffuse light at each hit read from the irradiance vector grid
-// instead of path-traced continuation (--ic-ivg): direct light there by next-event estimation
-// (unless the grid holds it), rho_d / pi E from the grid, other lobes by path tracing.
-__kernel void ic_record_cells_grid(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
-                                   __global const Record* records, __global const float4* origins,
-                                   IvgParams grid_params, __global const float* grid_values,
-                                   __global const half* grid_packed, __global float4* cells,
-                                   __global uint* counters) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
-    const SceneData scene = RC_SCENE_DATA();
-    const VectorGrid grid = {grid_params, grid_values, grid_packed};
-    RngStream rng;
-    const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
-    float3 grid_term;
-    const CachedRadiance c = rc_ivg_radiance(&scene, &grid, ray, &rng, params.count_emission != 0,
-                                             params.level + 1, &grid_term);
-    rc_ic_store_cell(cells, counters, i, c.direct + c.indirect, c.distance, c.rays);
 }
 
 // Item b: irradiance and gradients (into payloads[b]) and (harmonic mean, minimum) hit distance
@@ -251,7 +172,9 @@ __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camer
         return;
     }
     const SceneData scene = RC_SCENE_DATA();
-    const RecordCache cache = {grid, cell_start, cell_records, records, payloads};
+    const RecordCache cache = {grid,     cell_start,      cell_records,
+                               records,  payloads,        params.accuracy,
+                               params.max_weight};
     const PixelShader shader = {&scene, &camera, &params, &cache, splat};
     rc_shade_pixel(&shader, (uint)params.camera_spp, pixel, film, counters);
 }

@@ -1,4 +1,4 @@
-// Entry kernel of the geometry preview (host/methods/normals.cpp).
+// Entry kernel of the geometry preview (host/methods/normals/normals.cpp).
 #include "normals/normals.h"
 
 __kernel void render_normals(uint begin, uint end, CameraParams camera,

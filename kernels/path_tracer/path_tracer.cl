@@ -1,4 +1,4 @@
-// Entry kernel of the path tracer (host/methods/path_tracer.cpp): one sample for every pixel,
+// Entry kernel of the path tracer (host/methods/path_tracer/): one sample for every pixel,
 // accumulated into the film. Each pixel is written by one work item per pass, so the sums are
 // deterministic.
 #include "path_tracer/path_tracer.h"

@@ -1,7 +1,6 @@
 #include "methods/irradiance_cache/irradiance_cache.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -9,13 +8,15 @@
 #include <unordered_map>
 
 #include "image/film.h"
+#include "methods/irradiance_cache/record_level_source.h"
 #include "methods/irradiance_cache/splat_tiles.h"
 #include "methods/records/cache_file.h"
-#include "methods/records/record_grid.h"
 #include "methods/scene_arguments.h"
 #include "scene/camera.h"
 #include "shared/film.h"
 #include "util/error.h"
+#include "util/glm_helpers.h"
+#include "util/timing.h"
 
 namespace rc {
 
@@ -24,40 +25,7 @@ const char* const kIrradianceCacheAovs[7] = {"beauty", "direct",   "indirect", "
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 constexpr size_t kMaxBatchCells = size_t{1} << 23;  // hemisphere cells per record launch
-
-shared::float4 float4_of(glm::vec3 v, float w = 0.0f) { return {v.x, v.y, v.z, w}; }
-glm::vec3 vec3_of(const shared::float4& v) { return {v.x, v.y, v.z}; }
-
-// The device copy of a record store: records, their payloads and their grid.
-struct DeviceRecords {
-    // With `with_grid` false the grid is empty (one cell, no records): for splatting alone.
-    DeviceRecords(Context& context, const RecordStore& store, bool with_grid = true) {
-        const RecordGridData data = build_record_grid(
-            with_grid ? store.records() : std::vector<shared::Record>{}, store.accuracy());
-        grid = data.grid;
-        records = Buffer<shared::Record>(context, store.records(), "ic_records");
-        payloads =
-            Buffer<shared::IrradiancePayload>(context, device_payloads(store), "ic_payloads");
-        cell_start = Buffer<int>(context, data.cell_start, "ic_cell_start");
-        cell_records = Buffer<int>(context, data.cell_records, "ic_cell_records");
-    }
-    size_t bytes() const {
-        return records.bytes() + payloads.bytes() + cell_start.bytes() + cell_records.bytes();
-    }
-
-    shared::RecordGrid grid{};
-    Buffer<shared::Record> records;
-    Buffer<shared::IrradiancePayload> payloads;
-    Buffer<int> cell_start;
-    Buffer<int> cell_records;
-};
 
 // The device copy of a record store's splat into the tiles of a camera's image (splat_tiles.h).
 struct DeviceSplat {
@@ -169,11 +137,6 @@ IrradianceCache::IrradianceCache(Context& context, const Scene& scene, const Dev
       device_scene_(device_scene),
       gbuffer_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer")),
       hits_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_hits")),
-      cells_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_cells")),
-      cached_cells_kernel_(
-          context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_cells_cached")),
-      grid_cells_kernel_(
-          context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_cells_grid")),
       reduce_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_reduce")),
       gather_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gather")),
       splat_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_splat")),
@@ -191,6 +154,17 @@ void IrradianceCache::reset(const RecordSampling& sampling) {
     stats_ = IrradianceCacheStats{};
     stats_.strata_m = sampling.m;
     stats_.strata_n = sampling.n;
+}
+
+Kernel& IrradianceCache::cells_kernel(const RadianceSource& source) {
+    const std::string options = source.build_options();
+    auto found = cells_kernels_.find(options);
+    if (found == cells_kernels_.end()) {
+        Kernel kernel =
+            context_.kernel("irradiance_cache/ic_record_cells.cl", "ic_record_cells", options);
+        found = cells_kernels_.emplace(options, std::move(kernel)).first;
+    }
+    return found->second;
 }
 
 shared::IcParams IrradianceCache::level_params(int level) const {
@@ -261,16 +235,14 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
             context_.launch(hits_kernel_, count * per_record, params, scene, record_buffer,
                             origin_buffer, hits);
             cover(level + 1, hits, {0, 1, 1}, count * per_record, true);
-            const DeviceRecords next(context_, stores_[level + 1]);
-            context_.launch(cached_cells_kernel_, count * per_record, params, scene, record_buffer,
-                            origin_buffer, next.grid, next.cell_start, next.cell_records,
-                            next.records, next.payloads, cells, counters);
-        } else if (sampling_.grid != nullptr) {
-            context_.launch(grid_cells_kernel_, count * per_record, params, scene, record_buffer,
-                            origin_buffer, *sampling_.grid, cells, counters);
+            const RecordLevelSource next(context_, stores_[level + 1], kIrradianceCacheMaxWeight);
+            context_.launch(cells_kernel(next), count * per_record, params, scene, record_buffer,
+                            origin_buffer, next, cells, counters);
         } else {
-            context_.launch(cells_kernel_, count * per_record, params, scene, record_buffer,
-                            origin_buffer, cells, counters);
+            const RadianceSource& source =
+                sampling_.source != nullptr ? *sampling_.source : path_continuation_;
+            context_.launch(cells_kernel(source), count * per_record, params, scene, record_buffer,
+                            origin_buffer, source, cells, counters);
         }
         context_.launch(reduce_kernel_, count, params, cells, record_buffer, payload_buffer,
                         distances);
@@ -332,7 +304,7 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
     // position), so passes until all are covered end.
     for (int pass = 0; until_covered || pass < 1; ++pass) {
         const bool timed = level == 0;
-        auto start = Clock::now();
+        auto start = SteadyClock::now();
         std::vector<shared::GBufferSample> uncovered;
         {
             // Level 0's candidates are camera samples: splatted; deeper levels' are hemisphere
@@ -368,7 +340,7 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
         const size_t entry = stats_.passes.size();
         stats_.passes.push_back(
             {level, placement.stride, candidates, uncovered.size(), chosen.size()});
-        start = Clock::now();
+        start = SteadyClock::now();
         std::vector<RecordSite> sites;
         sites.reserve(chosen.size());
         for (size_t c : chosen) {
@@ -385,7 +357,7 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
         if (timed) {
             stats_.record_seconds += seconds_since(start);
         }
-        start = Clock::now();
+        start = SteadyClock::now();
         for (const ComputedRecord& record : computed) {
             insert_irradiance_record(stores_[level], record);
         }
@@ -440,8 +412,9 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     if (options.bounces < 1) {
         throw Error("--ic-bounces must be at least 1", kExitUsage);
     }
-    if (options.grid != nullptr && options.bounces > 1) {
-        throw Error("--ic-ivg reads the grid at the hemisphere rays' hits: it needs --ic-bounces 1",
+    if (options.source != nullptr && options.bounces > 1) {
+        throw Error("the hemisphere rays read the " + options.source->source_name() +
+                        " at their hits: it needs --ic-bounces 1",
                     kExitUsage);
     }
     if (samples > std::numeric_limits<uint32_t>::max()) {
@@ -453,7 +426,7 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     sampling.rr_depth = options.rr_depth;
     sampling.seed = options.seed;
     sampling.levels = options.bounces;
-    sampling.grid = options.grid;
+    sampling.source = options.source;
     sampling.accuracy = options.accuracy;
     sampling.min_spacing = options.min_spacing;
     sampling.max_spacing = options.max_spacing;
@@ -469,7 +442,7 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     params.draw_records = options.records_overlay ? 1 : 0;
 
     // 1. G-buffer.
-    auto start = Clock::now();
+    auto start = SteadyClock::now();
     Buffer<shared::GBufferSample> gbuffer(context_, samples, "ic_gbuffer");
     context_.launch(gbuffer_kernel_, samples, params, camera, scene, gbuffer);
     context_.finish();
@@ -509,12 +482,12 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
 
     // 5. Splatting every record over every camera sample (the splat buffer), then shading. The
     // world-space grid of the first level is built only for the records overlay.
-    start = Clock::now();
+    start = SteadyClock::now();
     const Buffer<shared::float4> splat = weighted_sums(
         stores_[0], gbuffer, candidate_params(0, {1, options.spp, width}), samples, &camera_);
     context_.finish();
     stats_.splatting_seconds = seconds_since(start);
-    start = Clock::now();
+    start = SteadyClock::now();
     const DeviceRecords records(context_, stores_[0], options.records_overlay);
     stats_.cache_bytes = records.bytes() + splat.bytes();
     Buffer<shared::float4> film(context_, pixels * RC_CACHED_FILM_SLOTS, "ic_film");

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,7 @@
 #include "device/context.h"
 #include "image/image.h"
 #include "methods/irradiance_cache/irradiance_records.h"
-#include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
+#include "methods/radiance_source.h"
 #include "scene/device_scene.h"
 #include "scene/scene.h"
 
@@ -44,9 +45,9 @@ struct IrradianceCacheOptions {
     std::filesystem::path cache_in;   // records to start from
     std::filesystem::path cache_out;  // where to save the records
     bool records_overlay = true;      // draw the `records` layer
-    // --ic-ivg: the hemisphere rays take the diffuse light at their hits from this grid instead
-    // of path-traced continuation (one cache level only).
-    const IrradianceVectorGrid* grid = nullptr;
+    // Where the hemisphere rays read the radiance beyond their hits (--ic-ivg: the irradiance
+    // vector grid) instead of path-traced continuation (one cache level only).
+    const RadianceSource* source = nullptr;
 };
 
 // One pass of placement: records created at one cache level (0: the camera's) from candidates
@@ -110,7 +111,7 @@ struct RecordSampling {
     float accuracy = 0.35f;             // of every level
     Spacing min_spacing{8.0f, false};   // of the deeper levels, where a "pixel" is the footprint
     Spacing max_spacing{64.0f, false};  // of one hemisphere stratum's cone
-    const IrradianceVectorGrid* grid = nullptr;  // read at the last level's hemisphere hits
+    const RadianceSource* source = nullptr;  // read at the last level's hemisphere hits
 };
 
 // M x N strata with N ~ pi M and M N close to `rays`.
@@ -170,6 +171,8 @@ class IrradianceCache {
     std::vector<ComputedRecord> compute_level(int level, const std::vector<RecordSite>& sites);
     void reset(const RecordSampling& sampling);
     shared::IcParams level_params(int level) const;
+    // ic_record_cells built for `source` (one program per source kind).
+    Kernel& cells_kernel(const RadianceSource& source);
 
     Context& context_;
     const Scene& scene_;
@@ -177,15 +180,14 @@ class IrradianceCache {
     const DeviceScene& device_scene_;
     Kernel gbuffer_kernel_;
     Kernel hits_kernel_;
-    Kernel cells_kernel_;
-    Kernel cached_cells_kernel_;
-    Kernel grid_cells_kernel_;
     Kernel reduce_kernel_;
     Kernel gather_kernel_;
     Kernel splat_kernel_;
     Kernel uncovered_kernel_;
     Kernel select_kernel_;
     Kernel shade_kernel_;
+    std::map<std::string, Kernel> cells_kernels_;  // by build options
+    PathContinuation path_continuation_;
     RecordSampling sampling_;
     int width_ = 0;  // of the image render() makes
     int height_ = 0;

@@ -84,7 +84,7 @@ class IrradianceCaching final : public Method {
         }
         IrradianceCache cache(frame.context, frame.scene, frame.bvh, frame.device_scene);
         IrradianceCacheOptions options = options_;
-        options.grid = grid.get();
+        options.source = grid.get();
         IrradianceCacheStats stats;
         result.image = cache.render(options, &stats);
         result.spp = options.spp;

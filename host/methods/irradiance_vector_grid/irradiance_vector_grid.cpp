@@ -3,22 +3,16 @@
 #include <Imath/half.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <regex>
 
 #include "methods/irradiance_vector_grid/irradiance_vector_grid_file.h"
 #include "methods/scene_arguments.h"
 #include "util/error.h"
+#include "util/timing.h"
 
 namespace rc {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 constexpr uint64_t kPhotonsPerLaunch = uint64_t{1} << 22;
 constexpr uint64_t kMaxPhotons = uint64_t{1} << 31;
@@ -178,7 +172,7 @@ void IrradianceVectorGrid::build(const IvgOptions& options, IvgStats* stats) {
     const size_t vertices = vertex_count(cells);
     std::vector<float> values;
     if (!options.grid_in.empty()) {
-        const auto start = Clock::now();
+        const auto start = SteadyClock::now();
         const GridFile file = read_grid_file(options.grid_in, scene_);
         check_grid_file(file, options, options.grid_in.string());
         params_.origin = {file.origin.x, file.origin.y, file.origin.z, 0.0f};
@@ -199,7 +193,7 @@ void IrradianceVectorGrid::build(const IvgOptions& options, IvgStats* stats) {
                         kExitUsage);
         }
         params_.photon_count = static_cast<unsigned>(photons);
-        auto start = Clock::now();
+        auto start = SteadyClock::now();
         Buffer<int64_t> accum(context_, vertices * RC_IVG_VALUES_PER_VERTEX, "ivg_accum");
         accum.fill_zero();
         Buffer<unsigned> counters(context_, 2, "ivg_counters");
@@ -217,13 +211,13 @@ void IrradianceVectorGrid::build(const IvgOptions& options, IvgStats* stats) {
         s.photons = photons;
         context_.finish();
         s.trace_seconds = seconds_since(start);
-        start = Clock::now();
+        start = SteadyClock::now();
         Buffer<float> normalized(context_, vertices * RC_IVG_VALUES_PER_VERTEX, "ivg_values");
         context_.launch(normalize_kernel_, vertices, params_, accum, normalized);
         values = normalized.download();
         s.normalize_seconds += seconds_since(start);
         if (!options.grid_out.empty()) {
-            const auto write_start = Clock::now();
+            const auto write_start = SteadyClock::now();
             GridFile file;
             file.cells = cells;
             file.origin = {params_.origin.x, params_.origin.y, params_.origin.z};
@@ -236,7 +230,7 @@ void IrradianceVectorGrid::build(const IvgOptions& options, IvgStats* stats) {
             s.normalize_seconds += seconds_since(write_start);
         }
     }
-    const auto start = Clock::now();
+    const auto start = SteadyClock::now();
     upload_values(values);
     s.normalize_seconds += seconds_since(start);
     s.cells = {params_.cells.x, params_.cells.y, params_.cells.z};

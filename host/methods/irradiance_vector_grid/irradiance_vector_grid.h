@@ -1,8 +1,9 @@
 // The irradiance vector grid (Pacanowski et al., INRIA RR-6983; DESIGN.md §6.3): a uniform grid
 // over the scene whose vertices hold six irradiance vectors per colour channel, filled by photon
 // tracing on the device, normalised, optionally compressed, saved and loaded. Owns the grid's
-// buffers and reports its statistics; ivg_method.h renders with it and the irradiance cache's
-// records can read it (--ic-ivg).
+// buffers and reports its statistics; ivg_method.h renders with it, and as a radiance source
+// (kernels/irradiance_vector_grid/ivg_source.h) the hemisphere rays of a caching method read it
+// (--ic-ivg).
 #pragma once
 
 #include <array>
@@ -15,6 +16,7 @@
 #include "device/buffer.h"
 #include "device/context.h"
 #include "device/kernel.h"
+#include "methods/radiance_source.h"
 #include "scene/device_scene.h"
 #include "scene/scene.h"
 #include "shared/types.h"
@@ -62,7 +64,7 @@ constexpr int kAutoGridVertices = 32768;
 // Photons `auto` traces per grid vertex.
 constexpr uint64_t kAutoPhotonsPerVertex = 8;
 
-class IrradianceVectorGrid : public KernelArgumentGroup {
+class IrradianceVectorGrid : public RadianceSource {
    public:
     IrradianceVectorGrid(Context& context, const Scene& scene, const DeviceBvh& bvh,
                          const DeviceScene& device_scene);
@@ -78,6 +80,8 @@ class IrradianceVectorGrid : public KernelArgumentGroup {
 
     // Kernel arguments (IvgParams, values, packed), in that order.
     unsigned set_kernel_args(Kernel& kernel, unsigned first) const override;
+    std::string build_options() const override { return radiance_source_define(RC_RADIANCE_GRID); }
+    std::string source_name() const override { return "irradiance vector grid"; }
 
     // The normalised grid (RC_IVG_VALUES_PER_VERTEX floats per vertex).
     std::vector<float> values() const;

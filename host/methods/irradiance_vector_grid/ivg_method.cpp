@@ -1,6 +1,5 @@
 #include "methods/irradiance_vector_grid/ivg_method.h"
 
-#include <chrono>
 #include <limits>
 
 #include "image/film.h"
@@ -8,6 +7,7 @@
 #include "scene/camera.h"
 #include "shared/film.h"
 #include "util/error.h"
+#include "util/timing.h"
 
 namespace rc {
 
@@ -62,7 +62,7 @@ Image IvgMethod::render(const IvgRenderOptions& options, IvgRenderStats* stats) 
     if (pixels > std::numeric_limits<uint32_t>::max()) {
         throw Error("irradiance vector grid: width x height exceeds 2^32 pixels", kExitUsage);
     }
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = SteadyClock::now();
     const shared::CameraParams camera = camera_params(scene_.camera, width, height);
     const SceneArguments scene(bvh_, device_scene_);
     const RenderGrid grid(grid_, options);
@@ -84,8 +84,7 @@ Image IvgMethod::render(const IvgRenderOptions& options, IvgRenderStats* stats) 
         stats->rays = c[0];
         stats->nonfinite_samples = c[1];
         stats->first_nonfinite_pixel = c[1] > 0 ? static_cast<int64_t>(c[2]) : -1;
-        stats->seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats->seconds = seconds_since(start);
     }
     return image;
 }

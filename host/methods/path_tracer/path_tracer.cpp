@@ -1,7 +1,6 @@
 #include "methods/path_tracer/path_tracer.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -10,6 +9,7 @@
 #include "scene/camera.h"
 #include "shared/film.h"
 #include "util/error.h"
+#include "util/timing.h"
 
 namespace rc {
 
@@ -96,10 +96,8 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
     const shared::CameraParams camera = camera_params(scene_.camera, width, height);
 
     PathTracerStats result;
-    const auto start = std::chrono::steady_clock::now();
-    auto elapsed = [&] {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    };
+    const auto start = SteadyClock::now();
+    auto elapsed = [&] { return seconds_since(start); };
     for (int pass = 0;; ++pass) {
         if (options.time_limit > 0.0 ? (pass > 0 && elapsed() >= options.time_limit)
                                      : pass >= options.spp) {
