@@ -15,6 +15,7 @@
 #include "scene/scene_loader.h"
 #include "util/file_io.h"
 #include "util/log.h"
+#include "util/timing.h"
 
 namespace rc {
 namespace {
@@ -26,15 +27,15 @@ void render_frame(const RenderJob& job, int frame, Context& context, Scene& scen
         scene.set_frame(frame);
     }
     const std::filesystem::path output = frame_path(job.output_pattern, frame);
-    auto start = Clock::now();
+    auto start = SteadyClock::now();
     bvh = build_bvh(scene.mesh);
     totals.phase("bvh") += seconds_since(start);
-    start = Clock::now();
+    start = SteadyClock::now();
     const DeviceBvh device_bvh(context, bvh);
     const DeviceScene device_scene(context, scene);
     totals.phase("upload") += seconds_since(start);
 
-    start = Clock::now();
+    start = SteadyClock::now();
     const auto written = [&](const Image& image) {
         return job.layers.empty() ? image : select_layers(image, job.layers);
     };
@@ -51,7 +52,7 @@ void render_frame(const RenderJob& job, int frame, Context& context, Scene& scen
     progress.finish();
     totals.phase("render") += seconds_since(start);
 
-    start = Clock::now();
+    start = SteadyClock::now();
     write_image(output, written(result.image), job.write_options);
     totals.phase("write") += seconds_since(start);
     log_note("wrote " + output.string() + " (" + std::to_string(result.image.width) + "x" +
@@ -69,12 +70,12 @@ int run_render_command(const std::vector<std::string>& args) {
                                  "Renders SCENE (a scene.json file) to an image.", specs);
         return 0;
     }
-    const auto total_start = Clock::now();
+    const auto total_start = SteadyClock::now();
     RenderJob job = read_render_job(arguments);
     set_quiet(arguments.has("--quiet"));
     RenderTotals totals;
 
-    auto start = Clock::now();
+    auto start = SteadyClock::now();
     Scene scene = load_scene(job.scene);
     totals.phase("load") = seconds_since(start);
     if (scene.dropped_degenerate > 0) {
@@ -91,7 +92,7 @@ int run_render_command(const std::vector<std::string>& args) {
     const std::unique_ptr<Method> method =
         entry.create(arguments, method_settings(arguments, settings, job, first, last));
 
-    start = Clock::now();
+    start = SteadyClock::now();
     Context context(context_options(arguments));
     totals.phase("device") = seconds_since(start);
     log_note("device " + context.device().name + "; " +

@@ -4,10 +4,6 @@
 
 namespace rc {
 
-double seconds_since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 void RenderTotals::add_frame(int frame, const std::filesystem::path& output,
                              const FrameResult& result) {
     nlohmann::json entry = result.stats;

@@ -2,7 +2,6 @@
 // and the --stats JSON file.
 #pragma once
 
-#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -15,10 +14,6 @@
 #include "scene/scene.h"
 
 namespace rc {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start);
 
 class RenderTotals {
    public:

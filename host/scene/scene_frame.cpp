@@ -12,13 +12,10 @@
 #include "scene/scene.h"
 #include "scene/transform.h"
 #include "util/error.h"
+#include "util/glm_helpers.h"
 
 namespace rc {
 namespace {
-
-float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
-shared::float4 float4_of(glm::vec3 v, float w = 0.0f) { return {v.x, v.y, v.z, w}; }
 
 constexpr float kPi = 3.14159265f;
 

@@ -5,11 +5,10 @@
 #include <limits>
 
 #include "scene/scene_fingerprint.h"
+#include "util/glm_helpers.h"
 
 namespace rc {
 namespace {
-
-glm::vec3 vec3_of(const shared::float4& v) { return {v.x, v.y, v.z}; }
 
 shared::float4 scaled(const shared::float4& v, float s) {
     return {s * v.x, s * v.y, s * v.z, 0.0f};
@@ -25,11 +24,10 @@ float irradiance_radius_limit(const shared::IrradiancePayload& payload) {
     const glm::vec3 gradient = 0.2126f * vec3_of(payload.translation_r) +
                                0.7152f * vec3_of(payload.translation_g) +
                                0.0722f * vec3_of(payload.translation_b);
-    const glm::vec3 e = vec3_of(payload.irradiance);
-    const float luminance = 0.2126f * e.r + 0.7152f * e.g + 0.0722f * e.b;
+    const float e = luminance(vec3_of(payload.irradiance));
     const float g = glm::length(gradient);
-    if (g > 0.0f && luminance > 0.0f) {
-        return luminance / g;
+    if (g > 0.0f && e > 0.0f) {
+        return e / g;
     }
     return std::numeric_limits<float>::infinity();
 }

@@ -7,11 +7,10 @@
 
 #include "methods/records/record_store.h"
 #include "util/error.h"
+#include "util/glm_helpers.h"
 
 namespace rc {
 namespace {
-
-shared::float4 float4_of(glm::vec3 v) { return {v.x, v.y, v.z, 0.0f}; }
 
 // The cells a record's influence sphere's bounding box touches, [from, to] inclusive.
 struct CellRange {
