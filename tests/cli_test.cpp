@@ -389,7 +389,6 @@ TEST(Cli, DefinesOverrideRenderDefaultsAndStatsRecordThem) {
     EXPECT_EQ(nlohmann::json::parse(read_file(dir / "stats2.json"))["spp"], 2);
 }
 
-
 TEST(Cli, RenderBadInputsFailBeforeWritingAnything) {
     const auto dir = test::scratch_dir("cli_render_bad");
     const std::string out = (dir / "out.png").string();

@@ -7,6 +7,7 @@
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "methods/normals/normals.h"
+#include "scene/device_scene.h"
 #include "test_support.h"
 
 namespace rc {
@@ -19,7 +20,8 @@ Image render_with(size_t local_size, size_t max_chunk, const Scene& scene) {
     Context context(options);
     const Bvh bvh = build_bvh(scene.mesh);
     const DeviceBvh device_bvh(context, bvh);
-    NormalsMethod method(context, scene, device_bvh);
+    const DeviceScene device_scene(context, scene);
+    NormalsMethod method({context, scene, device_bvh, device_scene});
     NormalsOptions render;
     render.width = 160;
     render.height = 120;
@@ -54,7 +56,8 @@ TEST(Determinism, DifferentSeedsGiveDifferentJitter) {
     Context& context = test::shared_context();
     const Bvh bvh = build_bvh(scene.mesh);
     const DeviceBvh device_bvh(context, bvh);
-    NormalsMethod method(context, scene, device_bvh);
+    const DeviceScene device_scene(context, scene);
+    NormalsMethod method({context, scene, device_bvh, device_scene});
     NormalsOptions options;
     options.width = 64;
     options.height = 64;

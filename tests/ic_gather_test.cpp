@@ -60,7 +60,7 @@ std::vector<glm::dvec4> device_gather(const std::vector<PaperRecord>& records,
     Context& context = test::shared_context();
     static const DeviceBvh device_bvh(context, bvh);
     static const DeviceScene device_scene(context, scene);
-    IrradianceCache cache(context, scene, device_bvh, device_scene);
+    IrradianceCache cache({context, scene, device_bvh, device_scene});
     std::vector<shared::Record> stored;
     std::vector<RecordHostData> host;
     std::vector<std::byte> payloads(records.size() * sizeof(shared::IrradiancePayload));

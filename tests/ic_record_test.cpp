@@ -28,7 +28,7 @@ struct CacheFixture {
           bvh(build_bvh(scene.mesh)),
           device_bvh(test::shared_context(), bvh),
           device_scene(test::shared_context(), scene),
-          cache(test::shared_context(), scene, device_bvh, device_scene) {}
+          cache({test::shared_context(), scene, device_bvh, device_scene}) {}
     Scene scene;
     Bvh bvh;
     DeviceBvh device_bvh;

@@ -15,9 +15,7 @@
 namespace rc {
 namespace {
 
-
 shared::float4 float4_of(glm::vec3 v) { return {v.x, v.y, v.z, 0.0f}; }
-
 
 // R is limited by the translational gradient: |grad E| R <= E (luminance).
 TEST(IcRecords, GradientLimitsTheRadius) {

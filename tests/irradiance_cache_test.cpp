@@ -35,7 +35,7 @@ Render render(const Scene& scene, const IrradianceCacheOptions& options, Context
     const Bvh bvh = build_bvh(scene.mesh);
     const DeviceBvh device_bvh(context, bvh);
     const DeviceScene device_scene(context, scene);
-    IrradianceCache cache(context, scene, device_bvh, device_scene);
+    IrradianceCache cache({context, scene, device_bvh, device_scene});
     Render r;
     r.image = cache.render(options, &r.stats);
     r.records = cache.store(0);
@@ -221,7 +221,7 @@ TEST(IrradianceCache, CacheFileRoundTripsExactlyAndIsReused) {
     Context& context = test::shared_context();
     const DeviceBvh device_bvh(context, bvh);
     const DeviceScene device_scene(context, scene);
-    IrradianceCache cache(context, scene, device_bvh, device_scene);
+    IrradianceCache cache({context, scene, device_bvh, device_scene});
     IrradianceCacheStats stats;
     const Image first = cache.render(options, &stats);
     const std::vector<RecordStore> levels =

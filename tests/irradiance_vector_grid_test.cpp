@@ -41,7 +41,7 @@ struct GridScene {
           bvh(build_bvh(scene.mesh)),
           device_bvh(context, bvh),
           device_scene(context, scene),
-          grid(context, scene, device_bvh, device_scene) {}
+          grid({context, scene, device_bvh, device_scene}) {}
     Scene scene;
     Bvh bvh;
     DeviceBvh device_bvh;
@@ -140,7 +140,7 @@ TEST(IrradianceVectorGrid, GridFilesRoundTripExactlyAndMismatchesAreRefused) {
 }
 
 Image render_with_grid(GridScene& s, int gather_rays, int size, int spp) {
-    IvgMethod method(test::shared_context(), s.scene, s.device_bvh, s.device_scene, s.grid);
+    IvgMethod method({test::shared_context(), s.scene, s.device_bvh, s.device_scene}, s.grid);
     IvgRenderOptions options;
     options.width = size;
     options.height = size;
@@ -182,7 +182,7 @@ TEST(IrradianceVectorGrid, IrradianceCacheWithTheGridIsCloseToTheReference) {
     IvgOptions grid_options;
     grid_options.seed = 1;
     s.grid.build(grid_options);
-    IrradianceCache cache(test::shared_context(), s.scene, s.device_bvh, s.device_scene);
+    IrradianceCache cache({test::shared_context(), s.scene, s.device_bvh, s.device_scene});
     IrradianceCacheOptions options;
     options.records_overlay = false;
     options.source = &s.grid;

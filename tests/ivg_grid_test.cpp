@@ -27,7 +27,7 @@ struct GridFixture {
           bvh(build_bvh(scene.mesh)),
           device_bvh(test::shared_context(), bvh),
           device_scene(test::shared_context(), scene),
-          grid(test::shared_context(), scene, device_bvh, device_scene) {}
+          grid({test::shared_context(), scene, device_bvh, device_scene}) {}
     Scene scene;
     Bvh bvh;
     DeviceBvh device_bvh;

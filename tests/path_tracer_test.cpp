@@ -30,7 +30,7 @@ Render render(const Scene& scene, PathTracerOptions options, Context& context) {
     const Bvh bvh = build_bvh(scene.mesh);
     const DeviceBvh device_bvh(context, bvh);
     const DeviceScene device_scene(context, scene);
-    PathTracer tracer(context, scene, device_bvh, device_scene);
+    PathTracer tracer({context, scene, device_bvh, device_scene});
     Render r;
     r.image = tracer.render(options, &r.stats);
     return r;

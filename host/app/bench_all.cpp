@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "util/cli.h"
 #include "app/commands.h"
 #include "app/device_options.h"
 #include "app/ray_bench.h"
@@ -18,6 +17,7 @@
 #include "scene/camera.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
+#include "util/cli.h"
 #include "util/error.h"
 #include "util/file_io.h"
 
@@ -79,7 +79,7 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
     const DeviceScene device_scene(context, scene);
 
     // Path tracing: a one-pass warm-up (kernel build, code generation), then the timed passes.
-    PathTracer tracer(context, scene, rays.device_bvh(), device_scene);
+    PathTracer tracer({context, scene, rays.device_bvh(), device_scene});
     PathTracerOptions pt;
     pt.width = width;
     pt.height = height;
@@ -101,7 +101,7 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
     // Irradiance caching at its defaults, one camera sample per pixel: hemisphere samples (a
     // ray and its path-traced continuation each) of the record kernels, and camera samples of
     // the splat accumulation pass. A small warm-up render first.
-    IrradianceCache cache(context, scene, rays.device_bvh(), device_scene);
+    IrradianceCache cache({context, scene, rays.device_bvh(), device_scene});
     IrradianceCacheOptions ic;
     ic.width = std::min(width, 64);
     ic.height = std::min(height, 64);
@@ -129,7 +129,7 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
 
     // Photon tracing into the irradiance vector grid at its automatic size (a small warm-up
     // first): photons/s, each traced through its bounces and deposited at every face crossing.
-    IrradianceVectorGrid grid(context, scene, rays.device_bvh(), device_scene);
+    IrradianceVectorGrid grid({context, scene, rays.device_bvh(), device_scene});
     IvgOptions ivg;
     ivg.max_depth = scene.render.max_depth;
     ivg.rr_depth = scene.render.rr_depth;

@@ -5,10 +5,10 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "util/cli.h"
 #include "app/commands.h"
 #include "app/device_options.h"
 #include "device/embedded_sources.h"
+#include "util/cli.h"
 #include "util/error.h"
 #include "util/file_io.h"
 

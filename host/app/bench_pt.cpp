@@ -5,7 +5,6 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "util/cli.h"
 #include "app/commands.h"
 #include "app/device_options.h"
 #include "app/ray_bench.h"
@@ -13,6 +12,7 @@
 #include "scene/camera.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
+#include "util/cli.h"
 #include "util/error.h"
 #include "util/file_io.h"
 
@@ -54,7 +54,7 @@ int run_bench_pt(const std::vector<std::string>& args) {
     // timed render.
     RayBench rays(context, scene, threads, 3);
     const DeviceScene device_scene(context, scene);
-    PathTracer tracer(context, scene, rays.device_bvh(), device_scene);
+    PathTracer tracer({context, scene, rays.device_bvh(), device_scene});
     PathTracerOptions options;
     options.width = width;
     options.height = height;

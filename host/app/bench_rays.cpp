@@ -9,7 +9,6 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
-#include "util/cli.h"
 #include "app/commands.h"
 #include "app/device_options.h"
 #include "app/ray_bench.h"
@@ -20,6 +19,7 @@
 #include "scene/camera.h"
 #include "scene/generated_meshes.h"
 #include "scene/scene_loader.h"
+#include "util/cli.h"
 #include "util/error.h"
 #include "util/file_io.h"
 #include "util/log.h"

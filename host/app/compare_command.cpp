@@ -4,11 +4,11 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "util/cli.h"
 #include "app/commands.h"
 #include "image/image.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
+#include "util/cli.h"
 #include "util/error.h"
 #include "util/file_io.h"
 

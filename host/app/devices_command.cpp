@@ -1,8 +1,8 @@
 #include <iostream>
 
-#include "util/cli.h"
 #include "app/commands.h"
 #include "device/device_list.h"
+#include "util/cli.h"
 #include "util/error.h"
 
 namespace rc {

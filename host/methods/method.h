@@ -12,11 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "bvh/device_bvh.h"
-#include "device/context.h"
 #include "image/image.h"
-#include "scene/device_scene.h"
-#include "scene/scene.h"
+#include "methods/frame_scene.h"
 #include "util/cli.h"
 
 namespace rc {
@@ -50,16 +47,6 @@ struct MethodSettings {
             options.rr_depth = rr_depth;
         }
     }
-};
-
-// One frame as the method sees it: the device, the scene posed at the frame, its BVH and scene
-// buffers on the device (rebuilt for every frame).
-struct FrameScene {
-    Context& context;
-    const Scene& scene;
-    const DeviceBvh& bvh;
-    const DeviceScene& device_scene;
-    int frame = 0;
 };
 
 // What the frame loop offers a method while it renders.

@@ -129,20 +129,19 @@ RecordSampling strata_for(int rays) {
     return sampling;
 }
 
-IrradianceCache::IrradianceCache(Context& context, const Scene& scene, const DeviceBvh& bvh,
-                                 const DeviceScene& device_scene)
-    : context_(context),
-      scene_(scene),
-      bvh_(bvh),
-      device_scene_(device_scene),
-      gbuffer_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer")),
-      hits_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_hits")),
-      reduce_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_reduce")),
-      gather_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gather")),
-      splat_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_splat")),
-      uncovered_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_uncovered")),
-      select_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer_select")),
-      shade_kernel_(context.kernel("irradiance_cache/irradiance_cache.cl", "ic_shade")) {}
+IrradianceCache::IrradianceCache(const FrameScene& frame)
+    : FrameBound(frame),
+      gbuffer_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer")),
+      hits_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_hits")),
+      reduce_kernel_(
+          frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_reduce")),
+      gather_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gather")),
+      splat_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_splat")),
+      uncovered_kernel_(
+          frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_uncovered")),
+      select_kernel_(
+          frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer_select")),
+      shade_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_shade")) {}
 
 void IrradianceCache::reset(const RecordSampling& sampling) {
     if (sampling.levels < 1 || sampling.m < 1 || sampling.n < 1) {

@@ -11,13 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "bvh/device_bvh.h"
-#include "device/context.h"
 #include "image/image.h"
+#include "methods/frame_scene.h"
 #include "methods/irradiance_cache/irradiance_records.h"
 #include "methods/radiance_source.h"
-#include "scene/device_scene.h"
-#include "scene/scene.h"
 
 namespace rc {
 
@@ -117,10 +114,9 @@ struct RecordSampling {
 // M x N strata with N ~ pi M and M N close to `rays`.
 RecordSampling strata_for(int rays);
 
-class IrradianceCache {
+class IrradianceCache : private FrameBound {
    public:
-    IrradianceCache(Context& context, const Scene& scene, const DeviceBvh& bvh,
-                    const DeviceScene& device_scene);
+    explicit IrradianceCache(const FrameScene& frame);
 
     Image render(const IrradianceCacheOptions& options, IrradianceCacheStats* stats = nullptr);
 
@@ -174,10 +170,6 @@ class IrradianceCache {
     // ic_record_cells built for `source` (one program per source kind).
     Kernel& cells_kernel(const RadianceSource& source);
 
-    Context& context_;
-    const Scene& scene_;
-    const DeviceBvh& bvh_;
-    const DeviceScene& device_scene_;
     Kernel gbuffer_kernel_;
     Kernel hits_kernel_;
     Kernel reduce_kernel_;

@@ -82,7 +82,7 @@ class IrradianceCaching final : public Method {
         if (with_grid_) {
             grid = build_frame_grid(frame, grid_options_, hooks, &result);
         }
-        IrradianceCache cache(frame.context, frame.scene, frame.bvh, frame.device_scene);
+        IrradianceCache cache(frame);
         IrradianceCacheOptions options = options_;
         options.source = grid.get();
         IrradianceCacheStats stats;

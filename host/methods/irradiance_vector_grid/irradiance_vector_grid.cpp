@@ -105,22 +105,18 @@ std::array<int, 3> auto_grid_cells(glm::vec3 extent) {
     return cells;
 }
 
-IrradianceVectorGrid::IrradianceVectorGrid(Context& context, const Scene& scene,
-                                           const DeviceBvh& bvh, const DeviceScene& device_scene)
-    : context_(context),
-      scene_(scene),
-      bvh_(bvh),
-      device_scene_(device_scene),
-      trace_kernel_(
-          context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_trace_photons")),
-      deposit_kernel_(context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl",
-                                     "ivg_deposit_segments")),
-      normalize_kernel_(
-          context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_normalize")),
+IrradianceVectorGrid::IrradianceVectorGrid(const FrameScene& frame)
+    : FrameBound(frame),
+      trace_kernel_(frame.context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl",
+                                         "ivg_trace_photons")),
+      deposit_kernel_(frame.context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl",
+                                           "ivg_deposit_segments")),
+      normalize_kernel_(frame.context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl",
+                                             "ivg_normalize")),
       lookup_kernel_(
-          context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_lookup")),
-      values_(context, 1, "ivg_values"),
-      packed_(context, 1, "ivg_packed") {}
+          frame.context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_lookup")),
+      values_(frame.context, 1, "ivg_values"),
+      packed_(frame.context, 1, "ivg_packed") {}
 
 shared::IvgParams IrradianceVectorGrid::layout(const IvgOptions& options) const {
     glm::vec3 lower(0.0f);

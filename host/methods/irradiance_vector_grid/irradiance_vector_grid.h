@@ -12,13 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "bvh/device_bvh.h"
 #include "device/buffer.h"
-#include "device/context.h"
 #include "device/kernel.h"
+#include "methods/frame_scene.h"
 #include "methods/radiance_source.h"
-#include "scene/device_scene.h"
-#include "scene/scene.h"
 #include "shared/types.h"
 
 namespace rc {
@@ -64,10 +61,9 @@ constexpr int kAutoGridVertices = 32768;
 // Photons `auto` traces per grid vertex.
 constexpr uint64_t kAutoPhotonsPerVertex = 8;
 
-class IrradianceVectorGrid : public RadianceSource {
+class IrradianceVectorGrid : public RadianceSource, private FrameBound {
    public:
-    IrradianceVectorGrid(Context& context, const Scene& scene, const DeviceBvh& bvh,
-                         const DeviceScene& device_scene);
+    explicit IrradianceVectorGrid(const FrameScene& frame);
 
     // Traces photons into the grid (or loads it), normalises it and prepares what the options
     // ask to read (the compressed layout); saves it when asked.
@@ -100,10 +96,6 @@ class IrradianceVectorGrid : public RadianceSource {
    private:
     void upload_values(const std::vector<float>& values);
 
-    Context& context_;
-    const Scene& scene_;
-    const DeviceBvh& bvh_;
-    const DeviceScene& device_scene_;
     Kernel trace_kernel_;
     Kernel deposit_kernel_;
     Kernel normalize_kernel_;

@@ -25,7 +25,7 @@ class GridRendering final : public Method {
         FrameResult result;
         const std::unique_ptr<IrradianceVectorGrid> grid =
             build_frame_grid(frame, grid_options_, hooks, &result);
-        IvgMethod method(frame.context, frame.scene, frame.bvh, frame.device_scene, *grid);
+        IvgMethod method(frame, *grid);
         IvgRenderOptions options;
         settings_.apply_to(options);
         options.gather_rays = gather_rays_;

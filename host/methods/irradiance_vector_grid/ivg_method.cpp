@@ -38,15 +38,11 @@ class RenderGrid : public KernelArgumentGroup {
 
 }  // namespace
 
-IvgMethod::IvgMethod(Context& context, const Scene& scene, const DeviceBvh& bvh,
-                     const DeviceScene& device_scene, const IrradianceVectorGrid& grid)
-    : context_(context),
-      scene_(scene),
-      bvh_(bvh),
-      device_scene_(device_scene),
+IvgMethod::IvgMethod(const FrameScene& frame, const IrradianceVectorGrid& grid)
+    : FrameBound(frame),
       grid_(grid),
       shade_kernel_(
-          context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_shade")) {}
+          frame.context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_shade")) {}
 
 Image IvgMethod::render(const IvgRenderOptions& options, IvgRenderStats* stats) {
     const int width = options.width > 0 ? options.width : scene_.camera.width;

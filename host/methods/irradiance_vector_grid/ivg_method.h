@@ -7,12 +7,9 @@
 
 #include <cstdint>
 
-#include "bvh/device_bvh.h"
-#include "device/context.h"
 #include "image/image.h"
+#include "methods/frame_scene.h"
 #include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
-#include "scene/device_scene.h"
-#include "scene/scene.h"
 
 namespace rc {
 
@@ -36,18 +33,13 @@ struct IvgRenderStats {
 // hit, rho_d / pi E: the grid-only indirect light).
 extern const char* const kIvgAovs[6];
 
-class IvgMethod {
+class IvgMethod : private FrameBound {
    public:
-    IvgMethod(Context& context, const Scene& scene, const DeviceBvh& bvh,
-              const DeviceScene& device_scene, const IrradianceVectorGrid& grid);
+    IvgMethod(const FrameScene& frame, const IrradianceVectorGrid& grid);
 
     Image render(const IvgRenderOptions& options, IvgRenderStats* stats = nullptr);
 
    private:
-    Context& context_;
-    const Scene& scene_;
-    const DeviceBvh& bvh_;
-    const DeviceScene& device_scene_;
     const IrradianceVectorGrid& grid_;
     Kernel shade_kernel_;
 };

@@ -71,8 +71,7 @@ std::unique_ptr<IrradianceVectorGrid> build_frame_grid(const FrameScene& frame,
                                                        const FrameHooks& hooks,
                                                        FrameResult* result) {
     hooks.progress(0.0, "photons");
-    auto grid = std::make_unique<IrradianceVectorGrid>(frame.context, frame.scene, frame.bvh,
-                                                       frame.device_scene);
+    auto grid = std::make_unique<IrradianceVectorGrid>(frame);
     IvgStats stats;
     grid->build(options, &stats);
     result->stats["grid"] = ivg_stats_json(stats);

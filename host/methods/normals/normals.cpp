@@ -6,11 +6,8 @@
 
 namespace rc {
 
-NormalsMethod::NormalsMethod(Context& context, const Scene& scene, const DeviceBvh& bvh)
-    : context_(context),
-      scene_(scene),
-      bvh_(bvh),
-      kernel_(context.kernel("normals/normals.cl", "render_normals")) {}
+NormalsMethod::NormalsMethod(const FrameScene& frame)
+    : FrameBound(frame), kernel_(frame.context.kernel("normals/normals.cl", "render_normals")) {}
 
 Image NormalsMethod::render(const NormalsOptions& options) {
     const int width = options.width > 0 ? options.width : scene_.camera.width;

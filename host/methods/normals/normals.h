@@ -4,10 +4,8 @@
 
 #include <cstdint>
 
-#include "bvh/device_bvh.h"
-#include "device/context.h"
 #include "image/image.h"
-#include "scene/scene.h"
+#include "methods/frame_scene.h"
 
 namespace rc {
 
@@ -18,16 +16,13 @@ struct NormalsOptions {
     uint64_t seed = 0;
 };
 
-class NormalsMethod {
+class NormalsMethod : private FrameBound {
    public:
-    NormalsMethod(Context& context, const Scene& scene, const DeviceBvh& bvh);
+    explicit NormalsMethod(const FrameScene& frame);
 
     Image render(const NormalsOptions& options);
 
    private:
-    Context& context_;
-    const Scene& scene_;
-    const DeviceBvh& bvh_;
     Kernel kernel_;
 };
 

@@ -12,7 +12,7 @@ class NormalsPreview final : public Method {
     explicit NormalsPreview(const MethodSettings& settings) : settings_(settings) {}
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks&) override {
-        NormalsMethod method(frame.context, frame.scene, frame.bvh);
+        NormalsMethod method(frame);
         NormalsOptions options;
         options.width = settings_.width;
         options.height = settings_.height;

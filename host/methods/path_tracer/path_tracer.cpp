@@ -26,13 +26,9 @@ std::string gibibytes(double bytes) {
 
 }  // namespace
 
-PathTracer::PathTracer(Context& context, const Scene& scene, const DeviceBvh& bvh,
-                       const DeviceScene& device_scene)
-    : context_(context),
-      scene_(scene),
-      bvh_(bvh),
-      device_scene_(device_scene),
-      kernel_(context.kernel("path_tracer/path_tracer.cl", "path_trace_pass")) {}
+PathTracer::PathTracer(const FrameScene& frame)
+    : FrameBound(frame),
+      kernel_(frame.context.kernel("path_tracer/path_tracer.cl", "path_trace_pass")) {}
 
 Image PathTracer::resolve(const Buffer<shared::float4>& film, int width, int height) const {
     // The sums become means over the pixel's finite samples (the beauty slot's w), and the sums

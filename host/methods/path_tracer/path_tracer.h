@@ -5,11 +5,8 @@
 #include <cstdint>
 #include <functional>
 
-#include "bvh/device_bvh.h"
-#include "device/context.h"
 #include "image/image.h"
-#include "scene/device_scene.h"
-#include "scene/scene.h"
+#include "methods/frame_scene.h"
 
 namespace rc {
 
@@ -40,20 +37,15 @@ struct PathTracerStats {
 // of the pixel, the unbiased sample estimate; the mean's is stddev / sqrt(spp)).
 extern const char* const kPathTracerAovs[6];
 
-class PathTracer {
+class PathTracer : private FrameBound {
    public:
-    PathTracer(Context& context, const Scene& scene, const DeviceBvh& bvh,
-               const DeviceScene& device_scene);
+    explicit PathTracer(const FrameScene& frame);
 
     Image render(const PathTracerOptions& options, PathTracerStats* stats = nullptr);
 
    private:
     Image resolve(const Buffer<shared::float4>& film, int width, int height) const;
 
-    Context& context_;
-    const Scene& scene_;
-    const DeviceBvh& bvh_;
-    const DeviceScene& device_scene_;
     Kernel kernel_;
 };
 

@@ -22,7 +22,7 @@ class PathTracerMethod final : public Method {
     }
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
-        PathTracer tracer(frame.context, frame.scene, frame.bvh, frame.device_scene);
+        PathTracer tracer(frame);
         PathTracerOptions options;
         settings_.apply_to(options);
         options.time_limit = settings_.time;
