@@ -322,8 +322,8 @@ TEST(Cli, BenchAllMeasuresEveryFamilyOnTheDevice) {
          {"coherent_closest_mrays", "coherent_any_mrays", "incoherent_closest_mrays",
           "incoherent_any_mrays", "embree_coherent_closest_mrays", "embree_incoherent_any_mrays",
           "path_samples_per_second", "path_tracing_mrays", "hemisphere_samples_per_second",
-          "records_per_second", "splat_samples_per_second", "photons_per_second",
-          "photon_crossings_per_second"}) {
+          "records_per_second", "shade_samples_per_second", "splat_samples_per_second",
+          "gather_samples_per_second", "photons_per_second", "photon_crossings_per_second"}) {
         ASSERT_TRUE(device.contains(key)) << key;
         EXPECT_GT(device[key].get<double>(), 0.0) << key;
     }

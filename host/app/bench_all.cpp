@@ -20,6 +20,7 @@
 #include "util/cli.h"
 #include "util/error.h"
 #include "util/file_io.h"
+#include "util/timing.h"
 
 namespace rc {
 namespace {
@@ -100,7 +101,7 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
 
     // Irradiance caching at its defaults, one camera sample per pixel: hemisphere samples (a
     // ray and its path-traced continuation each) of the record kernels, and camera samples of
-    // the splat accumulation pass. A small warm-up render first.
+    // the render pass. A small warm-up render first.
     IrradianceCache cache({context, scene, rays.device_bvh(), device_scene});
     IrradianceCacheOptions ic;
     ic.width = std::min(width, 64);
@@ -123,9 +124,31 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
                               hemisphere_samples / record_seconds * 1e-6, 0.0});
     result.figures.push_back({"records_per_second", "IC records/s (k)",
                               static_cast<double>(ic_stats.records) / record_seconds * 1e-3, 0.0});
-    const double splat_seconds = kernel_seconds_since(context, before, {"ic_shade"});
-    result.figures.push_back({"splat_samples_per_second", "splat accumulation samples/s (M)",
-                              static_cast<double>(width) * height / splat_seconds * 1e-6, 0.0});
+    const double shade_seconds = kernel_seconds_since(context, before, {"ic_shade"});
+    result.figures.push_back({"shade_samples_per_second", "IC render pass samples/s (M)",
+                              static_cast<double>(width) * height / shade_seconds * 1e-6, 0.0});
+
+    // Interpolation at the same camera samples from the same records, side by side: radiance
+    // cache splatting (screen tiles binned on the host, ic_splat) and the world-space gather
+    // (record grid built on the host, ic_gather), each timed on the wall clock, host work and
+    // uploads included.
+    const std::vector<shared::GBufferSample> samples = cache.camera_samples();
+    const auto interpolation_rate = [&](bool splat) {
+        context.finish();
+        const auto start = SteadyClock::now();
+        for (int r = 0; r < repeats; ++r) {
+            if (splat) {
+                cache.splat(cache.store(), cache.camera(), ic.spp, samples);
+            } else {
+                cache.gather(cache.store(), samples);
+            }
+        }
+        return static_cast<double>(samples.size()) * repeats / seconds_since(start) * 1e-6;
+    };
+    result.figures.push_back(
+        {"splat_samples_per_second", "IC splat samples/s (M)", interpolation_rate(true), 0.0});
+    result.figures.push_back(
+        {"gather_samples_per_second", "IC gather samples/s (M)", interpolation_rate(false), 0.0});
 
     // Photon tracing into the irradiance vector grid at its automatic size (a small warm-up
     // first): photons/s, each traced through its bounces and deposited at every face crossing.
@@ -172,7 +195,8 @@ int run_bench_all(const std::vector<std::string>& args) {
             "side: traversal Mrays/s (coherent and incoherent, closest and any hit) with Embree's\n"
             "rtcIntersect1/rtcOccluded1 on the same rays as the anchor, path samples/s, "
             "irradiance\n"
-            "cache hemisphere samples/s and records/s, splat accumulation samples/s, and "
+            "cache hemisphere samples/s and records/s, render-pass, splat and gather samples/s, "
+            "and "
             "photons/s\n"
             "into the irradiance vector grid. Device\n"
             "kernel time from profiling events; kernels are built and warmed up first.",

@@ -442,7 +442,8 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
 
     // 1. G-buffer.
     auto start = SteadyClock::now();
-    Buffer<shared::GBufferSample> gbuffer(context_, samples, "ic_gbuffer");
+    gbuffer_ = Buffer<shared::GBufferSample>(context_, samples, "ic_gbuffer");
+    const Buffer<shared::GBufferSample>& gbuffer = gbuffer_;
     context_.launch(gbuffer_kernel_, samples, params, camera, scene, gbuffer);
     context_.finish();
     stats_.gbuffer_seconds = seconds_since(start);

@@ -137,6 +137,10 @@ class IrradianceCache : private FrameBound {
     std::vector<shared::float4> splat(const RecordStore& store, const shared::CameraParams& camera,
                                       int spp, const std::vector<shared::GBufferSample>& samples);
 
+    // The camera samples (G-buffer, entry pixel * spp + s) of the last render(), and its camera.
+    std::vector<shared::GBufferSample> camera_samples() const { return gbuffer_.download(); }
+    const shared::CameraParams& camera() const { return camera_; }
+
     // The records of cache level `level` (0: the one the camera samples read) after render():
     // irradiance payloads (irradiance_records.h).
     const RecordStore& store(int level = 0) const { return stores_.at(level); }
@@ -185,6 +189,7 @@ class IrradianceCache : private FrameBound {
     int height_ = 0;
     int camera_spp_ = 1;
     shared::CameraParams camera_{};  // of the image render() makes (splatting)
+    Buffer<shared::GBufferSample> gbuffer_;  // its camera samples
     uint32_t first_index_ = 0;       // stream offset of first-level records (compute_records)
     std::vector<RecordStore> stores_;
     IrradianceCacheStats stats_;
