@@ -27,8 +27,7 @@ RC_FUNC void rc_ic_store_cell(__global float4* cells, __global uint* counters, u
 // the record's level: its hit's own emission is direct light (left to next-event estimation at
 // the shading point) unless the tests ask for it. counters[0] counts the rays traced.
 __kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
-                              __global const Record* records,
-                              __global const float4* origins,
+                              __global const Record* records, __global const float4* origins,
                               RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
                               __global uint* counters) {
     const uint i = begin + (uint)get_global_id(0);

@@ -9,10 +9,10 @@
 typedef RecordCache RadianceSource;
 
 // As host/methods/irradiance_cache/record_level_source.h binds them.
-#define RC_RADIANCE_SOURCE_PARAMETERS                                                        \
-    RecordGrid level_grid, RC_GLOBAL const int *level_cell_start,                            \
-        RC_GLOBAL const int *level_cell_records, RC_GLOBAL const Record *level_records,      \
-        RC_GLOBAL const IrradiancePayload *level_payloads, float level_accuracy,             \
+#define RC_RADIANCE_SOURCE_PARAMETERS                                                   \
+    RecordGrid level_grid, RC_GLOBAL const int *level_cell_start,                       \
+        RC_GLOBAL const int *level_cell_records, RC_GLOBAL const Record *level_records, \
+        RC_GLOBAL const IrradiancePayload *level_payloads, float level_accuracy,        \
         float level_max_weight,
 #define RC_RADIANCE_SOURCE_DATA()                                                        \
     {                                                                                    \
@@ -20,8 +20,8 @@ typedef RecordCache RadianceSource;
             level_accuracy, level_max_weight                                             \
     }
 
-RC_FUNC SourceSample rc_source_radiance(const SceneData* scene, const RadianceSource* source,
-                                        Ray ray, RngStream* rng, bool count_emission, int bounces,
+RC_FUNC SourceSample rc_source_radiance(const SceneData *scene, const RadianceSource *source,
+                                        Ray ray, RngStream *rng, bool count_emission, int bounces,
                                         int max_depth, int rr_depth) {
     const CachedRadiance c = rc_ic_cached_radiance(scene, source, 0, ray, rng, count_emission,
                                                    bounces, max_depth, rr_depth);

@@ -237,6 +237,21 @@ RC_FUNC float4 rc_ic_weighted_sum(RC_GLOBAL const int* list, int begin, int end,
     return sum;
 }
 
+// Whether any record of list[begin .. end) covers (p, n) with a positive weight: the support of
+// the weighted sum (placement's test; it stops at the first).
+RC_FUNC bool rc_ic_any_weight(RC_GLOBAL const int* list, int begin, int end,
+                              RC_GLOBAL const Record* records,
+                              RC_GLOBAL const IrradiancePayload* payloads, float3 p, float3 n,
+                              float accuracy, float max_weight) {
+    for (int i = begin; i < end; ++i) {
+        if (rc_ic_weight(records + list[i], payloads + list[i], p, n, accuracy, max_weight) >
+            0.0f) {
+            return true;
+        }
+    }
+    return false;
+}
+
 // The gather: the weighted sum at (p, n) over the records the world-space grid lists in p's
 // cell (every record whose influence sphere touches the cell, in record order).
 RC_FUNC float4 rc_ic_gather(const RecordGrid* grid, RC_GLOBAL const int* cell_start,

@@ -70,9 +70,9 @@ typedef struct RecordCache {
 // `bounces`: the bounces the ray's path made before (for the depth limit). `splat`: the hit's
 // entry of the splat buffer (sum w E', sum w) for a camera sample, or 0: gathered from the cache.
 RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const RecordCache* cache,
-                                             RC_GLOBAL const float4* splat, Ray ray,
-                                             RngStream* rng, bool count_emission, int bounces,
-                                             int max_depth, int rr_depth) {
+                                             RC_GLOBAL const float4* splat, Ray ray, RngStream* rng,
+                                             bool count_emission, int bounces, int max_depth,
+                                             int rr_depth) {
     CachedRadiance c;
     SurfacePoint sp;
     SurfaceMaterial material;

@@ -23,19 +23,23 @@ RC_FUNC uint rc_ic_candidate(const IcParams* params, uint q) {
                        : (y * (uint)params->width + x) * (uint)params->camera_spp + q % per_pixel;
 }
 
-// The splat buffer's entry of camera sample i (G-buffer entry i of an image of params->width
-// pixels a row, params->camera_spp samples a pixel) at (p, n): the weighted sum over the records
+// The screen tile of camera sample i (G-buffer entry i of an image of params->width pixels a
+// row, params->camera_spp samples a pixel).
+RC_FUNC uint rc_ic_sample_tile(const IcParams* params, const SplatTileGrid* tiles, uint i) {
+    const uint pixel = i / (uint)params->camera_spp;
+    const uint x = pixel % (uint)params->width;
+    const uint y = pixel / (uint)params->width;
+    return (y / (uint)tiles->tile_size) * (uint)tiles->tiles_x + x / (uint)tiles->tile_size;
+}
+
+// The splat buffer's entry of camera sample i at (p, n): the weighted sum over the records
 // splatted into its pixel's tile.
 RC_FUNC float4 rc_ic_splat_sum(const IcParams* params, const SplatTileGrid* tiles,
                                RC_GLOBAL const int* tile_start, RC_GLOBAL const int* tile_records,
                                RC_GLOBAL const Record* records,
                                RC_GLOBAL const IrradiancePayload* payloads, uint i, float3 p,
                                float3 n) {
-    const uint pixel = i / (uint)params->camera_spp;
-    const uint x = pixel % (uint)params->width;
-    const uint y = pixel / (uint)params->width;
-    const uint tile =
-        (y / (uint)tiles->tile_size) * (uint)tiles->tiles_x + x / (uint)tiles->tile_size;
+    const uint tile = rc_ic_sample_tile(params, tiles, i);
     return rc_ic_weighted_sum(tile_records, tile_start[tile], tile_start[tile + 1], records,
                               payloads, p, n, params->accuracy, params->max_weight);
 }

@@ -137,8 +137,10 @@ IrradianceCache::IrradianceCache(const FrameScene& frame)
           frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_reduce")),
       gather_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gather")),
       splat_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_splat")),
-      uncovered_kernel_(
-          frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_uncovered")),
+      uncovered_splat_kernel_(
+          frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_uncovered_splat")),
+      uncovered_gather_kernel_(
+          frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_uncovered_gather")),
       select_kernel_(
           frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer_select")),
       shade_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_shade")) {}
@@ -308,11 +310,19 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
         {
             // Level 0's candidates are camera samples: splatted; deeper levels' are hemisphere
             // hits: gathered.
-            const Buffer<shared::float4> sums = weighted_sums(
-                stores_[level], samples, params, candidates, level == 0 ? &camera_ : nullptr);
             uncovered_count.fill_zero();
-            context_.launch(uncovered_kernel_, candidates, params, samples, sums, uncovered_buffer,
-                            uncovered_count);
+            if (level == 0) {
+                const DeviceSplat splat(context_, stores_[level], camera_);
+                const DeviceRecords records(context_, stores_[level], false);
+                context_.launch(uncovered_splat_kernel_, candidates, params, splat.tiles,
+                                splat.tile_start, splat.tile_records, records.records,
+                                records.payloads, samples, uncovered_buffer, uncovered_count);
+            } else {
+                const DeviceRecords records(context_, stores_[level]);
+                context_.launch(uncovered_gather_kernel_, candidates, params, records.grid,
+                                records.cell_start, records.cell_records, records.records,
+                                records.payloads, samples, uncovered_buffer, uncovered_count);
+            }
             const size_t count = uncovered_count.download()[0];
             if (count > 0) {
                 std::vector<unsigned> indices(count);

@@ -179,7 +179,8 @@ class IrradianceCache : private FrameBound {
     Kernel reduce_kernel_;
     Kernel gather_kernel_;
     Kernel splat_kernel_;
-    Kernel uncovered_kernel_;
+    Kernel uncovered_splat_kernel_;
+    Kernel uncovered_gather_kernel_;
     Kernel select_kernel_;
     Kernel shade_kernel_;
     std::map<std::string, Kernel> cells_kernels_;  // by build options
@@ -188,9 +189,9 @@ class IrradianceCache : private FrameBound {
     int width_ = 0;  // of the image render() makes
     int height_ = 0;
     int camera_spp_ = 1;
-    shared::CameraParams camera_{};  // of the image render() makes (splatting)
+    shared::CameraParams camera_{};          // of the image render() makes (splatting)
     Buffer<shared::GBufferSample> gbuffer_;  // its camera samples
-    uint32_t first_index_ = 0;       // stream offset of first-level records (compute_records)
+    uint32_t first_index_ = 0;  // stream offset of first-level records (compute_records)
     std::vector<RecordStore> stores_;
     IrradianceCacheStats stats_;
 };
