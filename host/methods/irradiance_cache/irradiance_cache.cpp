@@ -402,11 +402,10 @@ std::vector<shared::float4> IrradianceCache::splat(
     return weighted_sums(store, buffer, params, samples.size(), &camera).download();
 }
 
-Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceCacheStats* stats) {
-    const int width = options.width > 0 ? options.width : scene_.camera.width;
-    const int height = options.height > 0 ? options.height : scene_.camera.height;
-    const size_t pixels = static_cast<size_t>(width) * height;
-    const size_t samples = pixels * static_cast<size_t>(options.spp);
+namespace {
+
+// Error (exit status 2) for options render() cannot honour; `samples` camera samples in all.
+void check_options(const IrradianceCacheOptions& options, size_t samples) {
     if (options.spp < 1) {
         throw Error("irradiance caching needs at least one camera sample per pixel", kExitUsage);
     }
@@ -430,6 +429,9 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
         throw Error("irradiance caching: width x height x spp exceeds 2^32 camera samples",
                     kExitUsage);
     }
+}
+
+RecordSampling sampling_of(const IrradianceCacheOptions& options) {
     RecordSampling sampling = strata_for(options.rays);
     sampling.max_depth = options.max_depth;
     sampling.rr_depth = options.rr_depth;
@@ -439,31 +441,12 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     sampling.accuracy = options.accuracy;
     sampling.min_spacing = options.min_spacing;
     sampling.max_spacing = options.max_spacing;
-    reset(sampling);
-    width_ = width;
-    height_ = height;
-    camera_spp_ = options.spp;
+    return sampling;
+}
 
-    const shared::CameraParams camera = camera_params(scene_.camera, width, height);
-    camera_ = camera;
-    const SceneArguments scene(bvh_, device_scene_);
-    shared::IcParams params = level_params(0);
-    params.draw_records = options.records_overlay ? 1 : 0;
+}  // namespace
 
-    // 1. G-buffer.
-    auto start = SteadyClock::now();
-    gbuffer_ = Buffer<shared::GBufferSample>(context_, samples, "ic_gbuffer");
-    const Buffer<shared::GBufferSample>& gbuffer = gbuffer_;
-    context_.launch(gbuffer_kernel_, samples, params, camera, scene, gbuffer);
-    context_.finish();
-    stats_.gbuffer_seconds = seconds_since(start);
-
-    // 2.-4. Placement, coarse to fine, with record computation and insertion. Candidates: the
-    // first camera sample of every stride-th pixel of every stride-th row; at stride 1 every
-    // camera sample. Coarser strides take one pass. At stride 1 passes repeat until every sample
-    // is covered: neighbor clamping may shrink records placed earlier and uncover samples that
-    // were covered, so every pass checks all candidates again. (Indirect light needs two
-    // bounces; below that the cache is never read.)
+void IrradianceCache::place_records(const IrradianceCacheOptions& options) {
     if (!options.cache_in.empty()) {
         std::vector<RecordStore> loaded =
             read_cache_file(options.cache_in, irradiance_cache_key(scene_, options.accuracy));
@@ -472,12 +455,17 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
             stores_[level] = std::move(loaded[level]);
         }
     }
+    // Candidates: the first camera sample of every stride-th pixel of every stride-th row; at
+    // stride 1 every camera sample. Coarser strides take one pass. At stride 1 passes repeat
+    // until every sample is covered: neighbor clamping may shrink records placed earlier and
+    // uncover samples that were covered, so every pass checks all candidates again. (Indirect
+    // light needs two bounces; below that the cache is never read.)
     if (options.max_depth >= 2) {
         for (int stride : {16, 8, 4, 2, 1}) {
-            const int columns = (width + stride - 1) / stride;
-            const int rows = (height + stride - 1) / stride;
+            const int columns = (width_ + stride - 1) / stride;
+            const int rows = (height_ + stride - 1) / stride;
             const int per_pixel = stride == 1 ? options.spp : 1;
-            cover(0, gbuffer, {stride, per_pixel, columns},
+            cover(0, gbuffer_, {stride, per_pixel, columns},
                   static_cast<size_t>(columns) * rows * per_pixel, stride == 1);
         }
     }
@@ -489,28 +477,59 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
         write_cache_file(options.cache_out, irradiance_cache_key(scene_, options.accuracy),
                          stores_);
     }
+}
 
-    // 5. Splatting every record over every camera sample (the splat buffer), then shading. The
-    // world-space grid of the first level is built only for the records overlay.
-    start = SteadyClock::now();
+std::vector<shared::float4> IrradianceCache::shade(const shared::IcParams& params,
+                                                   bool records_overlay) {
+    const size_t pixels = static_cast<size_t>(width_) * height_;
+    const size_t samples = pixels * static_cast<size_t>(camera_spp_);
+    // The splat buffer: every record splatted over every camera sample.
+    auto start = SteadyClock::now();
     const Buffer<shared::float4> splat = weighted_sums(
-        stores_[0], gbuffer, candidate_params(0, {1, options.spp, width}), samples, &camera_);
+        stores_[0], gbuffer_, candidate_params(0, {1, camera_spp_, width_}), samples, &camera_);
     context_.finish();
     stats_.splatting_seconds = seconds_since(start);
+    // The render pass; the world-space grid of the first level only for the records overlay.
     start = SteadyClock::now();
-    const DeviceRecords records(context_, stores_[0], options.records_overlay);
+    const DeviceRecords records(context_, stores_[0], records_overlay);
     stats_.cache_bytes = records.bytes() + splat.bytes();
     Buffer<shared::float4> film(context_, pixels * RC_CACHED_FILM_SLOTS, "ic_film");
     Buffer<unsigned> counters(context_, 3, "ic_counters");
     counters.upload({0u, 0u, 0xffffffffu});
-    context_.launch(shade_kernel_, pixels, params, camera, scene, records.grid, records.cell_start,
-                    records.cell_records, records.records, records.payloads, splat, film, counters);
-    const std::vector<shared::float4> sums = film.download();
+    context_.launch(shade_kernel_, pixels, params, camera_, SceneArguments(bvh_, device_scene_),
+                    records.grid, records.cell_start, records.cell_records, records.records,
+                    records.payloads, splat, film, counters);
+    std::vector<shared::float4> sums = film.download();
     const std::vector<unsigned> c = counters.download();
     stats_.shading_rays = c[0];
     stats_.nonfinite_samples = c[1];
     stats_.first_nonfinite_pixel = c[1] > 0 ? static_cast<int64_t>(c[2]) : -1;
     stats_.shading_seconds = seconds_since(start);
+    return sums;
+}
+
+Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceCacheStats* stats) {
+    width_ = options.width > 0 ? options.width : scene_.camera.width;
+    height_ = options.height > 0 ? options.height : scene_.camera.height;
+    const size_t samples = static_cast<size_t>(width_) * height_ * std::max(options.spp, 0);
+    check_options(options, samples);
+    reset(sampling_of(options));
+    camera_spp_ = options.spp;
+    camera_ = camera_params(scene_.camera, width_, height_);
+    shared::IcParams params = level_params(0);
+    params.draw_records = options.records_overlay ? 1 : 0;
+
+    // 1. G-buffer.
+    const auto start = SteadyClock::now();
+    gbuffer_ = Buffer<shared::GBufferSample>(context_, samples, "ic_gbuffer");
+    context_.launch(gbuffer_kernel_, samples, params, camera_, SceneArguments(bvh_, device_scene_),
+                    gbuffer_);
+    context_.finish();
+    stats_.gbuffer_seconds = seconds_since(start);
+    // 2.-4. Placement, coarse to fine, with record computation and insertion.
+    place_records(options);
+    // 5.-6. Splatting and the render pass.
+    const std::vector<shared::float4> sums = shade(params, options.records_overlay);
 
     std::vector<FilmLayer> layers = {
         {"beauty", RC_CACHED_FILM_BEAUTY},     {"direct", RC_CACHED_FILM_DIRECT},
@@ -519,7 +538,7 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     if (options.records_overlay) {
         layers.push_back({"records", RC_CACHED_FILM_LAYER});
     }
-    Image image = unpack_film(sums, RC_CACHED_FILM_SLOTS, width, height, layers);
+    Image image = unpack_film(sums, RC_CACHED_FILM_SLOTS, width_, height_, layers);
     if (stats != nullptr) {
         *stats = stats_;
     }

@@ -170,6 +170,11 @@ class IrradianceCache : private FrameBound {
     // Records of `level` at `sites`, numbered from the level's current size.
     std::vector<ComputedRecord> compute_level(int level, const std::vector<RecordSite>& sites);
     void reset(const RecordSampling& sampling);
+    // Placement for the G-buffer of render(): loaded records, then coarse-to-fine passes (with
+    // record computation and insertion); saves the cache when asked.
+    void place_records(const IrradianceCacheOptions& options);
+    // The splat buffer and the render pass over the first level; the film's sums.
+    std::vector<shared::float4> shade(const shared::IcParams& params, bool records_overlay);
     shared::IcParams level_params(int level) const;
     // ic_record_cells built for `source` (one program per source kind).
     Kernel& cells_kernel(const RadianceSource& source);
