@@ -133,22 +133,28 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
     // (record grid built on the host, ic_gather), each timed on the wall clock, host work and
     // uploads included.
     const std::vector<shared::GBufferSample> samples = cache.camera_samples();
-    const auto interpolation_rate = [&](bool splat) {
-        context.finish();
-        const auto start = SteadyClock::now();
-        for (int r = 0; r < repeats; ++r) {
-            if (splat) {
+    // Alternating rounds, so both meet the same machine load; the median round of each.
+    std::vector<double> splat_rounds;
+    std::vector<double> gather_rounds;
+    for (int r = 0; r < 2 * repeats + 1; ++r) {
+        for (std::vector<double>* rounds : {&splat_rounds, &gather_rounds}) {
+            context.finish();
+            const auto start = SteadyClock::now();
+            if (rounds == &splat_rounds) {
                 cache.splat(cache.store(), cache.camera(), ic.spp, samples);
             } else {
                 cache.gather(cache.store(), samples);
             }
+            rounds->push_back(static_cast<double>(samples.size()) / seconds_since(start) * 1e-6);
         }
-        return static_cast<double>(samples.size()) * repeats / seconds_since(start) * 1e-6;
-    };
-    result.figures.push_back(
-        {"splat_samples_per_second", "IC splat samples/s (M)", interpolation_rate(true), 0.0});
-    result.figures.push_back(
-        {"gather_samples_per_second", "IC gather samples/s (M)", interpolation_rate(false), 0.0});
+    }
+    for (std::vector<double>* rounds : {&splat_rounds, &gather_rounds}) {
+        std::nth_element(rounds->begin(), rounds->begin() + repeats, rounds->end());
+    }
+    result.figures.push_back({"splat_samples_per_second", "IC splat samples/s (M)",
+                              splat_rounds[static_cast<size_t>(repeats)], 0.0});
+    result.figures.push_back({"gather_samples_per_second", "IC gather samples/s (M)",
+                              gather_rounds[static_cast<size_t>(repeats)], 0.0});
 
     // Photon tracing into the irradiance vector grid at its automatic size (a small warm-up
     // first): photons/s, each traced through its bounces and deposited at every face crossing.

@@ -32,6 +32,31 @@ RC_FUNC uint rc_ic_sample_tile(const IcParams* params, const SplatTileGrid* tile
     return (y / (uint)tiles->tile_size) * (uint)tiles->tiles_x + x / (uint)tiles->tile_size;
 }
 
+// The (nearest, farthest) distance from the eye of the served camera samples of tile t.
+RC_FUNC TileDepths rc_ic_tile_depths(const IcParams* params, const CameraParams* camera,
+                                     const SplatTileGrid* tiles,
+                                     RC_GLOBAL const GBufferSample* gbuffer, uint t) {
+    const uint x0 = (t % (uint)tiles->tiles_x) * (uint)tiles->tile_size;
+    const uint y0 = (t / (uint)tiles->tiles_x) * (uint)tiles->tile_size;
+    const uint x1 = min(x0 + (uint)tiles->tile_size, (uint)params->width);
+    const uint y1 = min(y0 + (uint)tiles->tile_size, (uint)params->height);
+    TileDepths depths = {INFINITY, -INFINITY};
+    for (uint y = y0; y < y1; ++y) {
+        for (uint x = x0; x < x1; ++x) {
+            for (uint s = 0; s < (uint)params->camera_spp; ++s) {
+                RC_GLOBAL const GBufferSample* g =
+                    gbuffer + ((size_t)y * (uint)params->width + x) * (uint)params->camera_spp + s;
+                if (g->served != 0) {
+                    const float d = length(g->position.xyz - camera->origin.xyz);
+                    depths.nearest = fmin(depths.nearest, d);
+                    depths.farthest = fmax(depths.farthest, d);
+                }
+            }
+        }
+    }
+    return depths;
+}
+
 // The splat buffer's entry of camera sample i at (p, n): the weighted sum over the records
 // splatted into its pixel's tile.
 RC_FUNC float4 rc_ic_splat_sum(const IcParams* params, const SplatTileGrid* tiles,

@@ -93,6 +93,20 @@ __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global c
     distances[b] = (float4)(e.harmonic_distance, e.min_distance, 0.0f, 0.0f);
 }
 
+// Item t: screen tile t (RC_SPLAT_TILE_SIZE pixels a side, tiles.tiles_x a row) of the camera's
+// image: the nearest and farthest distance from the eye of the camera samples in it the cache
+// serves, (+inf, -inf) when there is none. A record's influence sphere reaches no sample of a
+// tile whose depths it does not overlap: the host leaves it out of that tile's list.
+__kernel void ic_tile_depths(uint begin, uint end, IcParams params, CameraParams camera,
+                             SplatTileGrid tiles, __global const GBufferSample* gbuffer,
+                             __global TileDepths* depths) {
+    const uint t = begin + (uint)get_global_id(0);
+    if (t >= end) {
+        return;
+    }
+    depths[t] = rc_ic_tile_depths(&params, &camera, &tiles, gbuffer, t);
+}
+
 // Item q: candidate q of a placement pass (rc_ic_candidate), camera sample i: appends i to
 // uncovered[] when the cache serves it but no record splatted into its tile covers it, i.e. its
 // splat buffer entry would have no weight (course, "Radiance Cache Splatting", Algorithm 2 step 4;

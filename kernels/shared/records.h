@@ -48,6 +48,9 @@ typedef struct RecordGrid {
     int4 dims;        // xyz: cells along each axis; w: total cells
 } RecordGrid;
 
+// Pixels per side of radiance cache splatting's screen tiles.
+#define RC_SPLAT_TILE_SIZE 8
+
 // Radiance cache splatting's screen tiles (host/methods/irradiance_cache/splat_tiles.h): the
 // image in tiles of tile_size pixels, tile (tx, ty) listing the records whose influence sphere's
 // projection touches it as tile_records[tile_start[t] .. tile_start[t + 1]), t = ty tiles_x + tx.
@@ -57,6 +60,13 @@ typedef struct SplatTileGrid {
     int tiles_y;
     int pad0;
 } SplatTileGrid;
+
+// The nearest and farthest distance from the eye of the camera samples of one splat tile that
+// the cache serves (ic_tile_depths); (+inf, -inf) when there is none.
+typedef struct TileDepths {
+    float nearest;
+    float farthest;
+} TileDepths;
 
 RC_SHARED_END
 
@@ -84,7 +94,10 @@ RC_SHARED_END
     STRUCT(SplatTileGrid)                     \
     FIELD(SplatTileGrid, tile_size)           \
     FIELD(SplatTileGrid, tiles_x)             \
-    FIELD(SplatTileGrid, tiles_y)
+    FIELD(SplatTileGrid, tiles_y)             \
+    STRUCT(TileDepths)                        \
+    FIELD(TileDepths, nearest)                \
+    FIELD(TileDepths, farthest)
 // clang-format on
 
 #ifndef __OPENCL_VERSION__
@@ -93,4 +106,5 @@ static_assert(offsetof(rc::shared::Record, radius) == 32);
 static_assert(sizeof(rc::shared::IrradiancePayload) == 128);
 static_assert(sizeof(rc::shared::RecordGrid) == 48);
 static_assert(sizeof(rc::shared::SplatTileGrid) == 16);
+static_assert(sizeof(rc::shared::TileDepths) == 8);
 #endif

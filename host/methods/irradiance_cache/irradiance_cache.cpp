@@ -29,14 +29,16 @@ constexpr size_t kMaxBatchCells = size_t{1} << 23;  // hemisphere cells per reco
 
 // The device copy of a record store's splat into the tiles of a camera's image (splat_tiles.h).
 struct DeviceSplat {
-    DeviceSplat(Context& context, const RecordStore& store, const shared::CameraParams& camera) {
+    DeviceSplat(Context& context, const RecordStore& store, const shared::CameraParams& camera,
+                const std::vector<shared::TileDepths>* tile_depths) {
         std::vector<glm::vec3> centres;
         std::vector<float> influence;
         for (const shared::Record& record : store.records()) {
             centres.push_back(record_position(record));
             influence.push_back(store.accuracy() * record.radius);
         }
-        const SplatTiles splat = splat_tiles(camera, centres, influence);
+        const SplatTiles splat =
+            splat_tiles(camera, centres, influence, RC_SPLAT_TILE_SIZE, tile_depths);
         tiles = {splat.tile_size, splat.tiles_x, splat.tiles_y, 0};
         tile_start = Buffer<int>(context, splat.tile_start, "ic_tile_start");
         tile_records = Buffer<int>(context, splat.tile_records, "ic_tile_records");
@@ -137,6 +139,8 @@ IrradianceCache::IrradianceCache(const FrameScene& frame)
           frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_reduce")),
       gather_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gather")),
       splat_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_splat")),
+      tile_depths_kernel_(
+          frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_tile_depths")),
       uncovered_splat_kernel_(
           frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_uncovered_splat")),
       uncovered_gather_kernel_(
@@ -280,7 +284,7 @@ Buffer<shared::float4> IrradianceCache::weighted_sums(const RecordStore& store,
                                                       const shared::CameraParams* camera) {
     Buffer<shared::float4> sums(context_, candidates, "ic_sums");
     if (camera != nullptr) {
-        const DeviceSplat splat(context_, store, *camera);
+        const DeviceSplat splat(context_, store, *camera, &tile_depths_);
         const DeviceRecords records(context_, store, false);
         context_.launch(splat_kernel_, candidates, params, splat.tiles, splat.tile_start,
                         splat.tile_records, records.records, records.payloads, samples, sums);
@@ -290,6 +294,18 @@ Buffer<shared::float4> IrradianceCache::weighted_sums(const RecordStore& store,
                         records.cell_records, records.records, records.payloads, samples, sums);
     }
     return sums;
+}
+
+void IrradianceCache::measure_tile_depths(const Buffer<shared::GBufferSample>& samples,
+                                          const shared::IcParams& params,
+                                          const shared::CameraParams& camera) {
+    const shared::SplatTileGrid tiles = {
+        RC_SPLAT_TILE_SIZE, (params.width + RC_SPLAT_TILE_SIZE - 1) / RC_SPLAT_TILE_SIZE,
+        (params.height + RC_SPLAT_TILE_SIZE - 1) / RC_SPLAT_TILE_SIZE, 0};
+    const size_t count = static_cast<size_t>(tiles.tiles_x) * tiles.tiles_y;
+    Buffer<shared::TileDepths> depths(context_, count, "ic_tile_depths");
+    context_.launch(tile_depths_kernel_, count, params, camera, tiles, samples, depths);
+    tile_depths_ = depths.download();
 }
 
 void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samples,
@@ -312,7 +328,7 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
             // hits: gathered.
             uncovered_count.fill_zero();
             if (level == 0) {
-                const DeviceSplat splat(context_, stores_[level], camera_);
+                const DeviceSplat splat(context_, stores_[level], camera_, &tile_depths_);
                 const DeviceRecords records(context_, stores_[level], false);
                 context_.launch(uncovered_splat_kernel_, candidates, params, splat.tiles,
                                 splat.tile_start, splat.tile_records, records.records,
@@ -399,6 +415,7 @@ std::vector<shared::float4> IrradianceCache::splat(
     params.placement_stride = 1;
     params.placement_spp = spp;
     params.placement_columns = camera.resolution.x;
+    measure_tile_depths(buffer, params, camera);
     return weighted_sums(store, buffer, params, samples.size(), &camera).download();
 }
 
@@ -524,6 +541,7 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     gbuffer_ = Buffer<shared::GBufferSample>(context_, samples, "ic_gbuffer");
     context_.launch(gbuffer_kernel_, samples, params, camera_, SceneArguments(bvh_, device_scene_),
                     gbuffer_);
+    measure_tile_depths(gbuffer_, params, camera_);
     context_.finish();
     stats_.gbuffer_seconds = seconds_since(start);
     // 2.-4. Placement, coarse to fine, with record computation and insertion.

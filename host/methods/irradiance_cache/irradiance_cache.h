@@ -154,6 +154,10 @@ class IrradianceCache : private FrameBound {
         int spp = 1;
         int columns = 1;
     };
+    // tile_depths_ of `samples`, camera samples of `camera`'s image (params: width, height,
+    // camera_spp).
+    void measure_tile_depths(const Buffer<shared::GBufferSample>& samples,
+                             const shared::IcParams& params, const shared::CameraParams& camera);
     // The kernels' parameters of `level` with the candidates of a placement pass.
     shared::IcParams candidate_params(int level, Candidates placement) const;
     // (sum w E', sum w) of `store`'s records at the candidates `params` names (placement_*) of
@@ -184,6 +188,7 @@ class IrradianceCache : private FrameBound {
     Kernel reduce_kernel_;
     Kernel gather_kernel_;
     Kernel splat_kernel_;
+    Kernel tile_depths_kernel_;
     Kernel uncovered_splat_kernel_;
     Kernel uncovered_gather_kernel_;
     Kernel select_kernel_;
@@ -194,8 +199,9 @@ class IrradianceCache : private FrameBound {
     int width_ = 0;  // of the image render() makes
     int height_ = 0;
     int camera_spp_ = 1;
-    shared::CameraParams camera_{};          // of the image render() makes (splatting)
-    Buffer<shared::GBufferSample> gbuffer_;  // its camera samples
+    shared::CameraParams camera_{};                // of the image render() makes (splatting)
+    Buffer<shared::GBufferSample> gbuffer_;        // its camera samples
+    std::vector<shared::TileDepths> tile_depths_;  // their depths per splat tile
     uint32_t first_index_ = 0;  // stream offset of first-level records (compute_records)
     std::vector<RecordStore> stores_;
     IrradianceCacheStats stats_;

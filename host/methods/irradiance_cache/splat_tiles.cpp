@@ -66,7 +66,8 @@ PixelRect project_sphere(const shared::CameraParams& camera, glm::vec3 centre, f
 }
 
 SplatTiles splat_tiles(const shared::CameraParams& camera, const std::vector<glm::vec3>& centres,
-                       const std::vector<float>& radii, int tile_size) {
+                       const std::vector<float>& radii, int tile_size,
+                       const std::vector<shared::TileDepths>* tile_depths) {
     SplatTiles tiles;
     tiles.tile_size = tile_size;
     tiles.tiles_x = (camera.resolution.x + tile_size - 1) / tile_size;
@@ -74,18 +75,31 @@ SplatTiles splat_tiles(const shared::CameraParams& camera, const std::vector<glm
     const size_t count = static_cast<size_t>(tiles.tiles_x) * tiles.tiles_y;
     std::vector<PixelRect> rects(centres.size());
     std::vector<int> per_tile(count, 0);
-    const auto for_each_tile = [&](const PixelRect& rect, auto&& visit) {
+    const glm::vec3 eye = vec3_of(camera.origin);
+    std::vector<float> depth(centres.size());
+    // Tiles of record k's rectangle whose sample depths its sphere overlaps: a sample p it
+    // reaches has | |p - eye| - |c - eye| | <= |p - c| < r (with a margin for the rounding of
+    // the two distances, computed on host and device).
+    const auto for_each_tile = [&](size_t k, auto&& visit) {
+        const PixelRect& rect = rects[k];
+        const float margin = 1e-4f * (depth[k] + radii[k]);
         for (int ty = rect.y0 / tile_size; ty <= rect.y1 / tile_size; ++ty) {
             for (int tx = rect.x0 / tile_size; tx <= rect.x1 / tile_size; ++tx) {
-                visit(static_cast<size_t>(ty) * tiles.tiles_x + tx);
+                const size_t tile = static_cast<size_t>(ty) * tiles.tiles_x + tx;
+                if (tile_depths == nullptr ||
+                    (depth[k] - radii[k] - margin <= (*tile_depths)[tile].farthest &&
+                     depth[k] + radii[k] + margin >= (*tile_depths)[tile].nearest)) {
+                    visit(tile);
+                }
             }
         }
     };
     // Counting sort by tile, records in order: count, prefix sums, fill.
     for (size_t k = 0; k < centres.size(); ++k) {
         rects[k] = project_sphere(camera, centres[k], radii[k]);
+        depth[k] = glm::distance(centres[k], eye);
         if (!rects[k].empty()) {
-            for_each_tile(rects[k], [&](size_t tile) { ++per_tile[tile]; });
+            for_each_tile(k, [&](size_t tile) { ++per_tile[tile]; });
         }
     }
     tiles.tile_start.assign(count + 1, 0);
@@ -96,7 +110,7 @@ SplatTiles splat_tiles(const shared::CameraParams& camera, const std::vector<glm
     std::vector<int> next(tiles.tile_start.begin(), tiles.tile_start.end() - 1);
     for (size_t k = 0; k < centres.size(); ++k) {
         if (!rects[k].empty()) {
-            for_each_tile(rects[k], [&](size_t tile) {
+            for_each_tile(k, [&](size_t tile) {
                 tiles.tile_records[static_cast<size_t>(next[tile]++)] = static_cast<int>(k);
             });
         }

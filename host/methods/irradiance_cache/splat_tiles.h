@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
+#include "shared/records.h"
 #include "shared/types.h"
 
 namespace rc {
@@ -38,8 +39,12 @@ struct SplatTiles {
 };
 
 // Splats the influence spheres (centres[k], radii[k]) of records 0 .. n-1 into tiles of
-// `tile_size` pixels of the camera's image.
+// `tile_size` pixels of the camera's image. With `tile_depths` (per tile, the nearest and
+// farthest distance from the eye of the samples it holds, as ic_tile_depths gives them) a record
+// is left out of the tiles whose depths its sphere does not overlap (a depth test: no sample
+// there lies within its radius).
 SplatTiles splat_tiles(const shared::CameraParams& camera, const std::vector<glm::vec3>& centres,
-                       const std::vector<float>& radii, int tile_size = 8);
+                       const std::vector<float>& radii, int tile_size = RC_SPLAT_TILE_SIZE,
+                       const std::vector<shared::TileDepths>* tile_depths = nullptr);
 
 }  // namespace rc
