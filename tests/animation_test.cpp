@@ -125,7 +125,7 @@ TEST(Animation, CameraAndEmitterTracks) {
     expect_near(scene.camera.position, {4.0f, 0.0f, -5.0f}, 1e-5f);
     expect_near(scene.camera.look_at, {4.0f, 0.0f, 0.0f}, 1e-5f);
     const shared::Light& bulb = scene.lights.lights.back();
-    ASSERT_EQ(bulb.info.x, RC_LIGHT_POINT);
+    ASSERT_EQ(bulb.kind, RC_LIGHT_POINT);
     // Rotated by 45 degrees about z: (0, 1, 0) -> (-sin 45, cos 45, 0).
     EXPECT_NEAR(bulb.position.x, -std::sqrt(0.5f), 1e-5f);
     EXPECT_NEAR(bulb.position.y, std::sqrt(0.5f), 1e-5f);

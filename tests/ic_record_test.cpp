@@ -130,7 +130,7 @@ struct AnalyticEmitter {
 AnalyticEmitter emitter_of(const Scene& scene) {
     AnalyticEmitter emitter;
     for (size_t i = 0; i < scene.mesh.triangles.size(); ++i) {
-        if (scene.shading[i].uvs.w < 0) {
+        if (scene.shading[i].light < 0) {
             continue;
         }
         const glm::uvec3 t = scene.mesh.triangles[i];

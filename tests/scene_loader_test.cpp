@@ -249,17 +249,17 @@ TEST(SceneLoader, MtlMaterialsMapToDiffusePhongAndAreaLights) {
     const Scene scene = load_scene(
         write(dir / "scene.json", scene_with(kCamera, R"([{"type": "obj", "file": "m.obj"}])")));
     ASSERT_EQ(scene.mesh.triangle_count(), 3u);
-    const auto material_of = [&](size_t t) { return scene.materials[scene.shading[t].normals.w]; };
+    const auto material_of = [&](size_t t) { return scene.materials[scene.shading[t].material]; };
     EXPECT_EQ(material_of(0).kind, MaterialKind::kDiffuse);
     EXPECT_EQ(material_of(0).diffuse, glm::vec3(0.5f, 0.4f, 0.3f));
     EXPECT_EQ(material_of(1).kind, MaterialKind::kPhong);
     EXPECT_EQ(material_of(1).specular, glm::vec3(0.5f));
     EXPECT_EQ(material_of(1).exponent, 40.0f);
     ASSERT_EQ(scene.lights.lights.size(), 1u);
-    EXPECT_EQ(scene.shading[2].uvs.w, 0);  // the Ke triangle is area light 0
-    EXPECT_EQ(scene.shading[0].uvs.w, -1);
+    EXPECT_EQ(scene.shading[2].light, 0);  // the Ke triangle is area light 0
+    EXPECT_EQ(scene.shading[0].light, -1);
     EXPECT_EQ(scene.lights.lights[0].radiance.x, 3.0f);
-    EXPECT_NEAR(scene.lights.lights[0].shape.x, 0.5f, 1e-6f);  // its area
+    EXPECT_NEAR(scene.lights.lights[0].area, 0.5f, 1e-6f);  // its area
 }
 
 TEST(SceneLoader, BuiltInShapesAndTransforms) {
@@ -291,7 +291,7 @@ TEST(SceneLoader, BuiltInShapesAndTransforms) {
     for (size_t i = s.first_triangle; i < s.first_triangle + s.triangle_count; ++i) {
         const glm::vec3 p = scene.mesh.positions[scene.mesh.triangles[i].x];
         ASSERT_NEAR(glm::length(p - glm::vec3(0, 0, 9)), 2.0f, 1e-5f);
-        ASSERT_GE(scene.shading[i].normals.x, 0);
+        ASSERT_GE(scene.shading[i].normal0, 0);
     }
 }
 

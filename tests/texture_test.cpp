@@ -85,7 +85,9 @@ TEST(Texture, DeviceBilinearLookupMatchesTheHost) {
     const Buffer<glm::vec2> uv_buffer(context, uvs, "uvs");
     Buffer<shared::float4> out(context, uvs.size(), "lookups");
     Kernel kernel = context.kernel("texture_probe.cl", "texture_lookup_probe");
-    const shared::TextureInfo info{{0, texture.width, texture.height, 0}};
+    shared::TextureInfo info{};
+    info.width = texture.width;
+    info.height = texture.height;
     context.launch(kernel, uvs.size(), info, texel_buffer, uv_buffer, out);
     const std::vector<shared::float4> device = out.download();
     for (size_t i = 0; i < uvs.size(); ++i) {

@@ -26,7 +26,11 @@ std::vector<shared::TextureInfo> texture_infos_of(const Scene& scene) {
     std::vector<shared::TextureInfo> infos;
     int first = 0;
     for (const Texture& t : scene.textures) {
-        infos.push_back({{first, t.width, t.height, 0}});
+        shared::TextureInfo info{};
+        info.first_texel = first;
+        info.width = t.width;
+        info.height = t.height;
+        infos.push_back(info);
         first += t.width * t.height;
     }
     return infos;

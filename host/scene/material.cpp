@@ -21,18 +21,21 @@ shared::Material to_device(const Material& material) {
     m.diffuse = {material.diffuse.r, material.diffuse.g, material.diffuse.b, 0.0f};
     const bool specular = material.kind != MaterialKind::kDiffuse;
     const glm::vec3 ks = specular ? material.specular : glm::vec3(0.0f);
-    m.specular = {ks.r, ks.g, ks.b, material.exponent};
+    m.specular = {ks.r, ks.g, ks.b, 0.0f};
+    m.exponent = material.exponent;
     const float kd_weight = luminance(material.diffuse);
     const float ks_weight = luminance(ks);
     float diffuse_probability = 1.0f;
     if (specular && ks_weight > 0.0f) {
         diffuse_probability = kd_weight / (kd_weight + ks_weight);
     }
-    m.lobe = {material.alpha_x, material.alpha_y, diffuse_probability, 0.0f};
-    const int kind = material.kind == MaterialKind::kDiffuse ? RC_MATERIAL_DIFFUSE
-                     : material.kind == MaterialKind::kPhong ? RC_MATERIAL_PHONG
-                                                             : RC_MATERIAL_WARD;
-    m.kind = {kind, material.diffuse_texture, 0, 0};
+    m.alpha_x = material.alpha_x;
+    m.alpha_y = material.alpha_y;
+    m.diffuse_probability = diffuse_probability;
+    m.model = material.kind == MaterialKind::kDiffuse ? RC_MATERIAL_DIFFUSE
+              : material.kind == MaterialKind::kPhong ? RC_MATERIAL_PHONG
+                                                      : RC_MATERIAL_WARD;
+    m.texture = material.diffuse_texture;
     return m;
 }
 

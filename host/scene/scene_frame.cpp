@@ -52,7 +52,7 @@ ShapeLights open_area_lights(const Shape& shape, LightSet& lights, std::vector<f
         }
         shared::Light light{};
         light.radiance = float4_of(radiance);
-        light.info = {RC_LIGHT_AREA, 0, 0, 0};
+        light.kind = RC_LIGHT_AREA;
         result.light_of_slot[slot] = static_cast<int>(lights.lights.size());
         lights.lights.push_back(light);
         power.push_back(0.0f);
@@ -96,17 +96,19 @@ void add_shape_triangles(Scene& scene, size_t s, ShapeLights& shape_lights) {
         const size_t slot = material_slot(shape, t);
         const int light = shape_lights.light_of_slot[slot];
         shared::TriangleShading sh{};
-        sh.normals = {-1, -1, -1, shape.materials[slot]};
-        sh.uvs = {-1, -1, -1, light};
+        sh.normal0 = sh.normal1 = sh.normal2 = -1;
+        sh.material = shape.materials[slot];
+        sh.uv0 = sh.uv1 = sh.uv2 = -1;
+        sh.light = light;
         if (normal_base >= 0) {
-            sh.normals.x = normal_base + static_cast<int>(local.x);
-            sh.normals.y = normal_base + static_cast<int>(local.y);
-            sh.normals.z = normal_base + static_cast<int>(local.z);
+            sh.normal0 = normal_base + static_cast<int>(local.x);
+            sh.normal1 = normal_base + static_cast<int>(local.y);
+            sh.normal2 = normal_base + static_cast<int>(local.z);
         }
         if (uv_base >= 0) {
-            sh.uvs.x = uv_base + static_cast<int>(local.x);
-            sh.uvs.y = uv_base + static_cast<int>(local.y);
-            sh.uvs.z = uv_base + static_cast<int>(local.z);
+            sh.uv0 = uv_base + static_cast<int>(local.x);
+            sh.uv1 = uv_base + static_cast<int>(local.y);
+            sh.uv2 = uv_base + static_cast<int>(local.z);
         }
         scene.shading.push_back(sh);
         scene.triangle_shape.push_back(static_cast<unsigned>(s));
@@ -139,9 +141,9 @@ void close_area_lights(const Shape& shape, const ShapeLights& shape_lights, Ligh
             throw Error("shape '" + shape.name + "': emitter has zero area");
         }
         shared::Light& light = lights.lights[l];
-        light.info.y = static_cast<int>(lights.triangles.size());
-        light.info.z = static_cast<int>(triangles.size());
-        light.shape = {static_cast<float>(total), 0.0f, 0.0f, 0.0f};
+        light.first_triangle = static_cast<int>(lights.triangles.size());
+        light.triangle_count = static_cast<int>(triangles.size());
+        light.area = static_cast<float>(total);
         double running = 0.0;
         for (size_t i = 0; i < triangles.size(); ++i) {
             running += areas[i];
@@ -170,15 +172,15 @@ shared::Light emitter_light(const Emitter& emitter, const glm::mat4& motion, flo
                             float* power) {
     shared::Light light{};
     if (emitter.kind == EmitterKind::kConstant) {
-        light.info = {RC_LIGHT_CONSTANT, 0, 0, 0};
+        light.kind = RC_LIGHT_CONSTANT;
         light.radiance = float4_of(emitter.radiance);
         *power = kPi * kPi * radius * radius * luminance(emitter.radiance);
         return light;
     }
     const glm::vec3 position = transform_point(motion, emitter.position);
-    light.position = float4_of(position, 1.0f);
+    light.position = float4_of(position);
     if (emitter.kind == EmitterKind::kPoint) {
-        light.info = {RC_LIGHT_POINT, 0, 0, 0};
+        light.kind = RC_LIGHT_POINT;
         light.radiance = float4_of(emitter.intensity);
         *power = 4.0f * kPi * luminance(emitter.intensity);
         return light;
@@ -186,10 +188,13 @@ shared::Light emitter_light(const Emitter& emitter, const glm::mat4& motion, flo
     const glm::vec3 axis = glm::normalize(transform_point(motion, emitter.look_at) - position);
     const float cutoff = glm::radians(emitter.cutoff_angle);
     const float beam = glm::radians(emitter.beam_width);
-    light.info = {RC_LIGHT_SPOT, 0, 0, 0};
-    light.axis = float4_of(axis, std::cos(cutoff));
-    light.radiance = float4_of(emitter.intensity, std::cos(beam));
-    light.shape = {0.0f, cutoff, beam, 0.0f};
+    light.kind = RC_LIGHT_SPOT;
+    light.axis = float4_of(axis);
+    light.radiance = float4_of(emitter.intensity);
+    light.cutoff = cutoff;
+    light.beam = beam;
+    light.cos_cutoff = std::cos(cutoff);
+    light.cos_beam = std::cos(beam);
     *power = 2.0f * kPi * (1.0f - std::cos(0.5f * (cutoff + beam))) * luminance(emitter.intensity);
     return light;
 }

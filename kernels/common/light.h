@@ -41,14 +41,14 @@ typedef struct LightSample {
 // Spot light falloff: 1 inside the beam, 0 outside the cutoff, linear in angle between.
 RC_FUNC float rc_spot_falloff(const Light* light, float3 from_light) {
     const float cos_angle = dot(from_light, light->axis.xyz);
-    if (cos_angle >= light->radiance.w) {
+    if (cos_angle >= light->cos_beam) {
         return 1.0f;
     }
-    if (cos_angle <= light->axis.w) {
+    if (cos_angle <= light->cos_cutoff) {
         return 0.0f;
     }
     const float angle = acos(clamp(cos_angle, -1.0f, 1.0f));
-    return (light->shape.y - angle) / (light->shape.y - light->shape.z);
+    return (light->cutoff - angle) / (light->cutoff - light->beam);
 }
 
 // Samples light l (chosen with probability `selection`) from point p.
@@ -62,11 +62,11 @@ RC_FUNC LightSample rc_sample_light(const SceneData* scene, int l, float selecti
     s.radiance = (float3)(0.0f);
     s.direction = (float3)(0.0f, 0.0f, 1.0f);
     s.target = p;
-    const int kind = light.info.x;
+    const int kind = light.kind;
     if (kind == RC_LIGHT_AREA) {
-        const int first = light.info.y;
+        const int first = light.first_triangle;
         const int entry =
-            first + rc_sample_cdf(scene->light_triangle_cdf + first, light.info.z, u1);
+            first + rc_sample_cdf(scene->light_triangle_cdf + first, light.triangle_count, u1);
         const uint primitive = scene->light_triangles[entry];
         RC_GLOBAL const Triangle* triangle =
             scene->triangles + scene->triangle_of_primitive[primitive];
@@ -86,7 +86,7 @@ RC_FUNC LightSample rc_sample_light(const SceneData* scene, int l, float selecti
         if (cos_light <= 0.0f) {
             return s;  // the back of a one-sided emitter
         }
-        s.pdf = selection * distance2 / (light.shape.x * cos_light);
+        s.pdf = selection * distance2 / (light.area * cos_light);
         s.radiance = light.radiance.xyz;
         s.target = rc_offset_ray_origin(q, nl);
     } else if (kind == RC_LIGHT_POINT || kind == RC_LIGHT_SPOT) {
@@ -126,7 +126,7 @@ RC_FUNC float rc_area_light_pdf(const SceneData* scene, int l, float3 p, float3 
         return 0.0f;
     }
     return rc_cdf_probability(scene->light_cdf, l) * distance2 /
-           (scene->lights[l].shape.x * cos_light);
+           (scene->lights[l].area * cos_light);
 }
 
 // Density of light sampling for a direction that leaves the scene (the environment).

@@ -1,7 +1,8 @@
 // Reflection models: evaluation, importance sampling and pdf of every material, in the local
 // shading frame (z = shading normal). All are reflective only: directions below the surface get
 // zero. A material mixes a Lambertian lobe with an optional specular lobe; sampling picks the
-// diffuse lobe with probability Material.lobe.z, so pdfs are the mixture of both lobe pdfs.
+// diffuse lobe with probability Material.diffuse_probability, so pdfs are the mixture of both lobe
+// pdfs.
 #pragma once
 
 #include "common/math.h"
@@ -22,13 +23,13 @@ typedef struct SurfaceMaterial {
 // The material's constant parameters (scene_data.h applies textures on top).
 RC_FUNC SurfaceMaterial rc_surface_material_of(const Material* material) {
     SurfaceMaterial m;
-    m.kind = material->kind.x;
+    m.kind = material->model;
     m.diffuse = material->diffuse.xyz;
     m.specular = material->specular.xyz;
-    m.exponent = material->specular.w;
-    m.alpha_x = material->lobe.x;
-    m.alpha_y = material->lobe.y;
-    m.diffuse_probability = material->lobe.z;
+    m.exponent = material->exponent;
+    m.alpha_x = material->alpha_x;
+    m.alpha_y = material->alpha_y;
+    m.diffuse_probability = material->diffuse_probability;
     return m;
 }
 

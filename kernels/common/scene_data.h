@@ -48,10 +48,10 @@ RC_FUNC SurfacePoint rc_surface_point(const SceneData* scene, Ray ray, Hit hit) 
     float3 ng = rc_triangle_normal(triangle);
     const float w = 1.0f - hit.u - hit.v;
     float3 ns = ng;
-    if (shading.normals.x >= 0) {
-        ns = normalize(w * scene->normals[shading.normals.x].xyz +
-                       hit.u * scene->normals[shading.normals.y].xyz +
-                       hit.v * scene->normals[shading.normals.z].xyz);
+    if (shading.normal0 >= 0) {
+        ns = normalize(w * scene->normals[shading.normal0].xyz +
+                       hit.u * scene->normals[shading.normal1].xyz +
+                       hit.v * scene->normals[shading.normal2].xyz);
         if (dot(ns, ng) < 0.0f) {
             ns = -ns;  // vertex normals on the other side than the winding
         }
@@ -65,10 +65,10 @@ RC_FUNC SurfacePoint rc_surface_point(const SceneData* scene, Ray ray, Hit hit) 
     sp.origin = rc_offset_surface_origin(sp.position, ng, triangle);
     sp.uv = (float2)(0.0f, 0.0f);
     float3 tangent = (float3)(0.0f);
-    if (shading.uvs.x >= 0) {
-        const float2 t0 = scene->uvs[shading.uvs.x];
-        const float2 t1 = scene->uvs[shading.uvs.y];
-        const float2 t2 = scene->uvs[shading.uvs.z];
+    if (shading.uv0 >= 0) {
+        const float2 t0 = scene->uvs[shading.uv0];
+        const float2 t1 = scene->uvs[shading.uv1];
+        const float2 t2 = scene->uvs[shading.uv2];
         sp.uv = w * t0 + hit.u * t1 + hit.v * t2;
         // dp/du from the triangle's texture mapping orients anisotropic lobes.
         const float2 d1 = t1 - t0;
@@ -89,8 +89,8 @@ RC_FUNC SurfacePoint rc_surface_point(const SceneData* scene, Ray ray, Hit hit) 
     } else {
         rc_orthonormal_basis(ns, &sp.shading.t, &sp.shading.b);
     }
-    sp.material = shading.normals.w;
-    sp.light = shading.uvs.w;
+    sp.material = shading.material;
+    sp.light = shading.light;
     return sp;
 }
 
@@ -98,8 +98,8 @@ RC_FUNC SurfacePoint rc_surface_point(const SceneData* scene, Ray ray, Hit hit) 
 RC_FUNC SurfaceMaterial rc_surface_material(const SceneData* scene, const SurfacePoint* sp) {
     const Material material = scene->materials[sp->material];
     SurfaceMaterial m = rc_surface_material_of(&material);
-    if (material.kind.y >= 0) {
-        m.diffuse *= rc_texture_lookup(scene->texels, scene->textures[material.kind.y], sp->uv);
+    if (material.texture >= 0) {
+        m.diffuse *= rc_texture_lookup(scene->texels, scene->textures[material.texture], sp->uv);
     }
     return m;
 }

@@ -42,13 +42,13 @@ RC_FUNC Photon rc_ivg_emit(const SceneData* scene, const IvgParams* p, RngStream
         return photon;
     }
     const Light light = scene->lights[l];
-    const int kind = light.info.x;
+    const int kind = light.kind;
     float3 origin;
     float3 direction;
     if (kind == RC_LIGHT_AREA) {
-        const int first = light.info.y;
+        const int first = light.first_triangle;
         const int entry =
-            first + rc_sample_cdf(scene->light_triangle_cdf + first, light.info.z, u1);
+            first + rc_sample_cdf(scene->light_triangle_cdf + first, light.triangle_count, u1);
         RC_GLOBAL const Triangle* triangle =
             scene->triangles + scene->triangle_of_primitive[scene->light_triangles[entry]];
         // Uniform point on the triangle (pbrt-v3 §13.6.5), cosine direction about the normal.
@@ -58,14 +58,14 @@ RC_FUNC Photon rc_ivg_emit(const SceneData* scene, const IvgParams* p, RngStream
         const float3 nl = rc_triangle_normal(triangle);
         origin = rc_offset_ray_origin(rc_hit_point(triangle, b1, 1.0f - b0 - b1), nl);
         direction = rc_to_world(rc_cosine_hemisphere(u4, rc_rng_next_float(rng)), nl);
-        photon.power = light.radiance.xyz * (RC_PI * light.shape.x);
+        photon.power = light.radiance.xyz * (RC_PI * light.area);
     } else if (kind == RC_LIGHT_POINT) {
         origin = light.position.xyz;
         direction = rc_direction_about((float3)(0.0f, 0.0f, 1.0f), 1.0f - 2.0f * u1, u2);
         photon.power = light.radiance.xyz * (4.0f * RC_PI);
     } else if (kind == RC_LIGHT_SPOT) {
         origin = light.position.xyz;
-        const float cos_cutoff = light.axis.w;
+        const float cos_cutoff = light.cos_cutoff;
         direction = rc_direction_about(light.axis.xyz, 1.0f - u1 * (1.0f - cos_cutoff), u2);
         photon.power = light.radiance.xyz *
                        (2.0f * RC_PI * (1.0f - cos_cutoff) * rc_spot_falloff(&light, direction));

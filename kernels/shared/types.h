@@ -59,44 +59,63 @@ typedef struct CameraParams {
     int4 resolution;  // x: width, y: height, in pixels
 } CameraParams;
 
-// Material models (Material.kind.x).
+// Material models (Material.model).
 #define RC_MATERIAL_DIFFUSE 0
 #define RC_MATERIAL_PHONG 1
 #define RC_MATERIAL_WARD 2
 
 // A surface material (docs/scene-format.md). Two-sided and reflective only.
 typedef struct Material {
-    float4 diffuse;   // rgb: diffuse reflectance (the Lambertian lobe)
-    float4 specular;  // rgb: specular reflectance; w: Phong exponent
-    float4 lobe;      // x, y: Ward alpha_x, alpha_y; z: probability of sampling the diffuse lobe
-    int4 kind;        // x: RC_MATERIAL_*; y: texture scaling the diffuse reflectance, or -1
+    float4 diffuse;             // rgb: diffuse reflectance (the Lambertian lobe); w: padding
+    float4 specular;            // rgb: specular reflectance; w: padding
+    float exponent;             // Phong exponent
+    float alpha_x;              // Ward roughness along the tangent
+    float alpha_y;              // Ward roughness along the bitangent
+    float diffuse_probability;  // probability of sampling the diffuse lobe
+    int model;                  // RC_MATERIAL_*
+    int texture;                // texture scaling the diffuse reflectance, or -1
+    int pad0;
+    int pad1;
 } Material;
 
 // Where a texture's texels (float4, linear RGB, rows top to bottom) lie in the texel array.
 typedef struct TextureInfo {
-    int4 layout;  // x: first texel, y: width, z: height
+    int first_texel;  // index of its top-left texel
+    int width;        // in texels
+    int height;       // in texels
+    int pad0;
 } TextureInfo;
 
 // Shading data of a triangle, indexed by the scene primitive index.
 typedef struct TriangleShading {
-    int4 normals;  // xyz: vertex-normal indices (-1: the geometric normal); w: material index
-    int4 uvs;      // xyz: texture-coordinate indices (-1: none); w: area light index or -1
+    int normal0;   // vertex 0's normal index; -1 in all three: the geometric normal
+    int normal1;   // vertex 1's
+    int normal2;   // vertex 2's
+    int material;  // material index
+    int uv0;       // vertex 0's texture-coordinate index; -1 in all three: none
+    int uv1;       // vertex 1's
+    int uv2;       // vertex 2's
+    int light;     // area light index, or -1
 } TriangleShading;
 
-// Light kinds (Light.info.x).
+// Light kinds (Light.kind).
 #define RC_LIGHT_AREA 0
 #define RC_LIGHT_POINT 1
 #define RC_LIGHT_SPOT 2
 #define RC_LIGHT_CONSTANT 3
 
 typedef struct Light {
-    float4 position;  // point, spot: xyz position
-    float4 axis;      // spot: xyz unit axis, w: cosine of the cutoff angle
-    float4 radiance;  // rgb: radiance (area, constant) or intensity (point, spot);
-                      // w (spot): cosine of the beam width
-    float4 shape;     // area: x: total area; spot: y: cutoff angle, z: beam width (radians)
-    int4 info;        // x: RC_LIGHT_*; area: y: first entry in the light-triangle arrays,
-                      // z: number of triangles
+    float4 position;     // xyz (point, spot): position; w: padding
+    float4 axis;         // xyz (spot): unit axis; w: padding
+    float4 radiance;     // rgb: radiance (area, constant) or intensity (point, spot); w: padding
+    float area;          // area: total area
+    float cutoff;        // spot: cutoff angle (radians)
+    float beam;          // spot: beam width (radians)
+    float cos_cutoff;    // spot: cosine of the cutoff angle
+    float cos_beam;      // spot: cosine of the beam width
+    int kind;            // RC_LIGHT_*
+    int first_triangle;  // area: first entry in the light-triangle arrays
+    int triangle_count;  // area: number of triangles
 } Light;
 
 // Per-pass parameters of the path tracer.
@@ -221,19 +240,37 @@ RC_SHARED_END
     STRUCT(Material)                       \
     FIELD(Material, diffuse)               \
     FIELD(Material, specular)              \
-    FIELD(Material, lobe)                  \
-    FIELD(Material, kind)                  \
+    FIELD(Material, exponent)              \
+    FIELD(Material, alpha_x)               \
+    FIELD(Material, alpha_y)               \
+    FIELD(Material, diffuse_probability)   \
+    FIELD(Material, model)                 \
+    FIELD(Material, texture)               \
     STRUCT(TextureInfo)                    \
-    FIELD(TextureInfo, layout)             \
+    FIELD(TextureInfo, first_texel)        \
+    FIELD(TextureInfo, width)              \
+    FIELD(TextureInfo, height)             \
     STRUCT(TriangleShading)                \
-    FIELD(TriangleShading, normals)        \
-    FIELD(TriangleShading, uvs)            \
+    FIELD(TriangleShading, normal0)        \
+    FIELD(TriangleShading, normal1)        \
+    FIELD(TriangleShading, normal2)        \
+    FIELD(TriangleShading, material)       \
+    FIELD(TriangleShading, uv0)            \
+    FIELD(TriangleShading, uv1)            \
+    FIELD(TriangleShading, uv2)            \
+    FIELD(TriangleShading, light)          \
     STRUCT(Light)                          \
     FIELD(Light, position)                 \
     FIELD(Light, axis)                     \
     FIELD(Light, radiance)                 \
-    FIELD(Light, shape)                    \
-    FIELD(Light, info)                     \
+    FIELD(Light, area)                     \
+    FIELD(Light, cutoff)                   \
+    FIELD(Light, beam)                     \
+    FIELD(Light, cos_cutoff)               \
+    FIELD(Light, cos_beam)                 \
+    FIELD(Light, kind)                     \
+    FIELD(Light, first_triangle)           \
+    FIELD(Light, triangle_count)           \
     STRUCT(PathTracerParams)               \
     FIELD(PathTracerParams, width)         \
     FIELD(PathTracerParams, height)        \
@@ -302,9 +339,11 @@ static_assert(offsetof(rc::shared::BvhNode, child) == 96);
 static_assert(sizeof(rc::shared::Triangle) == 48);
 static_assert(sizeof(rc::shared::CameraParams) == 80);
 static_assert(sizeof(rc::shared::Material) == 64);
+static_assert(offsetof(rc::shared::Material, exponent) == 32);
 static_assert(sizeof(rc::shared::TextureInfo) == 16);
 static_assert(sizeof(rc::shared::TriangleShading) == 32);
 static_assert(sizeof(rc::shared::Light) == 80);
+static_assert(offsetof(rc::shared::Light, area) == 48);
 static_assert(sizeof(rc::shared::PathTracerParams) == 32);
 static_assert(sizeof(rc::shared::GBufferSample) == 64);
 static_assert(sizeof(rc::shared::IcParams) == 80);

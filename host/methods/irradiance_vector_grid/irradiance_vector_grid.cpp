@@ -39,15 +39,15 @@ float largest_photon_flux(const Scene& scene, float sphere_radius) {
         }
         const shared::Light& light = lights[l];
         float scale = 0.0f;
-        switch (light.info.x) {
+        switch (light.kind) {
             case RC_LIGHT_AREA:
-                scale = pi * light.shape.x;
+                scale = pi * light.area;
                 break;
             case RC_LIGHT_POINT:
                 scale = 4.0f * pi;
                 break;
             case RC_LIGHT_SPOT:
-                scale = 2.0f * pi * (1.0f - light.axis.w);
+                scale = 2.0f * pi * (1.0f - light.cos_cutoff);
                 break;
             default:
                 scale = 4.0f * pi * pi * sphere_radius * sphere_radius;
