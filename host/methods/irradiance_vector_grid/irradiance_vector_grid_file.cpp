@@ -13,7 +13,9 @@ namespace rc {
 namespace {
 
 constexpr char kMagic[8] = {'R', 'C', 'I', 'V', 'G', 'R', 'I', 'D'};
-constexpr uint32_t kVersion = 1;
+// 2: the scene fingerprint hashes the named-field scene structs (files of version 1 would read as
+// another scene).
+constexpr uint32_t kVersion = 2;
 
 struct Header {
     char magic[8];
