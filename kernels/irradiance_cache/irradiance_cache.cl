@@ -107,16 +107,18 @@ __kernel void ic_tile_depths(uint begin, uint end, IcParams params, CameraParams
     depths[t] = rc_ic_tile_depths(&params, &camera, &tiles, gbuffer, t);
 }
 
-// Item q: candidate q of a placement pass (rc_ic_candidate), camera sample i: appends i to
-// uncovered[] when the cache serves it but no record splatted into its tile covers it, i.e. its
-// splat buffer entry would have no weight (course, "Radiance Cache Splatting", Algorithm 2 step 4;
-// the test stops at the first covering record). count[0] counts them (the host sorts them).
-__kernel void ic_uncovered_splat(uint begin, uint end, IcParams params, SplatTileGrid tiles,
-                                 __global const int* tile_start, __global const int* tile_records,
-                                 __global const Record* records,
-                                 __global const IrradiancePayload* payloads,
-                                 __global const GBufferSample* gbuffer, __global uint* uncovered,
-                                 __global uint* count) {
+// Item q: candidate q of a placement pass (rc_ic_candidate), G-buffer entry i: appends i to
+// uncovered[] when the cache serves it but no record of its list covers it (the test stops at
+// the first covering record); count[0] counts them (the host sorts them). The lists are either
+// the screen tiles records were splatted into (tiles.tile_size > 0: camera samples; their splat
+// buffer entry would have no weight, course "Radiance Cache Splatting", Algorithm 2 step 4) or
+// the world-space grid's cells (a deeper level's hemisphere hits, gathered).
+__kernel void ic_uncovered(uint begin, uint end, IcParams params, SplatTileGrid tiles,
+                           RecordGrid grid, __global const int* list_start,
+                           __global const int* list_records, __global const Record* records,
+                           __global const IrradiancePayload* payloads,
+                           __global const GBufferSample* gbuffer, __global uint* uncovered,
+                           __global uint* count) {
     const uint q = begin + (uint)get_global_id(0);
     if (q >= end) {
         return;
@@ -126,33 +128,10 @@ __kernel void ic_uncovered_splat(uint begin, uint end, IcParams params, SplatTil
     if (g.served == 0) {
         return;
     }
-    const uint tile = rc_ic_sample_tile(&params, &tiles, i);
-    if (!rc_ic_any_weight(tile_records, tile_start[tile], tile_start[tile + 1], records, payloads,
-                          g.position.xyz, g.normal.xyz, params.accuracy, params.max_weight)) {
-        uncovered[atomic_inc(&count[0])] = i;
-    }
-}
-
-// As ic_uncovered_splat for points that are not camera samples (a deeper level's hemisphere
-// hits): the records the world-space grid lists at the point's cell.
-__kernel void ic_uncovered_gather(uint begin, uint end, IcParams params, RecordGrid grid,
-                                  __global const int* cell_start, __global const int* cell_records,
-                                  __global const Record* records,
-                                  __global const IrradiancePayload* payloads,
-                                  __global const GBufferSample* gbuffer, __global uint* uncovered,
-                                  __global uint* count) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
-    const uint i = rc_ic_candidate(&params, q);
-    const GBufferSample g = gbuffer[i];
-    if (g.served == 0) {
-        return;
-    }
-    const int cell = rc_ic_grid_cell(&grid, g.position.xyz);
-    if (cell < 0 ||
-        !rc_ic_any_weight(cell_records, cell_start[cell], cell_start[cell + 1], records, payloads,
+    const int list = tiles.tile_size > 0 ? (int)rc_ic_sample_tile(&params, &tiles, i)
+                                         : rc_ic_grid_cell(&grid, g.position.xyz);
+    if (list < 0 ||
+        !rc_ic_any_weight(list_records, list_start[list], list_start[list + 1], records, payloads,
                           g.position.xyz, g.normal.xyz, params.accuracy, params.max_weight)) {
         uncovered[atomic_inc(&count[0])] = i;
     }

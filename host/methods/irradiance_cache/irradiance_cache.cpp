@@ -141,10 +141,8 @@ IrradianceCache::IrradianceCache(const FrameScene& frame)
       splat_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_splat")),
       tile_depths_kernel_(
           frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_tile_depths")),
-      uncovered_splat_kernel_(
-          frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_uncovered_splat")),
-      uncovered_gather_kernel_(
-          frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_uncovered_gather")),
+      uncovered_kernel_(
+          frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_uncovered")),
       select_kernel_(
           frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer_select")),
       shade_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_shade")) {}
@@ -330,12 +328,13 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
             if (level == 0) {
                 const DeviceSplat splat(context_, stores_[level], camera_, &tile_depths_);
                 const DeviceRecords records(context_, stores_[level], false);
-                context_.launch(uncovered_splat_kernel_, candidates, params, splat.tiles,
+                context_.launch(uncovered_kernel_, candidates, params, splat.tiles, records.grid,
                                 splat.tile_start, splat.tile_records, records.records,
                                 records.payloads, samples, uncovered_buffer, uncovered_count);
             } else {
                 const DeviceRecords records(context_, stores_[level]);
-                context_.launch(uncovered_gather_kernel_, candidates, params, records.grid,
+                const shared::SplatTileGrid no_tiles{};
+                context_.launch(uncovered_kernel_, candidates, params, no_tiles, records.grid,
                                 records.cell_start, records.cell_records, records.records,
                                 records.payloads, samples, uncovered_buffer, uncovered_count);
             }

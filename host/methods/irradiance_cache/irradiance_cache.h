@@ -189,8 +189,7 @@ class IrradianceCache : private FrameBound {
     Kernel gather_kernel_;
     Kernel splat_kernel_;
     Kernel tile_depths_kernel_;
-    Kernel uncovered_splat_kernel_;
-    Kernel uncovered_gather_kernel_;
+    Kernel uncovered_kernel_;
     Kernel select_kernel_;
     Kernel shade_kernel_;
     std::map<std::string, Kernel> cells_kernels_;  // by build options
