@@ -354,6 +354,22 @@ TEST(Cli, FramesWriteOneImagePerFrameThroughTheHashPattern) {
     EXPECT_FALSE(std::filesystem::exists(dir / "one.png"));
 }
 
+// The last representable frame ends the loop (a frame counter of the frames' own type would
+// overflow past it and render forever).
+TEST(Cli, FramesEndingAtTheLargestFrameNumberStop) {
+    const auto dir = test::scratch_dir("cli_frames_max");
+    const test::CommandResult result = test::run_radcache(
+        {"render", cornell_box(), "-o", (dir / "f####.png").string(), "--frames",
+         "2147483646:2147483647", "--method", "normals", "--width", "4", "--height", "4", "-q"});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    size_t files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        files += entry.is_regular_file() ? 1 : 0;
+    }
+    EXPECT_EQ(files, 2u);
+    EXPECT_TRUE(std::filesystem::exists(dir / "f2147483647.png"));
+}
+
 TEST(Cli, SaveEveryPowerOfTwoWritesIntermediateImages) {
     const auto dir = test::scratch_dir("cli_pow2");
     const test::CommandResult result =
