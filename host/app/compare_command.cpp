@@ -52,7 +52,7 @@ ReferenceNoiseSource find_reference_spp(const ParsedArguments& arguments,
         return source;
     }
     const std::filesystem::path stem = reference_path.parent_path() / reference_path.stem();
-    for (const std::string suffix : {".stats.json", ".json"}) {
+    for (const char* suffix : {".stats.json", ".json"}) {
         const std::filesystem::path candidate = stem.string() + suffix;
         if (std::filesystem::is_regular_file(candidate)) {
             source.spp = spp_of_stats_file(candidate);
