@@ -139,6 +139,9 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
          "has no layer 'coverage'"},
         {{"compare", (dir / "a.exr").string()}, 2, "TEST and REF"},
         {{"compare", (dir / "a.exr").string(), (dir / "b.exr").string()}, 1, "a.exr"},
+        {{"compare", (dir / "a.exr").string(), (dir / "b.exr").string(), "--reference-spp", "0"},
+         2,
+         "--reference-spp"},
         {{"frobnicate"}, 2, "unknown command"},
         {{"bench", "nothing"}, 2, "unknown benchmark"},
         {{"devices", "extra"}, 2, "no arguments"},
@@ -268,6 +271,68 @@ TEST(Cli, IrradianceCacheRenderWritesLayersAndStats) {
     const nlohmann::json again = nlohmann::json::parse(read_file(dir / "again.json"));
     EXPECT_EQ(again["frames"][0]["loaded_records"], frame["records"]);
     EXPECT_EQ(again["frames"][0]["records"], frame["records"]);
+}
+
+// `compare --reference-spp` on a 2 x 1 reference with a stddev layer, figures worked out by hand:
+// beauty (1, 1, 1 | 0, 0, 0.5), per-sample stddev (0.4, 0.8, 1.2 | 0, 0.2, 0.1) at 4 spp, so
+// Var(r) = stddev^2 / 4 = 0.04, 0.16, 0.36 | 0, 0.01, 0.0025 and the reference's noise term is the
+// mean of Var(r) / (r^2 + 0.01); test (1, 2, 3 | 0, 0, 0) gives relMSE
+// (1 / 1.01 + 4 / 1.01 + 0.25 / 0.26) / 6.
+TEST(Cli, CompareSubtractsTheReferencesNoise) {
+    const auto dir = test::scratch_dir("cli_compare_net");
+    Image test(2, 1, 3);
+    test.channel_names = {"R", "G", "B"};
+    test.pixels = {1, 2, 3, 0, 0, 0};
+    Image reference(2, 1, 6);
+    reference.channel_names = {"R", "G", "B", "stddev.R", "stddev.G", "stddev.B"};
+    reference.pixels = {1, 1, 1, 0.4f, 0.8f, 1.2f, 0, 0, 0.5f, 0, 0.2f, 0.1f};
+    write_image(dir / "test.exr", test);
+    std::filesystem::create_directories(dir / "with-stats");
+    write_image(dir / "with-stats/reference.exr", reference);
+    write_image(dir / "reference.exr", reference);
+    const double relmse = (1.0 / 1.01 + 4.0 / 1.01 + 0.25 / 0.26) / 6.0;
+    const auto var = [](double s) { return double(float(s)) * double(float(s)) / 4.0; };
+    const double noise =
+        ((var(0.4) + var(0.8) + var(1.2)) / 1.01 + var(0.2) / 0.01 + var(0.1) / (0.25 + 0.01)) /
+        6.0;
+    const auto run = [&](const std::filesystem::path& ref, std::vector<std::string> extra) {
+        std::vector<std::string> args = {"compare", (dir / "test.exr").string(), ref.string(),
+                                         "--json", (dir / "error.json").string()};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const test::CommandResult result = test::run_radcache(args);
+        EXPECT_EQ(result.exit_code, 0) << result.output;
+        return std::make_pair(result.output, nlohmann::json::parse(read_file(dir / "error.json")));
+    };
+    // Given on the command line.
+    const auto [given, given_json] = run(dir / "reference.exr", {"--reference-spp", "4"});
+    EXPECT_NE(given.find("relMSE net of the reference's noise"), std::string::npos) << given;
+    EXPECT_NEAR(given_json["relmse"].get<double>(), relmse, 1e-6);
+    EXPECT_NEAR(given_json["reference_noise"].get<double>(), noise, 1e-6);
+    EXPECT_NEAR(given_json["relmse_net"].get<double>(), relmse - noise, 1e-6);
+    EXPECT_EQ(given_json["reference_spp"].get<double>(), 4.0);
+    // Read from reference.stats.json beside the reference, as `render --stats` writes it.
+    write_file_atomically(dir / "with-stats/reference.stats.json", "{\"spp\": 4}\n");
+    const auto [read, read_json] = run(dir / "with-stats/reference.exr", {});
+    EXPECT_NEAR(read_json["relmse_net"].get<double>(), relmse - noise, 1e-6) << read;
+    // Unknown: a one-line note and null in the JSON, the other figures unchanged.
+    const auto [unknown, unknown_json] = run(dir / "reference.exr", {});
+    EXPECT_NE(unknown.find("not reported"), std::string::npos) << unknown;
+    EXPECT_TRUE(unknown_json["relmse_net"].is_null());
+    EXPECT_NEAR(unknown_json["relmse"].get<double>(), relmse, 1e-6);
+    // --reference-spp with a reference that has no stddev layer, or a negative count.
+    const test::CommandResult no_stddev =
+        test::run_radcache({"compare", (dir / "test.exr").string(), (dir / "test.exr").string(),
+                            "--reference-spp", "4"});
+    EXPECT_EQ(no_stddev.exit_code, 2);
+    EXPECT_NE(no_stddev.output.find("--reference-spp: " + (dir / "test.exr").string() +
+                                    " has no stddev layer"),
+              std::string::npos)
+        << no_stddev.output;
+    const test::CommandResult negative =
+        test::run_radcache({"compare", (dir / "test.exr").string(),
+                            (dir / "reference.exr").string(), "--reference-spp", "-3"});
+    EXPECT_EQ(negative.exit_code, 2);
+    EXPECT_NE(negative.output.find("--reference-spp"), std::string::npos) << negative.output;
 }
 
 TEST(Cli, HelpListsOptions) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <random>
 
 #include "image/image_io.h"
 #include "test_support.h"
@@ -78,6 +79,134 @@ TEST(ImageError, CompareCommandReportsTheFigures) {
                             (dir / "reference.exr").string(), "--aov", "indirect"});
     EXPECT_EQ(layer.exit_code, 2);
     EXPECT_NE(layer.output.find("indirect"), std::string::npos) << layer.output;
+}
+
+// Synthetic images of known noise for the relMSE net of the reference's noise. Every value has
+// mean mu; the reference's per-sample standard deviation is sigma_left on the left half and
+// sigma_right on the right (so a per-pixel mix-up shows), its mean carries Gaussian noise of
+// variance sigma^2 / spp, and the test image carries independent noise of variance
+// sigma_test^2 (0: the exact mu).
+struct NoisyImages {
+    Image test;
+    Image reference;
+    Image stddev;
+};
+
+constexpr int kNoiseWidth = 256;
+constexpr int kNoiseHeight = 256;
+constexpr double kMu = 0.5;
+constexpr double kSpp = 256.0;
+constexpr double kSigmaLeft = 0.16;   // reference mean's standard deviation 0.01
+constexpr double kSigmaRight = 0.32;  // 0.02
+
+double sigma_at(int x) { return x < kNoiseWidth / 2 ? kSigmaLeft : kSigmaRight; }
+
+NoisyImages noisy_images(double sigma_test, unsigned seed) {
+    NoisyImages images{Image(kNoiseWidth, kNoiseHeight, 3), Image(kNoiseWidth, kNoiseHeight, 3),
+                       Image(kNoiseWidth, kNoiseHeight, 3)};
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    for (int y = 0; y < kNoiseHeight; ++y) {
+        for (int x = 0; x < kNoiseWidth; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const double sigma = sigma_at(x);
+                images.stddev.at(x, y, c) = static_cast<float>(sigma);
+                images.reference.at(x, y, c) =
+                    static_cast<float>(kMu + sigma / std::sqrt(kSpp) * normal(rng));
+                images.test.at(x, y, c) = static_cast<float>(kMu + sigma_test * normal(rng));
+            }
+        }
+    }
+    return images;
+}
+
+// The expected relMSE, over D = mu^2 + 0.01, of values whose difference from the reference has
+// variance s_i^2 = sigma_test^2 + (reference_share ? sigma_i^2 / spp : 0), with two bounds on how
+// far a measurement may fall from it:
+// - standard error: the relMSE is a mean over n values of squared Gaussians over D; a squared
+//   N(0, s^2) has mean s^2 and variance 2 s^4, so the mean's variance is sum_i 2 s_i^4 / D^2 / n^2.
+// - bias: image_error divides by r^2 + 0.01 with the noisy reference r = mu + e, not mu. With
+//   f(r) = 1 / (r^2 + 0.01), f'' = -2 / x^2 + 8 mu^2 / x^3 (x = mu^2 + 0.01), and
+//   E[e^2] = sigma_r^2, E[e^4] = 3 sigma_r^4, the second-order Taylor terms add
+//   f'' sigma_r^2 (sigma_test^2 / 2 + 3 sigma_r^2 / 2) to the plain figure and
+//   f'' sigma_r^2 (sigma_test^2 / 2 + sigma_r^2) to the net one; the first bounds both.
+struct Expected {
+    double mean = 0.0;
+    double standard_error = 0.0;
+    double bias_bound = 0.0;
+    // A measurement within 5 standard errors and twice the second-order bias (covering the
+    // higher orders, which are smaller by another factor sigma_r^2 f''/f < 1%).
+    double tolerance() const { return 5.0 * standard_error + 2.0 * bias_bound; }
+};
+
+Expected expected_relmse(double sigma_test, bool reference_share) {
+    const double x = kMu * kMu + 0.01;
+    const double f2 = -2.0 / (x * x) + 8.0 * kMu * kMu / (x * x * x);
+    const double n = 3.0 * kNoiseWidth * kNoiseHeight;
+    const double column_values = 3.0 * kNoiseHeight;  // values sharing one column's variance
+    Expected e;
+    double variance = 0.0;
+    for (int column = 0; column < kNoiseWidth; ++column) {
+        const double reference_variance = sigma_at(column) * sigma_at(column) / kSpp;
+        const double s2 = sigma_test * sigma_test + (reference_share ? reference_variance : 0.0);
+        e.mean += column_values * s2 / x / n;
+        variance += column_values * 2.0 * s2 * s2 / (x * x) / (n * n);
+        e.bias_bound += column_values * std::fabs(f2) * reference_variance *
+                        (0.5 * sigma_test * sigma_test + 1.5 * reference_variance) / n;
+    }
+    e.standard_error = std::sqrt(variance);
+    return e;
+}
+
+TEST(ImageErrorNet, SubtractsTheReferencesExpectedNoise) {
+    const double sigma_test = 0.02;
+    const NoisyImages images = noisy_images(sigma_test, 1);
+    const ImageError e =
+        image_error_net(images.test, images.reference, images.stddev, kSpp, "noisy");
+    ASSERT_TRUE(e.relmse_net.has_value());
+    ASSERT_TRUE(e.reference_noise.has_value());
+    // Plain relMSE: (sigma_test^2 + sigma^2 / spp) / (mu^2 + 0.01); net: sigma_test^2 / (...).
+    const Expected plain = expected_relmse(sigma_test, true);
+    const Expected net = expected_relmse(sigma_test, false);
+    EXPECT_NEAR(e.relmse, plain.mean, plain.tolerance());
+    // The net figure differs from the plain one by a near-constant, so it shares its spread.
+    EXPECT_NEAR(*e.relmse_net, net.mean, plain.tolerance());
+    EXPECT_DOUBLE_EQ(*e.relmse_net, e.relmse - *e.reference_noise);
+    // The subtracted term by hand: mean of (sigma^2 / spp) / (r^2 + 0.01), one half per sigma.
+    double noise = 0.0;
+    for (int y = 0; y < kNoiseHeight; ++y) {
+        for (int x = 0; x < kNoiseWidth; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const double r = images.reference.at(x, y, c);
+                noise += sigma_at(x) * sigma_at(x) / kSpp / (r * r + 0.01);
+            }
+        }
+    }
+    EXPECT_NEAR(*e.reference_noise, noise / (3.0 * kNoiseWidth * kNoiseHeight), 1e-9);
+    // Without the reference's noise the plain figure is unchanged and no net figure is made.
+    const ImageError plain_only = image_error(images.test, images.reference);
+    EXPECT_EQ(plain_only.relmse, e.relmse);
+    EXPECT_FALSE(plain_only.relmse_net.has_value());
+}
+
+TEST(ImageErrorNet, IsNearZeroForAnExactImage) {
+    // test = mu exactly: all of relMSE is the reference's noise, and the net figure is within a
+    // few standard errors of 0 (it may fall on either side; its sign is kept).
+    const NoisyImages images = noisy_images(0.0, 2);
+    const ImageError e =
+        image_error_net(images.test, images.reference, images.stddev, kSpp, "exact");
+    const Expected plain = expected_relmse(0.0, true);
+    EXPECT_NEAR(e.relmse, plain.mean, plain.tolerance());
+    EXPECT_LT(std::fabs(*e.relmse_net), plain.tolerance());
+    // And that is small beside the plain figure, all of which is the reference's noise.
+    EXPECT_LT(plain.tolerance(), 0.1 * plain.mean);
+}
+
+TEST(ImageErrorNet, RefusesABadSampleCountOrStddevSize) {
+    const NoisyImages images = noisy_images(0.0, 3);
+    EXPECT_THROW(image_error_net(images.test, images.reference, images.stddev, 0.0), Error);
+    EXPECT_THROW(image_error_net(images.test, images.reference, images.stddev, -4.0), Error);
+    EXPECT_THROW(image_error_net(images.test, images.reference, Image(2, 1, 3), kSpp), Error);
 }
 
 TEST(ErrorImage, MapsPerPixelRelMseOntoTheScale) {

@@ -20,7 +20,7 @@ SCRATCH = os.path.join(os.environ.get("RADCACHE_TEST_SCRATCH_DIR") or "/tmp", "s
 DOCUMENTED_COLUMNS = ["scene", "method", "curve", "setting", "spp", "accuracy", "ic_rays",
                       "photons", "grid", "gather_rays", "wall_seconds", "render_seconds",
                       "kernel_seconds", "compile_seconds", "rmse", "relmse", "flip",
-                      "indirect_relmse", "records", "device", "image"]
+                      "indirect_relmse", "records", "device", "image", "relmse_net"]
 
 
 def run(command):
@@ -37,7 +37,8 @@ class SweepTest(unittest.TestCase):
         result = run([RADCACHE, "render",
                       os.path.join(ROOT, "scenes", "cornell-box", "scene.json"), "-o",
                       cls.reference, "--width", "24", "--height", "24", "--spp", "512",
-                      "--quiet"])
+                      "--aovs", "beauty,direct,indirect,stddev", "--stats",
+                      os.path.join(SCRATCH, "reference.stats.json"), "--quiet"])
         assert result.returncode == 0, result.stdout + result.stderr
         cls.out = os.path.join(SCRATCH, "out")
         cls.result = run([sys.executable, SWEEP, os.path.join(ROOT, "scenes", "cornell-box"),
@@ -87,6 +88,12 @@ class SweepTest(unittest.TestCase):
                        self.reference])
         self.assertEqual(compare.returncode, 0, compare.stdout + compare.stderr)
         self.assertIn("relmse %.6g" % row["relmse"], compare.stdout)
+        # Net of the reference's noise (its stddev layer, spp from reference.stats.json): what
+        # compare reports, below the plain figure by the reference's share.
+        self.assertIn("relMSE net of the reference's noise %.6g" % row["relmse_net"],
+                      compare.stdout)
+        for r in report["rows"]:
+            self.assertLess(r["relmse_net"], r["relmse"])
 
     def test_refuses_bad_input(self):
         missing = run([sys.executable, SWEEP, os.path.join(SCRATCH, "no-such-scene"),

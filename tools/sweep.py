@@ -19,7 +19,12 @@ sample at --gather-spp camera samples, the grid at its defaults).
 
 Columns: scene, method, curve, setting, spp, accuracy, ic_rays, photons, grid, gather_rays,
 wall_seconds, render_seconds, kernel_seconds, compile_seconds, rmse, relmse, flip,
-indirect_relmse, records, device, image.
+indirect_relmse, records, device, image, relmse_net.
+
+relmse_net is the image's relMSE net of the reference's own noise (`radcache compare`: relmse
+minus the mean of (stddev^2/spp_ref)/(r^2+0.01)); empty unless the reference has a stddev layer
+and its sample count is known (`spp` of REF.stats.json or REF.json beside it, REF the reference's
+name without .exr). It may be slightly negative for an image as good as the reference.
 
 Times. render_seconds is the render phase of `radcache render --stats` (G-buffer to final
 image; scene loading, device start-up and image writing excluded); it is the chart's time axis.
@@ -55,7 +60,7 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 COLUMNS = ["scene", "method", "curve", "setting", "spp", "accuracy", "ic_rays", "photons", "grid",
            "gather_rays", "wall_seconds", "render_seconds", "kernel_seconds", "compile_seconds",
-           "rmse", "relmse", "flip", "indirect_relmse", "records", "device", "image"]
+           "rmse", "relmse", "flip", "indirect_relmse", "records", "device", "image", "relmse_net"]
 METHODS = ["pt", "ic", "ic-ivg", "ivg", "ivg-gather"]
 METHOD_COLOURS = {"pt": "tab:blue", "ic": "tab:orange", "ic-ivg": "tab:brown", "ivg": "tab:purple",
                   "ivg-gather": "tab:red", "povray": "tab:green"}
@@ -164,6 +169,9 @@ def measure(row, image, reference, out, name):
                      error_png)
     row["rmse"] = beauty["rmse"]
     row["relmse"] = beauty["relmse"]
+    # Net of the reference's noise: null in compare's JSON when it is not known.
+    net = beauty.get("relmse_net")
+    row["relmse_net"] = "" if net is None else net
     row["flip"] = flip_error(image, reference)
     row["indirect_relmse"] = ""
     if has_layer(image, "indirect") and has_layer(reference, "indirect"):

@@ -78,6 +78,31 @@ ImageError image_error(const Image& test, const Image& reference, const std::str
     return e;
 }
 
+double reference_noise_relmse(const Image& reference, const Image& stddev, double spp) {
+    check_comparable(stddev, reference, "the reference's stddev layer");
+    if (!(spp > 0.0)) {
+        throw Error("the reference's sample count must be positive, got " + std::to_string(spp),
+                    kExitUsage);
+    }
+    // Var(r) = stddev^2 / spp per value, over the relMSE denominator r^2 + 0.01, averaged.
+    double noise = 0.0;
+    for (size_t i = 0; i < reference.pixels.size(); ++i) {
+        const double r = reference.pixels[i];
+        const double s = stddev.pixels[i];
+        noise += s * s / spp / (r * r + 0.01);
+    }
+    return reference.pixels.empty() ? 0.0 : noise / static_cast<double>(reference.pixels.size());
+}
+
+ImageError image_error_net(const Image& test, const Image& reference, const Image& reference_stddev,
+                           double reference_spp, const std::string& test_name) {
+    ImageError e = image_error(test, reference, test_name);
+    // relMSE_net = relMSE - mean(Var(r) / (r^2 + 0.01)); kept signed.
+    e.reference_noise = reference_noise_relmse(reference, reference_stddev, reference_spp);
+    e.relmse_net = e.relmse - *e.reference_noise;
+    return e;
+}
+
 void error_scale_colour(double t, float srgb[3]) {
     // Control points of the scale in display space, evenly spaced in t: black, blue, magenta,
     // red, yellow, white. Lightness rises monotonically so the scale also reads in grey.

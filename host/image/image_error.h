@@ -2,6 +2,7 @@
 // means and the largest absolute difference.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,14 @@ struct ImageError {
     int max_x = 0;
     int max_y = 0;
     int max_channel = 0;
+    // Net of the reference's own noise (image_error_net; absent when the reference's noise is
+    // unknown). reference_noise is the mean over pixels and channels of
+    // (stddev^2 / spp_ref) / (r^2 + 0.01), the reference's expected share of relmse, and
+    // relmse_net = relmse - reference_noise. relmse_net estimates the test image's own error; for
+    // a test image as good as the reference it scatters around 0 and may be slightly negative
+    // (the sign is kept so that averages over runs stay unbiased).
+    std::optional<double> reference_noise;
+    std::optional<double> relmse_net;
 };
 
 // The relMSE term of one value: (v - r)^2 / (r^2 + 0.01).
@@ -28,6 +37,19 @@ double relative_squared_error(double value, double reference);
 // `test` against `reference`; Error naming `test_name` when their sizes or channel counts differ.
 ImageError image_error(const Image& test, const Image& reference,
                        const std::string& test_name = "image");
+
+// The expected relMSE contribution of the reference's own noise: the mean over pixels and channels
+// of Var(r) / (r^2 + 0.01), Var(r) = stddev^2 / spp, where `stddev` holds the standard deviation of
+// one sample of each reference value (the same size and channel count as `reference`) and `spp` is
+// the reference's sample count. Error when the sizes differ or spp is not positive.
+double reference_noise_relmse(const Image& reference, const Image& stddev, double spp);
+
+// image_error with reference_noise and relmse_net filled in from the reference's per-sample
+// standard deviation `reference_stddev` and its sample count `reference_spp`. Since
+// E[(v - r)^2] = (v - mu)^2 + Var(r) for a reference r independent of v with mean mu, the net
+// figure is the error against the reference's mean to first order (the denominator uses r, not mu).
+ImageError image_error_net(const Image& test, const Image& reference, const Image& reference_stddev,
+                           double reference_spp, const std::string& test_name = "image");
 
 // The false-colour scale of error images: log10 of a pixel's relMSE from kErrorImageLog10Min
 // (black) to kErrorImageLog10Max (white), through blue, magenta, red and yellow.
