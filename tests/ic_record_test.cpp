@@ -16,6 +16,7 @@
 #include "methods/irradiance_cache/irradiance_cache.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
+#include "shared/rng.h"
 #include "test_support.h"
 
 namespace rc {
@@ -88,6 +89,52 @@ TEST(IcRecord, ConstantSkyGivesPiLAndNoGradients) {
         }
         EXPECT_TRUE(std::isinf(records[i].host.harmonic_distance)) << i;
         EXPECT_TRUE(std::isinf(records[i].host.min_distance)) << i;
+    }
+}
+
+// The first record index, from `first`, one of whose pole strata (j = 0, cell k < n) the
+// generator jitters onto the pole itself (zeta = 0: the top 24 bits of its word are zero, once
+// in 2^24), for records of cache level 0 sampled with `seed` (ic_records.h: words 0 and 1 of the
+// stream (seed_lo ^ RC_IC_RNG_DOMAIN, seed_hi; record, cell) are the cell's jitter).
+uint32_t record_with_a_pole_sample(uint64_t seed, int n, uint32_t first) {
+    const auto lo = static_cast<uint32_t>(seed) ^ RC_IC_RNG_DOMAIN;
+    const auto hi = static_cast<uint32_t>(seed >> 32);
+    for (uint32_t record = first;; ++record) {
+        for (int k = 0; k < n; ++k) {
+            if (shared::rc_uint_to_unit_float(
+                    shared::rc_rng_word(lo, hi, record, static_cast<uint32_t>(k), 0u)) == 0.0f) {
+                return record;
+            }
+        }
+    }
+}
+
+// A record one of whose strata is jittered exactly onto its normal (theta = 0, where the
+// azimuthal walls' term of the translational gradient divides by sin(theta)) still gets finite
+// gradients: under a constant sky, E = pi L and no gradient at all, as for any other record.
+TEST(IcRecord, AStratumOnThePoleKeepsTheGradientsFinite) {
+    CacheFixture f(scene_from_json("ic_pole", R"({
+        "camera": {"position": [0, 5, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 40, "resolution": [16, 16]},
+        "materials": {"ground": {"type": "diffuse", "reflectance": 0.5}},
+        "shapes": [{"type": "rectangle", "material": "ground",
+                    "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}},
+                                  {"translate": [0, -50, 0]}]}],
+        "emitters": [{"type": "constant", "radiance": [1.0, 0.5, 0.25]}]
+    })"));
+    RecordSampling sampling = strata_for(16);
+    sampling.include_emission = true;
+    sampling.seed = 5;
+    const uint32_t index = record_with_a_pole_sample(sampling.seed, sampling.n, 0);
+    const shared::IrradiancePayload r =
+        f.cache.compute_records({site_at({0, 0, 0}, {0, 1, 0})}, index, sampling)[0].payload;
+    const shared::float4 translation[3] = {r.translation_r, r.translation_g, r.translation_b};
+    const shared::float4 rotation[3] = {r.rotation_r, r.rotation_g, r.rotation_b};
+    const double radiance[3] = {1.0, 0.5, 0.25};
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR((&r.irradiance.x)[c], 3.14159265 * radiance[c], 1e-5) << c;
+        EXPECT_TRUE(std::isfinite(glm::length(vec3_of(translation[c])))) << c;
+        EXPECT_LT(glm::length(vec3_of(translation[c])), 1e-6f) << c;
+        EXPECT_LT(glm::length(vec3_of(rotation[c])), 1e-5f) << c;
     }
 }
 

@@ -7,9 +7,6 @@
 #include "shared/rng.h"
 #include "shared/types.h"
 
-// Random-number domain of record sampling, kept apart from camera samples.
-#define RC_IC_RNG_DOMAIN 0x49434331u
-
 // The random stream of cell `cell` of record `record` of cache level params->level (0: the
 // records the camera samples read). Its words 0 and 1 are the cell's jitter (zeta, xi), so the
 // reduction and the deeper levels' placement regenerate the sampled directions.
@@ -107,7 +104,10 @@ RC_FUNC RecordEstimate rc_ic_reduce(const IcParams* params, uint record, float3 
             sum += l;
             inverse_distances += 1.0f / r;  // 0 for a miss (r = inf)
             const float sin2 = ((float)j + zeta) / (float)m;
-            const float sin_theta = sqrt(sin2);
+            // The azimuthal walls' term divides by sin(theta): a stratum jittered onto the pole
+            // (j = 0, zeta = 0, which the generator returns once in 2^24) is taken half a
+            // generator step off it, so the gradient stays finite.
+            const float sin_theta = sqrt(fmax(sin2, (0.5f / 16777216.0f) / (float)m));
             const float cos_theta = sqrt(fmax(0.0f, 1.0f - sin2));
             if (r < min_distance) {
                 min_distance = r;

@@ -143,6 +143,10 @@ typedef struct GBufferSample {
     int served;       // 1 when the cache serves it (a hit with a diffuse lobe)
 } GBufferSample;
 
+// Random-number domain of irradiance-record sampling (kernels/irradiance_cache/ic_records.h),
+// kept apart from camera samples.
+#define RC_IC_RNG_DOMAIN 0x49434331u
+
 // Parameters of the irradiance-caching kernels.
 typedef struct IcParams {
     int width;  // of the camera's image, in pixels
