@@ -55,18 +55,22 @@ RecordSite site_at(glm::dvec3 position, glm::dvec3 normal) {
     return site;
 }
 
-// Under a constant sky of radiance L every hemisphere ray sees L: E = pi L, and neither gradient
-// has anything to measure. (The scene's only geometry, a small square far below, is out of every
-// record's hemisphere.)
-TEST(IcRecord, ConstantSkyGivesPiLAndNoGradients) {
-    CacheFixture f(scene_from_json("ic_sky", R"({
+// A constant sky of radiance (1, 0.5, 0.25) over a small square far below (out of every
+// hemisphere of a record near the origin facing +y).
+const char* const kConstantSky = R"({
         "camera": {"position": [0, 5, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 40, "resolution": [16, 16]},
         "materials": {"ground": {"type": "diffuse", "reflectance": 0.5}},
         "shapes": [{"type": "rectangle", "material": "ground",
                     "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}},
                                   {"translate": [0, -50, 0]}]}],
         "emitters": [{"type": "constant", "radiance": [1.0, 0.5, 0.25]}]
-    })"));
+    })";
+
+// Under a constant sky of radiance L every hemisphere ray sees L: E = pi L, and neither gradient
+// has anything to measure. (The scene's only geometry, a small square far below, is out of every
+// record's hemisphere.)
+TEST(IcRecord, ConstantSkyGivesPiLAndNoGradients) {
+    CacheFixture f(scene_from_json("ic_sky", kConstantSky));
     RecordSampling sampling = strata_for(512);
     sampling.include_emission = true;
     sampling.seed = 3;
@@ -113,14 +117,7 @@ uint32_t record_with_a_pole_sample(uint64_t seed, int n, uint32_t first) {
 // azimuthal walls' term of the translational gradient divides by sin(theta)) still gets finite
 // gradients: under a constant sky, E = pi L and no gradient at all, as for any other record.
 TEST(IcRecord, AStratumOnThePoleKeepsTheGradientsFinite) {
-    CacheFixture f(scene_from_json("ic_pole", R"({
-        "camera": {"position": [0, 5, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 40, "resolution": [16, 16]},
-        "materials": {"ground": {"type": "diffuse", "reflectance": 0.5}},
-        "shapes": [{"type": "rectangle", "material": "ground",
-                    "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}},
-                                  {"translate": [0, -50, 0]}]}],
-        "emitters": [{"type": "constant", "radiance": [1.0, 0.5, 0.25]}]
-    })"));
+    CacheFixture f(scene_from_json("ic_pole", kConstantSky));
     RecordSampling sampling = strata_for(16);
     sampling.include_emission = true;
     sampling.seed = 5;

@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "util/cli.h"
 #include "device/context.h"
+#include "util/cli.h"
 
 namespace rc {
 
