@@ -18,10 +18,8 @@ Image render_with(size_t local_size, size_t max_chunk, const Scene& scene) {
     options.local_size = local_size;
     options.max_chunk_items = max_chunk;
     Context context(options);
-    const Bvh bvh = build_bvh(scene.mesh);
-    const DeviceBvh device_bvh(context, bvh);
-    const DeviceScene device_scene(context, scene);
-    NormalsMethod method({context, scene, device_bvh, device_scene});
+    test::DeviceFrame device(scene, context);
+    NormalsMethod method(device.frame());
     NormalsOptions render;
     render.width = 160;
     render.height = 120;
@@ -52,12 +50,8 @@ TEST(Determinism, NormalsImageIsBitwiseIdenticalAcrossRunsChunksAndWorkGroups) {
 }
 
 TEST(Determinism, DifferentSeedsGiveDifferentJitter) {
-    const Scene scene = test::load_cornell_box();
-    Context& context = test::shared_context();
-    const Bvh bvh = build_bvh(scene.mesh);
-    const DeviceBvh device_bvh(context, bvh);
-    const DeviceScene device_scene(context, scene);
-    NormalsMethod method({context, scene, device_bvh, device_scene});
+    test::DeviceFrame cornell(test::load_cornell_box());
+    NormalsMethod method(cornell.frame());
     NormalsOptions options;
     options.width = 64;
     options.height = 64;

@@ -283,12 +283,8 @@ TEST(IcGather, EqualsTheCoursesWeightedSumOverEveryRecord) {
 // equals the world-space gather to the bit (the same records summed in the same order), and
 // placement left no sample the cache serves without weight (Algorithm 2, step 4).
 TEST(IcSplat, SplatBufferEqualsTheCoursesWeightedSumAndTheGather) {
-    const Scene scene = test::load_cornell_box();
-    const Bvh bvh = build_bvh(scene.mesh);
-    Context& context = test::shared_context();
-    const DeviceBvh device_bvh(context, bvh);
-    const DeviceScene device_scene(context, scene);
-    IrradianceCache cache({context, scene, device_bvh, device_scene});
+    test::DeviceFrame cornell(test::load_cornell_box());
+    IrradianceCache cache(cornell.frame());
     IrradianceCacheOptions options;
     options.width = 48;
     options.height = 40;

@@ -32,10 +32,8 @@ struct Render {
 };
 
 Render render(const Scene& scene, const IrradianceCacheOptions& options, Context& context) {
-    const Bvh bvh = build_bvh(scene.mesh);
-    const DeviceBvh device_bvh(context, bvh);
-    const DeviceScene device_scene(context, scene);
-    IrradianceCache cache({context, scene, device_bvh, device_scene});
+    test::DeviceFrame device(scene, context);
+    IrradianceCache cache(device.frame());
     Render r;
     r.image = cache.render(options, &r.stats);
     r.records = cache.store(0);
@@ -217,11 +215,8 @@ TEST(IrradianceCache, CacheFileRoundTripsExactlyAndIsReused) {
     IrradianceCacheOptions options = small_cornell_options();
     options.bounces = 2;
     options.cache_out = dir / "cornell.rcc";
-    const Bvh bvh = build_bvh(scene.mesh);
-    Context& context = test::shared_context();
-    const DeviceBvh device_bvh(context, bvh);
-    const DeviceScene device_scene(context, scene);
-    IrradianceCache cache({context, scene, device_bvh, device_scene});
+    test::DeviceFrame device(scene);
+    IrradianceCache cache(device.frame());
     IrradianceCacheStats stats;
     const Image first = cache.render(options, &stats);
     const std::vector<RecordStore> levels =

@@ -27,6 +27,13 @@ std::filesystem::path radcache_executable() { return RADCACHE_EXECUTABLE; }
 
 Scene load_cornell_box() { return load_scene(source_dir() / "scenes/cornell-box/scene.json"); }
 
+DeviceFrame::DeviceFrame(Scene loaded, Context& device)
+    : context(device),
+      scene(std::move(loaded)),
+      bvh(build_bvh(scene.mesh)),
+      device_bvh(context, bvh),
+      device_scene(context, scene) {}
+
 std::filesystem::path scratch_dir(const std::string& name) {
     const std::filesystem::path dir = std::filesystem::path(RADCACHE_TEST_SCRATCH_DIR) / name;
     std::filesystem::remove_all(dir);

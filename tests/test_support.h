@@ -5,7 +5,11 @@
 #include <string>
 #include <vector>
 
+#include "bvh/bvh.h"
+#include "bvh/device_bvh.h"
 #include "device/context.h"
+#include "methods/frame_scene.h"
+#include "scene/device_scene.h"
 #include "scene/scene.h"
 
 namespace rc::test {
@@ -20,6 +24,18 @@ ContextOptions default_context_options();
 std::filesystem::path source_dir();
 std::filesystem::path radcache_executable();
 Scene load_cornell_box();
+
+// A scene with its BVH and both on a device: the FrameScene a method's classes take.
+struct DeviceFrame {
+    explicit DeviceFrame(Scene loaded, Context& device = shared_context());
+    FrameScene frame() { return {context, scene, device_bvh, device_scene}; }
+
+    Context& context;
+    Scene scene;
+    Bvh bvh;
+    DeviceBvh device_bvh;
+    DeviceScene device_scene;
+};
 
 // A new empty directory under the build tree's test scratch area, removed by nobody: each test
 // names its own.
