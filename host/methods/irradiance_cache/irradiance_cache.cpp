@@ -276,6 +276,7 @@ shared::IcParams IrradianceCache::candidate_params(int level, Candidates placeme
 }
 
 Buffer<shared::float4> IrradianceCache::weighted_sums(const RecordStore& store,
+                                                      const DeviceRecords& records,
                                                       const Buffer<shared::GBufferSample>& samples,
                                                       const shared::IcParams& params,
                                                       size_t candidates,
@@ -283,11 +284,9 @@ Buffer<shared::float4> IrradianceCache::weighted_sums(const RecordStore& store,
     Buffer<shared::float4> sums(context_, candidates, "ic_sums");
     if (camera != nullptr) {
         const DeviceSplat splat(context_, store, *camera, &tile_depths_);
-        const DeviceRecords records(context_, store, false);
         context_.launch(splat_kernel_, candidates, params, splat.tiles, splat.tile_start,
                         splat.tile_records, records.records, records.payloads, samples, sums);
     } else {
-        const DeviceRecords records(context_, store);
         context_.launch(gather_kernel_, candidates, params, records.grid, records.cell_start,
                         records.cell_records, records.records, records.payloads, samples, sums);
     }
@@ -398,7 +397,8 @@ std::vector<shared::float4> IrradianceCache::gather(
     shared::IcParams params{};
     params.accuracy = store.accuracy();
     params.max_weight = kIrradianceCacheMaxWeight;
-    return weighted_sums(store, samples, params, queries.size(), nullptr).download();
+    const DeviceRecords records(context_, store);
+    return weighted_sums(store, records, samples, params, queries.size(), nullptr).download();
 }
 
 std::vector<shared::float4> IrradianceCache::splat(
@@ -415,7 +415,8 @@ std::vector<shared::float4> IrradianceCache::splat(
     params.placement_spp = spp;
     params.placement_columns = camera.resolution.x;
     measure_tile_depths(buffer, params, camera);
-    return weighted_sums(store, buffer, params, samples.size(), &camera).download();
+    const DeviceRecords records(context_, store, false);
+    return weighted_sums(store, records, buffer, params, samples.size(), &camera).download();
 }
 
 namespace {
@@ -499,15 +500,18 @@ std::vector<shared::float4> IrradianceCache::shade(const shared::IcParams& param
                                                    bool records_overlay) {
     const size_t pixels = static_cast<size_t>(width_) * height_;
     const size_t samples = pixels * static_cast<size_t>(camera_spp_);
-    // The splat buffer: every record splatted over every camera sample.
+    // The splat buffer: every record splatted over every camera sample. The records go to the
+    // device once for the splat and the render pass, with the world-space grid only for the
+    // records overlay.
     auto start = SteadyClock::now();
-    const Buffer<shared::float4> splat = weighted_sums(
-        stores_[0], gbuffer_, candidate_params(0, {1, camera_spp_, width_}), samples, &camera_);
+    const DeviceRecords records(context_, stores_[0], records_overlay);
+    const Buffer<shared::float4> splat =
+        weighted_sums(stores_[0], records, gbuffer_, candidate_params(0, {1, camera_spp_, width_}),
+                      samples, &camera_);
     context_.finish();
     stats_.splatting_seconds = seconds_since(start);
-    // The render pass; the world-space grid of the first level only for the records overlay.
+    // The render pass.
     start = SteadyClock::now();
-    const DeviceRecords records(context_, stores_[0], records_overlay);
     stats_.cache_bytes = records.bytes() + splat.bytes();
     Buffer<shared::float4> film(context_, pixels * RC_CACHED_FILM_SLOTS, "ic_film");
     Buffer<unsigned> counters(context_, 3, "ic_counters");

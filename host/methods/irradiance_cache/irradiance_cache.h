@@ -114,6 +114,8 @@ struct RecordSampling {
 // M x N strata with N ~ pi M and M N close to `rays`.
 RecordSampling strata_for(int rays);
 
+struct DeviceRecords;  // record_level_source.h
+
 class IrradianceCache : private FrameBound {
    public:
     explicit IrradianceCache(const FrameScene& frame);
@@ -160,10 +162,11 @@ class IrradianceCache : private FrameBound {
                              const shared::IcParams& params, const shared::CameraParams& camera);
     // The kernels' parameters of `level` with the candidates of a placement pass.
     shared::IcParams candidate_params(int level, Candidates placement) const;
-    // (sum w E', sum w) of `store`'s records at the candidates `params` names (placement_*) of
-    // `samples`: splatted onto `camera`'s image (ic_splat) or, without a camera, gathered through
-    // the world-space record grid (ic_gather).
-    Buffer<shared::float4> weighted_sums(const RecordStore& store,
+    // (sum w E', sum w) of `store`'s records (`records`: their device copy) at the candidates
+    // `params` names (placement_*) of `samples`: splatted onto `camera`'s image (ic_splat) or,
+    // without a camera, gathered through the world-space record grid (ic_gather; `records` must
+    // hold the grid).
+    Buffer<shared::float4> weighted_sums(const RecordStore& store, const DeviceRecords& records,
                                          const Buffer<shared::GBufferSample>& samples,
                                          const shared::IcParams& params, size_t candidates,
                                          const shared::CameraParams* camera);
