@@ -46,8 +46,8 @@ void random_record(std::mt19937& rng, shared::Record& record, RecordHostData& ho
 
 // After every insertion every pair of overlapping records satisfies R_j <= R_k + |p_j - p_k| on
 // the unclamped radii (checked over all pairs), no insertion raises a radius, each radius is at
-// most its harmonic distance, its method's limit and R_max, the shared part's radius is the
-// clamped one, and every payload is the one inserted.
+// most its harmonic distance and its method's limit, the shared part's radius is the clamped one,
+// and every payload is the one inserted.
 TEST(RecordStore, NeighborClampingKeepsTheTriangleInequalityAfterEveryInsertion) {
     std::mt19937 rng(17);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -72,9 +72,8 @@ TEST(RecordStore, NeighborClampingKeepsTheTriangleInequalityAfterEveryInsertion)
         const std::vector<shared::Record>& records = store.records();
         ASSERT_EQ(j, records.size() - 1);
         EXPECT_LE(h[j].radius, host.harmonic_distance);
-        EXPECT_LE(h[j].radius, host.r_max);
         EXPECT_LE(h[j].radius, limit);
-        clamped += h[j].radius < std::min({host.harmonic_distance, host.r_max, limit}) ? 1 : 0;
+        clamped += h[j].radius < std::min(host.harmonic_distance, limit) ? 1 : 0;
         for (size_t k = 0; k < before.size(); ++k) {
             ASSERT_LE(h[k].radius, before[k]) << "insertion " << i << " raised record " << k;
         }
@@ -100,8 +99,9 @@ TEST(RecordStore, NeighborClampingKeepsTheTriangleInequalityAfterEveryInsertion)
     }
 }
 
-// An infinite harmonic distance (no hit) gives R_max; R_min raises the shared part's radius and
-// hands back R / R' as the gradient scale; a payload of the wrong size is refused.
+// An infinite harmonic distance (no hit) gives an infinite R, R_max on the device (and a neighbor
+// clamps it later); R_min raises the shared part's radius and hands back R / R' as the gradient
+// scale; a payload of the wrong size is refused.
 TEST(RecordStore, ClampsToTheBoundsAndReportsTheGradientScale) {
     std::mt19937 rng(3);
     RecordStore store(0.5f, sizeof(DummyPayload));
@@ -111,7 +111,8 @@ TEST(RecordStore, ClampsToTheBoundsAndReportsTheGradientScale) {
     host.r_max = 6.0f;
     store.insert(make_record(glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, 1.0f)), host,
                  dummy_payload(rng), INFINITY);
-    EXPECT_EQ(store.host_data()[0].radius, 6.0f);
+    EXPECT_EQ(store.host_data()[0].radius, INFINITY);
+    EXPECT_EQ(store.records()[0].radius, 6.0f);
     EXPECT_EQ(store.gradient_scale(0), 1.0f);
     host.harmonic_distance = 0.25f;
     store.insert(make_record(glm::vec3(100.0f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)), host,
@@ -119,11 +120,39 @@ TEST(RecordStore, ClampsToTheBoundsAndReportsTheGradientScale) {
     EXPECT_EQ(store.host_data()[1].radius, 0.25f);
     EXPECT_EQ(store.records()[1].radius, 1.0f);
     EXPECT_EQ(store.gradient_scale(1), 0.25f);
+    EXPECT_EQ(store.host_data()[0].radius, 100.25f);  // clamped by its new neighbor
+    EXPECT_EQ(store.records()[0].radius, 6.0f);
     EXPECT_THROW(store.insert(store.records()[0], host, 1.0f, INFINITY), Error);
     const std::vector<float> floats(36, 0.0f);
     EXPECT_THROW(store.insert_bytes(store.records()[0], host, floats.data(),
                                     floats.size() * sizeof(float), INFINITY),
                  Error);
+}
+
+// Neighbor clamping uses the unclamped R (course, "Summary of Implementation Details": R is
+// limited by the gradient, clamped to [R_min, R_max] into R', and "for [neighbor clamping's]
+// correct functionality, it is essential to use the original, unclamped value of R (not R')").
+// A record made close to the camera (small R_max) beside one made far away (large R_max) must not
+// pass its small R_max on: the far record keeps min(its R, the near record's unclamped R + d).
+TEST(RecordStore, NeighborClampingUsesTheUnclampedRadius) {
+    std::mt19937 rng(5);
+    RecordStore store(0.35f, sizeof(DummyPayload));
+    RecordHostData near;
+    near.harmonic_distance = 30.0f;
+    near.r_min = 0.1f;
+    near.r_max = 1.0f;
+    RecordHostData far = near;
+    far.harmonic_distance = 20.0f;
+    far.r_max = 50.0f;
+    const glm::vec3 n(0.0f, 0.0f, 1.0f);
+    store.insert(make_record(glm::vec3(0.0f), n), near, dummy_payload(rng), INFINITY);
+    store.insert(make_record(glm::vec3(0.5f, 0.0f, 0.0f), n), far, dummy_payload(rng), INFINITY);
+    // Course: R_far = min(20, 30 + 0.5) = 20, R_near = min(30, 20 + 0.5) = 20.5; then the clamp.
+    EXPECT_EQ(store.host_data()[1].radius, 20.0f);
+    EXPECT_EQ(store.records()[1].radius, 20.0f);
+    EXPECT_EQ(store.host_data()[0].radius, 20.5f);
+    EXPECT_EQ(store.records()[0].radius, 1.0f);
+    EXPECT_EQ(store.gradient_scale(0), 1.0f);
 }
 
 // Restoring a store's records gives the same shared parts, host data, payloads and neighbor

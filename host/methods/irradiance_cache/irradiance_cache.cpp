@@ -311,8 +311,11 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
     Buffer<unsigned> uncovered_count(context_, 1, "ic_uncovered_count");
     const shared::IcParams params = candidate_params(level, placement);
     const float a = sampling_.accuracy;
-    auto bound = [a](const Spacing& spacing, float footprint) {
-        return (spacing.world ? spacing.value : spacing.value * footprint) / a;
+    // R_min and R_max bound the record's radius R itself, in multiples of the projected pixel
+    // size (course, "Minimum by projected pixel size": Tabellion and Lamorlette's 1.5x-3x for
+    // R_min, 10x for R_max; Radiance's R_max = 64 R_min) or in scene units.
+    auto bound = [](const Spacing& spacing, float footprint) {
+        return spacing.world ? spacing.value : spacing.value * footprint;
     };
     // A pass covers for good the samples it places records at (a record always covers its own
     // position), so passes until all are covered end.

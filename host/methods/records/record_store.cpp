@@ -47,13 +47,12 @@ float RecordStore::gradient_scale(size_t i) const {
 size_t RecordStore::insert_bytes(const shared::Record& record, const RecordHostData& host,
                                  const void* payload, size_t bytes, float radius_limit) {
     check_payload_size(bytes);
-    // R from the harmonic mean distance, limited by the method's limit (irradiance caching: the
-    // translational gradient, course "Gradient Limit on Record Spacing") and by r_max, above
-    // which R never matters (this keeps neighbor searches local; the lower clamp comes only
-    // after neighbor clamping).
-    float radius = std::isfinite(host.harmonic_distance) ? host.harmonic_distance : host.r_max;
-    radius = std::min(radius, radius_limit);
-    radius = std::min(radius, host.r_max);
+    // R from the harmonic mean distance (infinite where no ray hit), limited by the method's
+    // limit (irradiance caching: the translational gradient, course "Gradient Limit on Record
+    // Spacing"). Neighbor clamping works on this unclamped R; the [r_min, r_max] clamp comes after
+    // it (course, "Summary of Implementation Details": "it is essential to use the original,
+    // unclamped value of R").
+    float radius = std::min(host.harmonic_distance, radius_limit);
 
     // Neighbor clamping: first the new record by every record it overlaps, then the others by it,
     // and on from every record that changed. (The course clamps one ring of neighbors; the

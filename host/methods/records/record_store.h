@@ -1,6 +1,7 @@
 // The record store every caching method shares (DESIGN.md §2, §6.2 step 4): records inserted in
-// record-index order with their validity radius R limited by the harmonic mean distance, by a
-// limit the method supplies and by R_max; neighbor clamping; the [R_min, R_max] clamp, with the
+// record-index order with their validity radius R limited by the harmonic mean distance and by a
+// limit the method supplies; neighbor clamping on that unclamped R; then the [R_min, R_max]
+// clamp, with the
 // factor a method scales its payload's gradients by when the clamp raised R. A record is its
 // shared part (shared::Record, kernels/shared/records.h), the host-only data below and the
 // method's payload, stored once, as bytes the store never interprets.
@@ -25,8 +26,8 @@ struct RecordHostData {
     float min_distance = 0.0f;
     float r_min = 0.0f;  // bounds on the validity radius R, from the footprint where it was made
     float r_max = 0.0f;
-    // R before the [r_min, r_max] clamp: the harmonic mean distance limited by the method's limit
-    // and by r_max, then by neighbor clamping (set by RecordStore::insert).
+    // R before the [r_min, r_max] clamp: the harmonic mean distance (infinite: no hit) limited by
+    // the method's limit, then by neighbor clamping (set by RecordStore::insert).
     float radius = 0.0f;
 };
 static_assert(sizeof(RecordHostData) == 20);
@@ -41,7 +42,7 @@ class RecordStore {
     // `accuracy` a: a record influences points within a R. Every payload has `payload_bytes`.
     RecordStore(float accuracy, size_t payload_bytes);
 
-    // Adds a record: R = min(harmonic distance (r_max if infinite), radius_limit, r_max), then
+    // Adds a record: R = min(harmonic distance (infinite: no hit), radius_limit), then
     // neighbor clamping (course "Neighbor Clamping", "Summary of Implementation Details") with
     // every record whose sphere of radius R overlaps: R_j = min(R_j, R_k + |p_j - p_k|), then
     // R_k = min(R_k, R_j + |p_j - p_k|), propagated until every overlapping pair satisfies the
