@@ -75,6 +75,7 @@ double ic_error(float accuracy, int rays, float min_spacing_pixels, const char* 
     options.rays = rays;
     options.min_spacing = {min_spacing_pixels, false};
     options.max_spacing = {std::max(64.0f, min_spacing_pixels), false};
+    options.bounces = 1;  // hemisphere rays path traced beyond their hits: the knobs alone
     options.records_overlay = false;
     return indirect_relmse(cache.render(options), what);
 }

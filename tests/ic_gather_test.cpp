@@ -291,6 +291,7 @@ TEST(IcSplat, SplatBufferEqualsTheCoursesWeightedSumAndTheGather) {
     options.spp = 2;
     options.rays = 64;
     options.accuracy = 0.4f;
+    options.bounces = 1;
     options.records_overlay = false;
     cache.render(options);
     const RecordStore& store = cache.store(0);

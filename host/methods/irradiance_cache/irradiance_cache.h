@@ -35,10 +35,11 @@ struct IrradianceCacheOptions {
     int rr_depth = 3;
     float accuracy = 0.35f;            // a: records influence points within a R
     int rays = 1024;                   // hemisphere rays per record (M x N strata, N ~ pi M)
-    Spacing min_spacing{8.0f, false};  // bounds on a record's influence radius a R
+    Spacing min_spacing{8.0f, false};  // bounds on a record's radius R (course: R_min, R_max)
     Spacing max_spacing{64.0f, false};
-    int bounces = 1;  // cache levels: 1 path-traces beyond the hemisphere rays' hits; n > 1
-                      // reads level k + 1 there for levels k < n
+    int bounces = 2;  // cache levels: 1 path-traces beyond the hemisphere rays' hits; n > 1
+                      // reads level k + 1 there for levels k < n (docs/irradiance-caching.md:
+                      // two levels cut the Cornell box's indirect relMSE 3x, two-rooms' 10x)
     std::filesystem::path cache_in;   // records to start from
     std::filesystem::path cache_out;  // where to save the records
     bool records_overlay = true;      // draw the `records` layer

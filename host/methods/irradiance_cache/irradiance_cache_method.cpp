@@ -20,12 +20,12 @@ std::vector<OptionSpec> irradiance_cache_option_specs() {
          "a R (default 0.35)"},
         {"--ic-rays", "", "N", "ic: hemisphere rays per record (Radiance's -ad; default 1024)"},
         {"--ic-min-spacing", "", "L",
-         "ic: smallest record influence radius a R, in pixels (\"8\", \"8px\") or scene units "
+         "ic: smallest record radius R_min, in projected pixels (\"3\", \"3px\") or scene units "
          "(\"5u\") (default 8px)"},
-        {"--ic-max-spacing", "", "L", "ic: largest record influence radius a R (default 64px)"},
+        {"--ic-max-spacing", "", "L", "ic: largest record radius R_max (default 64px)"},
         {"--ic-bounces", "", "N",
          "ic: cache levels (1: path tracing beyond the hemisphere rays' hits; N: records at N "
-         "levels, the last path traced beyond; default 1)"},
+         "levels, the last path traced beyond; default 2, 1 with --ic-ivg)"},
         {"--cache-out", "", "FILE", "ic: save the irradiance cache's records (every level)"},
         {"--cache-in", "", "FILE",
          "ic: start from the records of a saved cache (same scene, frame and accuracy)"},
@@ -50,7 +50,9 @@ IrradianceCacheOptions parse_options(const ParsedArguments& arguments,
     if (arguments.has("--ic-max-spacing")) {
         ic.max_spacing = parse_spacing(arguments.value("--ic-max-spacing"), "--ic-max-spacing");
     }
-    ic.bounces = static_cast<int>(arguments.integer("--ic-bounces", ic.bounces, 1, 8));
+    // Two cache levels unless the grid serves the hemisphere rays' hits (one level only).
+    const int bounces = arguments.has("--ic-ivg") ? 1 : ic.bounces;
+    ic.bounces = static_cast<int>(arguments.integer("--ic-bounces", bounces, 1, 8));
     ic.cache_in = arguments.value("--cache-in");
     ic.cache_out = arguments.value("--cache-out");
     if (!ic.cache_out.empty()) {
