@@ -80,6 +80,7 @@ int run_bench_sh(const std::vector<std::string>& args) {
         {"--records", "", "N", "records projected and vector triples rotated (default 4096)"},
         {"--strata", "", "M", "polar strata M of a record's hemisphere; N = 4 M (default 16)"},
         {"--max-error", "", "E", "largest BRDF representation error (default 0.1)"},
+        {"--resolution", "", "N", "BRDF table texels per side (default 32)"},
         {"--json", "", "FILE", "also write the results as JSON"},
     };
     for (OptionSpec& spec : device_option_specs()) {
@@ -102,6 +103,8 @@ int run_bench_sh(const std::vector<std::string>& args) {
     const int m = static_cast<int>(arguments.integer("--strata", 16, 1, 256));
     BrdfTableOptions table_options;
     table_options.max_error = arguments.number("--max-error", table_options.max_error, 1e-6, 0.999);
+    table_options.resolution =
+        static_cast<int>(arguments.integer("--resolution", table_options.resolution, 2, 256));
 
     Context context(context_options(arguments));
     const Scene scene = load_scene(scene_path);
@@ -149,6 +152,7 @@ int run_bench_sh(const std::vector<std::string>& args) {
             {"rotations_per_second", figures.rotations_per_second},
             {"scene", scene_path},
             {"max_error", table_options.max_error},
+            {"resolution", table_options.resolution},
             {"materials", materials}};
         write_file_atomically(arguments.value("--json"), report.dump(2) + "\n");
     }
