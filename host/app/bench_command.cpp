@@ -8,7 +8,7 @@ namespace rc {
 
 int run_bench_command(const std::vector<std::string>& args) {
     if (args.empty() || args[0] == "--help" || args[0] == "-h") {
-        std::cout << "usage: radcache bench all|rays|pt|compile [options]\n";
+        std::cout << "usage: radcache bench all|rays|pt|sh|compile [options]\n";
         return args.empty() ? kExitUsage : 0;
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
@@ -21,10 +21,13 @@ int run_bench_command(const std::vector<std::string>& args) {
     if (args[0] == "pt") {
         return run_bench_pt(rest);
     }
+    if (args[0] == "sh") {
+        return run_bench_sh(rest);
+    }
     if (args[0] == "compile") {
         return run_bench_compile(rest);
     }
-    throw Error("unknown benchmark '" + args[0] + "' (all, rays, pt, compile)", kExitUsage);
+    throw Error("unknown benchmark '" + args[0] + "' (all, rays, pt, sh, compile)", kExitUsage);
 }
 
 std::string shipped_scene(const std::string& name) {

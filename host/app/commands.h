@@ -15,6 +15,7 @@ int run_bench_all(const std::vector<std::string>& args);
 int run_bench_rays(const std::vector<std::string>& args);
 int run_bench_compile(const std::vector<std::string>& args);
 int run_bench_pt(const std::vector<std::string>& args);
+int run_bench_sh(const std::vector<std::string>& args);
 
 // scenes/<name>/scene.json of the working directory, else of the source tree radcache was built
 // from; Error (exit status 2) naming --scene when neither exists.

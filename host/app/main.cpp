@@ -19,6 +19,7 @@ const char* kUsage =
     "  bench all        every kernel family on every device, side by side\n"
     "  bench rays       traversal throughput against Embree\n"
     "  bench pt         path-tracing throughput\n"
+    "  bench sh         radiance caching's spherical harmonics: projection, rotation, BRDF tables\n"
     "  bench compile    cold and warm kernel build times\n"
     "\n"
     "radcache COMMAND --help describes a command's options.\n";

@@ -1,0 +1,147 @@
+// Test kernels of radiance caching's foundations (tests/sh_*_test.cpp, tests/brdf_table_test.cpp,
+// tests/rc_layout_test.cpp; `radcache bench sh`). Item index: begin + get_global_id(0).
+#include "radiance_cache/rc_brdf_table.h"
+#include "radiance_cache/rc_projection.h"
+#include "radiance_cache/rc_rotation.h"
+#include "shared/radiance_cache.h"
+
+// The basis functions of `basis` at directions[i] into out[i * order^2 ...].
+__kernel void rc_basis_probe(uint begin, uint end, int basis, int order,
+                             __global const float4* directions, __global float* out) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    float y[RC_SH_MAX_COEFFICIENTS];
+    const float4 d = directions[i];
+    rc_basis_eval(basis, d.x, d.y, d.z, order, y);
+    const int count = rc_sh_count(order);
+    for (int k = 0; k < count; ++k) {
+        out[i * count + k] = y[k];
+    }
+}
+
+// Test radiance of cells_probe: 0: `colour`; 1: colour * cos(theta)^exponent; 2: colour *
+// function `function` of `basis` (a single basis function).
+#define RC_PROBE_CONSTANT 0
+#define RC_PROBE_COSINE_POWER 1
+#define RC_PROBE_BASIS_FUNCTION 2
+
+// Item i = record * m n + cell: the test radiance arriving from the direction of the cell, as a
+// hemisphere ray of record `record` would bring it.
+__kernel void rc_cells_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi, int mode,
+                             int basis, int function, float exponent, float4 colour,
+                             __global float4* cells) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const uint record = i / (uint)(m * n);
+    const int cell = (int)(i % (uint)(m * n));
+    const float3 d = rc_stratum_direction(key_lo, key_hi, record, cell, m, n);
+    float scale = 1.0f;
+    if (mode == RC_PROBE_COSINE_POWER) {
+        scale = pow(d.z, exponent);
+    } else if (mode == RC_PROBE_BASIS_FUNCTION) {
+        float y[RC_SH_MAX_COEFFICIENTS];
+        rc_basis_eval(basis, d.x, d.y, d.z, RC_SH_MAX_ORDER, y);
+        scale = y[function];
+    }
+    cells[i] = (float4)(scale * colour.xyz, 0.0f);
+}
+
+// Item = record: rc_project_cells over the record's m n cells into out[record * 3 order^2 ...].
+__kernel void rc_projection_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi,
+                                  int basis, int order, __global const float4* cells,
+                                  __global float* out) {
+    const uint record = begin + (uint)get_global_id(0);
+    if (record >= end) {
+        return;
+    }
+    float c[3 * RC_SH_MAX_COEFFICIENTS];
+    rc_project_cells(cells + record * (uint)(m * n), m, n, key_lo, key_hi, record, basis, order, c);
+    const int count = 3 * rc_sh_count(order);
+    for (int k = 0; k < count; ++k) {
+        out[record * count + k] = c[k];
+    }
+}
+
+// Item i: rotates `vectors` coefficient vectors of order `order` at coefficients[i * vectors *
+// order^2 ...] in place by the rotation whose rows are rotations[3 i .. 3 i + 2].xyz.
+__kernel void rc_rotation_probe(uint begin, uint end, int order, int vectors,
+                                __global const float4* rotations, __global float* coefficients) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    float r[9];
+    for (int row = 0; row < 3; ++row) {
+        const float4 v = rotations[3 * i + row];
+        r[3 * row] = v.x;
+        r[3 * row + 1] = v.y;
+        r[3 * row + 2] = v.z;
+    }
+    const int count = rc_sh_count(order);
+    float c[3 * RC_SH_MAX_COEFFICIENTS];
+    for (int k = 0; k < vectors * count; ++k) {
+        c[k] = coefficients[i * vectors * count + k];
+    }
+    rc_sh_rotate(r, order, c, vectors, count);
+    for (int k = 0; k < vectors * count; ++k) {
+        coefficients[i * vectors * count + k] = c[k];
+    }
+}
+
+// Item i: the frame rotation from frame (rows from[3 i .. 3 i + 2]: t, b, n) to frame `to` into
+// out[3 i .. 3 i + 2] (rows of R).
+__kernel void rc_frame_rotation_probe(uint begin, uint end, __global const float4* from,
+                                      __global const float4* to, __global float4* out) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    Frame a;
+    a.t = from[3 * i].xyz;
+    a.b = from[3 * i + 1].xyz;
+    a.n = from[3 * i + 2].xyz;
+    Frame b;
+    b.t = to[3 * i].xyz;
+    b.b = to[3 * i + 1].xyz;
+    b.n = to[3 * i + 2].xyz;
+    float r[9];
+    rc_frame_rotation(&a, &b, r);
+    for (int row = 0; row < 3; ++row) {
+        out[3 * i + row] = (float4)(r[3 * row], r[3 * row + 1], r[3 * row + 2], 0.0f);
+    }
+}
+
+// Item i: the table's coefficients (order^2) and order for the outgoing direction wo[i].
+__kernel void rc_brdf_lookup_probe(uint begin, uint end, BrdfTableInfo info, int order,
+                                   __global const float* coefficients, __global const int* orders,
+                                   __global const float4* wo, __global float* out,
+                                   __global int* out_orders) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    float c[RC_SH_MAX_COEFFICIENTS];
+    rc_brdf_table_coefficients(coefficients, &info, wo[i].xyz, order, c);
+    const int count = rc_sh_count(order);
+    for (int k = 0; k < count; ++k) {
+        out[i * count + k] = c[k];
+    }
+    out_orders[i] = rc_brdf_table_order(orders, &info, wo[i].xyz);
+}
+
+// sizeof and offsetof of every radiance-caching shared struct, in RC_RADIANCE_CACHE_LAYOUTS order.
+__kernel void rc_report_layouts(uint begin, uint end, __global uint* out) {
+    if (begin + (uint)get_global_id(0) != 0u || end == 0u) {
+        return;
+    }
+    uint i = 0;
+#define RC_REPORT_STRUCT(type) out[i++] = (uint)sizeof(type);
+#define RC_REPORT_FIELD(type, field) out[i++] = (uint)rc_offsetof(type, field);
+    RC_RADIANCE_CACHE_LAYOUTS(RC_REPORT_STRUCT, RC_REPORT_FIELD)
+#undef RC_REPORT_STRUCT
+#undef RC_REPORT_FIELD
+}

@@ -1,0 +1,35 @@
+// Host-side pieces of the spherical-harmonics tests: product quadrature over the sphere and the
+// hemisphere (Gauss-Legendre in cos(theta), midpoint in phi), random directions and rotations,
+// and the device's basis functions at given directions (rc_basis_probe).
+#pragma once
+
+#include <random>
+#include <vector>
+
+#include "device/context.h"
+#include "shared/types.h"
+
+namespace rc::test {
+
+struct DirectionQuadrature {
+    std::vector<shared::float4> directions;
+    std::vector<double> weights;
+};
+
+// theta_nodes Gauss-Legendre nodes in z over [z_min, 1] times phi_nodes midpoints in phi: exact
+// for polynomials of degree <= 2 theta_nodes - 1 in z times trigonometric polynomials of degree
+// < phi_nodes in phi. z_min = -1: the sphere; 0: the upper hemisphere.
+DirectionQuadrature product_quadrature(double z_min, int theta_nodes, int phi_nodes);
+
+// A uniformly distributed unit direction.
+shared::float4 random_direction(std::mt19937& rng);
+
+// A uniformly distributed rotation (from a normalized Gaussian quaternion), row-major 3x3.
+std::vector<double> random_rotation(std::mt19937& rng);
+
+// The device's basis functions (RC_BASIS_SH or RC_BASIS_HSH) of order `order` at `directions`:
+// direction i's at [i * order^2, (i + 1) * order^2).
+std::vector<float> device_basis(Context& context, int basis, int order,
+                                const std::vector<shared::float4>& directions);
+
+}  // namespace rc::test
