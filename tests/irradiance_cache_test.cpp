@@ -189,8 +189,9 @@ TEST(IrradianceCache, OneBounceHasNoIndirectLight) {
 }
 
 // At its default settings (4 camera samples per pixel) the cache's indirect light on the Cornell
-// box is within relMSE 4e-4 of the reference's (measured 2.3e-4; the reference's own noise
-// contributes about 0.8e-4), and its mean within 1%.
+// box is within relMSE 3e-4 of the reference's (measured 1.62e-4 against the 65 536-spp
+// reference, whose own noise contributes about 0.05e-4; 2.3e-4 against the 4096-spp one shipped
+// before), and its mean within 1%.
 TEST(IrradianceCache, CornellBoxIndirectIsCloseToTheReference) {
     const Scene scene = test::load_cornell_box();
     IrradianceCacheOptions options;
@@ -201,7 +202,7 @@ TEST(IrradianceCache, CornellBoxIndirectIsCloseToTheReference) {
     const Image indirect = select_layers(r.image, {"indirect"});
     const ImageError e = image_error(indirect, reference);
     std::printf("Cornell box indirect: relMSE %.3g, %zu records\n", e.relmse, r.stats.records);
-    EXPECT_LT(e.relmse, 4e-4);
+    EXPECT_LT(e.relmse, 3e-4);
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(e.test_means[c], e.reference_means[c], 0.01 * e.reference_means[c]);
     }

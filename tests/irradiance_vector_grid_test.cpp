@@ -28,11 +28,12 @@ namespace rc {
 namespace {
 
 // Final gathering in the accuracy test: 16 stratified gather rays per pixel, one camera sample
-// (measured relMSE 0.0059, means 1.8% low or closer). Irradiance caching with the grid: measured
-// relMSE 2.4e-4.
+// (measured relMSE 0.00586 against the 65 536-spp reference, means 1.9% low or closer).
+// Irradiance caching with the grid: measured relMSE 1.68e-4 (2.4e-4 against the 4096-spp
+// reference shipped before, whose own noise was about 0.8e-4 of it).
 constexpr int kIvgTestGatherRays = 16;
 constexpr double kIvgGatherRelMse = 0.008;
-constexpr double kIcWithGridRelMse = 4e-4;
+constexpr double kIcWithGridRelMse = 3e-4;
 
 // A scene with its device buffers and a grid.
 struct GridScene {

@@ -184,17 +184,18 @@ double half_rounding_variance(double value) {
     return ulp * ulp / 12.0;
 }
 
-// The stored reference (scenes/cornell-box/reference.exr, 512^2 at 4096 samples per pixel, with
-// each pixel's per-sample standard deviation) box-filtered 4 x 4 is the expected value of a 128^2
-// render.
+// The stored reference (scenes/cornell-box/reference.exr, 512^2 at the samples per pixel its
+// reference.json states, 65 536, with each pixel's per-sample standard deviation) box-filtered
+// 4 x 4 is the expected value of a 128^2 render.
 // Per pixel and channel z = (render - reference) / sqrt(var_render + var_reference + var_half),
 // where var_render, the variance of the render's 128-sample mean, comes from the reference's
-// per-sample variance (65 536 samples per test pixel) rather than from the render's own 128
+// per-sample variance (16 x 65 536 samples per test pixel) rather than from the render's own 128
 // samples: skewed pixels (rare bright paths) underestimate their variance from few samples.
 // Beyond |z| = 5 a normal variable lies with probability 6e-7; means of 128 skewed samples (rare
 // bright paths) are not quite normal and fall short more often, so the test allows 0.1% of the
-// 49 152 values beyond 5 (16 on the shipped reference), and checks the image-wide sum of
-// differences against its standard deviation (|Z| < 5) for a global bias.
+// 49 152 values beyond 5 (15 on the shipped reference; 16 on the 4096-spp one before), and
+// checks the image-wide sum of differences against its standard deviation (|Z| < 5) for a
+// global bias.
 TEST(PathTracer, CornellBoxAgreesWithItsReferenceByPerPixelZTest) {
     const std::filesystem::path folder = test::source_dir() / "scenes/cornell-box";
     const Image reference = read_image(folder / "reference.exr");

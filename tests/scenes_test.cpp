@@ -1,7 +1,8 @@
-// Every shipped scene loads and renders without NaN, and every shipped reference matches its
-// scene (resolution, layers, a record of how it was made).
+// Every shipped scene loads and renders without NaN, and every shipped reference (every frame of
+// an animated scene) matches its scene (resolution, layers, a record of how it was made).
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "image/image_io.h"
@@ -47,28 +48,84 @@ TEST(Scenes, EveryShippedSceneRendersWithoutNonFiniteSamples) {
     }
 }
 
+// The reference EXRs of a scene and their frames, by the layout of scenes/README.md: a still
+// scene's reference.exr, or reference/frameFFFF.exr for every frame of an animated one.
+std::vector<std::pair<std::filesystem::path, int>> reference_files(
+    const std::filesystem::path& folder, const Scene& scene) {
+    const int first = static_cast<int>(scene.animation.frame_start);
+    const int last = static_cast<int>(scene.animation.frame_end);
+    if (last == first) {
+        return {{folder / "reference.exr", first}};
+    }
+    std::vector<std::pair<std::filesystem::path, int>> files;
+    for (int frame = first; frame <= last; ++frame) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame%04d.exr", frame);
+        files.emplace_back(folder / "reference" / name, frame);
+    }
+    return files;
+}
+
+// One reference EXR against its scene and the record beside it (same stem, .json).
+void check_reference(const std::filesystem::path& file, int frame, const Scene& scene) {
+    SCOPED_TRACE(file.string());
+    std::filesystem::path record_path = file;
+    record_path.replace_extension(".json");
+    ASSERT_TRUE(std::filesystem::is_regular_file(record_path));
+    const nlohmann::json record = nlohmann::json::parse(read_file(record_path));
+    const Image reference = read_image(file);
+    EXPECT_EQ(reference.width, scene.camera.width);
+    EXPECT_EQ(reference.height, scene.camera.height);
+    EXPECT_EQ(record["file"], file.filename().string());
+    EXPECT_EQ(record["resolution"][0], scene.camera.width);
+    EXPECT_EQ(record["resolution"][1], scene.camera.height);
+    EXPECT_EQ(record["frame"], frame);
+    EXPECT_EQ(record["method"], "pt");
+    EXPECT_EQ(record["nonfinite_samples"], 0);
+    EXPECT_GE(record["spp"].get<int>(), 1024);
+    EXPECT_NE(record["command"].get<std::string>().find("--spp " +
+                                                        std::to_string(record["spp"].get<int>())),
+              std::string::npos);
+    EXPECT_EQ(layer_names(reference),
+              (std::vector<std::string>{"beauty", "direct", "indirect", "stddev"}));
+}
+
 TEST(Scenes, ReferencesMatchTheirScenes) {
-    size_t references = 0;
+    size_t scenes_with_references = 0;
+    uintmax_t bytes = 0;
     for (const std::filesystem::path& folder : shipped_scenes()) {
-        if (!std::filesystem::exists(folder / "reference.exr")) {
+        const bool still = std::filesystem::exists(folder / "reference.exr");
+        const bool frames = std::filesystem::exists(folder / "reference");
+        if (!still && !frames) {
             continue;
         }
         SCOPED_TRACE(folder.filename().string());
-        ++references;
+        ++scenes_with_references;
         const Scene scene = load_scene(folder / "scene.json");
-        const nlohmann::json record = nlohmann::json::parse(read_file(folder / "reference.json"));
-        const Image reference = read_image(folder / "reference.exr");
-        EXPECT_EQ(reference.width, scene.camera.width);
-        EXPECT_EQ(reference.height, scene.camera.height);
-        EXPECT_EQ(record["resolution"][0], scene.camera.width);
-        EXPECT_EQ(record["frame"], scene.animation.frame_start);
-        EXPECT_EQ(record["nonfinite_samples"], 0);
-        EXPECT_GE(record["spp"].get<int>(), 1024);
-        EXPECT_EQ(layer_names(reference),
-                  (std::vector<std::string>{"beauty", "direct", "indirect", "stddev"}));
+        const bool animated = scene.animation.frame_end > scene.animation.frame_start;
+        // One layout per scene: an animated scene's frames are not also a reference.exr.
+        EXPECT_EQ(frames, animated);
+        EXPECT_EQ(still, !animated);
+        size_t files = 0;
+        for (const auto& [file, frame] : reference_files(folder, scene)) {
+            check_reference(file, frame, scene);
+            bytes += std::filesystem::file_size(file);
+            ++files;
+        }
+        if (frames) {
+            // Nothing else in the folder: every frame's EXR and record.
+            size_t entries = 0;
+            for ([[maybe_unused]] const auto& entry :
+                 std::filesystem::directory_iterator(folder / "reference")) {
+                ++entries;
+            }
+            EXPECT_EQ(entries, 2 * files);
+        }
     }
     // Every scene but the analytic furnace has one.
-    EXPECT_EQ(references, shipped_scenes().size() - 1);
+    EXPECT_EQ(scenes_with_references, shipped_scenes().size() - 1);
+    // The repository's references stay under 30 MB (scenes/README.md).
+    EXPECT_LT(bytes, uintmax_t{30} * 1000 * 1000) << bytes << " bytes of references";
 }
 
 }  // namespace

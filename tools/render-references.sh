@@ -1,46 +1,104 @@
 #!/usr/bin/env bash
-# Renders the path-traced reference of every non-analytic shipped scene into
-# scenes/<name>/reference.exr (half floats: beauty, direct, indirect and the per-sample standard
-# deviation of the beauty) and records how in scenes/<name>/reference.json.
-# Usage: tools/render-references.sh [scene ...]   (default: all; build radcache first)
+# Renders the path-traced references of the shipped scenes with the settings of the shipped ones
+# (65 536 samples per pixel, seed 20261123; moving-sphere every frame 0-23 at 16 384 samples;
+# half floats: beauty, direct, indirect and the per-sample standard deviation of the beauty) and
+# writes beside each EXR the record of how it was made (tools/references.py). Layout:
+# scenes/NAME/reference.exr + reference.json for a still scene, scenes/NAME/reference/frameFFFF.exr
+# + frameFFFF.json for every frame of an animated one (scenes/README.md).
+#
+# Usage: tools/render-references.sh [--device SPEC] [--out DIR] [--spp N] [scene ...]
+#   scene ...      cornell-box glossy-box two-rooms moving-sphere (default: all)
+#   --device SPEC  the OpenCL device (radcache render --device: P:D or part of its name;
+#                  default: radcache's, the first GPU, else the first CPU device)
+#   --out DIR      write DIR/NAME/... instead of scenes/NAME/... (the same layout)
+#   --spp N        N samples per pixel (every frame) instead of the shipped settings, for a smoke
+#                  run; needs --out, so that it never replaces the shipped references
+# The radcache executable is $RADCACHE, else build/radcache. Each scene renders into a temporary
+# folder and replaces its old reference only once its render and records are complete.
+# One scene takes about a minute on an NVIDIA H100 (scenes/*/reference.json: seconds), hours on
+# a CPU.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-radcache=build/radcache
-[ -x "$radcache" ] || { echo "build radcache first (see README)" >&2; exit 2; }
+root=$(cd "$(dirname "$0")/.." && pwd)
+radcache=${RADCACHE:-$root/build/radcache}
+fail() { echo "render-references: $*" >&2; exit 2; }
 
-# Samples per pixel of each reference; the seed is fixed so the files are reproducible.
-declare -A spp=([cornell-box]=4096 [glossy-box]=4096 [two-rooms]=8192 [moving-sphere]=8192)
-seed=20261121
-scenes=("$@")
-[ ${#scenes[@]} -gt 0 ] || scenes=(cornell-box glossy-box two-rooms moving-sphere)
+# The shipped references' settings: samples per pixel, resolution, and the frames of the
+# animated scene (every one).
+seed=20261123
+declare -A spp=([cornell-box]=65536 [glossy-box]=65536 [two-rooms]=65536 [moving-sphere]=16384)
+declare -A size=([cornell-box]=512x512 [glossy-box]=512x512 [two-rooms]=512x384
+                 [moving-sphere]=256x256)
+declare -A frames=([moving-sphere]=0:23)
+all=(cornell-box glossy-box two-rooms moving-sphere)
 
+out=$root/scenes
+spp_override=""
+device=()
+scenes=()
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --device) [ $# -ge 2 ] || fail "--device needs a value"; device=(--device "$2"); shift 2 ;;
+        --out) [ $# -ge 2 ] || fail "--out needs a folder"; out=$2; shift 2 ;;
+        --spp)
+            [ $# -ge 2 ] || fail "--spp needs a value"
+            [[ "$2" =~ ^[1-9][0-9]*$ ]] || fail "--spp: expected a positive integer, got '$2'"
+            spp_override=$2; shift 2 ;;
+        -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+        -*) fail "unknown option $1 (see --help)" ;;
+        *) [ -n "${spp[$1]:-}" ] || fail "no reference settings for scene '$1' (known: ${all[*]})"
+           scenes+=("$1"); shift ;;
+    esac
+done
+[ ${#scenes[@]} -gt 0 ] || scenes=("${all[@]}")
+if [ -n "$spp_override" ] && [ "$out" = "$root/scenes" ]; then
+    fail "--spp $spp_override: give --out DIR too; the shipped references keep their settings"
+fi
+[ -x "$radcache" ] || fail "no radcache executable at $radcache (build it, or set RADCACHE)"
+radcache=$(cd "$(dirname "$radcache")" && pwd)/$(basename "$radcache")
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+cd "$root"
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
 for name in "${scenes[@]}"; do
-    n=${spp[$name]:?"no reference settings for scene $name"}
-    dir=scenes/$name
-    command=("$radcache" render "$dir/scene.json" -o "$dir/reference.exr" --spp "$n" --seed "$seed"
-             --half --aovs beauty,direct,indirect,stddev --stats "$dir/reference.stats.json" --quiet)
-    echo "rendering $name at $n spp"
-    "${command[@]}"
-    python3 - "$dir" "$n" "$seed" "${command[*]}" <<'PY'
-import json, sys
-directory, spp, seed, command = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4]
-stats = json.load(open(f"{directory}/reference.stats.json"))
-record = {
-    "file": "reference.exr",
-    "layers": "beauty (R, G, B), direct, indirect, stddev (of one beauty sample of the pixel)",
-    "storage": "OpenEXR, half float, zip",
-    "spp": spp,
-    "seed": seed,
-    "frame": stats["frames"][0]["frame"],
-    "resolution": stats["resolution"],
-    "command": command.replace("build/radcache", "radcache"),
-    "device": stats["device"],
-    "seconds": round(stats["seconds"]["total"], 1),
-    "rays": stats["rays"],
-    "nonfinite_samples": stats["nonfinite_samples"],
-}
-json.dump(record, open(f"{directory}/reference.json", "w"), indent=2)
-open(f"{directory}/reference.json", "a").write("\n")
-PY
-    rm -f "$dir/reference.stats.json"
+    n=${spp_override:-${spp[$name]}}
+    tmp=$work/$name
+    mkdir -p "$tmp"
+    # The command as the records state it: paths of the outputs relative to the render folder.
+    if [ -n "${frames[$name]:-}" ]; then
+        outputs=(--frames "${frames[$name]}" -o "$name/frame####.exr")
+        stats=$name/stats.json
+    else
+        outputs=(-o "$name.exr")
+        stats=$name.stats.json
+    fi
+    command=(render "scenes/$name/scene.json" "${outputs[@]}" --spp "$n" --seed "$seed"
+             --width "${size[$name]%x*}" --height "${size[$name]#*x}" --half
+             --aovs beauty,direct,indirect,stddev --stats "$stats" "${device[@]}")
+    echo "rendering $name at $n spp: radcache ${command[*]}"
+    # Step 1: render into the temporary folder (the same command, its outputs under $work).
+    run=()
+    for argument in "${command[@]}"; do
+        case "$argument" in
+            "$name.exr" | "$name/frame####.exr" | "$stats") run+=("$work/$argument") ;;
+            *) run+=("$argument") ;;
+        esac
+    done
+    "$radcache" "${run[@]}"
+    # Step 2: the records, then the EXRs under their shipped names.
+    staged=$tmp/staged
+    python3 tools/references.py record "$work/$stats" --scene "scenes/$name" --dest "$staged" \
+        --command "radcache ${command[*]}"
+    if [ -n "${frames[$name]:-}" ]; then
+        mv "$tmp"/frame*.exr "$staged/reference/"
+        rm -rf "$out/$name/reference"
+        mkdir -p "$out/$name"
+        mv "$staged/reference" "$out/$name/reference"
+    else
+        mv "$work/$name.exr" "$staged/reference.exr"
+        mkdir -p "$out/$name"
+        mv "$staged/reference.exr" "$staged/reference.json" "$out/$name/"
+    fi
+    echo "written $out/$name"
 done

@@ -24,6 +24,8 @@ import subprocess
 import sys
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import references  # noqa: E402
 RADCACHE = os.path.join(ROOT, "build", "radcache")
 
 
@@ -77,7 +79,8 @@ def main():
     results = []
     for name in args.scenes:
         scene = os.path.join(ROOT, "scenes", name, "scene.json")
-        reference = os.path.join(ROOT, "scenes", name, "reference.exr")
+        # The reference of the frame a render without --frames shows (scenes/README.md).
+        reference = references.reference_path(os.path.join(ROOT, "scenes", name))
         out = os.path.join(args.out, name)
         os.makedirs(out, exist_ok=True)
         # Warm the kernel binary cache for both methods.

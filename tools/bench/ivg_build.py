@@ -18,6 +18,8 @@ import subprocess
 import sys
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import references  # noqa: E402
 RADCACHE = os.path.join(ROOT, "build", "radcache")
 
 
@@ -64,9 +66,11 @@ def main():
                        "grid_mib": g["grid_bytes"] / 2.0 ** 20}
                 if args.accuracy:
                     compare_json = image + ".compare.json"
-                    run(["compare", image,
-                         os.path.join(ROOT, "scenes", scene_name, "reference.exr"), "--aov",
-                         "indirect", "--json", compare_json])
+                    # The reference of the frame a render without --frames shows.
+                    reference = references.reference_path(os.path.join(ROOT, "scenes",
+                                                                       scene_name))
+                    run(["compare", image, reference, "--aov", "indirect", "--json",
+                         compare_json])
                     with open(compare_json) as f:
                         row["indirect_relmse"] = json.load(f)["relmse"]
                 rows.append(row)
