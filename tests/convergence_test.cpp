@@ -10,48 +10,18 @@
 #include <string>
 
 #include "image/image_error.h"
-#include "image/image_io.h"
 #include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
 #include "methods/irradiance_vector_grid/ivg_method.h"
 #include "test_support.h"
-#include "util/error.h"
 
 namespace rc {
 namespace {
 
 constexpr int kSize = 64;
 
-// `image` box filtered by an integer factor in both directions.
-Image box_filtered(const Image& image, int factor) {
-    Image out(image.width / factor, image.height / factor, image.channels);
-    out.channel_names = image.channel_names;
-    const float weight = 1.0f / static_cast<float>(factor * factor);
-    for (int y = 0; y < out.height; ++y) {
-        for (int x = 0; x < out.width; ++x) {
-            for (int c = 0; c < image.channels; ++c) {
-                double sum = 0.0;
-                for (int j = 0; j < factor; ++j) {
-                    for (int i = 0; i < factor; ++i) {
-                        sum += image.at(factor * x + i, factor * y + j, c);
-                    }
-                }
-                out.at(x, y, c) = static_cast<float>(sum) * weight;
-            }
-        }
-    }
-    return out;
-}
-
 const Image& reference_indirect() {
-    static const Image reference = [] {
-        const Image full = select_layers(
-            read_image(test::source_dir() / "scenes/cornell-box/reference.exr"), {"indirect"});
-        if (full.width % kSize != 0 || full.height != full.width) {
-            throw Error("the Cornell box reference is not a multiple of the tests' size");
-        }
-        return box_filtered(full, full.width / kSize);
-    }();
+    static const Image reference = test::cornell_reference("indirect", kSize);
     return reference;
 }
 

@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <memory>
 
+#include "image/image_io.h"
 #include "scene/scene_loader.h"
+#include "util/error.h"
 
 namespace rc::test {
 
@@ -26,6 +28,37 @@ std::filesystem::path source_dir() { return RADCACHE_SOURCE_DIR; }
 std::filesystem::path radcache_executable() { return RADCACHE_EXECUTABLE; }
 
 Scene load_cornell_box() { return load_scene(source_dir() / "scenes/cornell-box/scene.json"); }
+
+Image box_filtered(const Image& image, int factor) {
+    Image out(image.width / factor, image.height / factor, image.channels);
+    out.channel_names = image.channel_names;
+    const double weight = 1.0 / (static_cast<double>(factor) * factor);
+    for (int y = 0; y < out.height; ++y) {
+        for (int x = 0; x < out.width; ++x) {
+            for (int c = 0; c < image.channels; ++c) {
+                double sum = 0.0;
+                for (int j = 0; j < factor; ++j) {
+                    for (int i = 0; i < factor; ++i) {
+                        sum += image.at(factor * x + i, factor * y + j, c);
+                    }
+                }
+                out.at(x, y, c) = static_cast<float>(sum * weight);
+            }
+        }
+    }
+    return out;
+}
+
+Image cornell_reference(const std::string& layer, int size) {
+    const Image full =
+        select_layers(read_image(source_dir() / "scenes/cornell-box/reference.exr"), {layer});
+    if (full.width != full.height || full.width % size != 0) {
+        throw Error("the Cornell box reference (" + std::to_string(full.width) + " x " +
+                    std::to_string(full.height) + ") is not a multiple of " + std::to_string(size) +
+                    " x " + std::to_string(size));
+    }
+    return box_filtered(full, full.width / size);
+}
 
 DeviceFrame::DeviceFrame(Scene loaded, Context& device)
     : context(device),

@@ -8,6 +8,7 @@
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "device/context.h"
+#include "image/image.h"
 #include "methods/frame_scene.h"
 #include "scene/device_scene.h"
 #include "scene/scene.h"
@@ -24,6 +25,13 @@ ContextOptions default_context_options();
 std::filesystem::path source_dir();
 std::filesystem::path radcache_executable();
 Scene load_cornell_box();
+
+// `image` box filtered by an integer factor in both directions. The camera's pixel filter is a
+// box, so a reference box filtered by f is the reference of the same view at 1/f its size.
+Image box_filtered(const Image& image, int factor);
+
+// The Cornell box reference's layer `layer`, box filtered to size x size.
+Image cornell_reference(const std::string& layer, int size);
 
 // A scene with its BVH and both on a device: the FrameScene a method's classes take.
 struct DeviceFrame {
