@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """tools/sweep.py end to end on a tiny Cornell box: the CSV has the documented columns, one row
-per run, errors that fall with the sample count, and the chart and report are written; bad
-input is refused. Run by CTest with $RADCACHE set to the built executable."""
+per point, errors that fall with the sample count, medians and spreads over the repeats, grids
+scaled from the auto grid, and the chart and report are written; a render that is not the same
+on a repeat (a wrapper that changes the seed) fails the sweep; an animated scene's frame finds its
+own reference; bad input is refused. Run by CTest with $RADCACHE set to the built executable."""
 
 import csv
 import json
@@ -17,15 +19,25 @@ SWEEP = os.path.join(ROOT, "tools", "sweep.py")
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 SCRATCH = os.path.join(os.environ.get("RADCACHE_TEST_SCRATCH_DIR") or "/tmp", "sweep_test")
 # The columns docs/results.md and the sweep's docstring document, in order.
-DOCUMENTED_COLUMNS = ["scene", "method", "curve", "setting", "spp", "accuracy", "ic_rays",
-                      "photons", "grid", "gather_rays", "wall_seconds", "render_seconds",
-                      "kernel_seconds", "compile_seconds", "rmse", "relmse", "flip",
-                      "indirect_relmse", "records", "device", "image", "relmse_net"]
+DOCUMENTED_COLUMNS = ["scene", "frame", "method", "curve", "setting", "spp", "accuracy",
+                      "ic_rays", "ic_min_spacing", "photons", "grid", "gather_rays", "repeats",
+                      "wall_seconds", "wall_seconds_min", "wall_seconds_max", "render_seconds",
+                      "render_seconds_min", "render_seconds_max", "kernel_seconds",
+                      "kernel_seconds_min", "kernel_seconds_max", "compile_seconds", "rmse",
+                      "relmse", "relmse_net", "flip", "indirect_relmse", "records", "device",
+                      "image"]
+# A radcache that renders with a new seed at every call: its repeats differ.
+RESEEDING = """#!/bin/sh
+count=$(cat "$0.count" 2>/dev/null || echo 0)
+echo $((count + 1)) > "$0.count"
+if [ "$1" = render ]; then exec "%s" "$@" --seed "$count"; fi
+exec "%s" "$@"
+"""
 
 
-def run(command):
+def run(command, radcache=RADCACHE):
     return subprocess.run(command, capture_output=True, text=True,
-                          env=dict(os.environ, RADCACHE=RADCACHE))
+                          env=dict(os.environ, RADCACHE=radcache))
 
 
 class SweepTest(unittest.TestCase):
@@ -44,8 +56,9 @@ class SweepTest(unittest.TestCase):
         cls.result = run([sys.executable, SWEEP, os.path.join(ROOT, "scenes", "cornell-box"),
                           "--reference", cls.reference, "--width", "24", "--height", "24",
                           "--pt-spp", "1", "64", "--ic-accuracy", "0.5", "--ic-spp", "1",
-                          "--ic-rays", "256", "--methods", "pt", "ic", "ivg-gather",
-                          "--gather-rays", "4", "--out", cls.out])
+                          "--ic-rays", "256", "--ic-min-spacing", "default", "3px", "--methods",
+                          "pt", "ic", "ivg", "--ivg-photons", "20000", "--ivg-grid", "auto*2",
+                          "--repeats", "2", "--out", cls.out])
 
     def test_runs_end_to_end(self):
         self.assertEqual(self.result.returncode, 0, self.result.stdout + self.result.stderr)
@@ -58,30 +71,49 @@ class SweepTest(unittest.TestCase):
             reader = csv.DictReader(f)
             self.assertEqual(reader.fieldnames, DOCUMENTED_COLUMNS)
             rows = list(reader)
-        self.assertEqual([r["method"] for r in rows], ["pt", "pt", "ic", "ivg-gather"])
-        self.assertEqual([r["spp"] for r in rows], ["1", "64", "1", "1"])
-        self.assertEqual(rows[3]["gather_rays"], "4")
-        self.assertGreater(int(rows[3]["photons"]), 0)
+        self.assertEqual([r["method"] for r in rows], ["pt", "pt", "ic", "ic", "ivg"])
+        self.assertEqual([r["spp"] for r in rows], ["1", "64", "1", "1", "4"])
+        self.assertEqual([r["ic_min_spacing"] for r in rows[2:4]], ["default", "3px"])
+        self.assertEqual(int(rows[4]["photons"]), 20000)
+        # auto*2: twice the auto grid's voxels per axis, as radcache reported the auto grid in
+        # the --stats of the warm-up render (no --grid).
+        with open(os.path.join(self.out, "warm-ivg.stats.json")) as f:
+            auto = json.load(f)["frames"][0]["grid"]["cells"]
+        self.assertEqual([int(c) for c in rows[4]["grid"].split("x")], [2 * c for c in auto])
         for r in rows:
             self.assertEqual(r["scene"], "cornell-box")
+            self.assertEqual(r["frame"], "0")
+            self.assertEqual(r["repeats"], "2")
             for column in ("wall_seconds", "render_seconds", "kernel_seconds", "rmse", "relmse",
                            "flip", "indirect_relmse"):
                 value = float(r[column])
                 self.assertTrue(math.isfinite(value) and value >= 0.0, (column, r[column]))
+            for column in ("wall_seconds", "render_seconds", "kernel_seconds"):
+                self.assertLessEqual(float(r[column + "_min"]), float(r[column]))
+                self.assertLessEqual(float(r[column]), float(r[column + "_max"]))
+                # The median of two repeats is their mean.
+                self.assertAlmostEqual(float(r[column]), 0.5 * (float(r[column + "_min"]) +
+                                                                float(r[column + "_max"])))
             self.assertGreater(float(r["relmse"]), 0.0)
             self.assertLess(float(r["flip"]), 1.0)
-            self.assertLessEqual(float(r["render_seconds"]), float(r["wall_seconds"]))
+            self.assertLessEqual(float(r["render_seconds_max"]), float(r["wall_seconds_max"]))
             self.assertTrue(os.path.isfile(os.path.join(self.out, r["image"])), r["image"])
         # 64 samples per pixel: far below the error of one (relMSE falls as 1/spp).
         self.assertLess(float(rows[1]["relmse"]), 0.25 * float(rows[0]["relmse"]))
         self.assertGreater(int(rows[2]["records"]), 0)
+        # A smaller spacing allows more records.
+        self.assertGreater(int(rows[3]["records"]), int(rows[2]["records"]))
+        # Only the first repeat's image is kept.
+        self.assertEqual([n for n in os.listdir(self.out) if "repeat" in n], [])
 
     def test_json_matches_csv_and_names_the_timing(self):
         with open(os.path.join(self.out, "sweep.json")) as f:
             report = json.load(f)
         self.assertEqual(report["columns"], DOCUMENTED_COLUMNS)
-        self.assertEqual(len(report["rows"]), 4)
+        self.assertEqual(len(report["rows"]), 5)
+        self.assertEqual(report["repeats"], 2)
         self.assertIn("compilation excluded", report["timing"])
+        self.assertIn("median over 2 repeats", report["timing"])
         # The relMSE of a row is what radcache compare reports for its image.
         row = report["rows"][0]
         compare = run([RADCACHE, "compare", os.path.join(self.out, row["image"]),
@@ -94,6 +126,32 @@ class SweepTest(unittest.TestCase):
                       compare.stdout)
         for r in report["rows"]:
             self.assertLess(r["relmse_net"], r["relmse"])
+
+    def test_repeats_that_differ_fail_the_sweep(self):
+        wrapper = os.path.join(SCRATCH, "reseeding-radcache")
+        with open(wrapper, "w") as f:
+            f.write(RESEEDING % (RADCACHE, RADCACHE))
+        os.chmod(wrapper, 0o755)
+        result = run([sys.executable, SWEEP, os.path.join(ROOT, "scenes", "cornell-box"),
+                      "--reference", self.reference, "--width", "24", "--height", "24",
+                      "--methods", "pt", "--pt-spp", "2", "--repeats", "2",
+                      "--out", os.path.join(SCRATCH, "reseeded")], radcache=wrapper)
+        self.assertNotEqual(result.returncode, 0)
+        self.assertIn("not deterministic: pt-00 (spp=2): repeat 2's pixels", result.stderr)
+
+    def test_an_animated_scene_finds_its_frame_reference(self):
+        # The size check fails before any render and names the reference the frame found.
+        scene = os.path.join(ROOT, "scenes", "moving-sphere")
+        for frame, name in ((["--frame", "5"], "frame0005.exr"), ([], "frame0000.exr")):
+            result = run([sys.executable, SWEEP, scene, "--width", "24", "--height", "24",
+                          "--out", os.path.join(SCRATCH, "bad")] + frame)
+            self.assertNotEqual(result.returncode, 0)
+            self.assertIn(os.path.join("moving-sphere", "reference", name) + " is 256x256",
+                          result.stderr)
+        outside = run([sys.executable, SWEEP, scene, "--frame", "24",
+                       "--out", os.path.join(SCRATCH, "bad")])
+        self.assertNotEqual(outside.returncode, 0)
+        self.assertIn("--frame 24", outside.stderr)
 
     def test_refuses_bad_input(self):
         missing = run([sys.executable, SWEEP, os.path.join(SCRATCH, "no-such-scene"),
@@ -108,6 +166,12 @@ class SweepTest(unittest.TestCase):
                         "--pt-spp", "0", "--out", os.path.join(SCRATCH, "bad")])
         self.assertNotEqual(negative.returncode, 0)
         self.assertIn("--pt-spp", negative.stderr)
+        for bad, option in ((["--repeats", "0"], "--repeats"), (["--ivg-grid", "auto*"],
+                            "--ivg-grid"), (["--ic-min-spacing", "8pt"], "--ic-min-spacing")):
+            refused = run([sys.executable, SWEEP, os.path.join(ROOT, "scenes", "cornell-box"),
+                           "--out", os.path.join(SCRATCH, "bad")] + bad)
+            self.assertNotEqual(refused.returncode, 0)
+            self.assertIn(option, refused.stderr)
 
 
 if __name__ == "__main__":

@@ -76,7 +76,12 @@ for name in "${scenes[@]}"; do
     command=(render "scenes/$name/scene.json" "${outputs[@]}" --spp "$n" --seed "$seed"
              --width "${size[$name]%x*}" --height "${size[$name]#*x}" --half
              --aovs beauty,direct,indirect,stddev --stats "$stats" "${device[@]}")
-    echo "rendering $name at $n spp: radcache ${command[*]}"
+    # The command line as text: arguments with spaces (a device's name) in single quotes.
+    text=radcache
+    for argument in "${command[@]}"; do
+        if [[ "$argument" =~ [[:space:]] ]]; then text+=" '$argument'"; else text+=" $argument"; fi
+    done
+    echo "rendering $name at $n spp: $text"
     # Step 1: render into the temporary folder (the same command, its outputs under $work).
     run=()
     for argument in "${command[@]}"; do
@@ -89,7 +94,7 @@ for name in "${scenes[@]}"; do
     # Step 2: the records, then the EXRs under their shipped names.
     staged=$tmp/staged
     python3 tools/references.py record "$work/$stats" --scene "scenes/$name" --dest "$staged" \
-        --command "radcache ${command[*]}"
+        --command "$text"
     if [ -n "${frames[$name]:-}" ]; then
         mv "$tmp"/frame*.exr "$staged/reference/"
         rm -rf "$out/$name/reference"

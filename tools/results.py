@@ -2,13 +2,18 @@
 """Regenerates docs/results.md: error-against-time charts and tables of every method on every
 shipped scene with a reference, the POV-Ray peer on the Cornell box, and `radcache bench all`.
 
-Runs tools/sweep.py for each scene (outputs under OUT/SCENE, charts copied to
-docs/results/SCENE-*.png), then `radcache bench all`, and writes docs/results.md with the machine,
-device, date and git revision. About 20 minutes on 2 CPU cores with PoCL; run it on an otherwise
-idle machine, since every figure is a time.
+Runs tools/sweep.py for each scene at its default knobs and repeats (outputs under OUT/SCENE,
+charts copied to docs/results/SCENE-*.png), then `radcache bench all`, and writes
+docs/results.md with the machine, device, date and git revision. Each sweep renders every point
+--repeats times (default 3): the tables give the median render time and the fastest and slowest
+repeat. Every figure is a time: run it on an otherwise idle machine. Estimated from timed single
+points (not a timed full run): 35-40 minutes per 512-pixel scene on 2 CPU cores with PoCL, less
+for the 256-pixel moving sphere (docs/benchmarks.md, "Error against time").
 
-Usage: tools/results.py [--scenes cornell-box two-rooms] [--no-povray] [--out build/results]
-           [-- extra radcache render options, e.g. --device 0:0]
+Usage: tools/results.py [--scenes cornell-box two-rooms ...] [--repeats N] [--no-povray]
+           [--out build/results] [-- extra radcache render options, e.g. --device 0:0]
+The default scenes are every shipped scene with a reference (scenes/README.md); an animated
+scene is swept at its first frame.
 """
 
 import argparse
@@ -21,14 +26,8 @@ import sys
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 DOCS = os.path.join(ROOT, "docs")
-# Each scene's knobs: wide enough that the curves overlap in error.
-PT_SPP = ["1", "2", "4", "8", "16", "32", "64", "128", "256", "512"]
-IC_ACCURACY = ["0.6", "0.45", "0.35", "0.25"]
-IC_SPP = ["4", "16"]
+# Every method at tools/sweep.py's default knobs.
 METHODS = ["pt", "ic", "ic-ivg", "ivg", "ivg-gather"]
-IVG_PHOTONS = ["65536", "262144", "1048576"]
-GATHER_RAYS = ["4", "16", "36"]  # per camera sample, at GATHER_SPP samples per pixel
-GATHER_SPP = "4"
 
 
 def run(command):
@@ -44,16 +43,46 @@ def number(value, digits=3):
     return "" if value in ("", None) else "%.*g" % (digits, value)
 
 
+def spread(row):
+    """The fastest and slowest repeat's render time, "" for a single run."""
+    if row.get("repeats", 1) in ("", 1) or row.get("render_seconds_min") in ("", None):
+        return ""
+    return "%s–%s" % (number(row["render_seconds_min"]), number(row["render_seconds_max"]))
+
+
+def reference_line(report):
+    """Where the scene's reference came from and its own noise (relmse - relmse_net)."""
+    reference = report["reference"]
+    record_path = os.path.splitext(reference)[0] + ".json"
+    text = "Reference: `%s`" % os.path.relpath(reference, ROOT)
+    if os.path.isfile(record_path):
+        with open(record_path) as f:
+            record = json.load(f)
+        text += " (%d samples per pixel, %s, git %s)" % (record["spp"], record["device"],
+                                                       record["git"])
+    noise = [r["relmse"] - r["relmse_net"] for r in report["rows"]
+             if r.get("relmse_net") not in ("", None)]
+    if noise:
+        text += "; its own noise adds %s to every relMSE (subtracted in the net column)" % (
+            number(noise[0], 2))
+    return text + "."
+
+
 def scene_section(report, chart_names):
-    lines = ["## %s" % report["scene"], ""]
+    title = report["scene"]
+    if report.get("frame"):
+        title += ", frame %d" % report["frame"]
+    lines = ["## %s" % title, "", reference_line(report), ""]
     for chart in chart_names:
         lines += ["![%s](results/%s)" % (chart, chart), ""]
-    lines += ["| curve | setting | render s | relMSE | FLIP | indirect relMSE | records |",
-              "| --- | --- | ---: | ---: | ---: | ---: | ---: |"]
+    lines += ["| curve | setting | render s | fastest–slowest s | relMSE | net relMSE | FLIP | "
+              "indirect relMSE | records |",
+              "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"]
     for r in report["rows"]:
-        lines.append("| %s | %s | %s | %s | %s | %s | %s |" % (
-            r["curve"], r["setting"], number(r["render_seconds"]), number(r["relmse"]),
-            number(r["flip"]), number(r["indirect_relmse"]), r["records"]))
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            r["curve"], r["setting"], number(r["render_seconds"]), spread(r),
+            number(r["relmse"]), number(r.get("relmse_net")), number(r["flip"]),
+            number(r["indirect_relmse"]), r["records"]))
     lines += ["", "Sweep: `%s` (%s; %s)." % (report["command"], report["date"], report["timing"]),
               ""]
     return lines
@@ -82,8 +111,8 @@ def equal_error_lines(report):
         return []
     return ["Equal-error speed-up over `pt` (the path tracer's time to the same relMSE on its "
             "curve above, log-log interpolated, over the method's time; `>` where `pt`'s longest "
-            "run does not reach it; the references' own noise, roughly 1e-4, is in every "
-            "error):", "",
+            "run does not reach it; times are medians of the repeats; the reference's own "
+            "noise, given above, is in every error):", "",
             "| method | setting | s | image | indirect |", "| --- | --- | ---: | ---: | ---: |"
             ] + lines + [""]
 
@@ -100,9 +129,19 @@ def time_to_error(curve, key, target):
     return None
 
 
+def scenes_with_references():
+    """Every shipped scene with a reference (reference.exr, or reference/ of an animated one)."""
+    folder = os.path.join(ROOT, "scenes")
+    return sorted(name for name in os.listdir(folder)
+                  if os.path.isfile(os.path.join(folder, name, "reference.exr")) or
+                  os.path.isdir(os.path.join(folder, name, "reference")))
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--scenes", nargs="+", default=["cornell-box", "two-rooms"])
+    parser.add_argument("--scenes", nargs="+", default=scenes_with_references())
+    parser.add_argument("--repeats", type=int, default=3,
+                        help="timed renders of every point (tools/sweep.py --repeats)")
     parser.add_argument("--no-povray", action="store_true", help="leave the POV-Ray peer out")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "results"))
     if "--" in argv:
@@ -120,9 +159,8 @@ def main(argv):
     for scene in args.scenes:
         out = os.path.join(args.out, scene)
         command = [sys.executable, os.path.join(ROOT, "tools", "sweep.py"),
-                   os.path.join("scenes", scene), "--out", out, "--methods"] + METHODS + [
-                   "--pt-spp"] + PT_SPP + ["--ic-accuracy"] + IC_ACCURACY + ["--ic-spp"] + IC_SPP + [
-                   "--ivg-photons"] + IVG_PHOTONS + ["--gather-rays"] + GATHER_RAYS + ["--gather-spp", GATHER_SPP]
+                   os.path.join("scenes", scene), "--out", out, "--repeats", str(args.repeats),
+                   "--methods"] + METHODS
         if scene == "cornell-box" and not args.no_povray and shutil.which("povray"):
             command.append("--povray")
         if extra:
@@ -162,11 +200,15 @@ def main(argv):
         "- Error: relMSE = mean over pixels and channels of (v − r)² / (r² + 0.01) against the "
         "scene's reference (`radcache compare`); FLIP = mean HDR-FLIP (flip-evaluator) of the "
         "image. 'indirect' is the indirect layer (light that bounced at least once).",
+        "- Net relMSE: relMSE minus the reference's own noise (`radcache compare`'s "
+        "relmse_net: the mean of (stddev²/spp_ref)/(r² + 0.01)); it may dip slightly below 0.",
         "- Time: render phase of `radcache render --stats` (scene loading, device start-up and "
-        "image writing excluded; kernel binaries warm, so compilation is excluded); POV-Ray: "
-        "wall clock of its whole process (parsing included), all cores.",
-        "- The references are path-traced at 4096 samples per pixel: their own noise puts a "
-        "floor of roughly 1e-4 under every relMSE here.",
+        "image writing excluded; kernel binaries warm, so compilation is excluded), the median "
+        "of %d repeats (the charts' bars and the tables' fastest–slowest span them; the "
+        "repeats' images are checked bitwise identical); POV-Ray: wall clock of its whole "
+        "process (parsing included), all cores, one run." % args.repeats,
+        "- References: path-traced by radcache ([`scenes/README.md`](../scenes/README.md)); each "
+        "scene's section names its reference, samples per pixel, device and git revision.",
         "",
     ] + sections + [
         "## Kernel throughput (`radcache bench all`)",

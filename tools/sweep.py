@@ -1,69 +1,102 @@
 #!/usr/bin/env python3
 """Speed-versus-accuracy sweep of radcache's methods on one scene (DESIGN.md §7).
 
-Runs every method over its quality knobs (spp for `pt`; accuracy, rays per record and camera
-samples for `ic`), measures each image against the scene's reference (RMSE and relMSE through
-`radcache compare`, HDR-FLIP through the flip-evaluator package) and writes
+Runs every method over its quality knobs, each point --repeats times, measures each image
+against the scene's reference (RMSE and relMSE through `radcache compare`, HDR-FLIP through the
+flip-evaluator package) and writes
 
-  OUT/sweep.csv, OUT/sweep.json   one row per run, the columns below
-  OUT/error-vs-time.png           log-log relMSE of the image against render time, one curve per
-                                  method, the Pareto front over all runs marked
+  OUT/sweep.csv, OUT/sweep.json   one row per point, the columns below
+  OUT/error-vs-time.png           log-log relMSE of the image against the median render time,
+                                  one curve per method and setting, a horizontal bar over each
+                                  point from its fastest to its slowest repeat, the Pareto front
+                                  over all points marked
   OUT/indirect-error-vs-time.png  the same for the indirect layer (methods that write it)
   OUT/index.html                  both charts, equal-time crops of every curve beside the
                                   reference's, and false-colour relMSE images
 
-Methods and their knobs: pt (--pt-spp), ic (--ic-accuracy x --ic-rays x --ic-spp), ic-ivg (ic whose
-records read the irradiance vector grid: --ic-accuracy at the first --ic-spp and --ic-rays), ivg
-(--ivg-photons x --ivg-grid at --ivg-spp camera samples), ivg-gather (--gather-rays per camera
-sample at --gather-spp camera samples, the grid at its defaults).
+Methods and their knobs: pt (--pt-spp); ic (one curve per --ic-rays x --ic-spp x
+--ic-min-spacing, --ic-accuracy along it); ic-ivg (ic whose records read the irradiance vector
+grid: --ic-accuracy at the first --ic-spp, --ic-rays and --ic-min-spacing); ivg (one curve per
+--ivg-grid, --ivg-photons along it, at --ivg-spp camera samples); ivg-gather (--gather-rays per
+camera sample at --gather-spp camera samples, the grid at its defaults). A grid is auto (about
+32k vertices), auto*K (K times auto's voxels per axis, read off the untimed warm-up render) or
+NxMxK; a min spacing is `default` (the method's) or what --ic-min-spacing takes (8px, 5u).
 
-Columns: scene, method, curve, setting, spp, accuracy, ic_rays, photons, grid, gather_rays,
-wall_seconds, render_seconds, kernel_seconds, compile_seconds, rmse, relmse, flip,
-indirect_relmse, records, device, image, relmse_net.
+The defaults reach settings tight enough that each caching method's error keeps falling:
+ic's accuracy goes to 0.15 on curves of 1024 and 4096 rays per record, each with the method's
+min spacing and with 2px (a min spacing bounds the records' radius from below, so without a
+smaller one a tighter accuracy adds few records; the rays set the records' own noise, the floor
+of a curve), at the method's 4 camera samples; ivg's photons go to 4M on the auto grid and on
+auto*2 (8x the vertices: the auto grid's discretisation is the floor of its curve).
+
+Repeats. Every point is rendered --repeats times (default 3), in rounds over all points so that
+a burst of load on the machine lands on one repeat of several points rather than on every
+repeat of one. The seed is the same, so the images must be bitwise identical: every repeat's
+pixels (SHA-1 of `iinfo --hash`, from openimageio-tools) are checked against the first's, with
+its ray and record counts, and the sweep fails naming the point if one differs. The errors are
+measured once, on the first repeat's image. The time columns are the median over the repeats
+(the mean of the middle two for an even count) and their _min and _max the fastest and slowest.
+
+Columns: scene, frame, method, curve, setting, spp, accuracy, ic_rays, ic_min_spacing, photons,
+grid, gather_rays, repeats, wall_seconds, wall_seconds_min, wall_seconds_max, render_seconds,
+render_seconds_min, render_seconds_max, kernel_seconds, kernel_seconds_min, kernel_seconds_max,
+compile_seconds, rmse, relmse, relmse_net, flip, indirect_relmse, records, device, image.
 
 relmse_net is the image's relMSE net of the reference's own noise (`radcache compare`: relmse
 minus the mean of (stddev^2/spp_ref)/(r^2+0.01)); empty unless the reference has a stddev layer
 and its sample count is known (`spp` of REF.stats.json or REF.json beside it, REF the reference's
-name without .exr). It may be slightly negative for an image as good as the reference.
+name without .exr; every shipped reference has its REF.json). It may be slightly negative for an
+image as good as the reference.
 
 Times. render_seconds is the render phase of `radcache render --stats` (G-buffer to final
-image; scene loading, device start-up and image writing excluded); it is the chart's time axis.
-wall_seconds is the whole process; kernel_seconds the sum of the kernels' device times from
-OpenCL profiling events. Kernel compilation is excluded: one untimed render per method at the
-sweep's resolution and one sample per pixel first fills the kernel binary cache and lets the
-device generate code for the launch shapes, and compile_seconds (the timed run's program builds,
-from that cache) says what was left. Peers (POV-Ray, `--povray`) are timed by the wall clock of the
-whole peer process, parsing included.
+image; scene loading, device start-up and image writing excluded); its median is the chart's
+time axis. wall_seconds is the whole process; kernel_seconds the sum of the kernels' device
+times from OpenCL profiling events. Kernel compilation is excluded: one untimed render per
+method at the sweep's resolution and one sample per pixel first fills the kernel binary cache
+and lets the device generate code for the launch shapes, and compile_seconds (the timed runs'
+program builds, from that cache; median) says what was left. Peers (POV-Ray, `--povray`) run once
+(repeats 1), timed by the wall clock of the whole peer process, parsing included.
 
-Usage: tools/sweep.py SCENE [--reference EXR] [--methods pt ic ...] [--pt-spp 1 2 4 ...]
-           [--ic-accuracy ...] [--ic-rays ...] [--ic-spp ...] [--ivg-photons ...] [--ivg-grid ...]
-           [--ivg-spp N] [--gather-rays ...] [--gather-spp N] [--width N --height N]
+Usage: tools/sweep.py SCENE [--frame F] [--reference EXR] [--repeats N] [--methods pt ic ...]
+           [--pt-spp 1 2 4 ...] [--ic-accuracy ...] [--ic-rays ...] [--ic-spp ...]
+           [--ic-min-spacing ...] [--ivg-photons ...] [--ivg-grid ...] [--ivg-spp N]
+           [--gather-rays ...] [--gather-spp N] [--width N --height N]
            [--povray [SETTING ...]] [--out DIR] [-- extra radcache render options]
-SCENE is a scene directory or its scene.json; the reference defaults to reference.exr beside it.
-The radcache executable is build/radcache, or $RADCACHE when set.
+SCENE is a scene directory or its scene.json. The reference defaults to the scene's shipped one
+for the frame (tools/references.py: reference.exr beside it, or reference/frameFFFF.exr of an
+animated scene); --frame F (default: the scene's first) renders that frame of an animated scene.
+The radcache executable is build/radcache, or $RADCACHE when set. At the defaults a sweep of one
+512-pixel scene with every method is estimated at 35-40 minutes on 2 CPU cores (3 repeats;
+docs/benchmarks.md, "Error against time", from timed single points).
 """
 
 import argparse
 import csv
 import datetime
-import html
 import json
-import math
 import os
 import platform
+import re
 import shutil
+import statistics
 import subprocess
 import sys
 import time
 
+import references
+import sweep_report
+
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
-COLUMNS = ["scene", "method", "curve", "setting", "spp", "accuracy", "ic_rays", "photons", "grid",
-           "gather_rays", "wall_seconds", "render_seconds", "kernel_seconds", "compile_seconds",
-           "rmse", "relmse", "flip", "indirect_relmse", "records", "device", "image", "relmse_net"]
+TIMES = ["wall_seconds", "render_seconds", "kernel_seconds"]
+COLUMNS = ["scene", "frame", "method", "curve", "setting", "spp", "accuracy", "ic_rays",
+           "ic_min_spacing", "photons", "grid", "gather_rays", "repeats"] + [
+           "%s%s" % (t, suffix) for t in TIMES for suffix in ("", "_min", "_max")] + [
+           "compile_seconds", "rmse", "relmse", "relmse_net", "flip", "indirect_relmse",
+           "records", "device", "image"]
 METHODS = ["pt", "ic", "ic-ivg", "ivg", "ivg-gather"]
-METHOD_COLOURS = {"pt": "tab:blue", "ic": "tab:orange", "ic-ivg": "tab:brown", "ivg": "tab:purple",
-                  "ivg-gather": "tab:red", "povray": "tab:green"}
+GRID_FORM = re.compile(r"^(auto|auto\*(\d+(\.\d+)?)|\d+x\d+x\d+)$")
+SPACING_FORM = re.compile(r"^(default|\d+(\.\d+)?(px|u)?)$")
 
 
 def fail(message):
@@ -99,14 +132,50 @@ def flip_error(image, reference):
     return float(mean)
 
 
-def scene_paths(scene, reference):
+def pixel_hash(image):
+    """SHA-1 of an image's pixels, every channel (`iinfo --hash`): the EXR header also holds the
+    time of writing, so the files' bytes differ between identical renders."""
+    result = subprocess.run(["iinfo", "--hash", image], capture_output=True, text=True)
+    found = re.search(r"SHA-1:\s*([0-9A-Fa-f]+)", result.stdout)
+    if result.returncode != 0 or not found:
+        fail("iinfo --hash %s failed:\n%s%s" % (image, result.stdout, result.stderr))
+    return found.group(1)
+
+
+def image_size(image):
+    """(width, height) of an image from `iinfo`, or None when it cannot say."""
+    if not shutil.which("iinfo"):
+        return None
+    result = subprocess.run(["iinfo", image], capture_output=True, text=True)
+    found = re.search(r":\s*(\d+)\s*x\s*(\d+)", result.stdout)
+    return (int(found.group(1)), int(found.group(2))) if found else None
+
+
+def check_reference_size(reference, width, height):
+    """Fails before any render when --width/--height differ from the reference's size."""
+    size = image_size(reference)
+    if size is None or (width or size[0], height or size[1]) == size:
+        return
+    fail("the reference %s is %dx%d; at --width/--height %sx%s pass a reference of that size "
+         "(--reference)" % (reference, size[0], size[1], width or size[0], height or size[1]))
+
+
+def scene_paths(scene, reference, frame):
+    """The scene's JSON, its reference for the frame and the frame (None: the scene's first)."""
     scene_json = os.path.join(scene, "scene.json") if os.path.isdir(scene) else scene
     if not os.path.isfile(scene_json):
         fail("scene not found: %s" % scene_json)
-    reference = reference or os.path.join(os.path.dirname(scene_json), "reference.exr")
+    try:
+        start, end = references.frame_range(scene_json)
+        if frame is not None and not start <= frame <= end:
+            fail("--frame %d: %s has frames %d:%d" % (frame, scene_json, start, end))
+        reference = reference or references.reference_path(os.path.dirname(scene_json), frame)
+    except references.ReferenceError as e:
+        fail(str(e))
     if not os.path.isfile(reference):
         fail("reference not found: %s (pass --reference)" % reference)
-    return os.path.abspath(scene_json), os.path.abspath(reference)
+    frame = start if frame is None else frame
+    return os.path.abspath(scene_json), os.path.abspath(reference), frame, end > start
 
 
 def render(scene, image, options):
@@ -119,47 +188,145 @@ def render(scene, image, options):
         return wall, json.load(f)
 
 
-def radcache_runs(args):
-    """(method, curve, setting, knobs, options) for every radcache run of the sweep."""
+def grid_option(grid, auto_cells):
+    """--grid's value for a sweep grid: auto*K becomes K times the auto grid's voxels."""
+    scale = GRID_FORM.match(grid).group(2)
+    if scale is None:
+        return grid
+    return "x".join(str(max(1, round(float(scale) * c))) for c in auto_cells)
+
+
+def spacing_options(spacing):
+    return [] if spacing == "default" else ["--ic-min-spacing", spacing]
+
+
+def spacing_label(spacing):
+    return "" if spacing == "default" else ", min spacing %s" % spacing
+
+
+def ic_runs(args):
+    runs = []
+    if "ic" in args.methods:
+        for rays in args.ic_rays:
+            for spp in args.ic_spp:
+                for spacing in args.ic_min_spacing:
+                    curve = "ic %d rays, %d spp%s" % (rays, spp, spacing_label(spacing))
+                    for accuracy in args.ic_accuracy:
+                        runs.append(("ic", curve, "accuracy=%g rays=%d spp=%d spacing=%s" % (
+                                         accuracy, rays, spp, spacing),
+                                     {"spp": spp, "accuracy": accuracy, "ic_rays": rays,
+                                      "ic_min_spacing": spacing},
+                                     ["--method", "ic", "--spp", str(spp), "--accuracy",
+                                      str(accuracy), "--ic-rays", str(rays)] +
+                                     spacing_options(spacing)))
+    if "ic-ivg" in args.methods:
+        rays, spp, spacing = args.ic_rays[0], args.ic_spp[0], args.ic_min_spacing[0]
+        for accuracy in args.ic_accuracy:
+            runs.append(("ic-ivg", "ic + grid, %d spp%s" % (spp, spacing_label(spacing)),
+                         "accuracy=%g rays=%d spp=%d spacing=%s" % (accuracy, rays, spp, spacing),
+                         {"spp": spp, "accuracy": accuracy, "ic_rays": rays, "grid": "auto",
+                          "ic_min_spacing": spacing},
+                         ["--method", "ic", "--ic-ivg", "--spp", str(spp), "--accuracy",
+                          str(accuracy), "--ic-rays", str(rays)] + spacing_options(spacing)))
+    return runs
+
+
+def radcache_runs(args, auto_cells):
+    """(method, curve, setting, knobs, options) for every radcache point of the sweep."""
     runs = []
     if "pt" in args.methods:
         for spp in args.pt_spp:
             runs.append(("pt", "pt", "spp=%d" % spp, {"spp": spp},
                          ["--method", "pt", "--spp", str(spp)]))
-    if "ic" in args.methods:
-        for rays in args.ic_rays:
-            for spp in args.ic_spp:
-                curve = "ic %d rays, %d spp" % (rays, spp)
-                for accuracy in args.ic_accuracy:
-                    runs.append(("ic", curve, "accuracy=%g rays=%d spp=%d" % (accuracy, rays, spp),
-                                 {"spp": spp, "accuracy": accuracy, "ic_rays": rays},
-                                 ["--method", "ic", "--spp", str(spp), "--accuracy", str(accuracy),
-                                  "--ic-rays", str(rays)]))
-    if "ic-ivg" in args.methods:
-        rays, spp = args.ic_rays[0], args.ic_spp[0]
-        for accuracy in args.ic_accuracy:
-            runs.append(("ic-ivg", "ic + grid, %d spp" % spp,
-                         "accuracy=%g rays=%d spp=%d" % (accuracy, rays, spp),
-                         {"spp": spp, "accuracy": accuracy, "ic_rays": rays, "grid": "auto"},
-                         ["--method", "ic", "--ic-ivg", "--spp", str(spp), "--accuracy",
-                          str(accuracy), "--ic-rays", str(rays)]))
+    runs += ic_runs(args)
     if "ivg" in args.methods:
         for grid in args.ivg_grid:
             curve = "ivg, grid %s, %d spp" % (grid, args.ivg_spp)
             for photons in args.ivg_photons:
                 runs.append(("ivg", curve, "photons=%d grid=%s" % (photons, grid),
-                             {"spp": args.ivg_spp, "photons": photons, "grid": grid},
+                             {"spp": args.ivg_spp, "photons": photons},
                              ["--method", "ivg", "--spp", str(args.ivg_spp), "--photons",
-                              str(photons), "--grid", grid]))
+                              str(photons), "--grid", grid_option(grid, auto_cells)]))
     if "ivg-gather" in args.methods:
         spp = args.gather_spp
         for gathers in args.gather_rays:
             runs.append(("ivg-gather", "ivg-gather, %d spp" % spp,
                          "gather_rays=%d spp=%d" % (gathers, spp),
-                         {"spp": spp, "gather_rays": gathers, "grid": "auto"},
+                         {"spp": spp, "gather_rays": gathers},
                          ["--method", "ivg-gather", "--spp", str(spp), "--gather-rays",
                           str(gathers)]))
     return runs
+
+
+def warm_up(scene, out, methods, options):
+    """Untimed: one render per method at the sweep's resolution and one sample per pixel fills
+    the kernel binary cache and lets the device generate code for the launch shapes the timed
+    runs use (PoCL does that on a shape's first launch). Returns the auto grid's voxels per axis
+    (None when no method builds a grid)."""
+    auto_cells = None
+    for method in sorted(set(methods)):
+        warm = ["--method", "ic", "--ic-ivg"] if method == "ic-ivg" else ["--method", method]
+        if method in ("ivg", "ivg-gather", "ic-ivg"):
+            warm += ["--photons", "1000"]
+        _, stats = render(scene, os.path.join(out, "warm-%s.exr" % method),
+                          warm + ["--spp", "1"] + options)
+        grid = (stats.get("frames") or [{}])[0].get("grid")
+        if grid:
+            auto_cells = grid["cells"]
+    return auto_cells
+
+
+def timing(wall, stats):
+    frame = stats["frames"][0] if stats.get("frames") else {}
+    return {"wall_seconds": wall, "render_seconds": stats["seconds"]["render"],
+            "kernel_seconds": sum(k["seconds"] for k in stats["kernels"].values()),
+            "compile_seconds": sum(b["seconds"] for b in stats.get("program_builds", [])),
+            "rays": stats["rays"], "records": frame.get("records", "")}
+
+
+def check_repeat(name, setting, first, repeat, index):
+    """Fails loudly unless a repeat rendered the first's image (same seed, same options)."""
+    for key in ("hash", "rays", "records"):
+        if repeat[key] != first[key]:
+            fail("not deterministic: %s (%s): repeat %d's %s %s differs from repeat 1's %s" % (
+                 name, setting, index + 1, "pixels (SHA-1)" if key == "hash" else key,
+                 repeat[key], first[key]))
+
+
+def run_points(scene, runs, out, options, repeats):
+    """Renders every point `repeats` times, in rounds; returns the timings of each point's
+    repeats and the first repeat's --stats. Only the first repeat's image is kept."""
+    measured = [[] for _ in runs]
+    first_stats = [None] * len(runs)
+    for repeat in range(repeats):
+        for index, (method, _, setting, _, run_options) in enumerate(runs):
+            name = "%s-%02d" % (method, index)
+            image = os.path.join(out, name + (".exr" if repeat == 0 else ".repeat.exr"))
+            print("[repeat %d/%d] [%d/%d] %s %s" % (repeat + 1, repeats, index + 1, len(runs),
+                                                    method, setting), flush=True)
+            wall, stats = render(scene, image, run_options + options)
+            result = timing(wall, stats)
+            result["hash"] = pixel_hash(image) if repeats > 1 else ""
+            if repeat == 0:
+                first_stats[index] = stats
+            else:
+                check_repeat(name, setting, measured[index][0], result, repeat)
+                os.remove(image)
+                os.remove(os.path.splitext(image)[0] + ".stats.json")
+            measured[index].append(result)
+    return measured, first_stats
+
+
+def time_columns(results):
+    """Median, fastest and slowest of each time over a point's repeats."""
+    row = {"repeats": len(results),
+           "compile_seconds": statistics.median(r["compile_seconds"] for r in results)}
+    for key in TIMES:
+        values = [r[key] for r in results]
+        row[key] = statistics.median(values)
+        row[key + "_min"] = min(values)
+        row[key + "_max"] = max(values)
+    return row
 
 
 def measure(row, image, reference, out, name):
@@ -181,8 +348,28 @@ def measure(row, image, reference, out, name):
     row["image"] = os.path.relpath(image, out)
 
 
+def radcache_rows(runs, measured, first_stats, reference, out):
+    rows = []
+    for index, (method, curve, setting, knobs, _) in enumerate(runs):
+        name = "%s-%02d" % (method, index)
+        stats = first_stats[index]
+        frame = stats["frames"][0] if stats.get("frames") else {}
+        grid = frame.get("grid", {})
+        row = {"method": method, "curve": curve, "setting": setting,
+               "spp": knobs.get("spp", ""), "accuracy": knobs.get("accuracy", ""),
+               "ic_rays": knobs.get("ic_rays", ""),
+               "ic_min_spacing": knobs.get("ic_min_spacing", ""),
+               "grid": "x".join(str(c) for c in grid["cells"]) if grid else "",
+               "photons": grid.get("photons", ""), "gather_rays": knobs.get("gather_rays", ""),
+               "records": frame.get("records", ""), "device": stats["device"]}
+        row.update(time_columns(measured[index]))
+        measure(row, os.path.join(out, name + ".exr"), reference, out, name)
+        rows.append(row)
+    return rows
+
+
 def povray_rows(args, scene, reference, out):
-    """Runs the POV-Ray peer (tools/peers/povray) and returns its rows."""
+    """Runs the POV-Ray peer (tools/peers/povray) once and returns its rows."""
     if os.path.basename(os.path.dirname(scene)) != "cornell-box":
         fail("--povray: the POV-Ray peer exists for scenes/cornell-box only")
     peer_out = os.path.join(out, "povray")
@@ -196,150 +383,18 @@ def povray_rows(args, scene, reference, out):
             name = "povray-" + peer["setting"]
             image = os.path.join(out, name + ".exr")
             shutil.copyfile(os.path.join(peer_out, peer["setting"] + ".exr"), image)
+            seconds = float(peer["seconds"])
             row = {"method": "povray", "curve": "POV-Ray 3.7 radiosity",
                    "setting": peer["setting"], "spp": "", "accuracy": "", "ic_rays": "",
-                   "photons": "", "grid": "", "gather_rays": "",
-                   "wall_seconds": float(peer["seconds"]),
-                   "render_seconds": float(peer["seconds"]), "kernel_seconds": "",
-                   "compile_seconds": "", "records": "",
+                   "ic_min_spacing": "", "photons": "", "grid": "", "gather_rays": "",
+                   "repeats": 1, "kernel_seconds": "", "kernel_seconds_min": "",
+                   "kernel_seconds_max": "", "compile_seconds": "", "records": "",
                    "device": "POV-Ray, %s threads" % peer["threads"]}
+            for key in ("wall_seconds", "render_seconds"):
+                row[key] = row[key + "_min"] = row[key + "_max"] = seconds
             measure(row, image, reference, out, name)
             rows.append(row)
     return rows
-
-
-def pareto_front(points):
-    """The points (time, error) not beaten in both time and error by another, by time."""
-    front = []
-    for t, e in sorted(points):
-        if not front or e < front[-1][1]:
-            front.append((t, e))
-    return front
-
-
-def draw_chart(rows, key, title, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    points = [r for r in rows if r.get(key) not in ("", None) and r[key] > 0]
-    if not points:
-        return False
-    figure, axes = plt.subplots(figsize=(7, 5), dpi=110)
-    curves = []
-    for r in points:
-        if r["curve"] not in curves:
-            curves.append(r["curve"])
-    markers = "osD^v<>p*h"
-    styles = ["-", ":", "-.", (0, (5, 1))]
-    seen = {}
-    for i, curve in enumerate(curves):
-        members = sorted((r for r in points if r["curve"] == curve),
-                         key=lambda r: r["render_seconds"])
-        method = members[0]["method"]
-        # Curves of one method share its colour and differ by line style.
-        style = styles[seen.get(method, 0) % len(styles)]
-        seen[method] = seen.get(method, 0) + 1
-        axes.plot([r["render_seconds"] for r in members], [r[key] for r in members],
-                  marker=markers[i % len(markers)], color=METHOD_COLOURS.get(method),
-                  linestyle=style, label=curve)
-    front = pareto_front([(r["render_seconds"], r[key]) for r in points])
-    axes.plot([t for t, _ in front], [e for _, e in front], color="black", linestyle="--",
-              linewidth=1, zorder=0, label="Pareto front")
-    axes.scatter([t for t, _ in front], [e for _, e in front], s=120, facecolors="none",
-                 edgecolors="black", linewidths=1, zorder=3)
-    axes.set_xscale("log")
-    axes.set_yscale("log")
-    axes.set_xlabel("render time (s)")
-    axes.set_ylabel("relMSE")
-    axes.set_title(title)
-    axes.grid(True, which="both", alpha=0.3)
-    axes.legend(fontsize=8)
-    figure.tight_layout()
-    figure.savefig(path)
-    plt.close(figure)
-    return True
-
-
-def tonemapped(path):
-    import flip_evaluator
-    import numpy
-    image = numpy.clip(flip_evaluator.load(path), 0.0, 1.0)
-    return numpy.where(image <= 0.0031308, 12.92 * image,
-                       1.055 * numpy.power(image, 1.0 / 2.4) - 0.055)
-
-
-def crop_box(width, height, crop):
-    if crop:
-        x, y, w, h = crop
-    else:  # the middle half of the image
-        x, y, w, h = width // 4, height // 4, max(1, width // 2), max(1, height // 2)
-    return x, y, min(w, width - x), min(h, height - y)
-
-
-def save_crop(source, path, box):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    x, y, w, h = box
-    plt.imsave(path, source[y:y + h, x:x + w])
-
-
-def equal_time_rows(rows):
-    """One row per curve: the run whose time is nearest (log scale) to the median time."""
-    times = sorted(r["render_seconds"] for r in rows)
-    target = times[len(times) // 2]
-    chosen = {}
-    for r in rows:
-        distance = abs(math.log(r["render_seconds"] / target))
-        if r["curve"] not in chosen or distance < chosen[r["curve"]][0]:
-            chosen[r["curve"]] = (distance, r)
-    return target, [r for _, r in chosen.values()]
-
-
-def write_html(report, out, crop):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    rows = report["rows"]
-    reference = tonemapped(report["reference"])
-    height, width = reference.shape[:2]
-    box = crop_box(width, height, crop)
-    save_crop(reference, os.path.join(out, "reference.crop.png"), box)
-    target, chosen = equal_time_rows(rows)
-    cells = []
-    for r in chosen:
-        name = os.path.splitext(r["image"])[0]
-        save_crop(tonemapped(os.path.join(out, r["image"])), os.path.join(out, name + ".crop.png"),
-                  box)
-        save_crop(plt.imread(os.path.join(out, name + ".error.png"))[..., :3],
-                  os.path.join(out, name + ".error.crop.png"), box)
-        cells.append(
-            "<td><b>%s</b><br>%s<br>%.3g s, relMSE %.3g, FLIP %.3g<br>"
-            "<img src='%s'><br><img src='%s'></td>" %
-            (html.escape(r["curve"]), html.escape(r["setting"]), r["render_seconds"], r["relmse"],
-             r["flip"], html.escape(name + ".crop.png"), html.escape(name + ".error.crop.png")))
-    charts = "".join("<img src='%s'>" % c for c in report["charts"])
-    table = "".join(
-        "<tr>%s</tr>" % "".join("<td>%s</td>" % html.escape(
-            ("%.4g" % r[c]) if isinstance(r[c], float) else str(r[c])) for c in COLUMNS)
-        for r in rows)
-    page = """<!doctype html><meta charset="utf-8"><title>radcache sweep: {scene}</title>
-<style>body{{font-family:sans-serif}} td{{vertical-align:top;padding:4px}}
-img{{image-rendering:pixelated;max-width:100%}}</style>
-<h1>{scene}</h1><p>{when}, {device}, git {git}. Time axis: {timing}</p>
-<p>Command: <code>{command}</code></p>{charts}
-<h2>Equal time (about {target:.3g} s)</h2>
-<p>Crop x={x} y={y} {w}x{h} of each curve's run nearest in time; below each, its relMSE per pixel
-(log10 from -5, black, to 0, white).</p>
-<table><tr><td><b>reference</b><br><img src="reference.crop.png"></td>{cells}</tr></table>
-<h2>All runs</h2><table border=1 cellspacing=0><tr>{header}</tr>{table}</table>
-""".format(scene=html.escape(report["scene"]), when=report["date"],
-           device=html.escape(report["device"]), git=report["git"],
-           timing=html.escape(report["timing"]), command=html.escape(report["command"]),
-           charts=charts, target=target, x=box[0], y=box[1], w=box[2], h=box[3],
-           cells="".join(cells), header="".join("<th>%s</th>" % c for c in COLUMNS), table=table)
-    with open(os.path.join(out, "index.html"), "w") as f:
-        f.write(page)
 
 
 def git_revision():
@@ -366,19 +421,39 @@ def parse_arguments(argv):
         description=__doc__.split("\n")[0],
         epilog="Everything after -- goes to every radcache render (e.g. -- --device 0:0).")
     parser.add_argument("scene", help="scene directory or scene.json")
-    parser.add_argument("--reference", help="reference image (default: reference.exr beside it)")
-    parser.add_argument("--methods", nargs="+", default=["pt", "ic"], choices=METHODS)
-    parser.add_argument("--pt-spp", nargs="+", type=int, default=[1, 2, 4, 8, 16, 32, 64, 128])
-    parser.add_argument("--ic-accuracy", nargs="+", type=float, default=[0.6, 0.45, 0.35, 0.25])
-    parser.add_argument("--ic-rays", nargs="+", type=int, default=[1024])
-    parser.add_argument("--ic-spp", nargs="+", type=int, default=[4, 16])
-    parser.add_argument("--ivg-photons", nargs="+", type=int, default=[65536, 262144, 1048576])
-    parser.add_argument("--ivg-grid", nargs="+", default=["auto"],
-                        help="grid resolutions (NxMxK or auto)")
-    parser.add_argument("--ivg-spp", type=int, default=4)
-    parser.add_argument("--gather-rays", nargs="+", type=int, default=[16, 64, 144])
-    parser.add_argument("--gather-spp", type=int, default=1,
-                        help="camera samples per pixel of ivg-gather")
+    parser.add_argument("--frame", type=int,
+                        help="frame of an animated scene (default: its first)")
+    parser.add_argument("--reference",
+                        help="reference image (default: the scene's shipped one for the frame)")
+    parser.add_argument("--repeats", type=int, default=3,
+                        help="timed renders of every point (default 3; at least 1)")
+    parser.add_argument("--methods", nargs="+", default=["pt", "ic"], choices=METHODS,
+                        help="default: %(default)s")
+    parser.add_argument("--pt-spp", nargs="+", type=int,
+                        default=[1, 2, 4, 8, 16, 32, 64, 128, 256, 512],
+                        help="pt's samples per pixel (default: %(default)s)")
+    parser.add_argument("--ic-accuracy", nargs="+", type=float,
+                        default=[0.6, 0.35, 0.25, 0.15],
+                        help="ic's accuracy along each curve (default: %(default)s)")
+    parser.add_argument("--ic-rays", nargs="+", type=int, default=[1024, 4096],
+                        help="ic's hemisphere rays per record (default: %(default)s)")
+    parser.add_argument("--ic-spp", nargs="+", type=int, default=[4],
+                        help="ic's camera samples per pixel (default: %(default)s)")
+    parser.add_argument("--ic-min-spacing", nargs="+", default=["default", "2px"],
+                        help="ic's smallest record spacing: what --ic-min-spacing takes (8px, "
+                             "5u) or default, the method's (default: %(default)s)")
+    parser.add_argument("--ivg-photons", nargs="+", type=int,
+                        default=[65536, 262144, 1048576, 4194304],
+                        help="ivg's photons along each curve (default: %(default)s)")
+    parser.add_argument("--ivg-grid", nargs="+", default=["auto", "auto*2"],
+                        help="ivg's grids: auto, auto*K (K times auto's voxels per axis) or "
+                             "NxMxK (default: %(default)s)")
+    parser.add_argument("--ivg-spp", type=int, default=4,
+                        help="ivg's camera samples per pixel (default: %(default)s)")
+    parser.add_argument("--gather-rays", nargs="+", type=int, default=[4, 16, 36],
+                        help="ivg-gather's rays per camera sample (default: %(default)s)")
+    parser.add_argument("--gather-spp", type=int, default=4,
+                        help="ivg-gather's camera samples per pixel (default: %(default)s)")
     parser.add_argument("--width", type=int, help="override the scene's resolution")
     parser.add_argument("--height", type=int)
     parser.add_argument("--povray", nargs="*", metavar="SETTING",
@@ -398,11 +473,19 @@ def parse_arguments(argv):
             parser.error("--%s: values must be positive" % name.replace("_", "-"))
     if any(not 0.0 < a for a in args.ic_accuracy):
         parser.error("--ic-accuracy: values must be positive")
+    if args.repeats < 1:
+        parser.error("--repeats: at least 1, got %d" % args.repeats)
+    for grid in args.ivg_grid:
+        if not GRID_FORM.match(grid):
+            parser.error("--ivg-grid: expected auto, auto*K or NxMxK, got '%s'" % grid)
+    for spacing in args.ic_min_spacing:
+        if not SPACING_FORM.match(spacing):
+            parser.error("--ic-min-spacing: expected default or a length like 8px or 5u, got "
+                         "'%s'" % spacing)
     return args
 
 
-def main(argv):
-    args = parse_arguments(argv)
+def check_tools(repeats):
     if not os.access(RADCACHE, os.X_OK):
         fail("build radcache first (see README): %s is missing" % RADCACHE)
     try:
@@ -412,66 +495,21 @@ def main(argv):
     except ImportError as e:
         fail("%s: install the tools' Python packages: python3 -m pip install -r "
              "tools/requirements.txt" % e)
-    scene, reference = scene_paths(args.scene, args.reference)
-    scene_name = os.path.basename(os.path.dirname(scene))
-    out = os.path.abspath(args.out or os.path.join(ROOT, "build", "sweep", scene_name))
-    os.makedirs(out, exist_ok=True)
-    size = []
-    if args.width:
-        size += ["--width", str(args.width)]
-    if args.height:
-        size += ["--height", str(args.height)]
+    if repeats > 1 and not shutil.which("iinfo"):
+        fail("iinfo (openimageio-tools, tools/install-deps.sh) is missing: the repeats' "
+             "determinism check needs it")
 
-    runs = radcache_runs(args)
-    # Warm up, untimed: one render per method at the sweep's resolution and one sample per
-    # pixel fills the kernel binary cache and lets the device generate code for the launch
-    # shapes the timed runs use (PoCL does that on a shape's first launch).
-    for method in sorted({method for method, *_ in runs}):
-        options = ["--method", "ic", "--ic-ivg"] if method == "ic-ivg" else ["--method", method]
-        if method in ("ivg", "ivg-gather", "ic-ivg"):
-            options += ["--photons", "1000"]
-        render(scene, os.path.join(out, "warm-%s.exr" % method),
-               options + ["--spp", "1"] + size + args.extra)
-    rows = []
-    device = ""
-    for index, (method, curve, setting, knobs, options) in enumerate(runs):
-        name = "%s-%02d" % (method, index)
-        image = os.path.join(out, name + ".exr")
-        print("[%d/%d] %s %s" % (index + 1, len(runs), method, setting), flush=True)
-        wall, stats = render(scene, image, options + size + args.extra)
-        device = stats["device"]
-        frame = stats["frames"][0] if stats.get("frames") else {}
-        row = {"method": method, "curve": curve, "setting": setting,
-               "spp": knobs.get("spp", ""), "accuracy": knobs.get("accuracy", ""),
-               "ic_rays": knobs.get("ic_rays", ""), "grid": knobs.get("grid", ""),
-               "photons": frame.get("grid", {}).get("photons", ""),
-               "gather_rays": knobs.get("gather_rays", ""), "wall_seconds": wall,
-               "render_seconds": stats["seconds"]["render"],
-               "kernel_seconds": sum(k["seconds"] for k in stats["kernels"].values()),
-               "compile_seconds": sum(b["seconds"] for b in stats.get("program_builds", [])),
-               "records": frame.get("records", ""), "device": device}
-        measure(row, image, reference, out, name)
-        rows.append(row)
-    if args.povray is not None:
-        rows += povray_rows(args, scene, reference, out)
-    for row in rows:
-        row["scene"] = scene_name
 
-    report = {
-        "scene": scene_name, "reference": reference, "device": device, "machine": machine(),
-        "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
-        "git": git_revision(),
-        "command": " ".join(["tools/sweep.py"] + argv),
-        "timing": "render phase of radcache --stats (scene loading, device start-up and image "
-                  "writing excluded; kernel binaries warm, compilation excluded); POV-Ray: wall "
-                  "clock of the whole process",
-        "columns": COLUMNS, "rows": rows, "charts": []}
-    if draw_chart(rows, "relmse", "%s: image relMSE against time" % scene_name,
-                  os.path.join(out, "error-vs-time.png")):
+def write_outputs(report, out, crop):
+    rows = report["rows"]
+    scene_name = report["scene"]
+    if sweep_report.draw_chart(rows, "relmse", "%s: image relMSE against time" % scene_name,
+                               os.path.join(out, "error-vs-time.png")):
         report["charts"].append("error-vs-time.png")
     indirect = [dict(r, relmse_indirect=r["indirect_relmse"]) for r in rows]
-    if draw_chart(indirect, "relmse_indirect", "%s: indirect relMSE against time" % scene_name,
-                  os.path.join(out, "indirect-error-vs-time.png")):
+    if sweep_report.draw_chart(indirect, "relmse_indirect",
+                               "%s: indirect relMSE against time" % scene_name,
+                               os.path.join(out, "indirect-error-vs-time.png")):
         report["charts"].append("indirect-error-vs-time.png")
     with open(os.path.join(out, "sweep.csv"), "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=COLUMNS)
@@ -480,11 +518,53 @@ def main(argv):
             writer.writerow({c: row[c] for c in COLUMNS})
     with open(os.path.join(out, "sweep.json"), "w") as f:
         json.dump(report, f, indent=2)
-    write_html(report, out, args.crop)
-    print("%-26s %-28s %9s %11s %8s" % ("curve", "setting", "seconds", "relMSE", "FLIP"))
+    sweep_report.write_html(report, out, crop)
+
+
+def main(argv):
+    args = parse_arguments(argv)
+    check_tools(args.repeats)
+    scene, reference, frame, animated = scene_paths(args.scene, args.reference, args.frame)
+    check_reference_size(reference, args.width, args.height)
+    scene_name = os.path.basename(os.path.dirname(scene))
+    out = os.path.abspath(args.out or os.path.join(ROOT, "build", "sweep", scene_name))
+    os.makedirs(out, exist_ok=True)
+    options = ["--frames", "%d:%d" % (frame, frame)] if animated else []
+    if args.width:
+        options += ["--width", str(args.width)]
+    if args.height:
+        options += ["--height", str(args.height)]
+    options += args.extra
+
+    methods = [m for m in METHODS if m in args.methods]
+    auto_cells = warm_up(scene, out, methods, options)
+    runs = radcache_runs(args, auto_cells)
+    measured, first_stats = run_points(scene, runs, out, options, args.repeats)
+    rows = radcache_rows(runs, measured, first_stats, reference, out)
+    if args.povray is not None:
+        rows += povray_rows(args, scene, reference, out)
+    for row in rows:
+        row["scene"] = scene_name
+        row["frame"] = frame
+
+    report = {
+        "scene": scene_name, "frame": frame, "reference": reference,
+        "device": rows[0]["device"] if rows else "", "machine": machine(),
+        "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+        "git": git_revision(), "repeats": args.repeats,
+        "command": " ".join(["tools/sweep.py"] + argv),
+        "timing": "median over %d repeats of the render phase of radcache --stats (scene "
+                  "loading, device start-up and image writing excluded; kernel binaries warm, "
+                  "compilation excluded), bars from the fastest to the slowest; POV-Ray: wall "
+                  "clock of the whole process, one run" % args.repeats,
+        "columns": COLUMNS, "rows": rows, "charts": []}
+    write_outputs(report, out, args.crop)
+    print("%-34s %-36s %9s %15s %11s %8s" % ("curve", "setting", "median s", "min-max s",
+                                             "relMSE", "FLIP"))
     for r in rows:
-        print("%-26s %-28s %9.3f %11.4g %8.4f" % (r["curve"], r["setting"], r["render_seconds"],
-                                                  r["relmse"], r["flip"]))
+        print("%-34s %-36s %9.3f %7.3f-%-7.3f %11.4g %8.4f" % (
+            r["curve"], r["setting"], r["render_seconds"], r["render_seconds_min"],
+            r["render_seconds_max"], r["relmse"], r["flip"]))
     print("written to %s (sweep.csv, sweep.json, index.html)" % out)
 
 
