@@ -1,11 +1,13 @@
 // Light sampling for next-event estimation (kernels/common/light.h): lights chosen in
-// proportion to power, points uniform by area on area lights, pdfs that are the solid-angle
-// densities, and the radiance of point and spot lights.
+// proportion to power, points uniform by area on area lights (the strategy for triangles under a
+// small solid angle; tests/solid_angle_sampling_test.cpp tests the other), pdfs that are the
+// solid-angle densities, and the radiance of point and spot lights.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <string>
 
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
@@ -68,12 +70,14 @@ struct ProbeResult {
     std::vector<shared::float4> radiance;
 };
 
-ProbeResult probe(const Scene& scene, glm::vec3 p, size_t count, unsigned seed) {
+// `options`: the probe program's build options (-D).
+ProbeResult probe(const Scene& scene, glm::vec3 p, size_t count, unsigned seed,
+                  const std::string& options = "") {
     Context& context = test::shared_context();
     const Bvh bvh = build_bvh(scene.mesh);
     const DeviceBvh device_bvh(context, bvh);
     const DeviceScene device_scene(context, scene);
-    Kernel kernel = context.kernel("light_probe.cl", "light_sample_probe");
+    Kernel kernel = context.kernel("light_probe.cl", "light_sample_probe", options);
     Buffer<shared::float4> choice(context, count, "choice");
     Buffer<shared::float4> geometry(context, 2 * count, "geometry");
     Buffer<shared::float4> radiance(context, count, "radiance");
@@ -106,11 +110,13 @@ TEST(LightSampling, LightsAreChosenInProportionToPower) {
     EXPECT_GT(chi.p_value, 1e-4) << chi.summary();
 }
 
+// Sampling by area, for every triangle (the quad's triangles subtend more than the shipped rule's
+// threshold from p, so the probe is built to sample every triangle by area).
 TEST(LightSampling, AreaLightPointsAreUniformByAreaWithSolidAnglePdfs) {
     const Scene scene = light_scene();
     const glm::vec3 p(0.3f, -0.2f, 0.0f);
     const size_t n = 1 << 20;
-    const ProbeResult r = probe(scene, p, n, 7);
+    const ProbeResult r = probe(scene, p, n, 7, "-DRC_SOLID_ANGLE_SAMPLING_MIN=INFINITY");
     // The quad light spans x in [-0.5, 1.5], y in [-0.5, 0.5] at z = 2, normal -z.
     const int bins = 8;
     std::vector<double> observed(bins * bins, 0.0);

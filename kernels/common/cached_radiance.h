@@ -29,13 +29,16 @@ RC_FUNC SurfaceMaterial rc_without_diffuse(const SurfaceMaterial* material) {
 // Traces `ray` and fills c with its hit (albedo, normal, position, distance), the hit's emission
 // (if count_emission) and its direct light as the path tracer's vertex computes them: of every
 // lobe, or, when !diffuse_direct (a cache provides the diffuse lobe's direct light too), of the
-// other lobes only. `bounces`: the bounces the ray's path made before (for the depth limit).
+// other lobes only, with `light_samples` light samples beside the one BRDF sample (the render
+// pass's camera hits take --light-samples, other vertices 1). `bounces`: the bounces the ray's
+// path made before (for the depth limit).
 // Returns true at a hit that may still reflect light (bounces < max_depth), with the hit in *sp,
 // *material and *wo (the direction back along the ray, in the shading frame); indirect light
 // there takes one bounce more (bounces + 1 < max_depth).
 RC_FUNC bool rc_cached_vertex(const SceneData* scene, Ray ray, RngStream* rng, bool count_emission,
-                              bool diffuse_direct, int bounces, int max_depth, CachedRadiance* c,
-                              SurfacePoint* sp, SurfaceMaterial* material, float3* wo) {
+                              bool diffuse_direct, int light_samples, int bounces, int max_depth,
+                              CachedRadiance* c, SurfacePoint* sp, SurfaceMaterial* material,
+                              float3* wo) {
     c->direct = c->indirect = c->albedo = c->normal = c->position = (float3)(0.0f);
     c->coverage = 0.0f;
     c->served = false;
@@ -62,8 +65,8 @@ RC_FUNC bool rc_cached_vertex(const SceneData* scene, Ray ray, RngStream* rng, b
         return false;  // the path may bounce no more
     }
     const SurfaceMaterial lit = diffuse_direct ? *material : rc_without_diffuse(material);
-    c->direct += rc_next_event(scene, sp, &lit, *wo, rng, &c->rays);
-    c->direct += rc_bsdf_sampled_emission(scene, sp, &lit, *wo, rng, &c->rays);
+    c->direct += rc_next_event(scene, sp, &lit, *wo, light_samples, rng, &c->rays);
+    c->direct += rc_bsdf_sampled_emission(scene, sp, &lit, *wo, light_samples, rng, &c->rays);
     return true;
 }
 

@@ -1,13 +1,48 @@
 // Light sampling for next-event estimation, and the densities multiple importance sampling needs.
-// Area lights are sampled by area (a triangle chosen in proportion to its area, a uniform point
-// on it) and converted to solid angle; they emit on the side their winding faces.
+// An area light's triangle is chosen in proportion to its area; from a shading point that sees
+// the triangle's emitting side (its winding's) under a large solid angle, a direction is drawn
+// uniformly in that solid angle (Arvo 1995), otherwise a point uniformly by area, converted to
+// solid angle.
 #pragma once
 
 #include "common/math.h"
 #include "common/ray_offset.h"
 #include "common/scene_data.h"
+#include "common/spherical_triangle.h"
 #include "common/triangle_geometry.h"
 #include "shared/types.h"
+
+// The smallest solid angle (steradians) under which a light triangle is sampled in solid angle
+// rather than by area. Measured (docs/path-tracer.md, "Area lights: solid-angle sampling"): the
+// direct light's error falls as the threshold falls to 1e-3 sr and no further below it, where
+// the two densities are nearly equal and sampling by area is cheaper. Tests build their probes
+// with -D to compare the two strategies.
+#ifndef RC_SOLID_ANGLE_SAMPLING_MIN
+#define RC_SOLID_ANGLE_SAMPLING_MIN 1e-3f
+#endif
+
+// The strategy for light triangle `triangle` seen from p, a function of the geometry alone so
+// that sampling and the density MIS evaluates agree: the triangle's solid angle when directions
+// are drawn uniformly in it (p in front of the emitting side, the solid angle at least
+// RC_SOLID_ANGLE_SAMPLING_MIN), 0 when points are drawn uniformly by area.
+RC_FUNC float rc_light_triangle_solid_angle(RC_GLOBAL const Triangle* triangle, float3 p) {
+    const float3 v0 = triangle->v0.xyz;
+    const float3 winding = cross(triangle->v1.xyz - v0, triangle->v2.xyz - v0);
+    if (dot(winding, p - v0) <= 0.0f) {
+        return 0.0f;  // behind the emitter or in its plane: nothing to sample in solid angle
+    }
+    const float solid_angle = rc_spherical_triangle_solid_angle(
+        normalize(v0 - p), normalize(triangle->v1.xyz - p), normalize(triangle->v2.xyz - p));
+    return solid_angle >= RC_SOLID_ANGLE_SAMPLING_MIN && solid_angle > 0.0f ? solid_angle : 0.0f;
+}
+
+// Solid-angle density of a direction to light triangle `triangle` of area light `light` (chosen
+// with probability `selection`) when sampled in solid angle: selection x the triangle's share of
+// the light's area x 1 / solid angle.
+RC_FUNC float rc_solid_angle_light_pdf(const Light* light, float selection,
+                                       RC_GLOBAL const Triangle* triangle, float solid_angle) {
+    return selection * (rc_triangle_area(triangle) / light->area) / solid_angle;
+}
 
 // Index i of the first cdf[i] > u in cdf[0, count), count >= 1 (cdf[count - 1] = 1).
 RC_FUNC int rc_sample_cdf(RC_GLOBAL const float* cdf, int count, float u) {
@@ -51,6 +86,53 @@ RC_FUNC float rc_spot_falloff(const Light* light, float3 from_light) {
     return (light->cutoff - angle) / (light->cutoff - light->beam);
 }
 
+// Samples area light `light` (chosen with probability `selection`) from point p into *s: a
+// triangle by area (u1), then a direction in its solid angle or a point by area (u2, u3).
+RC_FUNC void rc_sample_area_light(const SceneData* scene, const Light* light, float selection,
+                                  float3 p, float u1, float u2, float u3, LightSample* s) {
+    const int first = light->first_triangle;
+    const int entry =
+        first + rc_sample_cdf(scene->light_triangle_cdf + first, light->triangle_count, u1);
+    const uint primitive = scene->light_triangles[entry];
+    RC_GLOBAL const Triangle* triangle = scene->triangles + scene->triangle_of_primitive[primitive];
+    const float3 nl = rc_triangle_normal(triangle);
+    const float solid_angle = rc_light_triangle_solid_angle(triangle, p);
+    if (solid_angle > 0.0f) {
+        // Uniform in the spherical triangle (Arvo 1995); the point is where the direction meets
+        // the triangle's plane.
+        s->direction = rc_sample_spherical_triangle(
+            normalize(triangle->v0.xyz - p), normalize(triangle->v1.xyz - p),
+            normalize(triangle->v2.xyz - p), solid_angle, u2, u3);
+        const float cos_light = -dot(nl, s->direction);
+        if (cos_light <= 0.0f) {
+            return;
+        }
+        const float3 q = p + (dot(triangle->v0.xyz - p, -nl) / cos_light) * s->direction;
+        s->pdf = rc_solid_angle_light_pdf(light, selection, triangle, solid_angle);
+        s->radiance = light->radiance.xyz;
+        s->target = rc_offset_ray_origin(q, nl);
+        return;
+    }
+    // Uniform point on the triangle (pbrt-v3 §13.6.5), its area density converted to solid angle.
+    const float su = sqrt(u2);
+    const float b0 = 1.0f - su;
+    const float b1 = u3 * su;
+    const float3 q = rc_hit_point(triangle, b1, 1.0f - b0 - b1);
+    const float3 to_light = q - p;
+    const float distance2 = dot(to_light, to_light);
+    if (distance2 <= 0.0f) {
+        return;
+    }
+    s->direction = to_light / sqrt(distance2);
+    const float cos_light = -dot(nl, s->direction);
+    if (cos_light <= 0.0f) {
+        return;  // the back of a one-sided emitter
+    }
+    s->pdf = selection * distance2 / (light->area * cos_light);
+    s->radiance = light->radiance.xyz;
+    s->target = rc_offset_ray_origin(q, nl);
+}
+
 // Samples light l (chosen with probability `selection`) from point p.
 RC_FUNC LightSample rc_sample_light(const SceneData* scene, int l, float selection, float3 p,
                                     float u1, float u2, float u3) {
@@ -64,31 +146,7 @@ RC_FUNC LightSample rc_sample_light(const SceneData* scene, int l, float selecti
     s.target = p;
     const int kind = light.kind;
     if (kind == RC_LIGHT_AREA) {
-        const int first = light.first_triangle;
-        const int entry =
-            first + rc_sample_cdf(scene->light_triangle_cdf + first, light.triangle_count, u1);
-        const uint primitive = scene->light_triangles[entry];
-        RC_GLOBAL const Triangle* triangle =
-            scene->triangles + scene->triangle_of_primitive[primitive];
-        // Uniform point on the triangle (pbrt-v3 §13.6.5).
-        const float su = sqrt(u2);
-        const float b0 = 1.0f - su;
-        const float b1 = u3 * su;
-        const float3 q = rc_hit_point(triangle, b1, 1.0f - b0 - b1);
-        const float3 nl = rc_triangle_normal(triangle);
-        const float3 to_light = q - p;
-        const float distance2 = dot(to_light, to_light);
-        if (distance2 <= 0.0f) {
-            return s;
-        }
-        s.direction = to_light / sqrt(distance2);
-        const float cos_light = -dot(nl, s.direction);
-        if (cos_light <= 0.0f) {
-            return s;  // the back of a one-sided emitter
-        }
-        s.pdf = selection * distance2 / (light.area * cos_light);
-        s.radiance = light.radiance.xyz;
-        s.target = rc_offset_ray_origin(q, nl);
+        rc_sample_area_light(scene, &light, selection, p, u1, u2, u3, &s);
     } else if (kind == RC_LIGHT_POINT || kind == RC_LIGHT_SPOT) {
         const float3 to_light = light.position.xyz - p;
         const float distance2 = dot(to_light, to_light);
@@ -116,17 +174,25 @@ RC_FUNC LightSample rc_sample_light(const SceneData* scene, int l, float selecti
     return s;
 }
 
-// Density with which light sampling would have produced the direction towards point q on area
-// light l (q seen from p, nl the light's unit winding normal).
-RC_FUNC float rc_area_light_pdf(const SceneData* scene, int l, float3 p, float3 q, float3 nl) {
+// Density with which light sampling would have produced the direction towards point q on the
+// triangle of scene primitive `primitive` of area light l (q seen from p, nl the triangle's unit
+// normal, either side): the strategy rc_sample_area_light takes for that triangle from p.
+RC_FUNC float rc_area_light_pdf(const SceneData* scene, int l, uint primitive, float3 p, float3 q,
+                                float3 nl) {
+    const float selection = rc_cdf_probability(scene->light_cdf, l);
+    RC_GLOBAL const Triangle* triangle = scene->triangles + scene->triangle_of_primitive[primitive];
+    const float solid_angle = rc_light_triangle_solid_angle(triangle, p);
+    if (solid_angle > 0.0f) {
+        const Light light = scene->lights[l];
+        return rc_solid_angle_light_pdf(&light, selection, triangle, solid_angle);
+    }
     const float3 to_light = q - p;
     const float distance2 = dot(to_light, to_light);
     const float cos_light = fabs(dot(nl, to_light)) / sqrt(distance2);
     if (cos_light <= 0.0f) {
         return 0.0f;
     }
-    return rc_cdf_probability(scene->light_cdf, l) * distance2 /
-           (scene->lights[l].area * cos_light);
+    return selection * distance2 / (scene->lights[l].area * cos_light);
 }
 
 // Density of light sampling for a direction that leaves the scene (the environment).

@@ -41,12 +41,16 @@ RC_FUNC bool rc_occluded(const SceneData* scene, float3 from, float3 to, bool in
     return rc_trace_any(scene->nodes, scene->triangles, shadow);
 }
 
-// Next-event estimation at a surface point: one light chosen by power, its sample weighted by
-// the power heuristic against the BRDF's density (delta lights: weight 1). Returns the reflected
-// radiance towards wo (local frame); counts the shadow ray in *rays.
-RC_FUNC float3 rc_next_event(const SceneData* scene, const SurfacePoint* sp,
-                             const SurfaceMaterial* material, float3 wo, RngStream* rng,
-                             uint* rays) {
+// One light sample of next-event estimation at a surface point: a light chosen by power, its
+// sample weighted by the power heuristic against the BRDF's density (delta lights: weight 1).
+// `light_samples` is n_light of Veach's multi-sample model (1997, §9.2.2) with one BRDF sample
+// beside it: the power heuristic with sample counts (§9.2.4), w = (n_light p_light)^2 /
+// ((n_light p_light)^2 + p_brdf^2). Returns the sample's weighted reflected radiance towards wo
+// (local frame), f cos w / p_light L, before the 1 / n_light of the multi-sample estimator;
+// counts the shadow ray in *rays.
+RC_FUNC float3 rc_light_sample(const SceneData* scene, const SurfacePoint* sp,
+                               const SurfaceMaterial* material, float3 wo, int light_samples,
+                               RngStream* rng, uint* rays) {
     const float u_light = rc_rng_next_float(rng);
     const float u1 = rc_rng_next_float(rng);
     const float u2 = rc_rng_next_float(rng);
@@ -70,9 +74,24 @@ RC_FUNC float3 rc_next_event(const SceneData* scene, const SurfacePoint* sp,
     if (rc_occluded(scene, sp->origin, ls.target, ls.infinite, ls.direction)) {
         return (float3)(0.0f);
     }
-    const float weight =
-        ls.delta ? 1.0f : rc_power_heuristic(ls.pdf, rc_material_pdf(material, wo, wi));
+    const float weight = ls.delta ? 1.0f
+                                  : rc_power_heuristic((float)light_samples * ls.pdf,
+                                                       rc_material_pdf(material, wo, wi));
     return f * (wi.z * weight / ls.pdf) * ls.radiance;
+}
+
+// Next-event estimation at a surface point with `light_samples` independent light samples
+// (rc_light_sample), their mean: with rc_bsdf_sampled_emission given the same count, the
+// multi-sample estimator of the point's direct light (Veach 1997, §9.2.2: F = sum over
+// strategies of 1 / n_i sum_j w_i f / p_i), unbiased for every count.
+RC_FUNC float3 rc_next_event(const SceneData* scene, const SurfacePoint* sp,
+                             const SurfaceMaterial* material, float3 wo, int light_samples,
+                             RngStream* rng, uint* rays) {
+    float3 sum = (float3)(0.0f);
+    for (int j = 0; j < light_samples; ++j) {
+        sum += rc_light_sample(scene, sp, material, wo, light_samples, rng, rays);
+    }
+    return sum / (float)light_samples;
 }
 
 // A bounce sampled from `material` at sp with three numbers of rng: the direction in the
@@ -92,11 +111,12 @@ RC_FUNC bool rc_sample_bounce(const SurfacePoint* sp, const SurfaceMaterial* mat
 }
 
 // Emission reached by sampling the BRDF once at a surface point, weighted by the power heuristic
-// against light sampling: with rc_next_event, the direct light of the point (what the path
-// tracer's first bounce computes). Counts the ray in *rays.
+// against light sampling with `light_samples` light samples (their count multiplies the light
+// density, Veach 1997, §9.2.4): with rc_next_event given the same count, the direct light of the
+// point (what the path tracer's first bounce computes with one). Counts the ray in *rays.
 RC_FUNC float3 rc_bsdf_sampled_emission(const SceneData* scene, const SurfacePoint* sp,
-                                        const SurfaceMaterial* material, float3 wo, RngStream* rng,
-                                        uint* rays) {
+                                        const SurfaceMaterial* material, float3 wo,
+                                        int light_samples, RngStream* rng, uint* rays) {
     float3 wi;
     float pdf;
     float3 f;
@@ -110,12 +130,13 @@ RC_FUNC float3 rc_bsdf_sampled_emission(const SceneData* scene, const SurfacePoi
     const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
     *rays += 1;
     const float3 throughput = f * (wi.z / pdf);
+    const float count = (float)light_samples;
     if (hit.primitive == RC_NO_HIT) {
         if (scene->environment < 0) {
             return (float3)(0.0f);
         }
         return throughput * scene->lights[scene->environment].radiance.xyz *
-               rc_power_heuristic(pdf, rc_environment_pdf(scene));
+               rc_power_heuristic(pdf, count * rc_environment_pdf(scene));
     }
     const SurfacePoint light_point = rc_surface_point(scene, ray, hit);
     if (light_point.light < 0 || !light_point.front) {
@@ -123,8 +144,8 @@ RC_FUNC float3 rc_bsdf_sampled_emission(const SceneData* scene, const SurfacePoi
     }
     return throughput * scene->lights[light_point.light].radiance.xyz *
            rc_power_heuristic(
-               pdf, rc_area_light_pdf(scene, light_point.light, sp->position, light_point.position,
-                                      light_point.geometric_normal));
+               pdf, count * rc_area_light_pdf(scene, light_point.light, hit.primitive, sp->position,
+                                              light_point.position, light_point.geometric_normal));
 }
 
 // Radiance arriving along `ray` (unit direction), by path tracing. With first_emission false the
@@ -166,9 +187,10 @@ RC_FUNC PathSample rc_path_radiance(const SceneData* scene, Ray ray, RngStream* 
         if (sp.light >= 0 && sp.front && (!first || first_emission)) {
             const float weight =
                 first ? 1.0f
-                      : rc_power_heuristic(previous_pdf,
-                                           rc_area_light_pdf(scene, sp.light, previous_position,
-                                                             sp.position, sp.geometric_normal));
+                      : rc_power_heuristic(
+                            previous_pdf,
+                            rc_area_light_pdf(scene, sp.light, hit.primitive, previous_position,
+                                              sp.position, sp.geometric_normal));
             rc_add_contribution(&s, depth,
                                 throughput * scene->lights[sp.light].radiance.xyz * weight);
         }
@@ -177,7 +199,7 @@ RC_FUNC PathSample rc_path_radiance(const SceneData* scene, Ray ray, RngStream* 
         }
         const float3 wo = rc_to_local(&sp.shading, -ray.direction.xyz);
         rc_add_contribution(&s, depth + 1,
-                            throughput * rc_next_event(scene, &sp, &material, wo, rng, &s.rays));
+                            throughput * rc_next_event(scene, &sp, &material, wo, 1, rng, &s.rays));
 
         // Continue the path by sampling the BRDF.
         float3 wi;

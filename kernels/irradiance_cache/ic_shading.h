@@ -69,16 +69,17 @@ typedef struct RecordCache {
 // sampled from that lobe. Where no record covers the hit, the diffuse lobe is path traced too.
 // `bounces`: the bounces the ray's path made before (for the depth limit). `splat`: the hit's
 // entry of the splat buffer (sum w E', sum w) for a camera sample, or 0: gathered from the cache.
+// `light_samples`: next-event estimation's light samples at the hit (rc_cached_vertex).
 RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const RecordCache* cache,
                                              RC_GLOBAL const float4* splat, Ray ray, RngStream* rng,
-                                             bool count_emission, int bounces, int max_depth,
-                                             int rr_depth) {
+                                             bool count_emission, int light_samples, int bounces,
+                                             int max_depth, int rr_depth) {
     CachedRadiance c;
     SurfacePoint sp;
     SurfaceMaterial material;
     float3 wo;
-    if (!rc_cached_vertex(scene, ray, rng, count_emission, true, bounces, max_depth, &c, &sp,
-                          &material, &wo) ||
+    if (!rc_cached_vertex(scene, ray, rng, count_emission, true, light_samples, bounces, max_depth,
+                          &c, &sp, &material, &wo) ||
         bounces + 1 >= max_depth) {
         return c;
     }
@@ -131,7 +132,8 @@ struct PixelShader {
     RC_GLOBAL const float4* splat;  // the splat buffer: entry pixel * spp + s per camera sample
 };
 
-// Camera sample s of a pixel, shaded with the first cache level. Its layer is the records
+// Camera sample s of a pixel, shaded with the first cache level, its direct light with
+// params->light_samples light samples (--light-samples). Its layer is the records
 // overlay: record centres (red) and influence borders (green), when drawn, over the image at half
 // brightness.
 RC_FUNC FilmSample rc_shade_camera_sample(const PixelShader* shader, uint pixel, uint s) {
@@ -141,8 +143,8 @@ RC_FUNC FilmSample rc_shade_camera_sample(const PixelShader* shader, uint pixel,
     float x, y;
     const Ray ray = rc_ic_camera_ray(params, shader->camera, pixel, s, &rng, &x, &y);
     RC_GLOBAL const float4* splat = shader->splat + (size_t)pixel * (uint)params->camera_spp + s;
-    c.light = rc_ic_cached_radiance(shader->scene, shader->cache, splat, ray, &rng, true, 0,
-                                    params->max_depth, params->rr_depth);
+    c.light = rc_ic_cached_radiance(shader->scene, shader->cache, splat, ray, &rng, true,
+                                    params->light_samples, 0, params->max_depth, params->rr_depth);
     float3 marks = (float3)(0.0f);
     if (params->draw_records != 0 && isfinite(c.light.distance)) {
         marks = rc_ic_record_marks(shader->cache, params->accuracy, c.light.position,

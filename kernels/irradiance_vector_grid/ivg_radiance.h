@@ -36,11 +36,11 @@ RC_FUNC float3 rc_ivg_diffuse(const SceneData* scene, const VectorGrid* grid,
 // Light arriving along `ray` when the grid provides the diffuse lobe's indirect light at its hit
 // (and its direct light too when the grid holds direct light, params.include_direct): emission (if
 // count_emission), next-event estimation, rho_d / pi E from the grid, and the other lobes by a
-// path sampled from them. *grid_term: the grid's part. `bounces`: the bounces the ray's path made
-// before.
+// path sampled from them. *grid_term: the grid's part. `light_samples`: next-event estimation's
+// light samples at the hit (rc_cached_vertex). `bounces`: the bounces the ray's path made before.
 RC_FUNC CachedRadiance rc_ivg_radiance(const SceneData* scene, const VectorGrid* grid, Ray ray,
-                                       RngStream* rng, bool count_emission, int bounces,
-                                       float3* grid_term) {
+                                       RngStream* rng, bool count_emission, int light_samples,
+                                       int bounces, float3* grid_term) {
     CachedRadiance c;
     SurfacePoint sp;
     SurfaceMaterial material;
@@ -48,8 +48,8 @@ RC_FUNC CachedRadiance rc_ivg_radiance(const SceneData* scene, const VectorGrid*
     const int max_depth = grid->params.max_depth;
     const bool direct_in_grid = grid->params.include_direct != 0;
     *grid_term = (float3)(0.0f);
-    if (!rc_cached_vertex(scene, ray, rng, count_emission, !direct_in_grid, bounces, max_depth, &c,
-                          &sp, &material, &wo)) {
+    if (!rc_cached_vertex(scene, ray, rng, count_emission, !direct_in_grid, light_samples, bounces,
+                          max_depth, &c, &sp, &material, &wo)) {
         return c;
     }
     const bool indirect = bounces + 1 < max_depth;

@@ -17,9 +17,10 @@ RC_FUNC Ray rc_ivg_camera_ray(const IvgParams* p, const CameraParams* camera, ui
 }
 
 // Camera sample s of a pixel with final gathering (params.gather_rays gather rays): exact direct
-// light at the camera's hit; its diffuse lobe's indirect light from cosine-distributed, stratified
-// gather rays whose hits give direct light plus the grid's diffuse light; the
-// other lobes by path tracing. *grid_term: the grid read at the camera's hit (the `grid` layer).
+// light at the camera's hit (params.light_samples light samples); its diffuse lobe's indirect light
+// from cosine-distributed, stratified gather rays whose hits give direct light plus the grid's
+// diffuse light; the other lobes by path tracing. *grid_term: the grid read at the camera's hit
+// (the `grid` layer).
 RC_FUNC CachedRadiance rc_ivg_gather(const SceneData* scene, const VectorGrid* grid,
                                      const CameraParams* camera, uint pixel, uint s,
                                      float3* grid_term) {
@@ -31,7 +32,8 @@ RC_FUNC CachedRadiance rc_ivg_gather(const SceneData* scene, const VectorGrid* g
     float3 wo;
     const int max_depth = grid->params.max_depth;
     *grid_term = (float3)(0.0f);
-    if (!rc_cached_vertex(scene, ray, &rng, true, true, 0, max_depth, &c, &sp, &material, &wo) ||
+    if (!rc_cached_vertex(scene, ray, &rng, true, true, grid->params.light_samples, 0, max_depth,
+                          &c, &sp, &material, &wo) ||
         1 >= max_depth) {
         return c;
     }
@@ -61,7 +63,8 @@ RC_FUNC CachedRadiance rc_ivg_gather(const SceneData* scene, const VectorGrid* g
             gather.origin = (float4)(sp.origin, 0.0f);
             gather.direction = (float4)(direction, INFINITY);
             float3 unused;
-            const CachedRadiance l = rc_ivg_radiance(scene, grid, gather, &rng, false, 1, &unused);
+            const CachedRadiance l =
+                rc_ivg_radiance(scene, grid, gather, &rng, false, 1, 1, &unused);
             c.rays += l.rays;
             sum += l.direct + l.indirect;
         }
@@ -80,8 +83,9 @@ struct PixelShader {
 };
 
 // Camera sample s of a pixel: with params.gather_rays gather rays, final gathering
-// (`ivg-gather`); with none, the grid read directly at the camera's hit (`ivg`). Its layer is the
-// grid's diffuse light at the camera's hit.
+// (`ivg-gather`); with none, the grid read directly at the camera's hit (`ivg`); direct light at
+// the camera's hit with params.light_samples light samples. Its layer is the grid's diffuse light
+// at the camera's hit.
 RC_FUNC FilmSample rc_shade_camera_sample(const PixelShader* shader, uint pixel, uint s) {
     FilmSample c;
     if (shader->grid->params.gather_rays > 0) {
@@ -89,7 +93,8 @@ RC_FUNC FilmSample rc_shade_camera_sample(const PixelShader* shader, uint pixel,
     } else {
         RngStream rng;
         const Ray ray = rc_ivg_camera_ray(&shader->grid->params, shader->camera, pixel, s, &rng);
-        c.light = rc_ivg_radiance(shader->scene, shader->grid, ray, &rng, true, 0, &c.layer);
+        c.light = rc_ivg_radiance(shader->scene, shader->grid, ray, &rng, true,
+                                  shader->grid->params.light_samples, 0, &c.layer);
     }
     return c;
 }

@@ -19,7 +19,7 @@ RC_FUNC SourceSample rc_source_radiance(const SceneData* scene, const RadianceSo
                                         int max_depth, int rr_depth) {
     float3 grid_term;
     const CachedRadiance c =
-        rc_ivg_radiance(scene, source, ray, rng, count_emission, bounces, &grid_term);
+        rc_ivg_radiance(scene, source, ray, rng, count_emission, 1, bounces, &grid_term);
     const SourceSample r = {c.direct + c.indirect, c.distance, c.rays};
     return r;
 }

@@ -160,8 +160,8 @@ typedef struct IcParams {
     int max_depth;       // bounces of a path
     int rr_depth;        // the depth where Russian roulette starts
     int level;           // cache level of the records being computed (0: the camera's)
-    int pad0;
-    uint seed_lo;  // the 64-bit seed
+    int light_samples;   // next-event estimation's light samples at a camera hit (ic_shade)
+    uint seed_lo;        // the 64-bit seed
     uint seed_hi;
     float accuracy;    // a: records influence points within a R
     float max_weight;  // the largest weight (near a record's centre)
@@ -206,7 +206,7 @@ typedef struct IvgParams {
     int camera_spp;      // camera samples per pixel
     uint seed_lo;        // the 64-bit seed
     uint seed_hi;
-    int pad0;
+    int light_samples;  // next-event estimation's light samples at a camera hit (ivg_shade)
 } IvgParams;
 
 RC_SHARED_END
@@ -304,6 +304,7 @@ RC_SHARED_END
     FIELD(IcParams, max_depth)             \
     FIELD(IcParams, rr_depth)              \
     FIELD(IcParams, level)                 \
+    FIELD(IcParams, light_samples)         \
     FIELD(IcParams, seed_lo)               \
     FIELD(IcParams, seed_hi)               \
     FIELD(IcParams, accuracy)              \
@@ -330,7 +331,8 @@ RC_SHARED_END
     FIELD(IvgParams, gather_rays)          \
     FIELD(IvgParams, camera_spp)           \
     FIELD(IvgParams, seed_lo)              \
-    FIELD(IvgParams, seed_hi)
+    FIELD(IvgParams, seed_hi)              \
+    FIELD(IvgParams, light_samples)
 // clang-format on
 
 #ifndef __OPENCL_VERSION__

@@ -181,6 +181,7 @@ shared::IcParams IrradianceCache::level_params(int level) const {
     params.max_depth = sampling_.max_depth;
     params.rr_depth = sampling_.rr_depth;
     params.level = level;
+    params.light_samples = 1;
     params.seed_lo = static_cast<unsigned>(sampling_.seed);
     params.seed_hi = static_cast<unsigned>(sampling_.seed >> 32);
     params.accuracy = sampling_.accuracy;
@@ -440,6 +441,9 @@ void check_options(const IrradianceCacheOptions& options, size_t samples) {
     if (options.bounces < 1) {
         throw Error("--ic-bounces must be at least 1", kExitUsage);
     }
+    if (options.light_samples < 1) {
+        throw Error("--light-samples must be at least 1", kExitUsage);
+    }
     if (options.source != nullptr && options.bounces > 1) {
         throw Error("the hemisphere rays read the " + options.source->source_name() +
                         " at their hits: it needs --ic-bounces 1",
@@ -541,6 +545,7 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     camera_ = camera_params(scene_.camera, width_, height_);
     shared::IcParams params = level_params(0);
     params.draw_records = options.records_overlay ? 1 : 0;
+    params.light_samples = options.light_samples;
 
     // 1. G-buffer.
     const auto start = SteadyClock::now();

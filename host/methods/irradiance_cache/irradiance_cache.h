@@ -40,6 +40,7 @@ struct IrradianceCacheOptions {
     int bounces = 2;  // cache levels: 1 path-traces beyond the hemisphere rays' hits; n > 1
                       // reads level k + 1 there for levels k < n (docs/irradiance-caching.md:
                       // two levels cut the Cornell box's indirect relMSE 3x, two-rooms' 10x)
+    int light_samples = 1;  // the render pass's light samples per camera hit (--light-samples)
     std::filesystem::path cache_in;   // records to start from
     std::filesystem::path cache_out;  // where to save the records
     bool records_overlay = true;      // draw the `records` layer

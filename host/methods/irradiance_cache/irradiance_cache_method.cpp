@@ -5,6 +5,7 @@
 
 #include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/irradiance_vector_grid/ivg_options.h"
+#include "methods/light_samples.h"
 #include "methods/method.h"
 #include "util/error.h"
 #include "util/file_io.h"
@@ -32,6 +33,7 @@ std::vector<OptionSpec> irradiance_cache_option_specs() {
         {"--ic-ivg", "", "",
          "ic: hemisphere rays read the irradiance vector grid at their hits instead of path "
          "tracing beyond them (the grid's options apply)"},
+        kLightSamplesOption,
     };
     for (OptionSpec& spec : ivg_option_specs()) {
         specs.push_back(std::move(spec));
@@ -53,6 +55,7 @@ IrradianceCacheOptions parse_options(const ParsedArguments& arguments,
     // Two cache levels unless the grid serves the hemisphere rays' hits (one level only).
     const int bounces = arguments.has("--ic-ivg") ? 1 : ic.bounces;
     ic.bounces = static_cast<int>(arguments.integer("--ic-bounces", bounces, 1, 8));
+    ic.light_samples = light_samples(arguments);
     ic.cache_in = arguments.value("--cache-in");
     ic.cache_out = arguments.value("--cache-out");
     if (!ic.cache_out.empty()) {
@@ -115,6 +118,7 @@ class IrradianceCaching final : public Method {
         computed -= stats.loaded_records;
         nlohmann::json& s = *out;
         s["spp"] = options_.spp;
+        s["light_samples"] = options_.light_samples;
         s["records"] = stats.records;
         s["loaded_records"] = stats.loaded_records;
         s["level_records"] = stats.level_records;

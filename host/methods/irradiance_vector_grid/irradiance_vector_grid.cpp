@@ -154,6 +154,7 @@ shared::IvgParams IrradianceVectorGrid::layout(const IvgOptions& options) const 
     p.max_depth = options.max_depth;
     p.rr_depth = options.rr_depth;
     p.camera_spp = 1;
+    p.light_samples = 1;
     p.seed_lo = static_cast<unsigned>(options.seed);
     p.seed_hi = static_cast<unsigned>(options.seed >> 32);
     p.interpolation = options.interpolation;

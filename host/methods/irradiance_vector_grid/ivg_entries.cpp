@@ -4,6 +4,7 @@
 
 #include "methods/irradiance_vector_grid/ivg_method.h"
 #include "methods/irradiance_vector_grid/ivg_options.h"
+#include "methods/light_samples.h"
 #include "methods/method.h"
 
 namespace rc {
@@ -19,7 +20,8 @@ class GridRendering final : public Method {
     GridRendering(const ParsedArguments& arguments, const MethodSettings& settings, int gather_rays)
         : settings_(settings),
           grid_options_(ivg_options(arguments, settings)),
-          gather_rays_(gather_rays) {}
+          gather_rays_(gather_rays),
+          light_samples_(light_samples(arguments)) {}
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         FrameResult result;
@@ -29,6 +31,7 @@ class GridRendering final : public Method {
         IvgRenderOptions options;
         settings_.apply_to(options);
         options.gather_rays = gather_rays_;
+        options.light_samples = light_samples_;
         IvgRenderStats stats;
         result.image = method.render(options, &stats);
         result.spp = settings_.spp;
@@ -37,6 +40,7 @@ class GridRendering final : public Method {
         result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
         result.stats["spp"] = settings_.spp;
         result.stats["gather_rays"] = gather_rays_;
+        result.stats["light_samples"] = light_samples_;
         result.stats["shading_rays"] = stats.rays;
         result.stats["seconds"] = {{"shading", stats.seconds}};
         return result;
@@ -46,22 +50,30 @@ class GridRendering final : public Method {
     MethodSettings settings_;
     IvgOptions grid_options_;
     int gather_rays_;
+    int light_samples_;
 };
 
 std::vector<std::string> grid_aovs() { return {std::begin(kIvgAovs), std::end(kIvgAovs)}; }
+
+// The options of both grid renderings: the grid's and --light-samples.
+std::vector<OptionSpec> grid_rendering_options() {
+    std::vector<OptionSpec> options = ivg_option_specs();
+    options.push_back(kLightSamplesOption);
+    return options;
+}
 
 }  // namespace
 
 MethodEntry ivg_method_entry() {
     return {"ivg", "the irradiance vector grid read at the camera's hit (no gather rays)",
-            ivg_option_specs(), grid_aovs(),
+            grid_rendering_options(), grid_aovs(),
             [](const ParsedArguments& arguments, const MethodSettings& settings) {
                 return std::make_unique<GridRendering>(arguments, settings, 0);
             }};
 }
 
 MethodEntry ivg_gather_method_entry() {
-    std::vector<OptionSpec> options = ivg_option_specs();
+    std::vector<OptionSpec> options = grid_rendering_options();
     options.push_back(kGatherRaysOption);
     return {"ivg-gather",
             "final gathering: gather rays read the irradiance vector grid at their hits", options,

@@ -21,6 +21,7 @@ class RenderGrid : public KernelArgumentGroup {
     RenderGrid(const IrradianceVectorGrid& grid, const IvgRenderOptions& options) : grid_(grid) {
         params_ = grid.params();
         params_.gather_rays = options.gather_rays;
+        params_.light_samples = options.light_samples;
         params_.camera_spp = options.spp;
         params_.seed_lo = static_cast<unsigned>(options.seed);
         params_.seed_hi = static_cast<unsigned>(options.seed >> 32);
@@ -54,6 +55,9 @@ Image IvgMethod::render(const IvgRenderOptions& options, IvgRenderStats* stats) 
     }
     if (options.gather_rays < 0) {
         throw Error("--gather-rays must not be negative", kExitUsage);
+    }
+    if (options.light_samples < 1) {
+        throw Error("--light-samples must be at least 1", kExitUsage);
     }
     if (pixels > std::numeric_limits<uint32_t>::max()) {
         throw Error("irradiance vector grid: width x height exceeds 2^32 pixels", kExitUsage);

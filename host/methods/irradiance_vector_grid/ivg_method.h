@@ -18,7 +18,8 @@ struct IvgRenderOptions {
     int height = 0;
     int spp = 4;
     uint64_t seed = 0;
-    int gather_rays = 0;  // per camera sample; 0: read the grid at the camera's hit (ivg)
+    int gather_rays = 0;    // per camera sample; 0: read the grid at the camera's hit (ivg)
+    int light_samples = 1;  // light samples of the direct light at the camera's hit
 };
 
 struct IvgRenderStats {
