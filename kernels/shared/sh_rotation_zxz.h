@@ -133,6 +133,12 @@ RC_FUNC void rc_sh_rotate_zxz(const float* rotation, RC_GLOBAL const float* x90,
     }
     float alpha[2], beta[2], gamma[2];
     rc_sh_zyz_angles(rotation, alpha, beta, gamma);
+    // Frames with the same normal (a flat surface): R is a rotation about z by gamma (alpha = 0
+    // there), O(n^2) and no dense band.
+    if (beta[0] > 0.0f && beta[1] <= 1e-6f && beta[1] >= -1e-6f) {
+        rc_sh_rotate_z(gamma[0], gamma[1], order, coefficients, vectors, stride);
+        return;
+    }
     rc_sh_rotate_z(gamma[0], gamma[1], order, coefficients, vectors, stride);
     rc_sh_rotate_x90(x90, 0, order, coefficients, vectors, stride);
     rc_sh_rotate_z(beta[0], beta[1], order, coefficients, vectors, stride);
