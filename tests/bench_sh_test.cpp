@@ -21,6 +21,7 @@ TEST(BenchSh, ReportsThroughputAndMaterialOrders) {
     const nlohmann::json report = nlohmann::json::parse(read_file(json));
     EXPECT_GT(report["coefficients_projected_per_second"].get<double>(), 0.0);
     EXPECT_GT(report["rotations_per_second"].get<double>(), 0.0);
+    EXPECT_GT(report["zxz_rotations_per_second"].get<double>(), 0.0);
     EXPECT_EQ(report["resolution"], 4);
     // Both bases, every material of glossy-box (three diffuse walls, three glossy objects).
     ASSERT_EQ(report["materials"].size(), 12u);

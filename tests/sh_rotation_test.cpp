@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "sh_quadrature.h"
+#include "shared/sh_rotation_zxz.h"
 #include "shared/spherical_harmonics.h"
 #include "test_support.h"
 
@@ -47,6 +48,27 @@ std::vector<float> rotate(int order, const std::vector<std::vector<double>>& rot
     const Buffer<shared::float4> device_rows(context, rows, "rotations");
     Buffer<float> c(context, coefficients, "coefficients");
     context.launch(kernel, rotations.size(), order, kVectors, device_rows, c);
+    return c.download();
+}
+
+// As rotate, by the zxzxz factorization (rc_rotation_zxz_probe) with the host-built table.
+std::vector<float> rotate_zxz(int order, const std::vector<std::vector<double>>& rotations,
+                              const std::vector<float>& coefficients) {
+    Context& context = test::shared_context();
+    Kernel kernel = context.kernel("radiance_cache/rc_probe.cl", "rc_rotation_zxz_probe");
+    std::vector<shared::float4> rows;
+    for (const std::vector<double>& r : rotations) {
+        for (int row = 0; row < 3; ++row) {
+            rows.push_back({static_cast<float>(r[3 * row]), static_cast<float>(r[3 * row + 1]),
+                            static_cast<float>(r[3 * row + 2]), 0.0f});
+        }
+    }
+    std::vector<float> table(RC_SH_X90_TABLE_SIZE);
+    shared::rc_sh_x90_table(table.data());
+    const Buffer<shared::float4> device_rows(context, rows, "rotations");
+    const Buffer<float> x90(context, table, "x90");
+    Buffer<float> c(context, coefficients, "coefficients");
+    context.launch(kernel, rotations.size(), order, kVectors, device_rows, x90, c);
     return c.download();
 }
 
@@ -171,6 +193,80 @@ TEST(ShRotation, RotationAboutZMatchesItsClosedForm) {
                     EXPECT_NEAR(rotated[at + shared::rc_sh_index(l, -m)],
                                 cm * std::sin(a) + cn * std::cos(a), 2e-5);
                 }
+            }
+        }
+    }
+}
+
+// Rotations where the ZYZ angles degenerate or are special, then random ones: identity, about z,
+// Rx(+-90), Rx(180) (beta = pi), tilts of 1e-4 and 1e-7 rad (sin beta near the cut-off).
+std::vector<std::vector<double>> zxz_rotations(std::mt19937& rng) {
+    std::vector<std::vector<double>> rotations = {{1, 0, 0, 0, 1, 0, 0, 0, 1},
+                                                  {0, -1, 0, 1, 0, 0, 0, 0, 1},
+                                                  {1, 0, 0, 0, 0, -1, 0, 1, 0},
+                                                  {1, 0, 0, 0, 0, 1, 0, -1, 0},
+                                                  {1, 0, 0, 0, -1, 0, 0, 0, -1}};
+    for (double tilt : {1e-4, 1e-7}) {
+        const double c = std::cos(tilt), s = std::sin(tilt);
+        const std::vector<double> tilt_x = {1, 0, 0, 0, c, -s, 0, s, c};
+        rotations.push_back(multiply(test::random_rotation(rng), tilt_x));
+        const std::vector<double> z = {0.6, -0.8, 0, 0.8, 0.6, 0, 0, 0, 1};
+        rotations.push_back(multiply(z, tilt_x));
+    }
+    for (int i = 0; i < 32; ++i) {
+        rotations.push_back(test::random_rotation(rng));
+    }
+    return rotations;
+}
+
+// The zxzxz factorization satisfies the defining property itself (rotate-then-evaluate =
+// evaluate at the rotated direction) and agrees with the Ivanic-Ruedenberg rotation, at every
+// order, to 1e-4 of the vector's scale.
+TEST(ShRotation, ZxzFactorizationMatchesTheExactRotation) {
+    std::mt19937 rng(34);
+    for (int order = 1; order <= RC_SH_MAX_ORDER; ++order) {
+        const int count = order * order;
+        const std::vector<std::vector<double>> rotations = zxz_rotations(rng);
+        const int items = static_cast<int>(rotations.size());
+        const std::vector<float> c = random_coefficients(rng, items * kVectors * count);
+        const std::vector<float> fast = rotate_zxz(order, rotations, c);
+        const std::vector<float> exact = rotate(order, rotations, c);
+        for (int i = 0; i < items; ++i) {
+            const std::vector<double>& r = rotations[i];
+            for (int v = 0; v < kVectors; ++v) {
+                const size_t at = static_cast<size_t>(i * kVectors + v) * count;
+                const double scale = norm(&c[at], count);
+                for (int k = 0; k < count; ++k) {
+                    EXPECT_NEAR(fast[at + k], exact[at + k], 1e-4 * scale)
+                        << "order " << order << " item " << i << " coefficient " << k;
+                }
+                const shared::float4 d = test::random_direction(rng);
+                const double rx = r[0] * d.x + r[1] * d.y + r[2] * d.z;
+                const double ry = r[3] * d.x + r[4] * d.y + r[5] * d.z;
+                const double rz = r[6] * d.x + r[7] * d.y + r[8] * d.z;
+                EXPECT_NEAR(evaluate(&fast[at], order, rx, ry, rz),
+                            evaluate(&c[at], order, d.x, d.y, d.z),
+                            1e-4 * scale * order / std::sqrt(4 * std::numbers::pi))
+                    << "order " << order << " item " << i;
+            }
+        }
+    }
+}
+
+// The table is D(Rx +90): orthogonal per band (D D^T = 1).
+TEST(ShRotation, X90TableIsOrthogonal) {
+    std::vector<float> table(RC_SH_X90_TABLE_SIZE);
+    shared::rc_sh_x90_table(table.data());
+    for (int l = 0; l < RC_SH_MAX_ORDER; ++l) {
+        const int size = 2 * l + 1;
+        const float* band = &table[shared::rc_sh_x90_band_offset(l)];
+        for (int a = 0; a < size; ++a) {
+            for (int b = 0; b < size; ++b) {
+                double sum = 0.0;
+                for (int k = 0; k < size; ++k) {
+                    sum += static_cast<double>(band[a * size + k]) * band[b * size + k];
+                }
+                EXPECT_NEAR(sum, a == b ? 1.0 : 0.0, 1e-5) << "band " << l;
             }
         }
     }

@@ -10,6 +10,7 @@
 #include "app/device_options.h"
 #include "methods/radiance_cache/brdf_tables.h"
 #include "scene/scene_loader.h"
+#include "shared/sh_rotation_zxz.h"
 #include "util/cli.h"
 #include "util/error.h"
 #include "util/file_io.h"
@@ -35,11 +36,12 @@ struct ShFigures {
     double coefficients_per_second = 0.0;
     double samples_per_second = 0.0;
     double rotations_per_second = 0.0;
+    double zxz_rotations_per_second = 0.0;
 };
 
 // Projection of `records` records of m x n stratified samples at order RC_SH_MAX_ORDER (the
 // test radiance of rc_cells_probe, a cosine lobe) and rotation of as many r, g, b vector
-// triples by random-looking rotations.
+// triples by random-looking rotations, exact (Ivanic-Ruedenberg) and by the zxzxz factorization.
 ShFigures measure(Context& context, int records, int m, int n) {
     ShFigures figures;
     const int order = RC_SH_MAX_ORDER;
@@ -69,6 +71,14 @@ ShFigures measure(Context& context, int records, int m, int n) {
     const double rotation_seconds =
         timed_launch(context, rotation, records, order, 3, rotations, coefficients);
     figures.rotations_per_second = records / rotation_seconds;
+
+    std::vector<float> table(RC_SH_X90_TABLE_SIZE);
+    shared::rc_sh_x90_table(table.data());
+    const Buffer<float> x90(context, table, "x90");
+    Kernel zxz = context.kernel("radiance_cache/rc_probe.cl", "rc_rotation_zxz_probe");
+    const double zxz_seconds =
+        timed_launch(context, zxz, records, order, 3, rotations, x90, coefficients);
+    figures.zxz_rotations_per_second = records / zxz_seconds;
     return figures;
 }
 
@@ -92,7 +102,8 @@ int run_bench_sh(const std::vector<std::string>& args) {
             "radcache bench sh [options]",
             "Radiance caching's spherical harmonics at order 10 on one device (kernel time):\n"
             "coefficients projected/s from stratified hemisphere samples, r, g, b vector triples\n"
-            "rotated/s (Ivanic-Ruedenberg), and the BRDF tables of the scene's materials: build\n"
+            "rotated/s (Ivanic-Ruedenberg and zxzxz), and the BRDF tables of the scene's "
+            "materials: build\n"
             "time and each material's adaptive order in SH and in HSH.",
             specs);
         return 0;
@@ -117,6 +128,8 @@ int run_bench_sh(const std::vector<std::string>& args) {
                 figures.samples_per_second * 1e-6);
     std::printf("%-40s %12.3f\n", "rgb rotations/s (millions)",
                 figures.rotations_per_second * 1e-6);
+    std::printf("%-40s %12.3f\n", "rgb rotations/s zxzxz (millions)",
+                figures.zxz_rotations_per_second * 1e-6);
 
     nlohmann::json materials = nlohmann::json::array();
     for (int basis : {RC_BASIS_SH, RC_BASIS_HSH}) {
@@ -150,6 +163,7 @@ int run_bench_sh(const std::vector<std::string>& args) {
             {"coefficients_projected_per_second", figures.coefficients_per_second},
             {"samples_projected_per_second", figures.samples_per_second},
             {"rotations_per_second", figures.rotations_per_second},
+            {"zxz_rotations_per_second", figures.zxz_rotations_per_second},
             {"scene", scene_path},
             {"max_error", table_options.max_error},
             {"resolution", table_options.resolution},

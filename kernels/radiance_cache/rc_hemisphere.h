@@ -37,3 +37,21 @@ RC_FUNC float3 rc_stratum_direction(uint key_lo, uint key_hi, uint record, int c
     rc_stratum_jitter(key_lo, key_hi, record, (uint)cell, &u1, &u2);
     return rc_uniform_stratum_direction(cell / n, cell % n, m, n, u1, u2);
 }
+
+// The direction of cell `cell` = j n + k of record `record` on a jittered grid: one polar jitter
+// per row j (word 0 of cell (j, 0)'s stream) and one azimuthal jitter per column k (word 1 of cell
+// (0, k)'s stream), so cells (j, k) and (j, k - 1) differ only in azimuth and cells (j, k) and
+// (j - 1, k) only in polar angle. The translational gradients (rc_gradients.h) difference the
+// radiance of such neighbours across the wall between them (Ward and Heckbert's cell-wall
+// argument assumes this grid); with independent jitter per cell the azimuthal differences near
+// the pole would mix in polar changes, amplified by 1 / sin(theta). Each cell's direction is
+// still uniform within its stratum, so the projection stays unbiased.
+RC_FUNC float3 rc_grid_stratum_direction(uint key_lo, uint key_hi, uint record, int cell, int m,
+                                         int n) {
+    const int j = cell / n;
+    const int k = cell % n;
+    float u1, u2, unused;
+    rc_stratum_jitter(key_lo, key_hi, record, (uint)(j * n), &u1, &unused);
+    rc_stratum_jitter(key_lo, key_hi, record, (uint)k, &unused, &u2);
+    return rc_uniform_stratum_direction(j, k, m, n, u1, u2);
+}

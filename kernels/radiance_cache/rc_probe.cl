@@ -1,9 +1,12 @@
 // Test kernels of radiance caching's foundations (tests/sh_*_test.cpp, tests/brdf_table_test.cpp,
 // tests/rc_layout_test.cpp; `radcache bench sh`). Item index: begin + get_global_id(0).
 #include "radiance_cache/rc_brdf_table.h"
+#include "radiance_cache/rc_gradients.h"
+#include "radiance_cache/rc_interpolation.h"
 #include "radiance_cache/rc_projection.h"
 #include "radiance_cache/rc_rotation.h"
 #include "shared/radiance_cache.h"
+#include "shared/sh_rotation_zxz.h"
 
 // The basis functions of `basis` at directions[i] into out[i * order^2 ...].
 __kernel void rc_basis_probe(uint begin, uint end, int basis, int order,
@@ -92,6 +95,33 @@ __kernel void rc_rotation_probe(uint begin, uint end, int order, int vectors,
     }
 }
 
+// Item i: as rc_rotation_probe, by the zxzxz factorization (shared/sh_rotation_zxz.h) with the
+// table x90 of rc_sh_x90_table.
+__kernel void rc_rotation_zxz_probe(uint begin, uint end, int order, int vectors,
+                                    __global const float4* rotations, __global const float* x90,
+                                    __global float* coefficients) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    float r[9];
+    for (int row = 0; row < 3; ++row) {
+        const float4 v = rotations[3 * i + row];
+        r[3 * row] = v.x;
+        r[3 * row + 1] = v.y;
+        r[3 * row + 2] = v.z;
+    }
+    const int count = rc_sh_count(order);
+    float c[3 * RC_SH_MAX_COEFFICIENTS];
+    for (int k = 0; k < vectors * count; ++k) {
+        c[k] = coefficients[i * vectors * count + k];
+    }
+    rc_sh_rotate_zxz(r, x90, order, c, vectors, count);
+    for (int k = 0; k < vectors * count; ++k) {
+        coefficients[i * vectors * count + k] = c[k];
+    }
+}
+
 // Item i: the frame rotation from frame (rows from[3 i .. 3 i + 2]: t, b, n) to frame `to` into
 // out[3 i .. 3 i + 2] (rows of R).
 __kernel void rc_frame_rotation_probe(uint begin, uint end, __global const float4* from,
@@ -144,4 +174,86 @@ __kernel void rc_report_layouts(uint begin, uint end, __global uint* out) {
     RC_RADIANCE_CACHE_LAYOUTS(RC_REPORT_STRUCT, RC_REPORT_FIELD)
 #undef RC_REPORT_STRUCT
 #undef RC_REPORT_FIELD
+}
+
+// Item i = record * m n + cell: the radiance and distance (w) that cell `cell`'s ray brings to a
+// record at positions[record].xyz (frame = world axes) from the ceiling z = positions[record].w
+// emitting spot(x, y) = exp(-(x^2 + y^2) / spot^2) * colour (the analytic scene of the gradient
+// test). Every record draws the directions of stream `stream` (common random numbers).
+__kernel void rc_ceiling_cells_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi,
+                                     uint stream, float spot, float4 colour,
+                                     __global const float4* positions, __global float4* cells) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const uint record = i / (uint)(m * n);
+    const int cell = (int)(i % (uint)(m * n));
+    const float3 d = rc_grid_stratum_direction(key_lo, key_hi, stream, cell, m, n);
+    const float4 p = positions[record];
+    const float t = (p.w - p.z) / d.z;
+    const float x = p.x + t * d.x;
+    const float y = p.y + t * d.y;
+    const float radiance = exp(-(x * x + y * y) / (spot * spot));
+    cells[i] = (float4)(radiance * colour.xyz, t);
+}
+
+// Item = record: rc_project_cells_with_gradients of the record's m n cells, directions of stream
+// `stream`, into out[record * 9 order^2 ...]: coefficients (r, g, b) then gradients (r x, r y,
+// g x, g y, b x, b y).
+__kernel void rc_gradient_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi,
+                                uint stream, int basis, int order, __global const float4* cells,
+                                __global float* out) {
+    const uint record = begin + (uint)get_global_id(0);
+    if (record >= end) {
+        return;
+    }
+    float c[3 * RC_SH_MAX_COEFFICIENTS];
+    float g[6 * RC_SH_MAX_COEFFICIENTS];
+    rc_project_cells_with_gradients(cells + record * (uint)(m * n), m, n, key_lo, key_hi, stream,
+                                    basis, order, c, g);
+    const int count = rc_sh_count(order);
+    for (int k = 0; k < 3 * count; ++k) {
+        out[record * 9 * count + k] = c[k];
+    }
+    for (int k = 0; k < 6 * count; ++k) {
+        out[record * 9 * count + 3 * count + k] = g[k];
+    }
+}
+
+// Item i: rc_record_reflection of record records[i * 9 order^2 ...] (rc_gradient_probe's layout)
+// at the query displaced by displacements[i].xy in the record's frame, whose frame the rotation
+// rows rotations[3 i .. 3 i + 2] reach from the record's, for the outgoing direction wo[i] (query
+// frame) of the material with table `info`: out[i].xyz.
+__kernel void rc_reflection_probe(uint begin, uint end, int order, BrdfTableInfo info,
+                                  __global const float* table, __global const float* x90,
+                                  __global const float* records,
+                                  __global const float4* displacements,
+                                  __global const float4* rotations, __global const float4* wo,
+                                  __global float4* out) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const int count = rc_sh_count(order);
+    float c[3 * RC_SH_MAX_COEFFICIENTS];
+    float g[6 * RC_SH_MAX_COEFFICIENTS];
+    for (int k = 0; k < 3 * count; ++k) {
+        c[k] = records[i * 9 * count + k];
+    }
+    for (int k = 0; k < 6 * count; ++k) {
+        g[k] = records[i * 9 * count + 3 * count + k];
+    }
+    float r[9];
+    for (int row = 0; row < 3; ++row) {
+        const float4 v = rotations[3 * i + row];
+        r[3 * row] = v.x;
+        r[3 * row + 1] = v.y;
+        r[3 * row + 2] = v.z;
+    }
+    float brdf[RC_SH_MAX_COEFFICIENTS];
+    rc_brdf_table_coefficients(table, &info, wo[i].xyz, order, brdf);
+    const float3 reflected =
+        rc_record_reflection(c, g, order, displacements[i].x, displacements[i].y, r, x90, brdf);
+    out[i] = (float4)(reflected, 0.0f);
 }
