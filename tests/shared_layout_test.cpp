@@ -1,35 +1,56 @@
-// Host and device agree on the layout of every shared struct (kernels/shared/types.h).
+// Host and device agree on the layout of every shared struct: RC_SHARED_LAYOUTS
+// (kernels/shared/types.h) and radiance caching's RC_RADIANCE_CACHE_LAYOUTS
+// (kernels/shared/radiance_cache.h), each reported by its probe kernel.
 #include <gtest/gtest.h>
 
+#include "shared/radiance_cache.h"
 #include "shared/types.h"
 #include "test_support.h"
 
 namespace rc {
 namespace {
 
-TEST(SharedLayout, DeviceMatchesHost) {
-    std::vector<unsigned> host;
+struct Layouts {
+    std::vector<unsigned> values;  // sizeof and offsetof, in the list's order
     std::vector<std::string> names;
-#define RC_HOST_STRUCT(type)                                     \
-    host.push_back(static_cast<unsigned>(sizeof(shared::type))); \
-    names.push_back("sizeof(" #type ")");
-#define RC_HOST_FIELD(type, field)                                        \
-    host.push_back(static_cast<unsigned>(offsetof(shared::type, field))); \
-    names.push_back("offsetof(" #type ", " #field ")");
-    RC_SHARED_LAYOUTS(RC_HOST_STRUCT, RC_HOST_FIELD)
-#undef RC_HOST_STRUCT
-#undef RC_HOST_FIELD
+};
 
+// The host's figures of one layout list (an X-macro taking STRUCT and FIELD).
+#define RC_HOST_LAYOUTS(LIST)               \
+    [] {                                    \
+        Layouts host;                       \
+        LIST(RC_HOST_STRUCT, RC_HOST_FIELD) \
+        return host;                        \
+    }()
+#define RC_HOST_STRUCT(type)                                            \
+    host.values.push_back(static_cast<unsigned>(sizeof(shared::type))); \
+    host.names.push_back("sizeof(" #type ")");
+#define RC_HOST_FIELD(type, field)                                               \
+    host.values.push_back(static_cast<unsigned>(offsetof(shared::type, field))); \
+    host.names.push_back("offsetof(" #type ", " #field ")");
+
+void expect_device_matches(const Layouts& host, const std::string& file,
+                           const std::string& kernel_name) {
     Context& context = test::shared_context();
-    Kernel kernel = context.kernel("shared_layout_probe.cl", "report_shared_layouts");
-    Buffer<unsigned> out(context, host.size(), "layouts");
+    Kernel kernel = context.kernel(file, kernel_name);
+    Buffer<unsigned> out(context, host.values.size(), "layouts");
     out.fill_zero();
     context.launch(kernel, 1, out);
     const std::vector<unsigned> device = out.download();
-    ASSERT_EQ(device.size(), host.size());
-    for (size_t i = 0; i < host.size(); ++i) {
-        EXPECT_EQ(device[i], host[i]) << names[i];
+    ASSERT_EQ(device.size(), host.values.size());
+    for (size_t i = 0; i < host.values.size(); ++i) {
+        EXPECT_EQ(device[i], host.values[i]) << host.names[i];
     }
+}
+
+TEST(SharedLayout, DeviceMatchesHost) {
+    expect_device_matches(RC_HOST_LAYOUTS(RC_SHARED_LAYOUTS), "shared_layout_probe.cl",
+                          "report_shared_layouts");
+}
+
+TEST(SharedLayout, RadianceCacheDeviceMatchesHost) {
+    expect_device_matches(RC_HOST_LAYOUTS(RC_RADIANCE_CACHE_LAYOUTS), "radiance_cache/rc_probe.cl",
+                          "rc_report_layouts");
 }
 
 }  // namespace
