@@ -24,16 +24,6 @@ namespace {
 constexpr int kOrder = RC_SH_MAX_ORDER;
 constexpr int kCount = kOrder * kOrder;
 
-Material phong(float exponent) {
-    Material m;
-    m.name = "phong " + std::to_string(static_cast<int>(exponent));
-    m.kind = MaterialKind::kPhong;
-    m.diffuse = glm::vec3(0.0f);
-    m.specular = glm::vec3(1.0f);
-    m.exponent = exponent;
-    return m;
-}
-
 Material ward(float alpha_x, float alpha_y) {
     Material m;
     m.name = "ward";
@@ -102,7 +92,8 @@ TEST(BrdfTable, DotProductMatchesDirectIntegration) {
             c_light[k] += coarse.weights[i] * radiance(d.x, d.y, d.z) * y[k];
         }
     }
-    const std::vector<Material> materials = {phong(3.0f), phong(8.0f), ward(0.3f, 0.5f)};
+    const std::vector<Material> materials = {test::pure_phong(3.0f), test::pure_phong(8.0f),
+                                             ward(0.3f, 0.5f)};
     Context& context = test::shared_context();
     // 32 Gauss nodes integrate polynomials of degree 63 in cos(theta_i) exactly: ample for these
     // lobes (F Y is close to a polynomial of degree about 20).
@@ -168,7 +159,8 @@ TEST(BrdfTable, NormalIncidenceTexelMatchesItsClosedForm) {
     const QuadratureRule rule = gauss_legendre(40, 0.0, 1.0);
     for (int basis : {RC_BASIS_SH, RC_BASIS_HSH}) {
         options.basis = basis;
-        const BrdfTables tables(test::shared_context(), {phong(static_cast<float>(e))}, options);
+        const BrdfTables tables(test::shared_context(), {test::pure_phong(static_cast<float>(e))},
+                                options);
         const int centre = 2 * options.resolution + 2;
         const std::vector<float> c = tables.coefficients().download();
         const double norm2 = (e + 2) * (e + 2) / (2 * std::numbers::pi) / (2 * e + 3);
@@ -202,7 +194,7 @@ TEST(BrdfTable, PhongOrderGrowsWithExponent) {
     std::vector<Material> materials;
     const float exponents[] = {1, 4, 8, 16, 32, 128};
     for (float e : exponents) {
-        materials.push_back(phong(e));
+        materials.push_back(test::pure_phong(e));
     }
     BrdfTableOptions options;
     options.resolution = 12;
@@ -284,12 +276,12 @@ TEST(BrdfTable, RefusesBadOptions) {
     EXPECT_NO_THROW(check_brdf_table_options({}));
     BrdfTableOptions bad;
     bad.max_order = 0;
-    EXPECT_THROW(BrdfTables(test::shared_context(), {phong(4.0f)}, bad), Error);
+    EXPECT_THROW(BrdfTables(test::shared_context(), {test::pure_phong(4.0f)}, bad), Error);
 }
 
 // Bitwise the same tables whatever the work-group size.
 TEST(BrdfTable, BuildIsDeterministic) {
-    const std::vector<Material> materials = {phong(8.0f), ward(0.2f, 0.4f)};
+    const std::vector<Material> materials = {test::pure_phong(8.0f), ward(0.2f, 0.4f)};
     BrdfTableOptions options;
     options.resolution = 8;
     const BrdfTables a(test::shared_context(), materials, options);

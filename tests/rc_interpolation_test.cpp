@@ -25,16 +25,6 @@ constexpr int kStrataN = 128;
 constexpr int kQueries = 16;
 const shared::float4 kSky = {1.0f, 0.5f, 0.25f, 0.0f};
 
-Material phong(float exponent) {
-    Material m;
-    m.name = "phong " + std::to_string(static_cast<int>(exponent));
-    m.kind = MaterialKind::kPhong;
-    m.diffuse = glm::vec3(0.0f);
-    m.specular = glm::vec3(1.0f);
-    m.exponent = exponent;
-    return m;
-}
-
 // Records (9 kCount floats: coefficients, gradients) of the constant sky: every cell brings kSky
 // from infinitely far; record q draws the directions of stream q.
 std::vector<float> sky_records(Context& context) {
@@ -81,7 +71,7 @@ double albedo(Context& context, const Material& material, shared::float4 wo,
 // table's 2% and the stratified projection), 6% tilted (the SH series of the record's horizon).
 TEST(RcInterpolation, WhiteSkyReflectsRadianceTimesAlbedo) {
     Context& context = test::shared_context();
-    const Material material = phong(8.0f);
+    const Material material = test::pure_phong(8.0f);
     BrdfTableOptions options;
     options.theta_nodes = 32;
     options.phi_nodes = 64;

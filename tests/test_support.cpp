@@ -29,6 +29,16 @@ std::filesystem::path radcache_executable() { return RADCACHE_EXECUTABLE; }
 
 Scene load_cornell_box() { return load_scene(source_dir() / "scenes/cornell-box/scene.json"); }
 
+Material pure_phong(float exponent) {
+    Material m;
+    m.name = "phong " + std::to_string(static_cast<int>(exponent));
+    m.kind = MaterialKind::kPhong;
+    m.diffuse = glm::vec3(0.0f);
+    m.specular = glm::vec3(1.0f);
+    m.exponent = exponent;
+    return m;
+}
+
 Image box_filtered(const Image& image, int factor) {
     Image out(image.width / factor, image.height / factor, image.channels);
     out.channel_names = image.channel_names;
