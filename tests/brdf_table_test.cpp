@@ -131,21 +131,6 @@ TEST(BrdfTable, DotProductMatchesDirectIntegration) {
     }
 }
 
-// Legendre polynomial P_l(x), three-term recurrence in double.
-double legendre(int l, double x) {
-    double p_prev = 1.0;
-    double p = x;
-    if (l == 0) {
-        return 1.0;
-    }
-    for (int k = 1; k < l; ++k) {
-        const double next = ((2.0 * k + 1.0) * x * p - k * p_prev) / (k + 1.0);
-        p_prev = p;
-        p = next;
-    }
-    return p;
-}
-
 // At normal incidence (the centre texel of an odd grid) the cosine-weighted Phong lobe is zonal,
 // F = (e + 2) / 2pi z^(e+1): c_l^0 = (e + 2) K_l integral over [0, 1] of z^(e+1) P_l(z) (SH,
 // K_l = sqrt((2l + 1) / 4pi)) or of z^(e+1) P_l(2z - 1) (HSH, sqrt((2l + 1) / 2pi)), every
@@ -170,7 +155,7 @@ TEST(BrdfTable, NormalIncidenceTexelMatchesItsClosedForm) {
             for (size_t j = 0; j < rule.nodes.size(); ++j) {
                 const double z = rule.nodes[j];
                 integral += rule.weights[j] * std::pow(z, e + 1) *
-                            legendre(l, basis == RC_BASIS_SH ? z : 2 * z - 1);
+                            test::legendre(l, basis == RC_BASIS_SH ? z : 2 * z - 1);
             }
             const double k =
                 std::sqrt((2 * l + 1) / ((basis == RC_BASIS_SH ? 4 : 2) * std::numbers::pi));

@@ -20,21 +20,6 @@ constexpr double kPi = std::numbers::pi;
 constexpr int kOrder = RC_SH_MAX_ORDER;
 constexpr int kCount = kOrder * kOrder;
 
-// Legendre polynomial P_l(x), three-term recurrence in double.
-double legendre(int l, double x) {
-    double p_prev = 1.0;
-    double p = x;
-    if (l == 0) {
-        return 1.0;
-    }
-    for (int k = 1; k < l; ++k) {
-        const double next = ((2.0 * k + 1.0) * x * p - k * p_prev) / (k + 1.0);
-        p_prev = p;
-        p = next;
-    }
-    return p;
-}
-
 TEST(GaussLegendre, IntegratesPolynomialsUpToDegree2nMinus1Exactly) {
     for (int n : {1, 2, 5, 24, 64}) {
         const QuadratureRule rule = gauss_legendre(n, 0.0, 1.0);
@@ -128,7 +113,7 @@ TEST(ShBasis, BandsSatisfyTheAdditionTheorem) {
                 const int k = shared::rc_sh_index(l, m);
                 sum += static_cast<double>(ya[i * kCount + k]) * yb[i * kCount + k];
             }
-            const double expected = (2 * l + 1) / (4 * kPi) * legendre(l, cosine);
+            const double expected = (2 * l + 1) / (4 * kPi) * test::legendre(l, cosine);
             EXPECT_NEAR(sum, expected, 2e-6 * (2 * l + 1)) << "direction " << i << " band " << l;
         }
     }

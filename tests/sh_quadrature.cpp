@@ -7,6 +7,20 @@
 
 namespace rc::test {
 
+double legendre(int l, double x) {
+    double p_prev = 1.0;
+    double p = x;
+    if (l == 0) {
+        return 1.0;
+    }
+    for (int k = 1; k < l; ++k) {
+        const double next = ((2.0 * k + 1.0) * x * p - k * p_prev) / (k + 1.0);
+        p_prev = p;
+        p = next;
+    }
+    return p;
+}
+
 DirectionQuadrature product_quadrature(double z_min, int theta_nodes, int phi_nodes) {
     const QuadratureRule rule = gauss_legendre(theta_nodes, z_min, 1.0);
     DirectionQuadrature q;

@@ -21,6 +21,9 @@ struct DirectionQuadrature {
 // < phi_nodes in phi. z_min = -1: the sphere; 0: the upper hemisphere.
 DirectionQuadrature product_quadrature(double z_min, int theta_nodes, int phi_nodes);
 
+// Legendre polynomial P_l(x), by the three-term recurrence in double.
+double legendre(int l, double x);
+
 // A uniformly distributed unit direction.
 shared::float4 random_direction(std::mt19937& rng);
 

@@ -69,6 +69,16 @@ __kernel void rc_projection_probe(uint begin, uint end, int m, int n, uint key_l
     }
 }
 
+// The row-major 3 x 3 rotation of item i from rows rotations[3 i .. 3 i + 2].xyz.
+void rc_probe_rotation(__global const float4* rotations, uint i, float r[9]) {
+    for (int row = 0; row < 3; ++row) {
+        const float4 v = rotations[3 * i + row];
+        r[3 * row] = v.x;
+        r[3 * row + 1] = v.y;
+        r[3 * row + 2] = v.z;
+    }
+}
+
 // Item i: rotates `vectors` coefficient vectors of order `order` at coefficients[i * vectors *
 // order^2 ...] in place by the rotation whose rows are rotations[3 i .. 3 i + 2].xyz.
 __kernel void rc_rotation_probe(uint begin, uint end, int order, int vectors,
@@ -78,12 +88,7 @@ __kernel void rc_rotation_probe(uint begin, uint end, int order, int vectors,
         return;
     }
     float r[9];
-    for (int row = 0; row < 3; ++row) {
-        const float4 v = rotations[3 * i + row];
-        r[3 * row] = v.x;
-        r[3 * row + 1] = v.y;
-        r[3 * row + 2] = v.z;
-    }
+    rc_probe_rotation(rotations, i, r);
     const int count = rc_sh_count(order);
     float c[3 * RC_SH_MAX_COEFFICIENTS];
     for (int k = 0; k < vectors * count; ++k) {
@@ -105,12 +110,7 @@ __kernel void rc_rotation_zxz_probe(uint begin, uint end, int order, int vectors
         return;
     }
     float r[9];
-    for (int row = 0; row < 3; ++row) {
-        const float4 v = rotations[3 * i + row];
-        r[3 * row] = v.x;
-        r[3 * row + 1] = v.y;
-        r[3 * row + 2] = v.z;
-    }
+    rc_probe_rotation(rotations, i, r);
     const int count = rc_sh_count(order);
     float c[3 * RC_SH_MAX_COEFFICIENTS];
     for (int k = 0; k < vectors * count; ++k) {
@@ -245,12 +245,7 @@ __kernel void rc_reflection_probe(uint begin, uint end, int order, BrdfTableInfo
         g[k] = records[i * 9 * count + 3 * count + k];
     }
     float r[9];
-    for (int row = 0; row < 3; ++row) {
-        const float4 v = rotations[3 * i + row];
-        r[3 * row] = v.x;
-        r[3 * row + 1] = v.y;
-        r[3 * row + 2] = v.z;
-    }
+    rc_probe_rotation(rotations, i, r);
     float brdf[RC_SH_MAX_COEFFICIENTS];
     rc_brdf_table_coefficients(table, &info, wo[i].xyz, order, brdf);
     const float3 reflected =
