@@ -59,15 +59,19 @@ Image box_filtered(const Image& image, int factor) {
     return out;
 }
 
-Image cornell_reference(const std::string& layer, int size) {
+Image scene_reference(const std::string& scene, const std::string& layer, int size) {
     const Image full =
-        select_layers(read_image(source_dir() / "scenes/cornell-box/reference.exr"), {layer});
+        select_layers(read_image(source_dir() / "scenes" / scene / "reference.exr"), {layer});
     if (full.width != full.height || full.width % size != 0) {
-        throw Error("the Cornell box reference (" + std::to_string(full.width) + " x " +
+        throw Error("the " + scene + " reference (" + std::to_string(full.width) + " x " +
                     std::to_string(full.height) + ") is not a multiple of " + std::to_string(size) +
                     " x " + std::to_string(size));
     }
     return box_filtered(full, full.width / size);
+}
+
+Image cornell_reference(const std::string& layer, int size) {
+    return scene_reference("cornell-box", layer, size);
 }
 
 DeviceFrame::DeviceFrame(Scene loaded, Context& device)

@@ -33,7 +33,10 @@ Material pure_phong(float exponent);
 // box, so a reference box filtered by f is the reference of the same view at 1/f its size.
 Image box_filtered(const Image& image, int factor);
 
-// The Cornell box reference's layer `layer`, box filtered to size x size.
+// The shipped reference of scenes/<scene>/ (512 x 512): its layer `layer`, box filtered to
+// size x size.
+Image scene_reference(const std::string& scene, const std::string& layer, int size);
+// scene_reference("cornell-box", layer, size).
 Image cornell_reference(const std::string& layer, int size);
 
 // A scene with its BVH and both on a device: the FrameScene a method's classes take.

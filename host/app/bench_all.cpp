@@ -10,10 +10,13 @@
 #include "app/commands.h"
 #include "app/device_options.h"
 #include "app/ray_bench.h"
+#include "bvh/bvh.h"
+#include "bvh/device_bvh.h"
 #include "device/device_list.h"
 #include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
 #include "methods/path_tracer/path_tracer.h"
+#include "methods/radiance_cache/radiance_cache.h"
 #include "scene/camera.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
@@ -53,6 +56,49 @@ double kernel_seconds_since(const Context& context, const std::map<std::string, 
         seconds += now->second.seconds - (then == before.end() ? 0.0 : then->second.seconds);
     }
     return seconds;
+}
+
+// Radiance caching on glossy-box (the shipped scene with a lobe the records represent: the
+// benchmark's own scene may have none) at the benchmark's size up to 128², 2 camera samples, its
+// defaults (the diffuse records with 256 rays, one level: not what is measured), after a 16²
+// warm-up: SH coefficients projected per second of the projection kernel (one coefficient of one
+// channel from one hemisphere cell each) and record reflections interpolated per second of the
+// glossy buffer's kernel (a rotation and three dot products each).
+void bench_radiance_cache(Context& context, int width, int height, DeviceResult* result) {
+    const Scene scene = load_scene(shipped_scene("glossy-box"));
+    const Bvh bvh = build_bvh(scene.mesh);
+    const DeviceBvh device_bvh(context, bvh);
+    const DeviceScene device_scene(context, scene);
+    const FrameScene frame{context, scene, device_bvh, device_scene};
+    RadianceCacheStats stats;
+    std::map<std::string, KernelTime> before;
+    for (int pass = 0; pass < 2; ++pass) {
+        before = context.kernel_times();
+        IrradianceCacheOptions ic;
+        ic.width = pass == 0 ? 16 : std::min(width, 128);
+        ic.height = pass == 0 ? 16 : std::min(height, 128);
+        ic.spp = 2;
+        ic.rays = 256;
+        ic.bounces = 1;
+        ic.max_depth = scene.render.max_depth;
+        ic.rr_depth = scene.render.rr_depth;
+        ic.records_overlay = false;
+        RadianceCacheOptions options;
+        options.max_depth = ic.max_depth;
+        options.rr_depth = ic.rr_depth;
+        RadianceCache glossy(frame, options);
+        ic.glossy = &glossy;
+        IrradianceCache(frame).render(ic);
+        stats = glossy.stats();
+    }
+    const double project_seconds = kernel_seconds_since(context, before, {"rc_record_project"});
+    const double coefficients = static_cast<double>(stats.records) * stats.strata_m *
+                                stats.strata_n * 3.0 * stats.order * stats.order;
+    result->figures.push_back({"sh_coefficients_per_second", "RC SH coefficients projected/s (M)",
+                               coefficients / project_seconds * 1e-6, 0.0});
+    const double splat_seconds = kernel_seconds_since(context, before, {"rc_glossy_splat"});
+    result->figures.push_back({"rc_reflections_per_second", "RC records interpolated/s (M)",
+                               static_cast<double>(stats.reflections) / splat_seconds * 1e-6, 0.0});
 }
 
 DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_options,
@@ -175,6 +221,7 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
     result.figures.push_back({"photon_crossings_per_second", "photon face crossings/s (M)",
                               static_cast<double>(grid_stats.crossings) / photon_seconds * 1e-6,
                               0.0});
+    bench_radiance_cache(context, width, height, &result);
     return result;
 }
 
@@ -204,7 +251,9 @@ int run_bench_all(const std::vector<std::string>& args) {
             "cache hemisphere samples/s and records/s, render-pass, splat and gather samples/s, "
             "and "
             "photons/s\n"
-            "into the irradiance vector grid. Device\n"
+            "into the irradiance vector grid, radiance caching's SH coefficients projected/s and "
+            "records\n"
+            "interpolated/s (on glossy-box). Device\n"
             "kernel time from profiling events; kernels are built and warmed up first.",
             specs);
         return 0;

@@ -10,6 +10,7 @@
 #define RC_METHODS(X)          \
     X(path_tracer_method)      \
     X(irradiance_cache_method) \
+    X(radiance_cache_method)   \
     X(ivg_method)              \
     X(ivg_gather_method)       \
     X(normals_method)

@@ -26,6 +26,16 @@ RC_FUNC SurfaceMaterial rc_without_diffuse(const SurfaceMaterial* material) {
     return m;
 }
 
+// The material less its specular lobe: its diffuse lobe alone (where a cache provides the
+// specular lobe's indirect light).
+RC_FUNC SurfaceMaterial rc_without_specular(const SurfaceMaterial* material) {
+    SurfaceMaterial m = *material;
+    m.kind = RC_MATERIAL_DIFFUSE;
+    m.specular = (float3)(0.0f);
+    m.diffuse_probability = 1.0f;
+    return m;
+}
+
 // Traces `ray` and fills c with its hit (albedo, normal, position, distance), the hit's emission
 // (if count_emission) and its direct light as the path tracer's vertex computes them: of every
 // lobe, or, when !diffuse_direct (a cache provides the diffuse lobe's direct light too), of the

@@ -5,11 +5,15 @@
 #include "common/cached_radiance.h"
 #include "shared/film.h"
 
-// What one camera sample gives the film: its light and the method's own layer
-// (RC_CACHED_FILM_LAYER).
+// What one camera sample gives the film: its light, the method's own layer
+// (RC_CACHED_FILM_LAYER) and, where a method caches the glossy lobes (radiance caching), their
+// indirect light and the order it used (RC_CACHED_FILM_GLOSSY, RC_CACHED_FILM_ORDER; 0 for the
+// others).
 typedef struct FilmSample {
     CachedRadiance light;
     float3 layer;
+    float3 glossy;
+    float order;
 } FilmSample;
 
 // The method's side of rc_shade_pixel: a render pass defines struct PixelShader (what its camera
@@ -44,9 +48,10 @@ RC_FUNC bool rc_add_camera_sample(const CachedRadiance* l, float3 sums[RC_CACHED
 // the first pixel that had one.
 RC_FUNC void rc_shade_pixel(const PixelShader* shader, uint spp, uint pixel, RC_GLOBAL float4* film,
                             RC_GLOBAL uint* counters) {
-    float3 sums[RC_CACHED_FILM_SLOTS] = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f),
-                                         (float3)(0.0f), (float3)(0.0f), (float3)(0.0f),
-                                         (float3)(0.0f)};
+    float3 sums[RC_CACHED_FILM_SLOTS];
+    for (int k = 0; k < RC_CACHED_FILM_SLOTS; ++k) {
+        sums[k] = (float3)(0.0f);
+    }
     uint rays = 0;
     uint finite = 0;
     float coverage = INFINITY;
@@ -61,6 +66,8 @@ RC_FUNC void rc_shade_pixel(const PixelShader* shader, uint spp, uint pixel, RC_
             coverage = fmin(coverage, l.coverage);
         }
         sums[RC_CACHED_FILM_LAYER] += c.layer;
+        sums[RC_CACHED_FILM_GLOSSY] += c.glossy;
+        sums[RC_CACHED_FILM_ORDER].x += c.order;
     }
     atomic_add(&counters[0], rays);
     const float inv = finite > 0 ? 1.0f / (float)finite : 0.0f;

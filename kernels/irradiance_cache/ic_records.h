@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/math.h"
+#include "common/record_weight.h"
 #include "common/sampling.h"
 #include "shared/rng.h"
 #include "shared/types.h"
@@ -158,34 +159,19 @@ RC_FUNC RecordEstimate rc_ic_reduce(const IcParams* params, uint record, float3 
     return e;
 }
 
-// The weight of a record at point p with normal n: Ward's 1 / (d / R + sqrt(1 - n . n_i)),
-// shifted by -1/a so it falls to zero at the influence border ("Weighting Function Revisited";
-// d < a R), capped near the centre. Zero for records "in front" of p (Ward et al. 1988, eq. 6),
-// and for points past the record's nearest occluder: p - p_i reaching beyond the plane through
-// the nearest hit's tangent offset o, (p - p_i) . o > o . o. This keeps records from reaching
-// through a thin wall to the coplanar surface on its other side (a ceiling running over it), where
-// the raise to R_min would otherwise carry light.
+// The weight of an irradiance record at point p with normal n: Ward's weight (rc_record_weight),
+// and zero for points past the record's nearest occluder: p - p_i reaching beyond the plane
+// through the nearest hit's tangent offset o, (p - p_i) . o > o . o. This keeps records from
+// reaching through a thin wall to the coplanar surface on its other side (a ceiling running over
+// it), where the raise to R_min would otherwise carry light.
 RC_FUNC float rc_ic_weight(RC_GLOBAL const Record* record,
                            RC_GLOBAL const IrradiancePayload* payload, float3 p, float3 n,
                            float accuracy, float max_weight) {
-    const float3 offset = p - record->position.xyz;
-    const float radius = record->radius;
-    const float3 ni = record->normal.xyz;
-    // Behind test: P_i in front of P, beyond a small tolerance of the influence radius.
-    if (dot(offset, 0.5f * (n + ni)) < -1e-3f * accuracy * radius) {
-        return 0.0f;
-    }
     const float3 occluder = payload->occluder.xyz;
-    if (dot(offset, occluder) > dot(occluder, occluder)) {
+    if (dot(p - record->position.xyz, occluder) > dot(occluder, occluder)) {
         return 0.0f;
     }
-    // sqrt(1 - n . n_i) as |n - n_i| / sqrt(2): equal for unit vectors, without the cancellation
-    // of 1 - n . n_i in float when the normals are close.
-    const float error = length(offset) / radius + length(n - ni) * 0.70710678f;
-    if (error >= accuracy) {
-        return 0.0f;
-    }
-    return fmin(1.0f / fmax(error, 1e-12f) - 1.0f / accuracy, max_weight);
+    return rc_record_weight(record, p, n, accuracy, max_weight);
 }
 
 // A record's irradiance extrapolated to p, n by its gradients, never negative:

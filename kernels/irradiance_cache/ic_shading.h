@@ -7,6 +7,7 @@
 #include "common/camera.h"
 #include "common/camera_film.h"
 #include "irradiance_cache/ic_records.h"
+#include "shared/radiance_cache.h"
 
 // World size of a pixel at distance t along the camera ray through pixel (x, y).
 RC_FUNC float rc_ic_pixel_footprint(const CameraParams* camera, float x, float y, float t) {
@@ -63,15 +64,40 @@ typedef struct RecordCache {
     float max_weight;
 } RecordCache;
 
+// The indirect light of the specular lobe at a camera sample that radiance caching serves
+// (glossy->order >= 0): Material.specular times the records' interpolated reflection
+// (RcGlossySample) where its order is positive and a record covers the sample, else by a path
+// sampled from the specular lobe (the Monte Carlo fallback, TVCG 2005 §4.1).
+RC_FUNC float3 rc_ic_glossy_light(const SceneData* scene, const SurfacePoint* sp,
+                                  const SurfaceMaterial* material, float3 wo,
+                                  RC_GLOBAL const RcGlossySample* glossy, RngStream* rng,
+                                  int bounces, int max_depth, int rr_depth, uint* rays) {
+    if (glossy->order > 0 && glossy->weight > 0.0f) {
+        return material->specular * (glossy->reflected.xyz / glossy->weight);
+    }
+    CachedRadiance traced;
+    traced.indirect = (float3)(0.0f);
+    traced.rays = 0;
+    const SurfaceMaterial specular = rc_without_diffuse(material);
+    rc_trace_lobes(scene, sp, &specular, wo, rng, bounces, max_depth, rr_depth, &traced);
+    *rays += traced.rays;
+    return traced.indirect;
+}
+
 // Light arriving along `ray`: at its hit, emission (if count_emission) and direct light as the
 // path tracer's vertex computes them, indirect light of the diffuse lobe from the cache
 // (rho_d / pi E, Ward et al. 1988), indirect light of the specular lobe (phong, ward) by a path
 // sampled from that lobe. Where no record covers the hit, the diffuse lobe is path traced too.
 // `bounces`: the bounces the ray's path made before (for the depth limit). `splat`: the hit's
 // entry of the splat buffer (sum w E', sum w) for a camera sample, or 0: gathered from the cache.
-// `light_samples`: next-event estimation's light samples at the hit (rc_cached_vertex).
+// `glossy`: a camera sample's entry of radiance caching's glossy buffer, or 0; where it serves
+// the specular lobe (order >= 0) that lobe's indirect light comes from rc_ic_glossy_light and is
+// also written to *glossy_light. `light_samples`: next-event estimation's light samples at the
+// hit (rc_cached_vertex).
 RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const RecordCache* cache,
-                                             RC_GLOBAL const float4* splat, Ray ray, RngStream* rng,
+                                             RC_GLOBAL const float4* splat,
+                                             RC_GLOBAL const RcGlossySample* glossy,
+                                             float3* glossy_light, Ray ray, RngStream* rng,
                                              bool count_emission, int light_samples, int bounces,
                                              int max_depth, int rr_depth) {
     CachedRadiance c;
@@ -97,6 +123,13 @@ RC_FUNC CachedRadiance rc_ic_cached_radiance(const SceneData* scene, const Recor
         } else {
             traced = material;
         }
+    }
+    if (glossy != 0 && glossy->order >= 0) {
+        const float3 light = rc_ic_glossy_light(scene, &sp, &material, wo, glossy, rng, bounces,
+                                                max_depth, rr_depth, &c.rays);
+        c.indirect += light;
+        *glossy_light = light;
+        traced = rc_without_specular(&traced);
     }
     rc_trace_lobes(scene, &sp, &traced, wo, rng, bounces, max_depth, rr_depth, &c);
     return c;
@@ -130,6 +163,8 @@ struct PixelShader {
     const IcParams* params;
     const RecordCache* cache;       // the first cache level
     RC_GLOBAL const float4* splat;  // the splat buffer: entry pixel * spp + s per camera sample
+    // Radiance caching's glossy buffer, the same entries (read when params->glossy_cache).
+    RC_GLOBAL const RcGlossySample* glossy;
 };
 
 // Camera sample s of a pixel, shaded with the first cache level, its direct light with
@@ -142,9 +177,14 @@ RC_FUNC FilmSample rc_shade_camera_sample(const PixelShader* shader, uint pixel,
     RngStream rng;
     float x, y;
     const Ray ray = rc_ic_camera_ray(params, shader->camera, pixel, s, &rng, &x, &y);
-    RC_GLOBAL const float4* splat = shader->splat + (size_t)pixel * (uint)params->camera_spp + s;
-    c.light = rc_ic_cached_radiance(shader->scene, shader->cache, splat, ray, &rng, true,
-                                    params->light_samples, 0, params->max_depth, params->rr_depth);
+    const size_t entry = (size_t)pixel * (uint)params->camera_spp + s;
+    RC_GLOBAL const RcGlossySample* glossy =
+        params->glossy_cache != 0 ? shader->glossy + entry : 0;
+    c.glossy = (float3)(0.0f);
+    c.order = glossy != 0 ? (float)max(glossy->order, 0) : 0.0f;
+    c.light = rc_ic_cached_radiance(shader->scene, shader->cache, shader->splat + entry, glossy,
+                                    &c.glossy, ray, &rng, true, params->light_samples, 0,
+                                    params->max_depth, params->rr_depth);
     float3 marks = (float3)(0.0f);
     if (params->draw_records != 0 && isfinite(c.light.distance)) {
         marks = rc_ic_record_marks(shader->cache, params->accuracy, c.light.position,

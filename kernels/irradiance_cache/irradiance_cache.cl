@@ -193,7 +193,8 @@ __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camer
                        RC_SCENE_PARAMETERS, RecordGrid grid, __global const int* cell_start,
                        __global const int* cell_records, __global const Record* records,
                        __global const IrradiancePayload* payloads, __global const float4* splat,
-                       __global float4* film, __global uint* counters) {
+                       __global const RcGlossySample* glossy, __global float4* film,
+                       __global uint* counters) {
     const uint pixel = begin + (uint)get_global_id(0);
     if (pixel >= end) {
         return;
@@ -201,6 +202,6 @@ __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camer
     const SceneData scene = RC_SCENE_DATA();
     const RecordCache cache = {grid,     cell_start,      cell_records,     records,
                                payloads, params.accuracy, params.max_weight};
-    const PixelShader shader = {&scene, &camera, &params, &cache, splat};
+    const PixelShader shader = {&scene, &camera, &params, &cache, splat, glossy};
     rc_shade_pixel(&shader, (uint)params.camera_spp, pixel, film, counters);
 }

@@ -25,4 +25,9 @@
 #define RC_CACHED_FILM_COVERAGE 5
 // The method's own layer (irradiance caching: the records overlay; the grid: its diffuse light).
 #define RC_CACHED_FILM_LAYER 6
-#define RC_CACHED_FILM_SLOTS 7
+// The glossy lobes' indirect light (radiance caching's glossy-indirect layer).
+#define RC_CACHED_FILM_GLOSSY 7
+// x: the mean over the samples of the spherical-harmonic order their glossy light used (0: Monte
+// Carlo or no glossy lobe; radiance caching's rc-order layer).
+#define RC_CACHED_FILM_ORDER 8
+#define RC_CACHED_FILM_SLOTS 9

@@ -13,6 +13,10 @@
 #define RC_BRDF_GLOSSY 1    // some outgoing directions' lobes are represented at order <= n_max
 #define RC_BRDF_FALLBACK 2  // no direction's lobe is: Monte Carlo importance sampling
 
+// Random-number domain of radiance-record sampling (kernels/radiance_cache/rc_records.h), kept
+// apart from camera samples and irradiance records.
+#define RC_RC_RNG_DOMAIN 0x52434331u
+
 RC_SHARED_BEGIN
 
 // Where one material's table lies and what it holds. Texel (i, j) of a resolution x resolution
@@ -42,10 +46,53 @@ typedef struct BrdfTableParams {
     int pad2;
 } BrdfTableParams;
 
+
+// A camera sample as radiance caching sees it (rc_glossy_queries): the camera ray's hit with its
+// shading frame and outgoing direction, and the order its material's BRDF table gives there.
+typedef struct RcQuery {
+    float4 position;  // xyz: the hit; w: 0
+    float4 origin;    // xyz: where rays leaving the surface start; w: 0
+    float4 normal;    // xyz: the shading frame's n (facing the camera ray); w: 0
+    float4 tangent;   // xyz: the shading frame's t; w: 0
+    float4 outgoing;  // xyz: w_o in the shading frame; w: 0
+    float footprint;  // world size of a pixel at the hit
+    int material;     // -1: no hit
+    int order;        // the material's order where its table represents w_o's lobe; 0: Monte
+                      // Carlo; -1: no specular lobe or no hit (radiance caching does not serve it)
+    int pad0;
+} RcQuery;
+
+// A camera sample's glossy indirect light from the radiance records (rc_glossy_splat, read by
+// the render pass): sum over covering records of w <rotate(lambda + grad), b(w_o)> with unit
+// specular reflectance, and sum w (0: no record covers the sample).
+typedef struct RcGlossySample {
+    float4 reflected;  // xyz: sum w L_o; w: 0
+    float weight;      // sum w
+    int order;         // RcQuery.order
+    int pad0;
+    int pad1;
+} RcGlossySample;
+
+// Parameters of radiance caching's record and splat kernels.
+typedef struct RcParams {
+    int order;         // n: the records' coefficient vectors have n^2 entries per channel
+    int strata_m;      // M: polar strata of a record's hemisphere
+    int strata_n;      // N: azimuthal strata
+    int first_record;  // stream index of the launch's first record
+    uint seed_lo;      // the 64-bit seed
+    uint seed_hi;
+    float accuracy;    // a: records influence points within a R
+    float max_weight;  // the largest weight (near a record's centre)
+    int max_depth;     // bounces of a path
+    int rr_depth;      // the depth where Russian roulette starts
+    int count_emission;  // 1 to count emission the hemisphere rays see (tests)
+    int pad0;
+} RcParams;
+
 RC_SHARED_END
 
 // The radiance-caching structs and fields, for the host/device layout comparison
-// (tests/rc_layout_test.cpp).
+// (tests/shared_layout_test.cpp).
 // clang-format off
 #define RC_RADIANCE_CACHE_LAYOUTS(STRUCT, FIELD)    \
     STRUCT(BrdfTableInfo)                           \
@@ -61,11 +108,40 @@ RC_SHARED_END
     FIELD(BrdfTableParams, resolution)              \
     FIELD(BrdfTableParams, basis)                   \
     FIELD(BrdfTableParams, theta_nodes)             \
-    FIELD(BrdfTableParams, phi_nodes)
+    FIELD(BrdfTableParams, phi_nodes)               \
+    STRUCT(RcQuery)                                 \
+    FIELD(RcQuery, position)                        \
+    FIELD(RcQuery, origin)                          \
+    FIELD(RcQuery, normal)                          \
+    FIELD(RcQuery, tangent)                         \
+    FIELD(RcQuery, outgoing)                        \
+    FIELD(RcQuery, footprint)                       \
+    FIELD(RcQuery, material)                        \
+    FIELD(RcQuery, order)                           \
+    STRUCT(RcGlossySample)                          \
+    FIELD(RcGlossySample, reflected)                \
+    FIELD(RcGlossySample, weight)                   \
+    FIELD(RcGlossySample, order)                    \
+    STRUCT(RcParams)                                \
+    FIELD(RcParams, order)                          \
+    FIELD(RcParams, strata_m)                       \
+    FIELD(RcParams, strata_n)                       \
+    FIELD(RcParams, first_record)                   \
+    FIELD(RcParams, seed_lo)                        \
+    FIELD(RcParams, seed_hi)                        \
+    FIELD(RcParams, accuracy)                       \
+    FIELD(RcParams, max_weight)                     \
+    FIELD(RcParams, max_depth)                      \
+    FIELD(RcParams, rr_depth)                       \
+    FIELD(RcParams, count_emission)
 // clang-format on
 
 #ifndef __OPENCL_VERSION__
 static_assert(sizeof(rc::shared::BrdfTableInfo) == 32);
 static_assert(offsetof(rc::shared::BrdfTableInfo, max_error) == 20);
 static_assert(sizeof(rc::shared::BrdfTableParams) == 32);
+static_assert(sizeof(rc::shared::RcQuery) == 96);
+static_assert(offsetof(rc::shared::RcQuery, footprint) == 80);
+static_assert(sizeof(rc::shared::RcGlossySample) == 32);
+static_assert(sizeof(rc::shared::RcParams) == 48);
 #endif

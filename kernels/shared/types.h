@@ -169,7 +169,7 @@ typedef struct IcParams {
     int placement_stride;   // pixel stride (0: every entry)
     int placement_spp;      // camera samples per candidate pixel
     int placement_columns;  // candidate columns
-    int pad1;
+    int glossy_cache;       // 1: the render pass reads the glossy lobes' light (RcGlossySample)
 } IcParams;
 
 // Irradiance vector grid interpolation (IvgParams::interpolation).
@@ -312,6 +312,7 @@ RC_SHARED_END
     FIELD(IcParams, placement_stride)      \
     FIELD(IcParams, placement_spp)         \
     FIELD(IcParams, placement_columns)     \
+    FIELD(IcParams, glossy_cache)          \
     STRUCT(IvgParams)                      \
     FIELD(IvgParams, origin)               \
     FIELD(IvgParams, cell)                 \

@@ -5,12 +5,12 @@
 #include <glm/geometric.hpp>
 #include <limits>
 #include <regex>
-#include <unordered_map>
 
 #include "image/film.h"
 #include "methods/irradiance_cache/record_level_source.h"
 #include "methods/irradiance_cache/splat_tiles.h"
 #include "methods/records/cache_file.h"
+#include "methods/records/candidate_thinning.h"
 #include "methods/scene_arguments.h"
 #include "scene/camera.h"
 #include "shared/film.h"
@@ -49,59 +49,6 @@ struct DeviceSplat {
     Buffer<int> tile_records;
 };
 
-// Keeps, in order, the samples farther than their minimum influence radius from the ones kept
-// before (with similar normals): one batch then places no two records where one would do.
-// Returns indices into `samples`.
-std::vector<size_t> thin_candidates(const std::vector<shared::GBufferSample>& samples,
-                                    const std::vector<float>& min_influence) {
-    float cell = 0.0f;
-    for (float r : min_influence) {
-        cell = std::max(cell, r);
-    }
-    std::vector<size_t> kept;
-    if (!(cell > 0.0f)) {
-        for (size_t c = 0; c < samples.size(); ++c) {
-            kept.push_back(c);
-        }
-        return kept;
-    }
-    std::unordered_map<long long, std::vector<size_t>> kept_in_cell;
-    auto key = [](long long x, long long y, long long z) {
-        return (x * 73856093LL) ^ (y * 19349663LL) ^ (z * 83492791LL);
-    };
-    for (size_t c = 0; c < samples.size(); ++c) {
-        const glm::vec3 p = vec3_of(samples[c].position);
-        const glm::vec3 n = vec3_of(samples[c].normal);
-        const long long cx = static_cast<long long>(std::floor(p.x / cell));
-        const long long cy = static_cast<long long>(std::floor(p.y / cell));
-        const long long cz = static_cast<long long>(std::floor(p.z / cell));
-        bool near = false;
-        for (long long dz = -1; dz <= 1 && !near; ++dz) {
-            for (long long dy = -1; dy <= 1 && !near; ++dy) {
-                for (long long dx = -1; dx <= 1 && !near; ++dx) {
-                    const auto found = kept_in_cell.find(key(cx + dx, cy + dy, cz + dz));
-                    if (found == kept_in_cell.end()) {
-                        continue;
-                    }
-                    for (size_t other : found->second) {
-                        const float d = glm::length(p - vec3_of(samples[other].position));
-                        if (d < std::max(min_influence[c], min_influence[other]) &&
-                            glm::dot(n, vec3_of(samples[other].normal)) > 0.9f) {
-                            near = true;
-                            break;
-                        }
-                    }
-                }
-            }
-        }
-        if (!near) {
-            kept_in_cell[key(cx, cy, cz)].push_back(c);
-            kept.push_back(c);
-        }
-    }
-    return kept;
-}
-
 }  // namespace
 
 Spacing parse_spacing(const std::string& text, const std::string& option) {
@@ -121,6 +68,10 @@ Spacing parse_spacing(const std::string& text, const std::string& option) {
         throw Error(option + ": must be positive, got '" + text + "'", kExitUsage);
     }
     return spacing;
+}
+
+float spacing_bound(const Spacing& spacing, float footprint) {
+    return spacing.world ? spacing.value : spacing.value * footprint;
 }
 
 RecordSampling strata_for(int rays) {
@@ -312,12 +263,6 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
     Buffer<unsigned> uncovered_count(context_, 1, "ic_uncovered_count");
     const shared::IcParams params = candidate_params(level, placement);
     const float a = sampling_.accuracy;
-    // R_min and R_max bound the record's radius R itself, in multiples of the projected pixel
-    // size (course, "Minimum by projected pixel size": Tabellion and Lamorlette's 1.5x-3x for
-    // R_min, 10x for R_max; Radiance's R_max = 64 R_min) or in scene units.
-    auto bound = [](const Spacing& spacing, float footprint) {
-        return spacing.world ? spacing.value : spacing.value * footprint;
-    };
     // A pass covers for good the samples it places records at (a record always covers its own
     // position), so passes until all are covered end.
     for (int pass = 0; until_covered || pass < 1; ++pass) {
@@ -354,9 +299,15 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
         }
         std::vector<float> min_influence(uncovered.size());
         for (size_t c = 0; c < uncovered.size(); ++c) {
-            min_influence[c] = a * bound(sampling_.min_spacing, uncovered[c].footprint);
+            min_influence[c] = a * spacing_bound(sampling_.min_spacing, uncovered[c].footprint);
         }
-        const std::vector<size_t> chosen = thin_candidates(uncovered, min_influence);
+        std::vector<glm::vec3> positions(uncovered.size());
+        std::vector<glm::vec3> normals(uncovered.size());
+        for (size_t c = 0; c < uncovered.size(); ++c) {
+            positions[c] = vec3_of(uncovered[c].position);
+            normals[c] = vec3_of(uncovered[c].normal);
+        }
+        const std::vector<size_t> chosen = thin_candidates(positions, normals, min_influence);
         if (timed) {
             stats_.placement_seconds += seconds_since(start);
         }
@@ -376,8 +327,8 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
             site.position = vec3_of(g.position);
             site.normal = vec3_of(g.normal);
             site.origin = vec3_of(g.origin);
-            site.r_min = bound(sampling_.min_spacing, g.footprint);
-            site.r_max = std::max(site.r_min, bound(sampling_.max_spacing, g.footprint));
+            site.r_min = spacing_bound(sampling_.min_spacing, g.footprint);
+            site.r_max = std::max(site.r_min, spacing_bound(sampling_.max_spacing, g.footprint));
             sites.push_back(site);
         }
         const std::vector<ComputedRecord> computed = compute_level(level, sites);
@@ -504,7 +455,8 @@ void IrradianceCache::place_records(const IrradianceCacheOptions& options) {
 }
 
 std::vector<shared::float4> IrradianceCache::shade(const shared::IcParams& params,
-                                                   bool records_overlay) {
+                                                   bool records_overlay,
+                                                   const Buffer<shared::RcGlossySample>& glossy) {
     const size_t pixels = static_cast<size_t>(width_) * height_;
     const size_t samples = pixels * static_cast<size_t>(camera_spp_);
     // The splat buffer: every record splatted over every camera sample. The records go to the
@@ -525,7 +477,7 @@ std::vector<shared::float4> IrradianceCache::shade(const shared::IcParams& param
     counters.upload({0u, 0u, 0xffffffffu});
     context_.launch(shade_kernel_, pixels, params, camera_, SceneArguments(bvh_, device_scene_),
                     records.grid, records.cell_start, records.cell_records, records.records,
-                    records.payloads, splat, film, counters);
+                    records.payloads, splat, glossy, film, counters);
     std::vector<shared::float4> sums = film.download();
     const std::vector<unsigned> c = counters.download();
     stats_.shading_rays = c[0];
@@ -557,8 +509,16 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     stats_.gbuffer_seconds = seconds_since(start);
     // 2.-4. Placement, coarse to fine, with record computation and insertion.
     place_records(options);
+    // The glossy lobes' cache, when one serves them.
+    Buffer<shared::RcGlossySample> glossy(context_, 1, "ic_no_glossy");
+    glossy.fill_zero();
+    if (options.glossy != nullptr) {
+        const RecordLevelSource first_level(context_, stores_[0], kIrradianceCacheMaxWeight);
+        glossy = options.glossy->glossy_samples(params, camera_, first_level);
+        params.glossy_cache = 1;
+    }
     // 5.-6. Splatting and the render pass.
-    const std::vector<shared::float4> sums = shade(params, options.records_overlay);
+    const std::vector<shared::float4> sums = shade(params, options.records_overlay, glossy);
 
     std::vector<FilmLayer> layers = {
         {"beauty", RC_CACHED_FILM_BEAUTY},     {"direct", RC_CACHED_FILM_DIRECT},
@@ -566,6 +526,10 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
         {"normal", RC_CACHED_FILM_NORMAL},     {"coverage", RC_CACHED_FILM_COVERAGE, 1}};
     if (options.records_overlay) {
         layers.push_back({"records", RC_CACHED_FILM_LAYER});
+    }
+    if (options.glossy != nullptr) {
+        layers.push_back({"glossy-indirect", RC_CACHED_FILM_GLOSSY});
+        layers.push_back({"rc-order", RC_CACHED_FILM_ORDER, 1});
     }
     Image image = unpack_film(sums, RC_CACHED_FILM_SLOTS, width_, height_, layers);
     if (stats != nullptr) {

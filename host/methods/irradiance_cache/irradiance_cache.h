@@ -13,6 +13,7 @@
 
 #include "image/image.h"
 #include "methods/frame_scene.h"
+#include "methods/glossy_cache.h"
 #include "methods/irradiance_cache/irradiance_records.h"
 #include "methods/radiance_source.h"
 
@@ -25,6 +26,11 @@ struct Spacing {
 };
 // "4", "4px" (pixels) or "0.5u" (scene units); Error (exit status 2) naming `option` otherwise.
 Spacing parse_spacing(const std::string& text, const std::string& option);
+// The length a spacing bounds a record's radius R to at a sample whose pixel (footprint) has
+// that world size: R_min and R_max in multiples of the projected pixel size (course, "Minimum by
+// projected pixel size": Tabellion and Lamorlette's 1.5x-3x for R_min, 10x for R_max; Radiance's
+// R_max = 64 R_min) or in scene units.
+float spacing_bound(const Spacing& spacing, float footprint);
 
 struct IrradianceCacheOptions {
     int width = 0;  // 0: the scene camera's
@@ -47,6 +53,10 @@ struct IrradianceCacheOptions {
     // Where the hemisphere rays read the radiance beyond their hits (--ic-ivg: the irradiance
     // vector grid) instead of path-traced continuation (one cache level only).
     const RadianceSource* source = nullptr;
+    // Where the render pass reads the specular lobes' indirect light at camera samples (radiance
+    // caching: --method rc) instead of path tracing them; its hemisphere rays read this cache's
+    // first level. Adds the layers glossy-indirect and rc-order.
+    GlossyCache* glossy = nullptr;
 };
 
 // One pass of placement: records created at one cache level (0: the camera's) from candidates
@@ -183,7 +193,9 @@ class IrradianceCache : private FrameBound {
     // record computation and insertion); saves the cache when asked.
     void place_records(const IrradianceCacheOptions& options);
     // The splat buffer and the render pass over the first level; the film's sums.
-    std::vector<shared::float4> shade(const shared::IcParams& params, bool records_overlay);
+    // `glossy`: the glossy buffer the pass reads when params.glossy_cache.
+    std::vector<shared::float4> shade(const shared::IcParams& params, bool records_overlay,
+                                      const Buffer<shared::RcGlossySample>& glossy);
     shared::IcParams level_params(int level) const;
     // ic_record_cells built for `source` (one program per source kind).
     Kernel& cells_kernel(const RadianceSource& source);

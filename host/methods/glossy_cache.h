@@ -1,0 +1,25 @@
+// A cache of the glossy lobes' indirect light at the camera samples (radiance caching, DESIGN.md
+// §6.4) that irradiance caching's render pass reads instead of path tracing those lobes: the
+// glossy buffer, one RcGlossySample per camera sample (kernels/shared/radiance_cache.h).
+#pragma once
+
+#include "device/buffer.h"
+#include "methods/radiance_source.h"
+#include "shared/radiance_cache.h"
+#include "shared/types.h"
+
+namespace rc {
+
+class GlossyCache {
+   public:
+    virtual ~GlossyCache() = default;
+    // The glossy buffer of the camera samples of `camera`'s image, entry pixel * spp + s
+    // (params: width, height, camera_spp, seed, depth limits, as the render pass traces them),
+    // once the irradiance records are placed; `diffuse`: the radiance the cache's hemisphere rays
+    // read beyond their hits.
+    virtual Buffer<shared::RcGlossySample> glossy_samples(const shared::IcParams& params,
+                                                          const shared::CameraParams& camera,
+                                                          const RadianceSource& diffuse) = 0;
+};
+
+}  // namespace rc

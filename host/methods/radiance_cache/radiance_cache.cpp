@@ -1,0 +1,282 @@
+#include "methods/radiance_cache/radiance_cache.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "methods/radiance_cache/radiance_records.h"
+#include "methods/records/candidate_thinning.h"
+#include "methods/records/record_grid.h"
+#include "methods/scene_arguments.h"
+#include "shared/sh_rotation_zxz.h"
+#include "util/error.h"
+#include "util/glm_helpers.h"
+#include "util/timing.h"
+
+namespace rc {
+namespace {
+
+constexpr size_t kMaxBatchCells = size_t{1} << 22;  // hemisphere cells per record launch
+
+// The scene's BRDF tables for these options (their options checked first), the build time
+// into *seconds.
+BrdfTables build_tables(const FrameScene& frame, const RadianceCacheOptions& options,
+                        double* seconds) {
+    check_radiance_cache_options(options);
+    BrdfTableOptions table;
+    table.max_order = options.order > 0 ? options.order : RC_SH_MAX_ORDER;
+    table.max_error = options.max_error;
+    const auto start = SteadyClock::now();
+    BrdfTables tables(frame.context, frame.scene.materials, table);
+    frame.context.finish();
+    *seconds = seconds_since(start);
+    return tables;
+}
+
+// The highest order any material's table represents: the records' order (TVCG §4.2 projects
+// each record at the order its surface needs; one order for all keeps the payloads uniform).
+int records_order(const BrdfTables& tables) {
+    int order = 0;
+    for (const shared::BrdfTableInfo& info : tables.infos()) {
+        order = std::max(order, info.order);
+    }
+    return order;
+}
+
+// A store's records, their payloads and the world-space grid over them, on the device.
+struct DeviceRadianceRecords {
+    DeviceRadianceRecords(Context& context, const RecordStore& store, int order) {
+        const RecordGridData data = build_record_grid(store.records(), store.accuracy());
+        grid = data.grid;
+        records = Buffer<shared::Record>(context, store.records(), "rc_records");
+        payloads = Buffer<float>(context, device_radiance_payloads(store, order), "rc_payloads");
+        cell_start = Buffer<int>(context, data.cell_start, "rc_cell_start");
+        cell_records = Buffer<int>(context, data.cell_records, "rc_cell_records");
+    }
+
+    shared::RecordGrid grid{};
+    Buffer<shared::Record> records;
+    Buffer<float> payloads;
+    Buffer<int> cell_start;
+    Buffer<int> cell_records;
+};
+
+}  // namespace
+
+void check_radiance_cache_options(const RadianceCacheOptions& options) {
+    if (options.order < 0 || options.order > RC_SH_MAX_ORDER) {
+        throw Error("--rc-order must be auto or 1.." + std::to_string(RC_SH_MAX_ORDER) + ", got " +
+                        std::to_string(options.order),
+                    kExitUsage);
+    }
+    if (!(options.max_error > 0.0 && options.max_error < 1.0)) {
+        throw Error("--rc-max-error must lie in (0, 1), got " + std::to_string(options.max_error),
+                    kExitUsage);
+    }
+    if (options.rays < 16) {
+        throw Error("--rc-rays must be at least 16, got " + std::to_string(options.rays),
+                    kExitUsage);
+    }
+    if (!(options.accuracy > 0.0f && options.accuracy <= 1.0f)) {
+        throw Error("--accuracy must lie in (0, 1], got " + std::to_string(options.accuracy),
+                    kExitUsage);
+    }
+}
+
+void radiance_strata(int rays, int* m, int* n) {
+    *m = std::max(2, static_cast<int>(std::lround(std::sqrt(rays / 4.0))));
+    *n = std::max(2, static_cast<int>(std::lround(static_cast<double>(rays) / *m)));
+}
+
+RadianceCache::RadianceCache(const FrameScene& frame, const RadianceCacheOptions& options)
+    : FrameBound(frame),
+      options_(options),
+      tables_(build_tables(frame, options, &stats_.table_seconds)),
+      order_(records_order(tables_)),
+      store_(radiance_store(options.accuracy, std::max(order_, 1))),
+      queries_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_queries")),
+      project_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_record_project")),
+      uncovered_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_uncovered")),
+      splat_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_splat")) {
+    radiance_strata(options.rays, &strata_m_, &strata_n_);
+    stats_.materials = tables_.summaries();
+    stats_.order = order_;
+    stats_.strata_m = strata_m_;
+    stats_.strata_n = strata_n_;
+}
+
+Kernel& RadianceCache::cells_kernel(const RadianceSource& source) {
+    const std::string options = source.build_options();
+    auto found = cells_kernels_.find(options);
+    if (found == cells_kernels_.end()) {
+        Kernel kernel =
+            context_.kernel("radiance_cache/rc_record_cells.cl", "rc_record_cells", options);
+        found = cells_kernels_.emplace(options, std::move(kernel)).first;
+    }
+    return found->second;
+}
+
+shared::RcParams RadianceCache::record_params() const {
+    shared::RcParams params{};
+    params.order = std::max(order_, 1);
+    params.strata_m = strata_m_;
+    params.strata_n = strata_n_;
+    params.seed_lo = static_cast<unsigned>(options_.seed);
+    params.seed_hi = static_cast<unsigned>(options_.seed >> 32);
+    params.accuracy = options_.accuracy;
+    params.max_weight = kIrradianceCacheMaxWeight;
+    params.max_depth = options_.max_depth;
+    params.rr_depth = options_.rr_depth;
+    params.count_emission = options_.count_emission ? 1 : 0;
+    return params;
+}
+
+void RadianceCache::add_records(const std::vector<shared::RcQuery>& queries,
+                                const std::vector<uint32_t>& sites, const RadianceSource& diffuse) {
+    const size_t per_record = static_cast<size_t>(strata_m_) * strata_n_;
+    const size_t batch_limit = std::max<size_t>(1, kMaxBatchCells / per_record);
+    const size_t floats = radiance_payload_floats(std::max(order_, 1));
+    const SceneArguments scene(bvh_, device_scene_);
+    Buffer<unsigned> counters(context_, 1, "rc_record_counters");
+    for (size_t begin = 0; begin < sites.size(); begin += batch_limit) {
+        const size_t count = std::min(batch_limit, sites.size() - begin);
+        std::vector<shared::Record> records(count);
+        std::vector<shared::float4> origins(count);
+        for (size_t b = 0; b < count; ++b) {
+            const shared::RcQuery& q = queries[sites[begin + b]];
+            records[b] = make_record(vec3_of(q.position), vec3_of(q.normal));
+            origins[b] = q.origin;
+        }
+        const Buffer<shared::Record> record_buffer(context_, records, "rc_batch_records");
+        const Buffer<shared::float4> origin_buffer(context_, origins, "rc_batch_origins");
+        Buffer<shared::float4> cells(context_, count * per_record, "rc_cells");
+        Buffer<float> payloads(context_, count * floats, "rc_batch_payloads");
+        Buffer<shared::float4> distances(context_, count, "rc_distances");
+        shared::RcParams params = record_params();
+        params.first_record = static_cast<int>(store_.size());  // streams: record indices
+        counters.fill_zero();
+        context_.launch(cells_kernel(diffuse), count * per_record, params, scene, record_buffer,
+                        origin_buffer, diffuse, cells, counters);
+        context_.launch(project_kernel_, count, params, cells, payloads, distances);
+        const std::vector<float> payload = payloads.download();
+        const std::vector<shared::float4> distance = distances.download();
+        stats_.record_rays += counters.download()[0];
+        for (size_t b = 0; b < count; ++b) {
+            const shared::RcQuery& q = queries[sites[begin + b]];
+            RecordHostData host;
+            host.harmonic_distance = distance[b].x;
+            host.min_distance = distance[b].y;
+            host.r_min = spacing_bound(options_.min_spacing, q.footprint);
+            host.r_max = std::max(host.r_min, spacing_bound(options_.max_spacing, q.footprint));
+            const std::vector<float> own(payload.begin() + b * floats,
+                                         payload.begin() + (b + 1) * floats);
+            store_.insert_bytes(records[b], host, own.data(), floats * sizeof(float),
+                                radiance_radius_limit(own, std::max(order_, 1)));
+        }
+    }
+}
+
+std::vector<uint32_t> RadianceCache::uncovered(const Buffer<shared::RcQuery>& queries,
+                                               const std::vector<uint32_t>& candidates) {
+    const DeviceRadianceRecords records(context_, store_, std::max(order_, 1));
+    const Buffer<unsigned> candidate_buffer(context_, candidates, "rc_candidates");
+    Buffer<unsigned> out(context_, candidates.size(), "rc_uncovered");
+    Buffer<unsigned> count(context_, 1, "rc_uncovered_count");
+    count.fill_zero();
+    context_.launch(uncovered_kernel_, candidates.size(), record_params(), records.grid,
+                    records.cell_start, records.cell_records, records.records, queries,
+                    candidate_buffer, out, count);
+    std::vector<uint32_t> indices(count.download()[0]);
+    if (!indices.empty()) {
+        out.read(indices.data(), indices.size() * sizeof(uint32_t));
+    }
+    std::sort(indices.begin(), indices.end());  // appended in any order
+    return indices;
+}
+
+void RadianceCache::cover(const std::vector<shared::RcQuery>& queries,
+                          const Buffer<shared::RcQuery>& device,
+                          const std::vector<uint32_t>& candidates, int stride, bool until_covered,
+                          const RadianceSource& diffuse) {
+    if (candidates.empty()) {
+        return;
+    }
+    // A record covers its own position, so passes until all are covered end.
+    for (int pass = 0; until_covered || pass < 1; ++pass) {
+        auto start = SteadyClock::now();
+        const std::vector<uint32_t> open = uncovered(device, candidates);
+        std::vector<glm::vec3> positions(open.size());
+        std::vector<glm::vec3> normals(open.size());
+        std::vector<float> min_influence(open.size());
+        for (size_t c = 0; c < open.size(); ++c) {
+            const shared::RcQuery& q = queries[open[c]];
+            positions[c] = vec3_of(q.position);
+            normals[c] = vec3_of(q.normal);
+            min_influence[c] = options_.accuracy * spacing_bound(options_.min_spacing, q.footprint);
+        }
+        std::vector<uint32_t> sites;
+        for (size_t c : thin_candidates(positions, normals, min_influence)) {
+            sites.push_back(open[c]);
+        }
+        stats_.placement_seconds += seconds_since(start);
+        if (sites.empty()) {
+            break;
+        }
+        stats_.passes.push_back({0, stride, candidates.size(), open.size(), sites.size()});
+        start = SteadyClock::now();
+        add_records(queries, sites, diffuse);
+        stats_.record_seconds += seconds_since(start);
+    }
+}
+
+Buffer<shared::RcGlossySample> RadianceCache::glossy_samples(const shared::IcParams& params,
+                                                             const shared::CameraParams& camera,
+                                                             const RadianceSource& diffuse) {
+    const size_t samples =
+        static_cast<size_t>(params.width) * params.height * static_cast<size_t>(params.camera_spp);
+    // 1. The camera samples as radiance caching sees them.
+    auto start = SteadyClock::now();
+    const Buffer<shared::RcQuery> device(context_, samples, "rc_queries");
+    context_.launch(queries_kernel_, samples, params, camera, SceneArguments(bvh_, device_scene_),
+                    tables_.device_infos(), tables_.orders(), device);
+    const std::vector<shared::RcQuery> queries = device.download();
+    stats_.query_seconds = seconds_since(start);
+    for (const shared::RcQuery& q : queries) {
+        stats_.glossy_samples += q.order >= 0 ? 1 : 0;
+        stats_.fallback_samples += q.order == 0 ? 1 : 0;
+    }
+    // 2. Placement, coarse to fine as irradiance caching's: the first camera sample of every
+    // stride-th pixel of every stride-th row, then every sample until all are covered.
+    if (order_ > 0) {
+        const uint32_t spp = static_cast<uint32_t>(params.camera_spp);
+        const uint32_t width = static_cast<uint32_t>(params.width);
+        for (int stride : {16, 8, 4, 2, 1}) {
+            std::vector<uint32_t> candidates;
+            for (uint32_t i = 0; i < queries.size(); ++i) {
+                const uint32_t pixel = i / spp;
+                const bool on_grid = (pixel % width) % stride == 0 && (pixel / width) % stride == 0;
+                if (queries[i].order > 0 && on_grid && (stride == 1 || i % spp == 0)) {
+                    candidates.push_back(i);
+                }
+            }
+            cover(queries, device, candidates, stride, stride == 1, diffuse);
+        }
+    }
+    stats_.records = store_.size();
+    // 3. The glossy buffer: every served sample's interpolated reflection.
+    start = SteadyClock::now();
+    const DeviceRadianceRecords records(context_, store_, std::max(order_, 1));
+    std::vector<float> x90(RC_SH_X90_TABLE_SIZE);
+    shared::rc_sh_x90_table(x90.data());
+    const Buffer<float> x90_buffer(context_, x90, "rc_x90");
+    Buffer<shared::RcGlossySample> glossy(context_, samples, "rc_glossy");
+    Buffer<unsigned> counters(context_, 1, "rc_splat_counters");
+    counters.fill_zero();
+    context_.launch(splat_kernel_, samples, record_params(), records.grid, records.cell_start,
+                    records.cell_records, records.records, records.payloads, device,
+                    tables_.device_infos(), tables_.coefficients(), x90_buffer, glossy, counters);
+    stats_.reflections = counters.download()[0];
+    stats_.splat_seconds = seconds_since(start);
+    return glossy;
+}
+
+}  // namespace rc

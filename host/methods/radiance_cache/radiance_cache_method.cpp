@@ -1,0 +1,160 @@
+// `--method rc`: radiance caching (DESIGN.md §6.4) as a registered method. The glossy lobes'
+// indirect light comes from radiance records (RadianceCache) where the BRDF tables represent the
+// lobe, by Monte Carlo where they do not; the diffuse lobes keep irradiance caching's records,
+// with its options, whose first level the radiance records' hemisphere rays read at their hits.
+#include <algorithm>
+#include <memory>
+
+#include "methods/irradiance_cache/ic_options.h"
+#include "methods/irradiance_cache/ic_stats.h"
+#include "methods/method.h"
+#include "methods/radiance_cache/radiance_cache.h"
+#include "util/error.h"
+#include "util/log.h"
+
+namespace rc {
+namespace {
+
+// Irradiance caching's options radiance caching takes: all but the cache files (which hold
+// irradiance records only) and the grid as the hemisphere rays' source.
+bool shared_with_ic(const OptionSpec& spec) {
+    return spec.name == "--accuracy" || spec.name.rfind("--ic-", 0) == 0 ||
+           spec.name == "--light-samples";
+}
+
+std::vector<OptionSpec> radiance_cache_option_specs() {
+    std::vector<OptionSpec> specs = {
+        {"--rc-order", "", "N|auto",
+         "rc: largest spherical-harmonic order n (n^2 coefficients per channel) of the BRDF "
+         "tables and the radiance records, 1-10; lobes that need more go to Monte Carlo "
+         "(default auto: 10)"},
+        {"--rc-max-error", "", "E",
+         "rc: largest relative L2 error of a BRDF lobe's representation in (0, 1); each "
+         "material gets the lowest order below it (default 0.1)"},
+        {"--rc-rays", "", "N", "rc: hemisphere rays per radiance record (default 4096)"},
+    };
+    for (OptionSpec& spec : irradiance_cache_option_specs()) {
+        if (shared_with_ic(spec) && spec.name != "--ic-ivg") {
+            specs.push_back(std::move(spec));
+        }
+    }
+    return specs;
+}
+
+int parse_order(const ParsedArguments& arguments) {
+    const std::string text = arguments.value("--rc-order", "auto");
+    if (text == "auto") {
+        return 0;
+    }
+    return static_cast<int>(arguments.integer("--rc-order", 0, 1, RC_SH_MAX_ORDER));
+}
+
+RadianceCacheOptions parse_options(const ParsedArguments& arguments,
+                                   const IrradianceCacheOptions& ic) {
+    RadianceCacheOptions rc;
+    rc.order = parse_order(arguments);
+    rc.max_error = arguments.number("--rc-max-error", rc.max_error, 1e-6, 0.999999);
+    rc.rays = static_cast<int>(arguments.integer("--rc-rays", rc.rays, 16, 1 << 16));
+    rc.accuracy = ic.accuracy;
+    rc.min_spacing = ic.min_spacing;
+    rc.max_spacing = ic.max_spacing;
+    rc.seed = ic.seed;
+    rc.max_depth = ic.max_depth;
+    rc.rr_depth = ic.rr_depth;
+    check_radiance_cache_options(rc);
+    return rc;
+}
+
+class RadianceCaching final : public Method {
+   public:
+    RadianceCaching(const ParsedArguments& arguments, const MethodSettings& settings)
+        : ic_(parse_irradiance_cache_options(arguments, settings)),
+          rc_(parse_options(arguments, ic_)) {}
+
+    FrameResult render_frame(const FrameScene& frame, const FrameHooks&) override {
+        FrameResult result;
+        RadianceCache glossy(frame, rc_);
+        IrradianceCache cache(frame);
+        IrradianceCacheOptions options = ic_;
+        options.glossy = &glossy;
+        IrradianceCacheStats stats;
+        result.image = cache.render(options, &stats);
+        result.spp = options.spp;
+        const RadianceCacheStats& rc = glossy.stats();
+        result.rays += stats.record_rays + stats.shading_rays + rc.record_rays;
+        result.nonfinite_samples = stats.nonfinite_samples;
+        result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
+        add_irradiance_cache_stats(stats, options, &result.stats);
+        result.stats["radiance_cache"] = radiance_stats(rc);
+        log_note(std::to_string(stats.records) + " irradiance records, " +
+                 std::to_string(rc.records) + " radiance records (order " +
+                 std::to_string(rc.order) + ")");
+        return result;
+    }
+
+   private:
+    static nlohmann::json radiance_stats(const RadianceCacheStats& rc) {
+        nlohmann::json materials = nlohmann::json::array();
+        for (const BrdfTableSummary& m : rc.materials) {
+            materials.push_back({{"name", m.name},
+                                 {"kind", brdf_kind_name(m.kind)},
+                                 {"order", m.order},
+                                 {"fallback_fraction", m.fallback_fraction}});
+        }
+        nlohmann::json passes = nlohmann::json::array();
+        for (const PlacementPass& pass : rc.passes) {
+            passes.push_back({{"stride", pass.stride},
+                              {"candidates", pass.candidates},
+                              {"uncovered", pass.uncovered},
+                              {"records", pass.records}});
+        }
+        const double coefficients = static_cast<double>(rc.records) * 3.0 * rc.order * rc.order;
+        return {
+            {"records", rc.records},
+            {"order", rc.order},
+            {"strata", {rc.strata_m, rc.strata_n}},
+            {"materials", materials},
+            {"placement_passes", passes},
+            {"glossy_samples", rc.glossy_samples},
+            {"fallback_samples", rc.fallback_samples},
+            {"fallback_fraction", rc.glossy_samples > 0 ? static_cast<double>(rc.fallback_samples) /
+                                                              static_cast<double>(rc.glossy_samples)
+                                                        : 0.0},
+            {"record_rays", rc.record_rays},
+            {"reflections", rc.reflections},
+            {"coefficients_projected_per_second",
+             rc.record_seconds > 0.0 ? coefficients / rc.record_seconds : 0.0},
+            {"reflections_per_second",
+             rc.splat_seconds > 0.0 ? static_cast<double>(rc.reflections) / rc.splat_seconds : 0.0},
+            {"seconds",
+             {{"tables", rc.table_seconds},
+              {"queries", rc.query_seconds},
+              {"placement", rc.placement_seconds},
+              {"records", rc.record_seconds},
+              {"splatting", rc.splat_seconds}}}};
+    }
+
+    IrradianceCacheOptions ic_;
+    RadianceCacheOptions rc_;
+};
+
+std::vector<std::string> radiance_cache_aovs() {
+    std::vector<std::string> aovs(std::begin(kIrradianceCacheAovs), std::end(kIrradianceCacheAovs));
+    aovs.push_back("glossy-indirect");
+    aovs.push_back("rc-order");
+    return aovs;
+}
+
+}  // namespace
+
+MethodEntry radiance_cache_method_entry() {
+    return {"rc",
+            "radiance caching: glossy lobes from spherical-harmonic records with gradients, "
+            "rotated and interpolated; diffuse lobes from irradiance records",
+            radiance_cache_option_specs(), radiance_cache_aovs(),
+            [](const ParsedArguments& arguments, const MethodSettings& settings) {
+                return std::make_unique<RadianceCaching>(arguments, settings);
+            }};
+}
+
+}  // namespace rc

@@ -1,0 +1,35 @@
+// Entry kernel of radiance caching's hemisphere sampling (host/methods/radiance_cache/): the
+// radiance arriving through each cell of a batch of records, the light beyond the hemisphere
+// rays' hits read from the source the program is built for (common/radiance_source.h).
+#include "radiance_cache/rc_records.h"
+#include "scene_arguments.h"
+// The source after the method's own headers (see common/radiance_source.h).
+#include "common/radiance_source.h"
+
+// Item i: cell i % (M N) of batch record i / (M N) (stream params.first_record + i / (M N)):
+// (L.rgb, distance to the hit) in cells[i], a NaN or infinite radiance stored as black. The
+// hemisphere ray is the camera hit's first bounce: the emission it sees is direct light, left to
+// the render pass's next-event estimation unless the tests ask for it. counters[0] counts the
+// rays traced.
+__kernel void rc_record_cells(uint begin, uint end, RcParams params, RC_SCENE_PARAMETERS,
+                              __global const Record* records, __global const float4* origins,
+                              RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
+                              __global uint* counters) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
+    const uint per_record = (uint)(params.strata_m * params.strata_n);
+    const uint b = i / per_record;
+    RngStream rng;
+    const Ray ray = rc_record_cell_ray(&params, (uint)params.first_record + b,
+                                       (int)(i % per_record), records[b].normal.xyz,
+                                       origins[b].xyz, &rng);
+    const SourceSample s = rc_source_radiance(&scene, &source, ray, &rng,
+                                              params.count_emission != 0, 1, params.max_depth,
+                                              params.rr_depth);
+    atomic_add(&counters[0], s.rays);
+    cells[i] = (float4)(all(isfinite(s.radiance)) ? s.radiance : (float3)(0.0f), s.distance);
+}
