@@ -42,28 +42,6 @@ std::vector<float> sky_records(Context& context) {
     return records;
 }
 
-// The directional albedo of `material`'s specular lobe at wo, integral of f_s cos over the
-// hemisphere of wi with d_record.z > 0 for d_record = R^T wi (the record's hemisphere, R: record
-// frame -> query frame): Gauss-Legendre 96 x midpoint 192 of material_eval_probe's values.
-double albedo(Context& context, const Material& material, shared::float4 wo,
-              const std::vector<double>& r) {
-    const test::DirectionQuadrature q = test::product_quadrature(0.0, 96, 192);
-    Kernel kernel = context.kernel("material_probe.cl", "material_eval_probe");
-    const Buffer<shared::float4> in(context, q.directions, "directions");
-    Buffer<shared::float4> out(context, q.directions.size(), "values");
-    context.launch(kernel, q.directions.size(), to_device(material), wo, in, out);
-    const std::vector<shared::float4> f = out.download();
-    double sum = 0.0;
-    for (size_t k = 0; k < q.weights.size(); ++k) {
-        const shared::float4& d = q.directions[k];
-        const double record_z = r[2] * d.x + r[5] * d.y + r[8] * d.z;
-        if (record_z > 0.0) {
-            sum += q.weights[k] * f[k].x * d.z;
-        }
-    }
-    return sum;
-}
-
 // Query frames reached from the record's by a rotation about the normal (frames on a flat
 // surface: the record's hemisphere is the query's, so the white sky is exact up to the SH
 // representation) or by a tilt of 15 degrees about a random horizontal axis (a curved surface: the
@@ -137,7 +115,7 @@ TEST(RcInterpolation, WhiteSkyReflectsRadianceTimesAlbedo) {
         const double bound = tilted ? 0.06 : 0.03;
         double worst = 0.0;
         for (int q = 0; q < kQueries; ++q) {
-            const double a = albedo(context, material, wo[q], rotations[q]);
+            const double a = test::record_hemisphere_albedo(context, material, wo[q], rotations[q]);
             const double channels[3] = {reflected[q].x, reflected[q].y, reflected[q].z};
             const double sky[3] = {kSky.x, kSky.y, kSky.z};
             for (int c = 0; c < 3; ++c) {

@@ -109,24 +109,6 @@ TEST(RadianceCacheMethod, GlossyBoxIndirectIsCloseToTheReference) {
     EXPECT_LT(rc_satin, 0.5 * ic_satin);
 }
 
-// The directional albedo of `material`'s lobes at w_o (the plane's frame: z up), the integral of
-// f cos over the upper hemisphere by Gauss-Legendre 96 x midpoint 192 of the material's own
-// evaluation (kernels/material_probe.cl).
-double directional_albedo(const Material& material, shared::float4 wo) {
-    Context& context = test::shared_context();
-    const test::DirectionQuadrature q = test::product_quadrature(0.0, 96, 192);
-    Kernel kernel = context.kernel("material_probe.cl", "material_eval_probe");
-    const Buffer<shared::float4> in(context, q.directions, "directions");
-    Buffer<shared::float4> out(context, q.directions.size(), "values");
-    context.launch(kernel, q.directions.size(), to_device(material), wo, in, out);
-    const std::vector<shared::float4> f = out.download();
-    double sum = 0.0;
-    for (size_t k = 0; k < q.weights.size(); ++k) {
-        sum += q.weights[k] * f[k].x * q.directions[k].z;
-    }
-    return sum;
-}
-
 // The white sky through the whole path: a plane of pure Phong 8 (a lobe the tables represent
 // at every direction the camera sees) under a constant sky L, nothing else. With the hemisphere
 // rays counting the sky (they see nothing else), every record holds L over its hemisphere and
@@ -166,7 +148,7 @@ TEST(RadianceCacheMethod, WhiteSkyPlaneReflectsRadianceTimesAlbedo) {
                                                vec3_of(camera.down) * ((y + 0.5f) / kSize));
             // The plane's frame: its normal +y is z; w_o = -d.
             const shared::float4 wo = {-d.x, -d.z, -d.y, 0.0f};
-            const double albedo = directional_albedo(phong, wo);
+            const double albedo = test::record_hemisphere_albedo(test::shared_context(), phong, wo);
             for (int c = 0; c < 3; ++c) {
                 const double expected = sky[c] * albedo;
                 const double error = glossy.at(x, y, c) / expected - 1.0;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "device/buffer.h"
 #include "methods/radiance_cache/gauss_legendre.h"
 
 namespace rc::test {
@@ -72,6 +73,25 @@ std::vector<float> device_basis(Context& context, int basis, int order,
     Buffer<float> out(context, directions.size() * order * order, "basis");
     context.launch(kernel, directions.size(), basis, order, in, out);
     return out.download();
+}
+
+double record_hemisphere_albedo(Context& context, const Material& material, shared::float4 wo,
+                                const std::vector<double>& r) {
+    const DirectionQuadrature q = product_quadrature(0.0, 96, 192);
+    Kernel kernel = context.kernel("material_probe.cl", "material_eval_probe");
+    const Buffer<shared::float4> in(context, q.directions, "directions");
+    Buffer<shared::float4> out(context, q.directions.size(), "values");
+    context.launch(kernel, q.directions.size(), to_device(material), wo, in, out);
+    const std::vector<shared::float4> f = out.download();
+    double sum = 0.0;
+    for (size_t k = 0; k < q.weights.size(); ++k) {
+        const shared::float4& d = q.directions[k];
+        const double record_z = r[2] * d.x + r[5] * d.y + r[8] * d.z;
+        if (record_z > 0.0) {
+            sum += q.weights[k] * f[k].x * d.z;
+        }
+    }
+    return sum;
 }
 
 }  // namespace rc::test

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "device/context.h"
+#include "scene/material.h"
 #include "shared/types.h"
 
 namespace rc::test {
@@ -34,5 +35,13 @@ std::vector<double> random_rotation(std::mt19937& rng);
 // direction i's at [i * order^2, (i + 1) * order^2).
 std::vector<float> device_basis(Context& context, int basis, int order,
                                 const std::vector<shared::float4>& directions);
+
+// The directional albedo of `material` at w_o over the hemisphere of a record whose frame
+// `rotation` (row-major 3x3, record frame -> the frame of w_o) reaches: the integral of f cos over
+// the directions w_i with (R^T w_i).z > 0, by Gauss-Legendre 96 x midpoint 192 of the material's
+// own evaluation (kernels/material_probe.cl, material_eval_probe; the red channel). The identity:
+// the albedo over w_o's own hemisphere.
+double record_hemisphere_albedo(Context& context, const Material& material, shared::float4 wo,
+                                const std::vector<double>& rotation = {1, 0, 0, 0, 1, 0, 0, 0, 1});
 
 }  // namespace rc::test

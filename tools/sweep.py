@@ -16,7 +16,9 @@ flip-evaluator package) and writes
 
 Methods and their knobs: pt (--pt-spp); ic (one curve per --ic-rays x --ic-spp x
 --ic-min-spacing, --ic-accuracy along it); ic-ivg (ic whose records read the irradiance vector
-grid: --ic-accuracy at the first --ic-spp, --ic-rays and --ic-min-spacing); ivg (one curve per
+grid: --ic-accuracy at the first --ic-spp, --ic-rays and --ic-min-spacing); rc (radiance caching
+for glossy lobes beside ic's defaults for diffuse ones: one curve per --rc-rays, --ic-accuracy
+along it at the first --ic-spp); ivg (one curve per
 --ivg-grid, --ivg-photons along it, at --ivg-spp camera samples); ivg-gather (--gather-rays per
 camera sample at --gather-spp camera samples, the grid at its defaults). A grid is auto (about
 32k vertices), auto*K (K times auto's voxels per axis, read off the untimed warm-up render) or
@@ -37,10 +39,11 @@ its ray and record counts, and the sweep fails naming the point if one differs. 
 measured once, on the first repeat's image. The time columns are the median over the repeats
 (the mean of the middle two for an even count) and their _min and _max the fastest and slowest.
 
-Columns: scene, frame, method, curve, setting, spp, accuracy, ic_rays, ic_min_spacing, photons,
-grid, gather_rays, repeats, wall_seconds, wall_seconds_min, wall_seconds_max, render_seconds,
-render_seconds_min, render_seconds_max, kernel_seconds, kernel_seconds_min, kernel_seconds_max,
-compile_seconds, rmse, relmse, relmse_net, flip, indirect_relmse, records, device, image.
+Columns: scene, frame, method, curve, setting, spp, accuracy, ic_rays, ic_min_spacing, rc_rays,
+photons, grid, gather_rays, repeats, wall_seconds, wall_seconds_min, wall_seconds_max,
+render_seconds, render_seconds_min, render_seconds_max, kernel_seconds, kernel_seconds_min,
+kernel_seconds_max, compile_seconds, rmse, relmse, relmse_net, flip, indirect_relmse, records,
+device, image.
 
 relmse_net is the image's relMSE net of the reference's own noise (`radcache compare`: relmse
 minus the mean of (stddev^2/spp_ref)/(r^2+0.01)); empty unless the reference has a stddev layer
@@ -90,11 +93,11 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 TIMES = ["wall_seconds", "render_seconds", "kernel_seconds"]
 COLUMNS = ["scene", "frame", "method", "curve", "setting", "spp", "accuracy", "ic_rays",
-           "ic_min_spacing", "photons", "grid", "gather_rays", "repeats"] + [
+           "ic_min_spacing", "rc_rays", "photons", "grid", "gather_rays", "repeats"] + [
            "%s%s" % (t, suffix) for t in TIMES for suffix in ("", "_min", "_max")] + [
            "compile_seconds", "rmse", "relmse", "relmse_net", "flip", "indirect_relmse",
            "records", "device", "image"]
-METHODS = ["pt", "ic", "ic-ivg", "ivg", "ivg-gather"]
+METHODS = ["pt", "ic", "ic-ivg", "rc", "ivg", "ivg-gather"]
 GRID_FORM = re.compile(r"^(auto|auto\*(\d+(\.\d+)?)|\d+x\d+x\d+)$")
 SPACING_FORM = re.compile(r"^(default|\d+(\.\d+)?(px|u)?)$")
 
@@ -228,6 +231,15 @@ def ic_runs(args):
                           "ic_min_spacing": spacing},
                          ["--method", "ic", "--ic-ivg", "--spp", str(spp), "--accuracy",
                           str(accuracy), "--ic-rays", str(rays)] + spacing_options(spacing)))
+    if "rc" in args.methods:
+        spp = args.ic_spp[0]
+        for rays in args.rc_rays:
+            for accuracy in args.ic_accuracy:
+                runs.append(("rc", "rc %d rays, %d spp" % (rays, spp),
+                             "accuracy=%g rc_rays=%d spp=%d" % (accuracy, rays, spp),
+                             {"spp": spp, "accuracy": accuracy, "rc_rays": rays},
+                             ["--method", "rc", "--spp", str(spp), "--accuracy", str(accuracy),
+                              "--rc-rays", str(rays)]))
     return runs
 
 
@@ -359,6 +371,7 @@ def radcache_rows(runs, measured, first_stats, reference, out):
                "spp": knobs.get("spp", ""), "accuracy": knobs.get("accuracy", ""),
                "ic_rays": knobs.get("ic_rays", ""),
                "ic_min_spacing": knobs.get("ic_min_spacing", ""),
+               "rc_rays": knobs.get("rc_rays", ""),
                "grid": "x".join(str(c) for c in grid["cells"]) if grid else "",
                "photons": grid.get("photons", ""), "gather_rays": knobs.get("gather_rays", ""),
                "records": frame.get("records", ""), "device": stats["device"]}
@@ -386,7 +399,7 @@ def povray_rows(args, scene, reference, out):
             seconds = float(peer["seconds"])
             row = {"method": "povray", "curve": "POV-Ray 3.7 radiosity",
                    "setting": peer["setting"], "spp": "", "accuracy": "", "ic_rays": "",
-                   "ic_min_spacing": "", "photons": "", "grid": "", "gather_rays": "",
+                   "ic_min_spacing": "", "rc_rays": "", "photons": "", "grid": "", "gather_rays": "",
                    "repeats": 1, "kernel_seconds": "", "kernel_seconds_min": "",
                    "kernel_seconds_max": "", "compile_seconds": "", "records": "",
                    "device": "POV-Ray, %s threads" % peer["threads"]}
@@ -442,6 +455,10 @@ def parse_arguments(argv):
     parser.add_argument("--ic-min-spacing", nargs="+", default=["default", "2px"],
                         help="ic's smallest record spacing: what --ic-min-spacing takes (8px, "
                              "5u) or default, the method's (default: %(default)s)")
+    parser.add_argument("--rc-rays", nargs="+", type=int, default=[1024, 4096],
+                        help="rc's hemisphere rays per radiance record, one curve each, "
+                             "--ic-accuracy along it at the first --ic-spp, the diffuse records "
+                             "at their defaults (default: %(default)s)")
     parser.add_argument("--ivg-photons", nargs="+", type=int,
                         default=[65536, 262144, 1048576, 4194304],
                         help="ivg's photons along each curve (default: %(default)s)")
@@ -468,7 +485,7 @@ def parse_arguments(argv):
     else:
         args = parser.parse_args(argv)
         args.extra = []
-    for name in ("pt_spp", "ic_rays", "ic_spp", "ivg_photons", "gather_rays"):
+    for name in ("pt_spp", "ic_rays", "ic_spp", "rc_rays", "ivg_photons", "gather_rays"):
         if any(v < 1 for v in getattr(args, name)):
             parser.error("--%s: values must be positive" % name.replace("_", "-"))
     if any(not 0.0 < a for a in args.ic_accuracy):

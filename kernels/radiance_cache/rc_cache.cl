@@ -17,6 +17,37 @@ __kernel void rc_glossy_queries(uint begin, uint end, IcParams params, CameraPar
     queries[i] = rc_camera_query(&scene, &params, &camera, infos, orders, i / spp, i % spp);
 }
 
+// Item i: query i appended to `served` (counted in counts[0], in any order) when its order is
+// positive (the records serve it); counts[1] counts the queries with a specular lobe radiance
+// caching serves (order >= 0), counts[2] those left to Monte Carlo (order 0).
+__kernel void rc_served_queries(uint begin, uint end, __global const RcQuery* queries,
+                                __global uint* served, __global uint* counts) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const int order = queries[i].order;
+    if (order >= 0) {
+        atomic_inc(&counts[1]);
+    }
+    if (order == 0) {
+        atomic_inc(&counts[2]);
+    }
+    if (order > 0) {
+        served[atomic_inc(&counts[0])] = i;
+    }
+}
+
+// Item k: queries[indices[k]] into selected[k].
+__kernel void rc_select_queries(uint begin, uint end, __global const RcQuery* queries,
+                                __global const uint* indices, __global RcQuery* selected) {
+    const uint k = begin + (uint)get_global_id(0);
+    if (k >= end) {
+        return;
+    }
+    selected[k] = queries[indices[k]];
+}
+
 // Item b: record b of a batch (stream params.first_record + b) from its M N cells: its
 // coefficient vectors and their translational gradients (rc_project_cells_with_gradients, SH at
 // params.order) into payloads[b * 9 order^2 ...], and the harmonic mean (x) and minimum (y) of

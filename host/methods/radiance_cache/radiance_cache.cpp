@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "methods/radiance_cache/radiance_records.h"
 #include "methods/records/candidate_thinning.h"
@@ -94,6 +95,8 @@ RadianceCache::RadianceCache(const FrameScene& frame, const RadianceCacheOptions
       order_(records_order(tables_)),
       store_(radiance_store(options.accuracy, std::max(order_, 1))),
       queries_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_queries")),
+      served_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_served_queries")),
+      select_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_select_queries")),
       project_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_record_project")),
       uncovered_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_uncovered")),
       splat_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_splat")) {
@@ -130,8 +133,8 @@ shared::RcParams RadianceCache::record_params() const {
     return params;
 }
 
-void RadianceCache::add_records(const std::vector<shared::RcQuery>& queries,
-                                const std::vector<uint32_t>& sites, const RadianceSource& diffuse) {
+void RadianceCache::add_records(const std::vector<shared::RcQuery>& sites,
+                                const RadianceSource& diffuse) {
     const size_t per_record = static_cast<size_t>(strata_m_) * strata_n_;
     const size_t batch_limit = std::max<size_t>(1, kMaxBatchCells / per_record);
     const size_t floats = radiance_payload_floats(std::max(order_, 1));
@@ -142,7 +145,7 @@ void RadianceCache::add_records(const std::vector<shared::RcQuery>& queries,
         std::vector<shared::Record> records(count);
         std::vector<shared::float4> origins(count);
         for (size_t b = 0; b < count; ++b) {
-            const shared::RcQuery& q = queries[sites[begin + b]];
+            const shared::RcQuery& q = sites[begin + b];
             records[b] = make_record(vec3_of(q.position), vec3_of(q.normal));
             origins[b] = q.origin;
         }
@@ -161,7 +164,7 @@ void RadianceCache::add_records(const std::vector<shared::RcQuery>& queries,
         const std::vector<shared::float4> distance = distances.download();
         stats_.record_rays += counters.download()[0];
         for (size_t b = 0; b < count; ++b) {
-            const shared::RcQuery& q = queries[sites[begin + b]];
+            const shared::RcQuery& q = sites[begin + b];
             RecordHostData host;
             host.harmonic_distance = distance[b].x;
             host.min_distance = distance[b].y;
@@ -193,10 +196,10 @@ std::vector<uint32_t> RadianceCache::uncovered(const Buffer<shared::RcQuery>& qu
     return indices;
 }
 
-void RadianceCache::cover(const std::vector<shared::RcQuery>& queries,
-                          const Buffer<shared::RcQuery>& device,
-                          const std::vector<uint32_t>& candidates, int stride, bool until_covered,
-                          const RadianceSource& diffuse) {
+void RadianceCache::cover(const Buffer<shared::RcQuery>& device,
+                          const std::vector<uint32_t>& candidates,
+                          const std::function<const shared::RcQuery&(uint32_t)>& copy, int stride,
+                          bool until_covered, const RadianceSource& diffuse) {
     if (candidates.empty()) {
         return;
     }
@@ -208,14 +211,14 @@ void RadianceCache::cover(const std::vector<shared::RcQuery>& queries,
         std::vector<glm::vec3> normals(open.size());
         std::vector<float> min_influence(open.size());
         for (size_t c = 0; c < open.size(); ++c) {
-            const shared::RcQuery& q = queries[open[c]];
+            const shared::RcQuery& q = copy(open[c]);
             positions[c] = vec3_of(q.position);
             normals[c] = vec3_of(q.normal);
             min_influence[c] = options_.accuracy * spacing_bound(options_.min_spacing, q.footprint);
         }
-        std::vector<uint32_t> sites;
+        std::vector<shared::RcQuery> sites;
         for (size_t c : thin_candidates(positions, normals, min_influence)) {
-            sites.push_back(open[c]);
+            sites.push_back(copy(open[c]));
         }
         stats_.placement_seconds += seconds_since(start);
         if (sites.empty()) {
@@ -223,9 +226,32 @@ void RadianceCache::cover(const std::vector<shared::RcQuery>& queries,
         }
         stats_.passes.push_back({0, stride, candidates.size(), open.size(), sites.size()});
         start = SteadyClock::now();
-        add_records(queries, sites, diffuse);
+        add_records(sites, diffuse);
         stats_.record_seconds += seconds_since(start);
     }
+}
+
+void RadianceCache::served_queries(const Buffer<shared::RcQuery>& queries,
+                                   std::vector<uint32_t>* served,
+                                   std::vector<shared::RcQuery>* copies) {
+    Buffer<unsigned> indices(context_, queries.size(), "rc_served");
+    Buffer<unsigned> counts(context_, 3, "rc_served_counts");
+    counts.fill_zero();
+    context_.launch(served_kernel_, queries.size(), queries, indices, counts);
+    const std::vector<unsigned> count = counts.download();
+    stats_.glossy_samples = count[1];
+    stats_.fallback_samples = count[2];
+    served->assign(count[0], 0);
+    copies->clear();
+    if (served->empty()) {
+        return;
+    }
+    indices.read(served->data(), served->size() * sizeof(uint32_t));
+    std::sort(served->begin(), served->end());  // appended in any order
+    const Buffer<unsigned> sorted(context_, *served, "rc_served_sorted");
+    Buffer<shared::RcQuery> selected(context_, served->size(), "rc_served_queries");
+    context_.launch(select_kernel_, served->size(), queries, sorted, selected);
+    *copies = selected.download();
 }
 
 Buffer<shared::RcGlossySample> RadianceCache::glossy_samples(const shared::IcParams& params,
@@ -233,33 +259,34 @@ Buffer<shared::RcGlossySample> RadianceCache::glossy_samples(const shared::IcPar
                                                              const RadianceSource& diffuse) {
     const size_t samples =
         static_cast<size_t>(params.width) * params.height * static_cast<size_t>(params.camera_spp);
-    // 1. The camera samples as radiance caching sees them.
+    // 1. The camera samples as radiance caching sees them; the host keeps those of positive
+    // order.
     auto start = SteadyClock::now();
     const Buffer<shared::RcQuery> device(context_, samples, "rc_queries");
     context_.launch(queries_kernel_, samples, params, camera, SceneArguments(bvh_, device_scene_),
                     tables_.device_infos(), tables_.orders(), device);
-    const std::vector<shared::RcQuery> queries = device.download();
+    std::vector<uint32_t> served;
+    std::vector<shared::RcQuery> copies;
+    served_queries(device, &served, &copies);
     stats_.query_seconds = seconds_since(start);
-    for (const shared::RcQuery& q : queries) {
-        stats_.glossy_samples += q.order >= 0 ? 1 : 0;
-        stats_.fallback_samples += q.order == 0 ? 1 : 0;
-    }
     // 2. Placement, coarse to fine as irradiance caching's: the first camera sample of every
     // stride-th pixel of every stride-th row, then every sample until all are covered.
-    if (order_ > 0) {
-        const uint32_t spp = static_cast<uint32_t>(params.camera_spp);
-        const uint32_t width = static_cast<uint32_t>(params.width);
-        for (int stride : {16, 8, 4, 2, 1}) {
-            std::vector<uint32_t> candidates;
-            for (uint32_t i = 0; i < queries.size(); ++i) {
-                const uint32_t pixel = i / spp;
-                const bool on_grid = (pixel % width) % stride == 0 && (pixel / width) % stride == 0;
-                if (queries[i].order > 0 && on_grid && (stride == 1 || i % spp == 0)) {
-                    candidates.push_back(i);
-                }
+    const auto copy = [&](uint32_t index) -> const shared::RcQuery& {
+        return copies[static_cast<size_t>(std::lower_bound(served.begin(), served.end(), index) -
+                                          served.begin())];
+    };
+    const uint32_t spp = static_cast<uint32_t>(params.camera_spp);
+    const uint32_t width = static_cast<uint32_t>(params.width);
+    for (int stride : {16, 8, 4, 2, 1}) {
+        std::vector<uint32_t> candidates;
+        for (uint32_t i : served) {
+            const uint32_t pixel = i / spp;
+            const bool on_grid = (pixel % width) % stride == 0 && (pixel / width) % stride == 0;
+            if (on_grid && (stride == 1 || i % spp == 0)) {
+                candidates.push_back(i);
             }
-            cover(queries, device, candidates, stride, stride == 1, diffuse);
         }
+        cover(device, candidates, copy, stride, stride == 1, diffuse);
     }
     stats_.records = store_.size();
     // 3. The glossy buffer: every served sample's interpolated reflection.

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -25,7 +26,7 @@ struct RadianceCacheOptions {
     int order = 0;           // n_max of the BRDF tables and the records; 0: auto (RC_SH_MAX_ORDER)
     double max_error = 0.1;  // the BRDF tables' largest representation error (TVCG §4.1)
     int rays = 4096;  // hemisphere rays per record (M x N strata, N ~ 4 M; TVCG §6: 4000-6000)
-    float accuracy = 0.35f;  // a (shared with irradiance caching's --accuracy)
+    float accuracy = 0.35f;            // a (shared with irradiance caching's --accuracy)
     Spacing min_spacing{8.0f, false};  // bounds on a record's radius R
     Spacing max_spacing{64.0f, false};
     uint64_t seed = 0;
@@ -72,16 +73,16 @@ class RadianceCache final : public GlossyCache, private FrameBound {
 
    private:
     shared::RcParams record_params() const;
-    // Records at the queries `sites` indexes, numbered from the store's size, inserted.
-    void add_records(const std::vector<shared::RcQuery>& queries,
-                     const std::vector<uint32_t>& sites, const RadianceSource& diffuse);
+    // Records at `sites`, numbered from the store's size, inserted.
+    void add_records(const std::vector<shared::RcQuery>& sites, const RadianceSource& diffuse);
     // The indices among `candidates` (into the device queries) that no record covers, ascending.
     std::vector<uint32_t> uncovered(const Buffer<shared::RcQuery>& queries,
                                     const std::vector<uint32_t>& candidates);
     // Places records until the candidates are covered (or one pass at coarse strides).
-    void cover(const std::vector<shared::RcQuery>& queries, const Buffer<shared::RcQuery>& device,
-               const std::vector<uint32_t>& candidates, int stride, bool until_covered,
-               const RadianceSource& diffuse);
+    // `candidates`: indices into the device queries, ascending; `copy(i)` a query's host copy.
+    void cover(const Buffer<shared::RcQuery>& device, const std::vector<uint32_t>& candidates,
+               const std::function<const shared::RcQuery&(uint32_t)>& copy, int stride,
+               bool until_covered, const RadianceSource& diffuse);
     Kernel& cells_kernel(const RadianceSource& source);
 
     RadianceCacheOptions options_;
@@ -91,7 +92,14 @@ class RadianceCache final : public GlossyCache, private FrameBound {
     int strata_m_ = 1;
     int strata_n_ = 1;
     RecordStore store_;
+    // The queries of positive order (`served`, ascending indices into the device queries) and
+    // their copies on the host; the glossy and fallback counts into stats_.
+    void served_queries(const Buffer<shared::RcQuery>& queries, std::vector<uint32_t>* served,
+                        std::vector<shared::RcQuery>* copies);
+
     Kernel queries_kernel_;
+    Kernel served_kernel_;
+    Kernel select_kernel_;
     Kernel project_kernel_;
     Kernel uncovered_kernel_;
     Kernel splat_kernel_;
