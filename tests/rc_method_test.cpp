@@ -16,6 +16,7 @@
 #include "scene/scene_loader.h"
 #include "sh_quadrature.h"
 #include "test_support.h"
+#include "util/error.h"
 #include "util/glm_helpers.h"
 
 namespace rc {
@@ -284,6 +285,29 @@ TEST(RadianceCacheMethod, ImageIsBitwiseIdenticalAcrossRunsChunksAndWorkGroups) 
         << "local 32, chunk 4096";
     const Image glossy = select_layers(reference, {"glossy-indirect"});
     EXPECT_GT(*std::max_element(glossy.pixels.begin(), glossy.pixels.end()), 0.0f);
+}
+
+// --rc-cache-out then --rc-cache-in: the second render places no record, reads the first's, and
+// its glossy light is the first's bit for bit; a file of another order is refused.
+TEST(RadianceCacheMethod, CacheFilesRoundTripTheRadianceRecords) {
+    const auto dir = test::scratch_dir("rc_cache_files");
+    test::DeviceFrame device(phong_sphere_scene(8));
+    const IrradianceCacheOptions ic = ic_options(24, 2, 17, 128);
+    RadianceCacheOptions rc;
+    rc.rays = 256;
+    rc.cache_out = dir / "rc.rcc";
+    const RcRender first = render_rc(device, ic, rc);
+    ASSERT_GT(first.stats.records, 0u);
+    rc.cache_out.clear();
+    rc.cache_in = dir / "rc.rcc";
+    const RcRender second = render_rc(device, ic, rc);
+    EXPECT_EQ(second.stats.loaded_records, first.stats.records);
+    EXPECT_EQ(second.stats.records, first.stats.records);
+    EXPECT_TRUE(second.stats.passes.empty());
+    EXPECT_TRUE(bitwise_equal(select_layers(first.image, {"glossy-indirect"}),
+                              select_layers(second.image, {"glossy-indirect"})));
+    rc.order = 4;
+    EXPECT_THROW(RadianceCache(device.frame(), rc), Error);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "methods/radiance_cache/radiance_records.h"
+#include "methods/records/cache_file.h"
 #include "methods/records/candidate_thinning.h"
 #include "methods/records/record_grid.h"
 #include "methods/scene_arguments.h"
@@ -105,6 +106,13 @@ RadianceCache::RadianceCache(const FrameScene& frame, const RadianceCacheOptions
     stats_.order = order_;
     stats_.strata_m = strata_m_;
     stats_.strata_n = strata_n_;
+    if (!options.cache_in.empty()) {
+        store_ =
+            std::move(read_cache_file(options.cache_in, radiance_cache_key(scene_, options.accuracy,
+                                                                           std::max(order_, 1)))
+                          .at(0));
+        stats_.loaded_records = store_.size();
+    }
 }
 
 Kernel& RadianceCache::cells_kernel(const RadianceSource& source) {
@@ -289,6 +297,11 @@ Buffer<shared::RcGlossySample> RadianceCache::glossy_samples(const shared::IcPar
         cover(device, candidates, copy, stride, stride == 1, diffuse);
     }
     stats_.records = store_.size();
+    if (!options_.cache_out.empty()) {
+        write_cache_file(options_.cache_out,
+                         radiance_cache_key(scene_, options_.accuracy, std::max(order_, 1)),
+                         {store_});
+    }
     // 3. The glossy buffer: every served sample's interpolated reflection.
     start = SteadyClock::now();
     const DeviceRadianceRecords records(context_, store_, std::max(order_, 1));

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <string>
@@ -32,7 +33,9 @@ struct RadianceCacheOptions {
     uint64_t seed = 0;
     int max_depth = 64;
     int rr_depth = 3;
-    bool count_emission = false;  // count emitters the hemisphere rays see (tests)
+    bool count_emission = false;      // count emitters the hemisphere rays see (tests)
+    std::filesystem::path cache_in;   // radiance records to start from (--rc-cache-in)
+    std::filesystem::path cache_out;  // where to save the radiance records (--rc-cache-out)
 };
 
 struct RadianceCacheStats {
@@ -41,9 +44,10 @@ struct RadianceCacheStats {
     int strata_m = 0;
     int strata_n = 0;
     std::vector<PlacementPass> passes;  // level 0 only
-    size_t records = 0;
-    size_t glossy_samples = 0;    // camera samples on a specular lobe radiance caching serves
-    size_t fallback_samples = 0;  // of those, left to Monte Carlo (order 0)
+    size_t records = 0;                 // at the end, loaded ones included
+    size_t loaded_records = 0;          // from --rc-cache-in
+    size_t glossy_samples = 0;          // camera samples on a specular lobe radiance caching serves
+    size_t fallback_samples = 0;        // of those, left to Monte Carlo (order 0)
     uint64_t record_rays = 0;
     uint64_t reflections = 0;  // record reflections evaluated (one rotation each)
     double table_seconds = 0.0;
@@ -61,12 +65,13 @@ void radiance_strata(int rays, int* m, int* n);
 
 class RadianceCache final : public GlossyCache, private FrameBound {
    public:
-    // Builds the frame's BRDF tables (the adaptive order, TVCG §4.1).
+    // Builds the frame's BRDF tables (the adaptive order, TVCG §4.1); reads options.cache_in.
     RadianceCache(const FrameScene& frame, const RadianceCacheOptions& options);
 
     Buffer<shared::RcGlossySample> glossy_samples(const shared::IcParams& params,
                                                   const shared::CameraParams& camera,
                                                   const RadianceSource& diffuse) override;
+    // (Saves the records to options.cache_out at the end.)
 
     const RecordStore& store() const { return store_; }
     const RadianceCacheStats& stats() const { return stats_; }

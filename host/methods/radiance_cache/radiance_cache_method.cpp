@@ -10,16 +10,18 @@
 #include "methods/method.h"
 #include "methods/radiance_cache/radiance_cache.h"
 #include "util/error.h"
+#include "util/file_io.h"
 #include "util/log.h"
 
 namespace rc {
 namespace {
 
-// Irradiance caching's options radiance caching takes: all but the cache files (which hold
-// irradiance records only) and the grid as the hemisphere rays' source.
+// Irradiance caching's options radiance caching takes: all but the grid as the hemisphere rays'
+// source (the cache files hold the irradiance records; --rc-cache-* the radiance records).
 bool shared_with_ic(const OptionSpec& spec) {
     return spec.name == "--accuracy" || spec.name.rfind("--ic-", 0) == 0 ||
-           spec.name == "--light-samples";
+           spec.name == "--light-samples" || spec.name == "--cache-in" ||
+           spec.name == "--cache-out";
 }
 
 std::vector<OptionSpec> radiance_cache_option_specs() {
@@ -32,6 +34,10 @@ std::vector<OptionSpec> radiance_cache_option_specs() {
          "rc: largest relative L2 error of a BRDF lobe's representation in (0, 1); each "
          "material gets the lowest order below it (default 0.1)"},
         {"--rc-rays", "", "N", "rc: hemisphere rays per radiance record (default 4096)"},
+        {"--rc-cache-out", "", "FILE", "rc: save the radiance records"},
+        {"--rc-cache-in", "", "FILE",
+         "rc: start from the radiance records of a saved cache (same scene, frame, accuracy and "
+         "order)"},
     };
     for (OptionSpec& spec : irradiance_cache_option_specs()) {
         if (shared_with_ic(spec) && spec.name != "--ic-ivg") {
@@ -49,7 +55,7 @@ int parse_order(const ParsedArguments& arguments) {
     return static_cast<int>(arguments.integer("--rc-order", 0, 1, RC_SH_MAX_ORDER));
 }
 
-RadianceCacheOptions parse_options(const ParsedArguments& arguments,
+RadianceCacheOptions parse_options(const ParsedArguments& arguments, const MethodSettings& settings,
                                    const IrradianceCacheOptions& ic) {
     RadianceCacheOptions rc;
     rc.order = parse_order(arguments);
@@ -61,6 +67,14 @@ RadianceCacheOptions parse_options(const ParsedArguments& arguments,
     rc.seed = ic.seed;
     rc.max_depth = ic.max_depth;
     rc.rr_depth = ic.rr_depth;
+    rc.cache_in = arguments.value("--rc-cache-in");
+    rc.cache_out = arguments.value("--rc-cache-out");
+    if (!rc.cache_out.empty()) {
+        check_writable_parent(rc.cache_out, "--rc-cache-out");
+    }
+    if (settings.frame_count > 1 && (!rc.cache_in.empty() || !rc.cache_out.empty())) {
+        throw Error("--rc-cache-in/--rc-cache-out take one frame", kExitUsage);
+    }
     check_radiance_cache_options(rc);
     return rc;
 }
@@ -69,7 +83,7 @@ class RadianceCaching final : public Method {
    public:
     RadianceCaching(const ParsedArguments& arguments, const MethodSettings& settings)
         : ic_(parse_irradiance_cache_options(arguments, settings)),
-          rc_(parse_options(arguments, ic_)) {}
+          rc_(parse_options(arguments, settings, ic_)) {}
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks&) override {
         FrameResult result;

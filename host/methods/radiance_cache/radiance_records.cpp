@@ -4,6 +4,8 @@
 #include <cstring>
 #include <limits>
 
+#include "scene/scene_fingerprint.h"
+
 namespace rc {
 
 size_t radiance_payload_floats(int order) { return 9 * static_cast<size_t>(order) * order; }
@@ -43,6 +45,16 @@ std::vector<float> device_radiance_payloads(const RecordStore& store, int order)
         }
     }
     return payloads;
+}
+
+CacheFileKey radiance_cache_key(const Scene& scene, float accuracy, int order) {
+    CacheFileKey key;
+    key.method = kRadianceMethodTag;
+    key.payload_bytes = radiance_payload_floats(order) * sizeof(float);
+    key.scene = scene_fingerprint(scene);
+    key.scene_name = scene.path.string();
+    key.accuracy = accuracy;
+    return key;
 }
 
 }  // namespace rc

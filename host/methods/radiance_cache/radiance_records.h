@@ -6,7 +6,9 @@
 
 #include <vector>
 
+#include "methods/records/cache_file.h"
 #include "methods/records/record_store.h"
+#include "scene/scene.h"
 
 namespace rc {
 
@@ -25,5 +27,11 @@ float radiance_radius_limit(const std::vector<float>& payload, int order);
 // store.gradient_scale(i), so extrapolation over a radius the [R_min, R_max] clamp raised stays
 // as bounded as over R.
 std::vector<float> device_radiance_payloads(const RecordStore& store, int order);
+
+// The method tag of radiance records in cache files.
+inline constexpr const char* kRadianceMethodTag = "radiance";
+
+// The cache-file key of radiance records of order n for this scene and accuracy (one level).
+CacheFileKey radiance_cache_key(const Scene& scene, float accuracy, int order);
 
 }  // namespace rc
