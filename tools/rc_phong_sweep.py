@@ -19,7 +19,8 @@ and OUT/phong.png (relMSE against exponent, log-log, rc and pt, indirect and ima
 fallback fraction on a second axis). Every figure is a time: run it on an otherwise idle machine.
 
 Usage: tools/rc_phong_sweep.py [--exponents 8 16 32 64] [--size 128] [--spp 8]
-           [--reference-spp 4096] [--out build/rc-phong] [-- extra radcache render options]
+           [--reference-spp 4096] [--rc-options "--ic-bounces 1"] [--out build/rc-phong]
+           [-- radcache render options for every render, e.g. --device 0:0]
 """
 
 import argparse
@@ -94,7 +95,8 @@ def sweep_exponent(exponent, args):
         render(scene, reference, ["--method", "pt", "--spp", str(args.reference_spp),
                                   "--aovs", "beauty,direct,indirect"] + args.extra)
     rc_image = os.path.join(args.out, "rc-%d.exr" % exponent)
-    rc_stats = render(scene, rc_image, ["--method", "rc", "--spp", str(args.spp)] + args.extra)
+    rc_stats = render(scene, rc_image, ["--method", "rc", "--spp", str(args.spp)] +
+                      args.rc_options + args.extra)
     seconds = rc_stats["seconds"]["render"]
     pt_image = os.path.join(args.out, "pt-%d.exr" % exponent)
     pt_stats = render(scene, pt_image, ["--method", "pt", "--time", "%.3f" % seconds] +
@@ -143,6 +145,8 @@ def main(argv):
     parser.add_argument("--size", type=int, default=128)
     parser.add_argument("--spp", type=int, default=8, help="rc's camera samples per pixel")
     parser.add_argument("--reference-spp", type=int, default=4096)
+    parser.add_argument("--rc-options", default="",
+                        help="more options of the rc renders, one string (\"--ic-bounces 1\")")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "rc-phong"))
     extra = []
     if "--" in argv:
@@ -150,6 +154,7 @@ def main(argv):
         argv = argv[:argv.index("--")]
     args = parser.parse_args(argv)
     args.extra = extra
+    args.rc_options = args.rc_options.split()
     if min(args.exponents) < 1 or args.size < 1 or args.spp < 1 or args.reference_spp < 1:
         parser.error("exponents, --size, --spp and --reference-spp must be positive")
     os.makedirs(args.out, exist_ok=True)

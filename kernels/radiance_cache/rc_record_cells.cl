@@ -6,15 +6,17 @@
 // The source after the method's own headers (see common/radiance_source.h).
 #include "common/radiance_source.h"
 
-// Item i: cell i % (M N) of batch record i / (M N) (stream params.first_record + i / (M N)):
-// (L.rgb, distance to the hit) in cells[i], a NaN or infinite radiance stored as black. The
-// hemisphere ray is the camera hit's first bounce: the emission it sees is direct light, left to
-// the render pass's next-event estimation unless the tests ask for it. counters[0] counts the
-// rays traced.
+// Item i: cell i % (M N) of batch record i / (M N) (stream params.first_record + i / (M N)), the
+// record at sites[i / (M N)]: (L.rgb, distance to the hit) in cells[i], a NaN or infinite
+// radiance stored as black. The hemisphere ray is the camera hit's first bounce: the emission it
+// sees is direct light, left to the render pass's next-event estimation unless the tests ask for
+// it. A direction of the shading normal's hemisphere below the surface's own tangent plane
+// (where interpolated normals bend away from the facets) would hit the surface itself: no ray,
+// no light, and no neighbour (infinitely far), so a record's radius is not cut to the offset
+// of its rays' origin. counters[0] counts the rays traced.
 __kernel void rc_record_cells(uint begin, uint end, RcParams params, RC_SCENE_PARAMETERS,
-                              __global const Record* records, __global const float4* origins,
-                              RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
-                              __global uint* counters) {
+                              __global const RcQuery* sites, RC_RADIANCE_SOURCE_PARAMETERS
+                              __global float4* cells, __global uint* counters) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {
         return;
@@ -23,10 +25,18 @@ __kernel void rc_record_cells(uint begin, uint end, RcParams params, RC_SCENE_PA
     const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
     const uint per_record = (uint)(params.strata_m * params.strata_n);
     const uint b = i / per_record;
-    RngStream rng;
-    const Ray ray = rc_record_cell_ray(&params, (uint)params.first_record + b,
-                                       (int)(i % per_record), records[b].normal.xyz,
-                                       origins[b].xyz, &rng);
+    const uint record = (uint)params.first_record + b;
+    const int cell = (int)(i % per_record);
+    const RcQuery site = sites[b];
+    const float3 direction = rc_record_cell_direction(&params, record, cell, site.normal.xyz);
+    if (dot(direction, site.geometric_normal.xyz) <= 0.0f) {
+        cells[i] = (float4)(0.0f, 0.0f, 0.0f, INFINITY);
+        return;
+    }
+    RngStream rng = rc_record_cell_stream(&params, record, cell);
+    Ray ray;
+    ray.origin = (float4)(site.origin.xyz, 0.0f);
+    ray.direction = (float4)(direction, INFINITY);
     const SourceSample s = rc_source_radiance(&scene, &source, ray, &rng,
                                               params.count_emission != 0, 1, params.max_depth,
                                               params.rr_depth);

@@ -27,7 +27,8 @@ RC_FUNC RcQuery rc_camera_query(const SceneData* scene, const IcParams* params,
                                 const CameraParams* camera, RC_GLOBAL const BrdfTableInfo* infos,
                                 RC_GLOBAL const int* orders, uint pixel, uint s) {
     RcQuery q;
-    q.position = q.origin = q.normal = q.tangent = q.outgoing = (float4)(0.0f);
+    q.position = q.origin = q.normal = q.tangent = q.geometric_normal = q.outgoing =
+        (float4)(0.0f);
     q.footprint = 0.0f;
     q.material = -1;
     q.order = -1;
@@ -46,6 +47,7 @@ RC_FUNC RcQuery rc_camera_query(const SceneData* scene, const IcParams* params,
     q.origin = (float4)(sp.origin, 0.0f);
     q.normal = (float4)(sp.shading.n, 0.0f);
     q.tangent = (float4)(sp.shading.t, 0.0f);
+    q.geometric_normal = (float4)(sp.geometric_normal, 0.0f);
     q.outgoing = (float4)(wo, 0.0f);
     q.footprint = rc_ic_pixel_footprint(camera, x, y, hit.t);
     q.material = sp.material;
@@ -72,23 +74,27 @@ RC_FUNC Frame rc_query_frame(const RcQuery* q) {
     return f;
 }
 
-// The ray of cell `cell` of record `record`: rc_grid_stratum_direction in the record's frame
-// (rc_ic_record_frame of its normal), from `origin`; *rng continues the cell's stream past the
-// jitter words (TVCG §4.2, eq. 4: stratified uniform hemisphere sampling).
-RC_FUNC Ray rc_record_cell_ray(const RcParams* params, uint record, int cell, float3 normal,
-                               float3 origin, RngStream* rng) {
+// The direction of cell `cell` of record `record` in world space: rc_grid_stratum_direction in
+// the record's frame (rc_ic_record_frame of its shading normal) (TVCG §4.2, eq. 4: stratified
+// uniform hemisphere sampling).
+RC_FUNC float3 rc_record_cell_direction(const RcParams* params, uint record, int cell,
+                                        float3 normal) {
     uint key_lo, key_hi;
     rc_record_key(params, &key_lo, &key_hi);
     const Frame frame = rc_ic_record_frame(normal);
-    const float3 d = rc_grid_stratum_direction(key_lo, key_hi, record, cell, params->strata_m,
-                                               params->strata_n);
-    *rng = rc_rng_stream(key_lo, key_hi, record, (uint)cell);
-    rc_rng_next_float(rng);
-    rc_rng_next_float(rng);
-    Ray ray;
-    ray.origin = (float4)(origin, 0.0f);
-    ray.direction = (float4)(rc_from_local(&frame, d), INFINITY);
-    return ray;
+    return rc_from_local(&frame, rc_grid_stratum_direction(key_lo, key_hi, record, cell,
+                                                           params->strata_m, params->strata_n));
+}
+
+// The random stream of cell `cell` of record `record` past the jitter words (the light the
+// cell's ray brings back draws from it).
+RC_FUNC RngStream rc_record_cell_stream(const RcParams* params, uint record, int cell) {
+    uint key_lo, key_hi;
+    rc_record_key(params, &key_lo, &key_hi);
+    RngStream rng = rc_rng_stream(key_lo, key_hi, record, (uint)cell);
+    rc_rng_next_float(&rng);
+    rc_rng_next_float(&rng);
+    return rng;
 }
 
 // Harmonic mean and minimum of a record's hit distances (a miss is infinitely far; the harmonic

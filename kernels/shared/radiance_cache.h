@@ -54,6 +54,7 @@ typedef struct RcQuery {
     float4 origin;    // xyz: where rays leaving the surface start; w: 0
     float4 normal;    // xyz: the shading frame's n (facing the camera ray); w: 0
     float4 tangent;   // xyz: the shading frame's t; w: 0
+    float4 geometric_normal;  // xyz: the surface's own normal (facing the camera ray); w: 0
     float4 outgoing;  // xyz: w_o in the shading frame; w: 0
     float footprint;  // world size of a pixel at the hit
     int material;     // -1: no hit
@@ -114,6 +115,7 @@ RC_SHARED_END
     FIELD(RcQuery, origin)                          \
     FIELD(RcQuery, normal)                          \
     FIELD(RcQuery, tangent)                         \
+    FIELD(RcQuery, geometric_normal)                \
     FIELD(RcQuery, outgoing)                        \
     FIELD(RcQuery, footprint)                       \
     FIELD(RcQuery, material)                        \
@@ -140,8 +142,8 @@ RC_SHARED_END
 static_assert(sizeof(rc::shared::BrdfTableInfo) == 32);
 static_assert(offsetof(rc::shared::BrdfTableInfo, max_error) == 20);
 static_assert(sizeof(rc::shared::BrdfTableParams) == 32);
-static_assert(sizeof(rc::shared::RcQuery) == 96);
-static_assert(offsetof(rc::shared::RcQuery, footprint) == 80);
+static_assert(sizeof(rc::shared::RcQuery) == 112);
+static_assert(offsetof(rc::shared::RcQuery, footprint) == 96);
 static_assert(sizeof(rc::shared::RcGlossySample) == 32);
 static_assert(sizeof(rc::shared::RcParams) == 48);
 #endif

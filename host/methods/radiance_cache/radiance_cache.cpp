@@ -150,23 +150,17 @@ void RadianceCache::add_records(const std::vector<shared::RcQuery>& sites,
     Buffer<unsigned> counters(context_, 1, "rc_record_counters");
     for (size_t begin = 0; begin < sites.size(); begin += batch_limit) {
         const size_t count = std::min(batch_limit, sites.size() - begin);
-        std::vector<shared::Record> records(count);
-        std::vector<shared::float4> origins(count);
-        for (size_t b = 0; b < count; ++b) {
-            const shared::RcQuery& q = sites[begin + b];
-            records[b] = make_record(vec3_of(q.position), vec3_of(q.normal));
-            origins[b] = q.origin;
-        }
-        const Buffer<shared::Record> record_buffer(context_, records, "rc_batch_records");
-        const Buffer<shared::float4> origin_buffer(context_, origins, "rc_batch_origins");
+        const std::vector<shared::RcQuery> batch(sites.begin() + begin,
+                                                 sites.begin() + begin + count);
+        const Buffer<shared::RcQuery> site_buffer(context_, batch, "rc_batch_sites");
         Buffer<shared::float4> cells(context_, count * per_record, "rc_cells");
         Buffer<float> payloads(context_, count * floats, "rc_batch_payloads");
         Buffer<shared::float4> distances(context_, count, "rc_distances");
         shared::RcParams params = record_params();
         params.first_record = static_cast<int>(store_.size());  // streams: record indices
         counters.fill_zero();
-        context_.launch(cells_kernel(diffuse), count * per_record, params, scene, record_buffer,
-                        origin_buffer, diffuse, cells, counters);
+        context_.launch(cells_kernel(diffuse), count * per_record, params, scene, site_buffer,
+                        diffuse, cells, counters);
         context_.launch(project_kernel_, count, params, cells, payloads, distances);
         const std::vector<float> payload = payloads.download();
         const std::vector<shared::float4> distance = distances.download();
@@ -180,7 +174,8 @@ void RadianceCache::add_records(const std::vector<shared::RcQuery>& sites,
             host.r_max = std::max(host.r_min, spacing_bound(options_.max_spacing, q.footprint));
             const std::vector<float> own(payload.begin() + b * floats,
                                          payload.begin() + (b + 1) * floats);
-            store_.insert_bytes(records[b], host, own.data(), floats * sizeof(float),
+            store_.insert_bytes(make_record(vec3_of(q.position), vec3_of(q.normal)), host,
+                                own.data(), floats * sizeof(float),
                                 radiance_radius_limit(own, std::max(order_, 1)));
         }
     }
