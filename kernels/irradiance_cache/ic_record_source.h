@@ -23,8 +23,8 @@ typedef RecordCache RadianceSource;
 RC_FUNC SourceSample rc_source_radiance(const SceneData *scene, const RadianceSource *source,
                                         Ray ray, RngStream *rng, bool count_emission, int bounces,
                                         int max_depth, int rr_depth) {
-    const CachedRadiance c = rc_ic_cached_radiance(scene, source, 0, 0, 0, ray, rng, count_emission, 1,
-                                                   bounces, max_depth, rr_depth);
+    const CachedRadiance c = rc_ic_cached_radiance(scene, source, 0, 0, 0, ray, rng, count_emission,
+                                                   1, bounces, max_depth, rr_depth);
     const SourceSample r = {c.direct + c.indirect, c.distance, c.rays};
     return r;
 }
