@@ -52,9 +52,8 @@ __kernel void rc_select_queries(uint begin, uint end, __global const RcQuery* qu
 // coefficient vectors and their translational gradients (rc_project_cells_with_gradients, SH at
 // params.order) into payloads[b * 9 order^2 ...], and the harmonic mean (x) and minimum (y) of
 // its hit distances into distances[b].
-__kernel void rc_record_project(uint begin, uint end, RcParams params,
-                                __global const float4* cells, __global float* payloads,
-                                __global float4* distances) {
+__kernel void rc_record_project(uint begin, uint end, RcParams params, __global const float4* cells,
+                                __global float* payloads, __global float4* distances) {
     const uint b = begin + (uint)get_global_id(0);
     if (b >= end) {
         return;
@@ -66,8 +65,7 @@ __kernel void rc_record_project(uint begin, uint end, RcParams params,
     float c[3 * RC_SH_MAX_COEFFICIENTS];
     float g[6 * RC_SH_MAX_COEFFICIENTS];
     rc_project_cells_with_gradients(own, params.strata_m, params.strata_n, key_lo, key_hi,
-                                    (uint)params.first_record + b, RC_BASIS_SH, params.order, c,
-                                    g);
+                                    (uint)params.first_record + b, RC_BASIS_SH, params.order, c, g);
     const int count = rc_sh_count(params.order);
     __global float* out = payloads + (size_t)b * 9u * (uint)count;
     for (int k = 0; k < 3 * count; ++k) {
@@ -112,8 +110,7 @@ __kernel void rc_uncovered(uint begin, uint end, RcParams params, RecordGrid gri
 __kernel void rc_glossy_splat(uint begin, uint end, RcParams params, RecordGrid grid,
                               __global const int* cell_start, __global const int* cell_records,
                               __global const Record* records, __global const float* payloads,
-                              __global const RcQuery* queries,
-                              __global const BrdfTableInfo* infos,
+                              __global const RcQuery* queries, __global const BrdfTableInfo* infos,
                               __global const float* table, __global const float* x90,
                               __global RcGlossySample* glossy, __global uint* counters) {
     const uint i = begin + (uint)get_global_id(0);
@@ -137,12 +134,12 @@ __kernel void rc_glossy_splat(uint begin, uint end, RcParams params, RecordGrid 
         uint evaluated = 0;
         for (int k = cell_start[cell]; k < cell_start[cell + 1]; ++k) {
             __global const Record* record = records + cell_records[k];
-            const float w = rc_record_weight(record, q.position.xyz, q.normal.xyz,
-                                             params.accuracy, params.max_weight);
+            const float w = rc_record_weight(record, q.position.xyz, q.normal.xyz, params.accuracy,
+                                             params.max_weight);
             if (w > 0.0f) {
-                const float3 l = rc_covering_reflection(
-                    &params, record, payloads + (size_t)cell_records[k] * stride, &q, order, &frame,
-                    x90, brdf);
+                const float3 l = rc_covering_reflection(&params, record,
+                                                        payloads + (size_t)cell_records[k] * stride,
+                                                        &q, order, &frame, x90, brdf);
                 out.reflected.xyz += w * l;
                 out.weight += w;
                 ++evaluated;

@@ -15,8 +15,9 @@
 // no light, and no neighbour (infinitely far), so a record's radius is not cut to the offset
 // of its rays' origin. counters[0] counts the rays traced.
 __kernel void rc_record_cells(uint begin, uint end, RcParams params, RC_SCENE_PARAMETERS,
-                              __global const RcQuery* sites, RC_RADIANCE_SOURCE_PARAMETERS
-                              __global float4* cells, __global uint* counters) {
+                              __global const RcQuery* sites,
+                              RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
+                              __global uint* counters) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {
         return;
@@ -37,9 +38,9 @@ __kernel void rc_record_cells(uint begin, uint end, RcParams params, RC_SCENE_PA
     Ray ray;
     ray.origin = (float4)(site.origin.xyz, 0.0f);
     ray.direction = (float4)(direction, INFINITY);
-    const SourceSample s = rc_source_radiance(&scene, &source, ray, &rng,
-                                              params.count_emission != 0, 1, params.max_depth,
-                                              params.rr_depth);
+    const SourceSample s =
+        rc_source_radiance(&scene, &source, ray, &rng, params.count_emission != 0, 1,
+                           params.max_depth, params.rr_depth);
     atomic_add(&counters[0], s.rays);
     cells[i] = (float4)(all(isfinite(s.radiance)) ? s.radiance : (float3)(0.0f), s.distance);
 }

@@ -27,8 +27,7 @@ RC_FUNC RcQuery rc_camera_query(const SceneData* scene, const IcParams* params,
                                 const CameraParams* camera, RC_GLOBAL const BrdfTableInfo* infos,
                                 RC_GLOBAL const int* orders, uint pixel, uint s) {
     RcQuery q;
-    q.position = q.origin = q.normal = q.tangent = q.geometric_normal = q.outgoing =
-        (float4)(0.0f);
+    q.position = q.origin = q.normal = q.tangent = q.geometric_normal = q.outgoing = (float4)(0.0f);
     q.footprint = 0.0f;
     q.material = -1;
     q.order = -1;
@@ -139,6 +138,6 @@ RC_FUNC float3 rc_covering_reflection(const RcParams* params, RC_GLOBAL const Re
     float rotation[9];
     rc_frame_rotation(&frame, query_frame, rotation);
     const float3 offset = q->position.xyz - record->position.xyz;
-    return rc_record_reflection(c, g, order, dot(offset, frame.t), dot(offset, frame.b),
-                                rotation, x90, rotated);
+    return rc_record_reflection(c, g, order, dot(offset, frame.t), dot(offset, frame.b), rotation,
+                                x90, rotated);
 }

@@ -46,20 +46,19 @@ typedef struct BrdfTableParams {
     int pad2;
 } BrdfTableParams;
 
-
 // A camera sample as radiance caching sees it (rc_glossy_queries): the camera ray's hit with its
 // shading frame and outgoing direction, and the order its material's BRDF table gives there.
 typedef struct RcQuery {
-    float4 position;  // xyz: the hit; w: 0
-    float4 origin;    // xyz: where rays leaving the surface start; w: 0
-    float4 normal;    // xyz: the shading frame's n (facing the camera ray); w: 0
-    float4 tangent;   // xyz: the shading frame's t; w: 0
+    float4 position;          // xyz: the hit; w: 0
+    float4 origin;            // xyz: where rays leaving the surface start; w: 0
+    float4 normal;            // xyz: the shading frame's n (facing the camera ray); w: 0
+    float4 tangent;           // xyz: the shading frame's t; w: 0
     float4 geometric_normal;  // xyz: the surface's own normal (facing the camera ray); w: 0
-    float4 outgoing;  // xyz: w_o in the shading frame; w: 0
-    float footprint;  // world size of a pixel at the hit
-    int material;     // -1: no hit
-    int order;        // the material's order where its table represents w_o's lobe; 0: Monte
-                      // Carlo; -1: no specular lobe or no hit (radiance caching does not serve it)
+    float4 outgoing;          // xyz: w_o in the shading frame; w: 0
+    float footprint;          // world size of a pixel at the hit
+    int material;             // -1: no hit
+    int order;  // the material's order where its table represents w_o's lobe; 0: Monte
+                // Carlo; -1: no specular lobe or no hit (radiance caching does not serve it)
     int pad0;
 } RcQuery;
 
@@ -82,10 +81,10 @@ typedef struct RcParams {
     int first_record;  // stream index of the launch's first record
     uint seed_lo;      // the 64-bit seed
     uint seed_hi;
-    float accuracy;    // a: records influence points within a R
-    float max_weight;  // the largest weight (near a record's centre)
-    int max_depth;     // bounces of a path
-    int rr_depth;      // the depth where Russian roulette starts
+    float accuracy;      // a: records influence points within a R
+    float max_weight;    // the largest weight (near a record's centre)
+    int max_depth;       // bounces of a path
+    int rr_depth;        // the depth where Russian roulette starts
     int count_emission;  // 1 to count emission the hemisphere rays see (tests)
     int pad0;
 } RcParams;
