@@ -246,8 +246,8 @@ TEST(RadianceCacheMethod, SharpLobesFallBackWithoutLosingToMonteCarlo) {
             "Phong %3d: order %d, %zu records, fallback %.2f; sphere (%zu pixels) "
             "indirect relMSE rc %.3g, Monte Carlo lobe %.3g\n",
             exponent, r.stats.order, r.stats.records,
-            r.stats.glossy_samples > 0
-                ? static_cast<double>(r.stats.fallback_samples) / r.stats.glossy_samples
+            r.stats.placement.glossy_samples > 0
+                ? static_cast<double>(r.stats.placement.fallback_samples) / r.stats.placement.glossy_samples
                 : 0.0,
             pixels, rc_error, mc_error);
         ASSERT_GT(pixels, 50u);
@@ -303,7 +303,7 @@ TEST(RadianceCacheMethod, CacheFilesRoundTripTheRadianceRecords) {
     const RcRender second = render_rc(device, ic, rc);
     EXPECT_EQ(second.stats.loaded_records, first.stats.records);
     EXPECT_EQ(second.stats.records, first.stats.records);
-    EXPECT_TRUE(second.stats.passes.empty());
+    EXPECT_TRUE(second.stats.placement.passes.empty());
     EXPECT_TRUE(bitwise_equal(select_layers(first.image, {"glossy-indirect"}),
                               select_layers(second.image, {"glossy-indirect"})));
     rc.order = 4;

@@ -3,7 +3,11 @@
 // glossy buffer, one RcGlossySample per camera sample (kernels/shared/radiance_cache.h).
 #pragma once
 
+#include <vector>
+
 #include "device/buffer.h"
+#include "image/film.h"
+#include "shared/film.h"
 #include "methods/radiance_source.h"
 #include "shared/radiance_cache.h"
 #include "shared/types.h"
@@ -20,6 +24,9 @@ class GlossyCache {
     virtual Buffer<shared::RcGlossySample> glossy_samples(const shared::IcParams& params,
                                                           const shared::CameraParams& camera,
                                                           const RadianceSource& diffuse) = 0;
+    // The cache's own layers of the render pass's film (kernels/shared/film.h) beside
+    // glossy-indirect.
+    virtual std::vector<FilmLayer> layers() const = 0;
 };
 
 }  // namespace rc

@@ -11,6 +11,7 @@
     X(path_tracer_method)      \
     X(irradiance_cache_method) \
     X(radiance_cache_method)   \
+    X(sdrc_method)             \
     X(ivg_method)              \
     X(ivg_gather_method)       \
     X(normals_method)

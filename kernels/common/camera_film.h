@@ -7,13 +7,14 @@
 
 // What one camera sample gives the film: its light, the method's own layer
 // (RC_CACHED_FILM_LAYER) and, where a method caches the glossy lobes (radiance caching), their
-// indirect light and the order it used (RC_CACHED_FILM_GLOSSY, RC_CACHED_FILM_ORDER; 0 for the
-// others).
+// indirect light, the order it used and the fraction of its directions a cache answered
+// (RC_CACHED_FILM_GLOSSY, RC_CACHED_FILM_ORDER, RC_CACHED_FILM_HITS; 0 for the others).
 typedef struct FilmSample {
     CachedRadiance light;
     float3 layer;
     float3 glossy;
     float order;
+    float hits;  // RcGlossySample.hits
 } FilmSample;
 
 // The method's side of rc_shade_pixel: a render pass defines struct PixelShader (what its camera
@@ -68,6 +69,7 @@ RC_FUNC void rc_shade_pixel(const PixelShader* shader, uint spp, uint pixel, RC_
         sums[RC_CACHED_FILM_LAYER] += c.layer;
         sums[RC_CACHED_FILM_GLOSSY] += c.glossy;
         sums[RC_CACHED_FILM_ORDER].x += c.order;
+        sums[RC_CACHED_FILM_HITS].x += c.hits;
     }
     atomic_add(&counters[0], rays);
     const float inv = finite > 0 ? 1.0f / (float)finite : 0.0f;

@@ -90,6 +90,7 @@ RC_FUNC FilmSample rc_shade_camera_sample(const PixelShader* shader, uint pixel,
     FilmSample c;
     c.glossy = (float3)(0.0f);
     c.order = 0.0f;
+    c.hits = 0.0f;
     if (shader->grid->params.gather_rays > 0) {
         c.light = rc_ivg_gather(shader->scene, shader->grid, shader->camera, pixel, s, &c.layer);
     } else {

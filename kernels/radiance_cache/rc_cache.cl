@@ -17,37 +17,6 @@ __kernel void rc_glossy_queries(uint begin, uint end, IcParams params, CameraPar
     queries[i] = rc_camera_query(&scene, &params, &camera, infos, orders, i / spp, i % spp);
 }
 
-// Item i: query i appended to `served` (counted in counts[0], in any order) when its order is
-// positive (the records serve it); counts[1] counts the queries with a specular lobe radiance
-// caching serves (order >= 0), counts[2] those left to Monte Carlo (order 0).
-__kernel void rc_served_queries(uint begin, uint end, __global const RcQuery* queries,
-                                __global uint* served, __global uint* counts) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
-    const int order = queries[i].order;
-    if (order >= 0) {
-        atomic_inc(&counts[1]);
-    }
-    if (order == 0) {
-        atomic_inc(&counts[2]);
-    }
-    if (order > 0) {
-        served[atomic_inc(&counts[0])] = i;
-    }
-}
-
-// Item k: queries[indices[k]] into selected[k].
-__kernel void rc_select_queries(uint begin, uint end, __global const RcQuery* queries,
-                                __global const uint* indices, __global RcQuery* selected) {
-    const uint k = begin + (uint)get_global_id(0);
-    if (k >= end) {
-        return;
-    }
-    selected[k] = queries[indices[k]];
-}
-
 // Item b: record b of a batch (stream params.first_record + b) from its M N cells: its
 // coefficient vectors and their translational gradients (rc_project_cells_with_gradients, SH at
 // params.order) into payloads[b * 9 order^2 ...], and the harmonic mean (x) and minimum (y) of
@@ -77,31 +46,6 @@ __kernel void rc_record_project(uint begin, uint end, RcParams params, __global 
     distances[b] = (float4)(rc_record_distances(own, per_record), 0.0f, 0.0f);
 }
 
-// Item q: query candidates[q]: appended to uncovered (counted in uncovered_count[0], in any order)
-// when no record the world-space grid lists at it weighs it positively (TVCG §4.4: S is empty, a
-// new record is needed).
-__kernel void rc_uncovered(uint begin, uint end, RcParams params, RecordGrid grid,
-                           __global const int* cell_start, __global const int* cell_records,
-                           __global const Record* records, __global const RcQuery* queries,
-                           __global const uint* candidates, __global uint* uncovered,
-                           __global uint* uncovered_count) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
-    const RcQuery query = queries[candidates[q]];
-    const int cell = rc_ic_grid_cell(&grid, query.position.xyz);
-    if (cell >= 0) {
-        for (int i = cell_start[cell]; i < cell_start[cell + 1]; ++i) {
-            if (rc_record_weight(records + cell_records[i], query.position.xyz, query.normal.xyz,
-                                 params.accuracy, params.max_weight) > 0.0f) {
-                return;
-            }
-        }
-    }
-    uncovered[atomic_inc(&uncovered_count[0])] = candidates[q];
-}
-
 // Item i: the glossy buffer's entry of camera sample i (RcGlossySample): for a query with a
 // positive order, sum w <D(R)(lambda + dx dlambda/dx + dy dlambda/dy), b(w_o)> and sum w over the
 // records the world-space grid lists at it, in list order (TVCG §4.4 eq. 12, §4.5 eq. 13; the
@@ -122,7 +66,8 @@ __kernel void rc_glossy_splat(uint begin, uint end, RcParams params, RecordGrid 
     out.reflected = (float4)(0.0f);
     out.weight = 0.0f;
     out.order = q.order;
-    out.pad0 = out.pad1 = 0;
+    out.hits = 0.0f;
+    out.pad0 = 0;
     const int cell = q.order > 0 ? rc_ic_grid_cell(&grid, q.position.xyz) : -1;
     if (cell >= 0) {
         const BrdfTableInfo info = infos[q.material];

@@ -6,6 +6,7 @@
 
 #include "common/record_weight.h"
 #include "irradiance_cache/ic_shading.h"
+#include "glossy/glossy_query.h"
 #include "radiance_cache/rc_brdf_table.h"
 #include "radiance_cache/rc_gradients.h"
 #include "radiance_cache/rc_interpolation.h"
@@ -18,43 +19,20 @@ RC_FUNC void rc_record_key(const RcParams* params, uint* key_lo, uint* key_hi) {
     *key_hi = params->seed_hi;
 }
 
-// The camera sample s of a pixel as radiance caching sees it: the hit of the same camera ray the
-// irradiance cache's passes trace (rc_ic_camera_ray), its shading frame and w_o, and the order
-// its material's BRDF table gives for w_o (TVCG §4.1: the material's order, or 0 where w_o's lobe
-// needs more than n_max, Monte Carlo; -1 where there is no specular lobe to cache, or no bounce
-// left for indirect light).
+// The camera sample s of a pixel as radiance caching sees it (rc_glossy_camera_query) with the
+// order its material's BRDF table gives for w_o (TVCG §4.1: the material's order, or 0 where
+// w_o's lobe needs more than n_max, Monte Carlo; -1 where there is no specular lobe to cache, or
+// no bounce left for indirect light).
 RC_FUNC RcQuery rc_camera_query(const SceneData* scene, const IcParams* params,
                                 const CameraParams* camera, RC_GLOBAL const BrdfTableInfo* infos,
                                 RC_GLOBAL const int* orders, uint pixel, uint s) {
-    RcQuery q;
-    q.position = q.origin = q.normal = q.tangent = q.geometric_normal = q.outgoing = (float4)(0.0f);
-    q.footprint = 0.0f;
-    q.material = -1;
-    q.order = -1;
-    q.pad0 = 0;
-    RngStream rng;
-    float x, y;
-    const Ray ray = rc_ic_camera_ray(params, camera, pixel, s, &rng, &x, &y);
-    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
-    if (hit.primitive == RC_NO_HIT) {
+    bool glossy;
+    RcQuery q = rc_glossy_camera_query(scene, params, camera, pixel, s, &glossy);
+    if (!glossy) {
         return q;
     }
-    const SurfacePoint sp = rc_surface_point(scene, ray, hit);
-    const SurfaceMaterial material = rc_surface_material(scene, &sp);
-    const float3 wo = rc_to_local(&sp.shading, -ray.direction.xyz);
-    q.position = (float4)(sp.position, 0.0f);
-    q.origin = (float4)(sp.origin, 0.0f);
-    q.normal = (float4)(sp.shading.n, 0.0f);
-    q.tangent = (float4)(sp.shading.t, 0.0f);
-    q.geometric_normal = (float4)(sp.geometric_normal, 0.0f);
-    q.outgoing = (float4)(wo, 0.0f);
-    q.footprint = rc_ic_pixel_footprint(camera, x, y, hit.t);
-    q.material = sp.material;
-    if (material.kind == RC_MATERIAL_DIFFUSE || rc_is_black(material.specular) ||
-        params->max_depth < 2) {
-        return q;
-    }
-    const BrdfTableInfo info = infos[sp.material];
+    const BrdfTableInfo info = infos[q.material];
+    const float3 wo = q.outgoing.xyz;
     // The material's order where the table represents w_o's lobe (TVCG §4.1-4.2: one order
     // per material, the lowest whose error stays below the bound over its represented
     // directions).
@@ -62,15 +40,6 @@ RC_FUNC RcQuery rc_camera_query(const SceneData* scene, const IcParams* params,
         info.first_texel >= 0 && wo.z > 0.0f && rc_brdf_table_order(orders, &info, wo) > 0;
     q.order = represented ? info.order : 0;
     return q;
-}
-
-// The frame a query's BRDF coefficients are expressed in: its shading frame.
-RC_FUNC Frame rc_query_frame(const RcQuery* q) {
-    Frame f;
-    f.n = q->normal.xyz;
-    f.t = q->tangent.xyz;
-    f.b = cross(f.n, f.t);
-    return f;
 }
 
 // The direction of cell `cell` of record `record` in world space: rc_grid_stratum_direction in

@@ -30,4 +30,7 @@
 // x: the mean over the samples of the spherical-harmonic order their glossy light used (0: Monte
 // Carlo or no glossy lobe; radiance caching's rc-order layer).
 #define RC_CACHED_FILM_ORDER 8
-#define RC_CACHED_FILM_SLOTS 9
+// x: the mean over the samples of the fraction of their glossy directions answered from a cache
+// without a ray (SDRC's sdrc-hits layer; 0 elsewhere).
+#define RC_CACHED_FILM_HITS 9
+#define RC_CACHED_FILM_SLOTS 10

@@ -62,15 +62,17 @@ typedef struct RcQuery {
     int pad0;
 } RcQuery;
 
-// A camera sample's glossy indirect light from the radiance records (rc_glossy_splat, read by
-// the render pass): sum over covering records of w <rotate(lambda + grad), b(w_o)> with unit
-// specular reflectance, and sum w (0: no record covers the sample).
+// A camera sample's glossy indirect light from a glossy cache (read by the render pass), with
+// unit specular reflectance: radiance caching's rc_glossy_splat writes the sum over covering
+// records of w <rotate(lambda + grad), b(w_o)> and sum w (0: no record covers the sample); SDRC's
+// interpolation the lobe's estimate with weight 1.
 typedef struct RcGlossySample {
     float4 reflected;  // xyz: sum w L_o; w: 0
     float weight;      // sum w
     int order;         // RcQuery.order
+    float hits;        // SDRC: fraction of the sample's directions answered from the L-trees
+                       // (the sdrc-hits layer); 0 for radiance caching
     int pad0;
-    int pad1;
 } RcGlossySample;
 
 // Parameters of radiance caching's record and splat kernels.
@@ -123,6 +125,7 @@ RC_SHARED_END
     FIELD(RcGlossySample, reflected)                \
     FIELD(RcGlossySample, weight)                   \
     FIELD(RcGlossySample, order)                    \
+    FIELD(RcGlossySample, hits)                     \
     STRUCT(RcParams)                                \
     FIELD(RcParams, order)                          \
     FIELD(RcParams, strata_m)                       \

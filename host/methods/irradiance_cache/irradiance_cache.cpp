@@ -529,7 +529,9 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     }
     if (options.glossy != nullptr) {
         layers.push_back({"glossy-indirect", RC_CACHED_FILM_GLOSSY});
-        layers.push_back({"rc-order", RC_CACHED_FILM_ORDER, 1});
+        for (const FilmLayer& layer : options.glossy->layers()) {
+            layers.push_back(layer);
+        }
     }
     Image image = unpack_film(sums, RC_CACHED_FILM_SLOTS, width_, height_, layers);
     if (stats != nullptr) {

@@ -55,7 +55,7 @@ struct IrradianceCacheOptions {
     const RadianceSource* source = nullptr;
     // Where the render pass reads the specular lobes' indirect light at camera samples (radiance
     // caching: --method rc) instead of path tracing them; its hemisphere rays read this cache's
-    // first level. Adds the layers glossy-indirect and rc-order.
+    // first level. Adds the layer glossy-indirect and the cache's own layers.
     GlossyCache* glossy = nullptr;
 };
 

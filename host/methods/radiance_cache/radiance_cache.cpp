@@ -2,11 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 
 #include "methods/radiance_cache/radiance_records.h"
 #include "methods/records/cache_file.h"
-#include "methods/records/candidate_thinning.h"
 #include "methods/records/record_grid.h"
 #include "methods/scene_arguments.h"
 #include "shared/sh_rotation_zxz.h"
@@ -96,11 +94,9 @@ RadianceCache::RadianceCache(const FrameScene& frame, const RadianceCacheOptions
       order_(records_order(tables_)),
       store_(radiance_store(options.accuracy, std::max(order_, 1))),
       queries_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_queries")),
-      served_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_served_queries")),
-      select_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_select_queries")),
       project_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_record_project")),
-      uncovered_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_uncovered")),
-      splat_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_splat")) {
+      splat_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_splat")),
+      placement_(frame.context) {
     radiance_strata(options.rays, &strata_m_, &strata_n_);
     stats_.materials = tables_.summaries();
     stats_.order = order_;
@@ -181,116 +177,23 @@ void RadianceCache::add_records(const std::vector<shared::RcQuery>& sites,
     }
 }
 
-std::vector<uint32_t> RadianceCache::uncovered(const Buffer<shared::RcQuery>& queries,
-                                               const std::vector<uint32_t>& candidates) {
-    const DeviceRadianceRecords records(context_, store_, std::max(order_, 1));
-    const Buffer<unsigned> candidate_buffer(context_, candidates, "rc_candidates");
-    Buffer<unsigned> out(context_, candidates.size(), "rc_uncovered");
-    Buffer<unsigned> count(context_, 1, "rc_uncovered_count");
-    count.fill_zero();
-    context_.launch(uncovered_kernel_, candidates.size(), record_params(), records.grid,
-                    records.cell_start, records.cell_records, records.records, queries,
-                    candidate_buffer, out, count);
-    std::vector<uint32_t> indices(count.download()[0]);
-    if (!indices.empty()) {
-        out.read(indices.data(), indices.size() * sizeof(uint32_t));
-    }
-    std::sort(indices.begin(), indices.end());  // appended in any order
-    return indices;
-}
-
-void RadianceCache::cover(const Buffer<shared::RcQuery>& device,
-                          const std::vector<uint32_t>& candidates,
-                          const std::function<const shared::RcQuery&(uint32_t)>& copy, int stride,
-                          bool until_covered, const RadianceSource& diffuse) {
-    if (candidates.empty()) {
-        return;
-    }
-    // A record covers its own position, so passes until all are covered end.
-    for (int pass = 0; until_covered || pass < 1; ++pass) {
-        auto start = SteadyClock::now();
-        const std::vector<uint32_t> open = uncovered(device, candidates);
-        std::vector<glm::vec3> positions(open.size());
-        std::vector<glm::vec3> normals(open.size());
-        std::vector<float> min_influence(open.size());
-        for (size_t c = 0; c < open.size(); ++c) {
-            const shared::RcQuery& q = copy(open[c]);
-            positions[c] = vec3_of(q.position);
-            normals[c] = vec3_of(q.normal);
-            min_influence[c] = options_.accuracy * spacing_bound(options_.min_spacing, q.footprint);
-        }
-        std::vector<shared::RcQuery> sites;
-        for (size_t c : thin_candidates(positions, normals, min_influence)) {
-            sites.push_back(copy(open[c]));
-        }
-        stats_.placement_seconds += seconds_since(start);
-        if (sites.empty()) {
-            break;
-        }
-        stats_.passes.push_back({0, stride, candidates.size(), open.size(), sites.size()});
-        start = SteadyClock::now();
-        add_records(sites, diffuse);
-        stats_.record_seconds += seconds_since(start);
-    }
-}
-
-void RadianceCache::served_queries(const Buffer<shared::RcQuery>& queries,
-                                   std::vector<uint32_t>* served,
-                                   std::vector<shared::RcQuery>* copies) {
-    Buffer<unsigned> indices(context_, queries.size(), "rc_served");
-    Buffer<unsigned> counts(context_, 3, "rc_served_counts");
-    counts.fill_zero();
-    context_.launch(served_kernel_, queries.size(), queries, indices, counts);
-    const std::vector<unsigned> count = counts.download();
-    stats_.glossy_samples = count[1];
-    stats_.fallback_samples = count[2];
-    served->assign(count[0], 0);
-    copies->clear();
-    if (served->empty()) {
-        return;
-    }
-    indices.read(served->data(), served->size() * sizeof(uint32_t));
-    std::sort(served->begin(), served->end());  // appended in any order
-    const Buffer<unsigned> sorted(context_, *served, "rc_served_sorted");
-    Buffer<shared::RcQuery> selected(context_, served->size(), "rc_served_queries");
-    context_.launch(select_kernel_, served->size(), queries, sorted, selected);
-    *copies = selected.download();
-}
-
 Buffer<shared::RcGlossySample> RadianceCache::glossy_samples(const shared::IcParams& params,
                                                              const shared::CameraParams& camera,
                                                              const RadianceSource& diffuse) {
     const size_t samples =
         static_cast<size_t>(params.width) * params.height * static_cast<size_t>(params.camera_spp);
-    // 1. The camera samples as radiance caching sees them; the host keeps those of positive
-    // order.
+    // 1. The camera samples as radiance caching sees them.
     auto start = SteadyClock::now();
     const Buffer<shared::RcQuery> device(context_, samples, "rc_queries");
     context_.launch(queries_kernel_, samples, params, camera, SceneArguments(bvh_, device_scene_),
                     tables_.device_infos(), tables_.orders(), device);
-    std::vector<uint32_t> served;
-    std::vector<shared::RcQuery> copies;
-    served_queries(device, &served, &copies);
     stats_.query_seconds = seconds_since(start);
-    // 2. Placement, coarse to fine as irradiance caching's: the first camera sample of every
-    // stride-th pixel of every stride-th row, then every sample until all are covered.
-    const auto copy = [&](uint32_t index) -> const shared::RcQuery& {
-        return copies[static_cast<size_t>(std::lower_bound(served.begin(), served.end(), index) -
-                                          served.begin())];
-    };
-    const uint32_t spp = static_cast<uint32_t>(params.camera_spp);
-    const uint32_t width = static_cast<uint32_t>(params.width);
-    for (int stride : {16, 8, 4, 2, 1}) {
-        std::vector<uint32_t> candidates;
-        for (uint32_t i : served) {
-            const uint32_t pixel = i / spp;
-            const bool on_grid = (pixel % width) % stride == 0 && (pixel / width) % stride == 0;
-            if (on_grid && (stride == 1 || i % spp == 0)) {
-                candidates.push_back(i);
-            }
-        }
-        cover(device, candidates, copy, stride, stride == 1, diffuse);
-    }
+    // 2. Placement, coarse to fine as irradiance caching's (GlossyPlacement).
+    placement_.place(
+        device, store_, static_cast<uint32_t>(params.width),
+        static_cast<uint32_t>(params.camera_spp), options_.min_spacing,
+        [&](const std::vector<shared::RcQuery>& sites) { add_records(sites, diffuse); },
+        &stats_.placement);
     stats_.records = store_.size();
     if (!options_.cache_out.empty()) {
         write_cache_file(options_.cache_out,

@@ -10,13 +10,13 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "methods/frame_scene.h"
 #include "methods/glossy_cache.h"
+#include "methods/glossy_placement.h"
 #include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/radiance_cache/brdf_tables.h"
 #include "methods/records/record_store.h"
@@ -43,17 +43,13 @@ struct RadianceCacheStats {
     int order = 0;                            // of the records (0: no glossy material)
     int strata_m = 0;
     int strata_n = 0;
-    std::vector<PlacementPass> passes;  // level 0 only
-    size_t records = 0;                 // at the end, loaded ones included
-    size_t loaded_records = 0;          // from --rc-cache-in
-    size_t glossy_samples = 0;          // camera samples on a specular lobe radiance caching serves
-    size_t fallback_samples = 0;        // of those, left to Monte Carlo (order 0)
+    GlossyPlacementStats placement;  // record_seconds: hemisphere rays and projection
+    size_t records = 0;              // at the end, loaded ones included
+    size_t loaded_records = 0;       // from --rc-cache-in
     uint64_t record_rays = 0;
     uint64_t reflections = 0;  // record reflections evaluated (one rotation each)
     double table_seconds = 0.0;
     double query_seconds = 0.0;
-    double placement_seconds = 0.0;  // coverage tests and candidate thinning
-    double record_seconds = 0.0;     // hemisphere rays and projection
     double splat_seconds = 0.0;      // the glossy buffer
 };
 
@@ -72,6 +68,9 @@ class RadianceCache final : public GlossyCache, private FrameBound {
                                                   const shared::CameraParams& camera,
                                                   const RadianceSource& diffuse) override;
     // (Saves the records to options.cache_out at the end.)
+    std::vector<FilmLayer> layers() const override {
+        return {{"rc-order", RC_CACHED_FILM_ORDER, 1}};
+    }
 
     const RecordStore& store() const { return store_; }
     const RadianceCacheStats& stats() const { return stats_; }
@@ -80,14 +79,6 @@ class RadianceCache final : public GlossyCache, private FrameBound {
     shared::RcParams record_params() const;
     // Records at `sites`, numbered from the store's size, inserted.
     void add_records(const std::vector<shared::RcQuery>& sites, const RadianceSource& diffuse);
-    // The indices among `candidates` (into the device queries) that no record covers, ascending.
-    std::vector<uint32_t> uncovered(const Buffer<shared::RcQuery>& queries,
-                                    const std::vector<uint32_t>& candidates);
-    // Places records until the candidates are covered (or one pass at coarse strides).
-    // `candidates`: indices into the device queries, ascending; `copy(i)` a query's host copy.
-    void cover(const Buffer<shared::RcQuery>& device, const std::vector<uint32_t>& candidates,
-               const std::function<const shared::RcQuery&(uint32_t)>& copy, int stride,
-               bool until_covered, const RadianceSource& diffuse);
     Kernel& cells_kernel(const RadianceSource& source);
 
     RadianceCacheOptions options_;
@@ -97,17 +88,10 @@ class RadianceCache final : public GlossyCache, private FrameBound {
     int strata_m_ = 1;
     int strata_n_ = 1;
     RecordStore store_;
-    // The queries of positive order (`served`, ascending indices into the device queries) and
-    // their copies on the host; the glossy and fallback counts into stats_.
-    void served_queries(const Buffer<shared::RcQuery>& queries, std::vector<uint32_t>* served,
-                        std::vector<shared::RcQuery>* copies);
-
     Kernel queries_kernel_;
-    Kernel served_kernel_;
-    Kernel select_kernel_;
     Kernel project_kernel_;
-    Kernel uncovered_kernel_;
     Kernel splat_kernel_;
+    GlossyPlacement placement_;
     std::map<std::string, Kernel> cells_kernels_;  // by build options
 };
 

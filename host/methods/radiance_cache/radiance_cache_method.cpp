@@ -116,7 +116,7 @@ class RadianceCaching final : public Method {
                                  {"fallback_fraction", m.fallback_fraction}});
         }
         nlohmann::json passes = nlohmann::json::array();
-        for (const PlacementPass& pass : rc.passes) {
+        for (const PlacementPass& pass : rc.placement.passes) {
             passes.push_back({{"stride", pass.stride},
                               {"candidates", pass.candidates},
                               {"uncovered", pass.uncovered},
@@ -129,22 +129,22 @@ class RadianceCaching final : public Method {
             {"strata", {rc.strata_m, rc.strata_n}},
             {"materials", materials},
             {"placement_passes", passes},
-            {"glossy_samples", rc.glossy_samples},
-            {"fallback_samples", rc.fallback_samples},
-            {"fallback_fraction", rc.glossy_samples > 0 ? static_cast<double>(rc.fallback_samples) /
-                                                              static_cast<double>(rc.glossy_samples)
+            {"glossy_samples", rc.placement.glossy_samples},
+            {"fallback_samples", rc.placement.fallback_samples},
+            {"fallback_fraction", rc.placement.glossy_samples > 0 ? static_cast<double>(rc.placement.fallback_samples) /
+                                                              static_cast<double>(rc.placement.glossy_samples)
                                                         : 0.0},
             {"record_rays", rc.record_rays},
             {"reflections", rc.reflections},
             {"coefficients_projected_per_second",
-             rc.record_seconds > 0.0 ? coefficients / rc.record_seconds : 0.0},
+             rc.placement.record_seconds > 0.0 ? coefficients / rc.placement.record_seconds : 0.0},
             {"reflections_per_second",
              rc.splat_seconds > 0.0 ? static_cast<double>(rc.reflections) / rc.splat_seconds : 0.0},
             {"seconds",
              {{"tables", rc.table_seconds},
               {"queries", rc.query_seconds},
-              {"placement", rc.placement_seconds},
-              {"records", rc.record_seconds},
+              {"placement", rc.placement.placement_seconds},
+              {"records", rc.placement.record_seconds},
               {"splatting", rc.splat_seconds}}}};
     }
 

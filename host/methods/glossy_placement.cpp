@@ -1,0 +1,119 @@
+#include "methods/glossy_placement.h"
+
+#include <algorithm>
+
+#include "methods/records/candidate_thinning.h"
+#include "methods/records/record_grid.h"
+#include "util/glm_helpers.h"
+#include "util/timing.h"
+
+namespace rc {
+
+GlossyPlacement::GlossyPlacement(Context& context)
+    : context_(context),
+      served_kernel_(context.kernel("glossy/glossy_placement.cl", "rc_served_queries")),
+      select_kernel_(context.kernel("glossy/glossy_placement.cl", "rc_select_queries")),
+      uncovered_kernel_(context.kernel("glossy/glossy_placement.cl", "rc_uncovered")) {}
+
+void GlossyPlacement::select_served(const Buffer<shared::RcQuery>& queries,
+                                    GlossyPlacementStats* stats) {
+    Buffer<unsigned> indices(context_, queries.size(), "glossy_served");
+    Buffer<unsigned> counts(context_, 3, "glossy_served_counts");
+    counts.fill_zero();
+    context_.launch(served_kernel_, queries.size(), queries, indices, counts);
+    const std::vector<unsigned> count = counts.download();
+    stats->glossy_samples = count[1];
+    stats->fallback_samples = count[2];
+    served_.assign(count[0], 0);
+    copies_.clear();
+    if (served_.empty()) {
+        return;
+    }
+    indices.read(served_.data(), served_.size() * sizeof(uint32_t));
+    std::sort(served_.begin(), served_.end());  // appended in any order
+    const Buffer<unsigned> sorted(context_, served_, "glossy_served_sorted");
+    Buffer<shared::RcQuery> selected(context_, served_.size(), "glossy_served_queries");
+    context_.launch(select_kernel_, served_.size(), queries, sorted, selected);
+    copies_ = selected.download();
+}
+
+const shared::RcQuery& GlossyPlacement::copy(uint32_t index) const {
+    return copies_[static_cast<size_t>(std::lower_bound(served_.begin(), served_.end(), index) -
+                                       served_.begin())];
+}
+
+std::vector<uint32_t> GlossyPlacement::uncovered(const Buffer<shared::RcQuery>& queries,
+                                                 const RecordStore& store,
+                                                 const std::vector<uint32_t>& candidates) {
+    const RecordGridData data = build_record_grid(store.records(), store.accuracy());
+    const Buffer<shared::Record> records(context_, store.records(), "glossy_records");
+    const Buffer<int> cell_start(context_, data.cell_start, "glossy_cell_start");
+    const Buffer<int> cell_records(context_, data.cell_records, "glossy_cell_records");
+    const Buffer<unsigned> candidate_buffer(context_, candidates, "glossy_candidates");
+    Buffer<unsigned> out(context_, candidates.size(), "glossy_uncovered");
+    Buffer<unsigned> count(context_, 1, "glossy_uncovered_count");
+    count.fill_zero();
+    context_.launch(uncovered_kernel_, candidates.size(), store.accuracy(),
+                    kIrradianceCacheMaxWeight, data.grid, cell_start, cell_records, records,
+                    queries, candidate_buffer, out, count);
+    std::vector<uint32_t> indices(count.download()[0]);
+    if (!indices.empty()) {
+        out.read(indices.data(), indices.size() * sizeof(uint32_t));
+    }
+    std::sort(indices.begin(), indices.end());  // appended in any order
+    return indices;
+}
+
+void GlossyPlacement::cover(const Buffer<shared::RcQuery>& queries, const RecordStore& store,
+                            const std::vector<uint32_t>& candidates, int stride,
+                            bool until_covered, Spacing min_spacing, const AddRecords& add_records,
+                            GlossyPlacementStats* stats) {
+    if (candidates.empty()) {
+        return;
+    }
+    // A record covers its own position, so passes until all are covered end.
+    for (int pass = 0; until_covered || pass < 1; ++pass) {
+        auto start = SteadyClock::now();
+        const std::vector<uint32_t> open = uncovered(queries, store, candidates);
+        std::vector<glm::vec3> positions(open.size());
+        std::vector<glm::vec3> normals(open.size());
+        std::vector<float> min_influence(open.size());
+        for (size_t c = 0; c < open.size(); ++c) {
+            const shared::RcQuery& q = copy(open[c]);
+            positions[c] = vec3_of(q.position);
+            normals[c] = vec3_of(q.normal);
+            min_influence[c] = store.accuracy() * spacing_bound(min_spacing, q.footprint);
+        }
+        std::vector<shared::RcQuery> sites;
+        for (size_t c : thin_candidates(positions, normals, min_influence)) {
+            sites.push_back(copy(open[c]));
+        }
+        stats->placement_seconds += seconds_since(start);
+        if (sites.empty()) {
+            break;
+        }
+        stats->passes.push_back({0, stride, candidates.size(), open.size(), sites.size()});
+        start = SteadyClock::now();
+        add_records(sites);
+        stats->record_seconds += seconds_since(start);
+    }
+}
+
+void GlossyPlacement::place(const Buffer<shared::RcQuery>& queries, const RecordStore& store,
+                            uint32_t width, uint32_t spp, Spacing min_spacing,
+                            const AddRecords& add_records, GlossyPlacementStats* stats) {
+    select_served(queries, stats);
+    for (int stride : {16, 8, 4, 2, 1}) {
+        std::vector<uint32_t> candidates;
+        for (uint32_t i : served_) {
+            const uint32_t pixel = i / spp;
+            const bool on_grid = (pixel % width) % stride == 0 && (pixel / width) % stride == 0;
+            if (on_grid && (stride == 1 || i % spp == 0)) {
+                candidates.push_back(i);
+            }
+        }
+        cover(queries, store, candidates, stride, stride == 1, min_spacing, add_records, stats);
+    }
+}
+
+}  // namespace rc

@@ -1,0 +1,110 @@
+// Spatial directional radiance caching on the device (DESIGN.md §6.5; Gassenbauer, Křivánek and
+// Bouatouch, "Spatial Directional Radiance Caching", EGSR 2009, "SDRC" below; `radcache render
+// --method sdrc`): the glossy lobes' cache beside irradiance caching's diffuse records. Per
+// frame: the camera samples on a specular lobe; records placed coarse to fine where those samples
+// are not covered (GlossyPlacement), each N directions importance-sampled from its site's lobe,
+// traced, kept as an L-tree (a kd-tree of quantised paraboloid-map positions and RGBE radiance,
+// built on the host); then the interpolation in rounds (strides 16, 8, 4, 2, 1 of the image, as
+// the placement): every camera sample of the round draws M lobe directions and range-queries the
+// covering records' L-trees; the directions no L-tree answers are traced from a contributing
+// record and inserted into its L-tree at the end of the round, so the next round finds them. The
+// result is the glossy buffer irradiance caching's render pass reads. Deterministic whatever the
+// batch, chunk or work-group size: the trees change only between rounds, in sample order.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "methods/frame_scene.h"
+#include "methods/glossy_cache.h"
+#include "methods/glossy_placement.h"
+#include "methods/irradiance_cache/irradiance_cache.h"
+#include "methods/records/record_store.h"
+#include "methods/sdrc/ltree.h"
+#include "shared/sdrc.h"
+
+namespace rc {
+
+struct SdrcOptions {
+    int samples = 0;          // N, directions of a new record; 0: auto, 12 M spp (SDRC §4.3)
+    int interp = 1;           // M, directions per camera sample (SDRC §4.4)
+    float max_radius = 0.15f;  // r_max in D (SDRC §4.4)
+    double memory_mib = 4096.0;  // cap on the L-trees' nodes
+    float accuracy = 0.35f;      // a (shared with irradiance caching's --accuracy)
+    Spacing min_spacing{8.0f, false};
+    Spacing max_spacing{64.0f, false};
+    uint64_t seed = 0;
+    int max_depth = 64;
+    int rr_depth = 3;
+    bool count_emission = false;  // count emitters the rays see (tests)
+};
+
+// Directions of a new record for these options at `spp` camera samples per pixel: N if given,
+// else 12 M spp (SDRC §4.3: "N ≈ 12M", M the directions a shading point draws; here a pixel's
+// M spp), within [64, 8192].
+int sdrc_record_samples(const SdrcOptions& options, int spp);
+
+// Samples an L-tree's buffer holds before the tree is rebuilt over them (SDRC §4.4).
+inline constexpr size_t kLTreeBufferCapacity = 32;
+
+struct SdrcStats {
+    GlossyPlacementStats placement;  // record_seconds: record rays and L-tree builds
+    int samples = 0;                 // N
+    size_t records = 0;
+    uint64_t ltree_nodes = 0;  // at the end, trees and buffers
+    uint64_t record_rays = 0;
+    uint64_t miss_rays = 0;
+    uint64_t directions = 0;   // interpolation directions drawn (M per served camera sample)
+    uint64_t answered = 0;     // of those, answered from the L-trees
+    uint64_t misses = 0;       // traced: inserted into an L-tree, or from the camera sample
+    uint64_t unstored = 0;     // of the misses, no record could take them (traced from the sample)
+    size_t rebuilds = 0;
+    double query_seconds = 0.0;
+    double tree_build_seconds = 0.0;     // the host's L-tree builds (in record_seconds) and rebuilds
+    double interpolation_seconds = 0.0;  // range queries, miss rays and insertions
+};
+
+class SdrcCache final : public GlossyCache, private FrameBound {
+   public:
+    SdrcCache(const FrameScene& frame, const SdrcOptions& options);
+
+    Buffer<shared::RcGlossySample> glossy_samples(const shared::IcParams& params,
+                                                  const shared::CameraParams& camera,
+                                                  const RadianceSource& diffuse) override;
+    std::vector<FilmLayer> layers() const override {
+        return {{"sdrc-hits", RC_CACHED_FILM_HITS, 1}};
+    }
+
+    const RecordStore& store() const { return store_; }
+    const std::vector<LTree>& trees() const { return trees_; }
+    const SdrcStats& stats() const { return stats_; }
+
+   private:
+    shared::SdrcParams kernel_params(const shared::IcParams& params) const;
+    Kernel& trace_kernel(const RadianceSource& source, const char* name);
+    // Records at `sites`, numbered from the store's size: their L-trees built, inserted.
+    void add_records(const std::vector<shared::RcQuery>& sites, const shared::SdrcParams& params,
+                     const RadianceSource& diffuse);
+    // One interpolation round over `samples` (ascending camera-sample indices).
+    void interpolate_round(const std::vector<uint32_t>& samples, const shared::SdrcParams& params,
+                           const Buffer<shared::RcQuery>& queries,
+                           Buffer<shared::RcGlossySample>& glossy, const RadianceSource& diffuse);
+    // Error (exit status 1) when the L-trees hold more than the memory cap.
+    void check_memory();
+
+    SdrcOptions options_;
+    SdrcStats stats_;
+    RecordStore store_;
+    std::vector<LTree> trees_;             // one per record
+    std::vector<shared::RcQuery> sites_;   // where each record was made
+    Kernel queries_kernel_;
+    Kernel radius_kernel_;
+    Kernel interpolate_kernel_;
+    Kernel add_misses_kernel_;
+    std::map<std::string, Kernel> trace_kernels_;  // by name and build options
+    GlossyPlacement placement_;
+};
+
+}  // namespace rc

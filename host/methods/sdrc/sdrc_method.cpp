@@ -1,0 +1,155 @@
+// `--method sdrc`: spatial directional radiance caching (DESIGN.md §6.5) as a registered method.
+// The glossy lobes' indirect light comes from SDRC's records and their L-trees (SdrcCache); the
+// diffuse lobes keep irradiance caching's records, with its options, whose first level SDRC's
+// rays read at their hits.
+#include <memory>
+
+#include "methods/irradiance_cache/ic_options.h"
+#include "methods/irradiance_cache/ic_stats.h"
+#include "methods/method.h"
+#include "methods/sdrc/sdrc_cache.h"
+#include "util/error.h"
+#include "util/log.h"
+
+namespace rc {
+namespace {
+
+// Irradiance caching's options SDRC takes: all but the grid as the rays' source (the cache files
+// hold the irradiance records).
+bool shared_with_ic(const OptionSpec& spec) {
+    return spec.name == "--accuracy" ||
+           (spec.name.rfind("--ic-", 0) == 0 && spec.name != "--ic-ivg") ||
+           spec.name == "--light-samples" || spec.name == "--cache-in" ||
+           spec.name == "--cache-out";
+}
+
+std::vector<OptionSpec> sdrc_option_specs() {
+    std::vector<OptionSpec> specs = {
+        {"--sdrc-samples", "", "N|auto",
+         "sdrc: directions a new record samples from its lobe and keeps in its L-tree, 16-65536 "
+         "(default auto: 12 x interp x spp within [64, 8192])"},
+        {"--sdrc-interp", "", "M",
+         "sdrc: lobe directions per camera sample looked up in the L-trees, 1-64 (default 1)"},
+        {"--sdrc-max-radius", "", "R",
+         "sdrc: ceiling of a lookup's radius in the paraboloid map, (0, 2] (default 0.15)"},
+        {"--sdrc-memory", "", "MIB",
+         "sdrc: cap on the L-trees' memory; a render that needs more stops with an error "
+         "(default 4096)"},
+    };
+    for (OptionSpec& spec : irradiance_cache_option_specs()) {
+        if (shared_with_ic(spec)) {
+            specs.push_back(std::move(spec));
+        }
+    }
+    return specs;
+}
+
+SdrcOptions parse_options(const ParsedArguments& arguments, const IrradianceCacheOptions& ic) {
+    SdrcOptions sdrc;
+    const std::string samples = arguments.value("--sdrc-samples", "auto");
+    sdrc.samples =
+        samples == "auto" ? 0 : static_cast<int>(arguments.integer("--sdrc-samples", 0, 16, 65536));
+    sdrc.interp = static_cast<int>(arguments.integer("--sdrc-interp", sdrc.interp, 1, 64));
+    sdrc.max_radius =
+        static_cast<float>(arguments.number("--sdrc-max-radius", sdrc.max_radius, 1e-4, 2.0));
+    sdrc.memory_mib = arguments.number("--sdrc-memory", sdrc.memory_mib, 1e-3, 1e9);
+    sdrc.accuracy = ic.accuracy;
+    sdrc.min_spacing = ic.min_spacing;
+    sdrc.max_spacing = ic.max_spacing;
+    sdrc.seed = ic.seed;
+    sdrc.max_depth = ic.max_depth;
+    sdrc.rr_depth = ic.rr_depth;
+    return sdrc;
+}
+
+nlohmann::json sdrc_stats(const SdrcStats& s) {
+    nlohmann::json passes = nlohmann::json::array();
+    for (const PlacementPass& pass : s.placement.passes) {
+        passes.push_back({{"stride", pass.stride},
+                          {"candidates", pass.candidates},
+                          {"uncovered", pass.uncovered},
+                          {"records", pass.records}});
+    }
+    const auto ratio = [](double a, double b) { return b > 0.0 ? a / b : 0.0; };
+    return {{"records", s.records},
+            {"samples_per_record", s.samples},
+            {"placement_passes", passes},
+            {"glossy_samples", s.placement.glossy_samples},
+            {"ltree_nodes", s.ltree_nodes},
+            {"ltree_bytes", s.ltree_nodes * sizeof(shared::LTreeNode)},
+            {"record_rays", s.record_rays},
+            {"directions", s.directions},
+            {"answered", s.answered},
+            {"hit_rate", ratio(static_cast<double>(s.answered), static_cast<double>(s.directions))},
+            {"misses", s.misses},
+            {"unstored_misses", s.unstored},
+            {"miss_rays", s.miss_rays},
+            {"rebuilds", s.rebuilds},
+            {"directions_per_second",
+             ratio(static_cast<double>(s.directions), s.interpolation_seconds)},
+            {"seconds",
+             {{"queries", s.query_seconds},
+              {"placement", s.placement.placement_seconds},
+              {"records", s.placement.record_seconds},
+              {"tree_builds", s.tree_build_seconds},
+              {"interpolation", s.interpolation_seconds}}}};
+}
+
+class SpatialDirectionalRadianceCaching final : public Method {
+   public:
+    SpatialDirectionalRadianceCaching(const ParsedArguments& arguments,
+                                      const MethodSettings& settings)
+        : ic_(parse_irradiance_cache_options(arguments, settings)),
+          sdrc_(parse_options(arguments, ic_)) {}
+
+    FrameResult render_frame(const FrameScene& frame, const FrameHooks&) override {
+        FrameResult result;
+        SdrcCache glossy(frame, sdrc_);
+        IrradianceCache cache(frame);
+        IrradianceCacheOptions options = ic_;
+        options.glossy = &glossy;
+        IrradianceCacheStats stats;
+        result.image = cache.render(options, &stats);
+        result.spp = options.spp;
+        const SdrcStats& s = glossy.stats();
+        result.rays += stats.record_rays + stats.shading_rays + s.record_rays + s.miss_rays;
+        result.nonfinite_samples = stats.nonfinite_samples;
+        result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
+        add_irradiance_cache_stats(stats, options, &result.stats);
+        result.stats["sdrc"] = sdrc_stats(s);
+        log_note(std::to_string(stats.records) + " irradiance records, " +
+                 std::to_string(s.records) + " SDRC records (" + std::to_string(s.ltree_nodes) +
+                 " L-tree samples), " +
+                 std::to_string(static_cast<int>(
+                     100.0 * (s.directions > 0 ? static_cast<double>(s.answered) / s.directions
+                                               : 0.0))) +
+                 "% of directions from the cache");
+        return result;
+    }
+
+   private:
+    IrradianceCacheOptions ic_;
+    SdrcOptions sdrc_;
+};
+
+std::vector<std::string> sdrc_aovs() {
+    std::vector<std::string> aovs(std::begin(kIrradianceCacheAovs), std::end(kIrradianceCacheAovs));
+    aovs.push_back("glossy-indirect");
+    aovs.push_back("sdrc-hits");
+    return aovs;
+}
+
+}  // namespace
+
+MethodEntry sdrc_method_entry() {
+    return {"sdrc",
+            "spatial directional radiance caching: glossy lobes from records of importance-sampled "
+            "radiance samples in per-record kd-trees (L-trees), range-queried; diffuse lobes from "
+            "irradiance records",
+            sdrc_option_specs(), sdrc_aovs(),
+            [](const ParsedArguments& arguments, const MethodSettings& settings) {
+                return std::make_unique<SpatialDirectionalRadianceCaching>(arguments, settings);
+            }};
+}
+
+}  // namespace rc

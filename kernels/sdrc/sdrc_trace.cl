@@ -1,0 +1,98 @@
+// Entry kernels of SDRC's rays (host/methods/sdrc/; DESIGN.md §6.5): a new record's N samples and
+// the interpolation's misses, the light beyond each ray's hit read from the source the program is
+// built for (common/radiance_source.h). The rays are the camera hit's first bounce: the emission
+// they see is direct light, left to the render pass's next-event estimation unless the tests ask
+// for it.
+#include "scene_arguments.h"
+#include "sdrc/sdrc_records.h"
+// The source after the method's own headers (see common/radiance_source.h).
+#include "common/radiance_source.h"
+
+// The light along a ray from `origin` in direction w (NaN or infinite radiance stored as black),
+// its hit distance in w; rays counted into *rays.
+RC_FUNC float4 rc_sdrc_trace(const SceneData* scene, const RadianceSource* source,
+                             const SdrcParams* params, float3 origin, float3 w, RngStream* rng,
+                             uint* rays) {
+    Ray ray;
+    ray.origin = (float4)(origin, 0.0f);
+    ray.direction = (float4)(w, INFINITY);
+    const SourceSample s = rc_source_radiance(scene, source, ray, rng, params->count_emission != 0,
+                                              1, params->max_depth, params->rr_depth);
+    *rays += s.rays;
+    return (float4)(all(isfinite(s.radiance)) ? s.radiance : (float3)(0.0f), s.distance);
+}
+
+// Item i: sample i % N of batch record i / N (stream params.first_record + i / N) at
+// sites[i / N] (SDRC §4.3): its (L.rgb, hit distance) into samples[i] and its L-tree node into
+// out_nodes[i]; a direction with no ray is infinitely far, black, and an empty node. counters[0]
+// counts the rays traced.
+__kernel void sdrc_record_samples(uint begin, uint end, SdrcParams params, RC_SCENE_PARAMETERS,
+                                  __global const RcQuery* sites,
+                                  RC_RADIANCE_SOURCE_PARAMETERS __global float4* samples,
+                                  __global LTreeNode* out_nodes, __global uint* counters) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
+    const uint n = (uint)params.samples;
+    const uint b = i / n;
+    const uint record = (uint)params.first_record + b;
+    const RcQuery site = sites[b];
+    float3 w;
+    float weight;
+    if (!rc_sdrc_record_direction(&params, scene.materials, &site, record, i % n, &w, &weight)) {
+        samples[i] = (float4)(0.0f, 0.0f, 0.0f, INFINITY);
+        out_nodes[i].radiance = 0u;
+        out_nodes[i].position = RC_LTREE_EMPTY;
+        return;
+    }
+    uint key_lo, key_hi;
+    rc_sdrc_record_key(&params, &key_lo, &key_hi);
+    RngStream rng = rc_rng_stream(key_lo, key_hi, record, i % n);
+    rc_rng_next_float(&rng);  // past the direction's words
+    rc_rng_next_float(&rng);
+    uint rays = 0u;
+    const float4 s = rc_sdrc_trace(&scene, &source, &params, site.origin.xyz, w, &rng, &rays);
+    atomic_add(&counters[0], rays);
+    samples[i] = s;
+    const Frame frame = rc_sdrc_record_frame(site.normal.xyz);
+    out_nodes[i] = rc_sdrc_node(&frame, w, s.xyz);
+}
+
+// Item k: miss k (record -2: nothing to do): traced from its record's site (SDRC §4.4: "place the
+// ray origin at the location of one of the L-trees"), or from its camera sample where no record
+// could take it; the light into radiance[k], the node for the record's L-tree into out_nodes[k]
+// (empty for a miss traced from the camera sample). The random stream: the sample's, past the
+// interpolation's words. counters[0] counts the rays traced.
+__kernel void sdrc_trace_misses(uint begin, uint end, SdrcParams params, RC_SCENE_PARAMETERS,
+                                __global const RcQuery* sites, __global const RcQuery* queries,
+                                __global const SdrcMiss* misses,
+                                RC_RADIANCE_SOURCE_PARAMETERS __global float4* radiance,
+                                __global LTreeNode* out_nodes, __global uint* counters) {
+    const uint k = begin + (uint)get_global_id(0);
+    if (k >= end) {
+        return;
+    }
+    const SdrcMiss miss = misses[k];
+    out_nodes[k].radiance = 0u;
+    out_nodes[k].position = RC_LTREE_EMPTY;
+    radiance[k] = (float4)(0.0f);
+    if (miss.record == -2) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
+    RngStream rng = rc_rng_stream(params.seed_lo ^ RC_SDRC_QUERY_DOMAIN, params.seed_hi,
+                                  miss.sample, miss.index + 0x80000000u);
+    const float3 origin =
+        miss.record >= 0 ? sites[miss.record].origin.xyz : queries[miss.sample].origin.xyz;
+    uint rays = 0u;
+    radiance[k] = rc_sdrc_trace(&scene, &source, &params, origin, miss.direction.xyz, &rng, &rays);
+    atomic_add(&counters[0], rays);
+    if (miss.record >= 0) {
+        const Frame frame = rc_sdrc_record_frame(sites[miss.record].normal.xyz);
+        out_nodes[k] = rc_sdrc_node(&frame, miss.direction.xyz, radiance[k].xyz);
+    }
+}
