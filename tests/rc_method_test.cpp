@@ -247,7 +247,8 @@ TEST(RadianceCacheMethod, SharpLobesFallBackWithoutLosingToMonteCarlo) {
             "indirect relMSE rc %.3g, Monte Carlo lobe %.3g\n",
             exponent, r.stats.order, r.stats.records,
             r.stats.placement.glossy_samples > 0
-                ? static_cast<double>(r.stats.placement.fallback_samples) / r.stats.placement.glossy_samples
+                ? static_cast<double>(r.stats.placement.fallback_samples) /
+                      r.stats.placement.glossy_samples
                 : 0.0,
             pixels, rc_error, mc_error);
         ASSERT_GT(pixels, 50u);

@@ -7,8 +7,8 @@
 
 #include "device/buffer.h"
 #include "image/film.h"
-#include "shared/film.h"
 #include "methods/radiance_source.h"
+#include "shared/film.h"
 #include "shared/radiance_cache.h"
 #include "shared/types.h"
 

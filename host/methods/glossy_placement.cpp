@@ -65,8 +65,8 @@ std::vector<uint32_t> GlossyPlacement::uncovered(const Buffer<shared::RcQuery>& 
 }
 
 void GlossyPlacement::cover(const Buffer<shared::RcQuery>& queries, const RecordStore& store,
-                            const std::vector<uint32_t>& candidates, int stride,
-                            bool until_covered, Spacing min_spacing, const AddRecords& add_records,
+                            const std::vector<uint32_t>& candidates, int stride, bool until_covered,
+                            Spacing min_spacing, const AddRecords& add_records,
                             GlossyPlacementStats* stats) {
     if (candidates.empty()) {
         return;

@@ -90,9 +90,9 @@ __kernel void sdrc_interpolate(uint begin, uint end, SdrcParams params,
 // Item k: camera sample samples[k]: the light its misses (misses[k M ...], traced into
 // radiance[k M ...]) bring, (1/M) sum L f_s cos / (rho_s p), added to its glossy-buffer entry in
 // direction order.
-__kernel void sdrc_add_misses(uint begin, uint end, SdrcParams params,
-                              __global const uint* samples, __global const SdrcMiss* misses,
-                              __global const float4* radiance, __global RcGlossySample* glossy) {
+__kernel void sdrc_add_misses(uint begin, uint end, SdrcParams params, __global const uint* samples,
+                              __global const SdrcMiss* misses, __global const float4* radiance,
+                              __global RcGlossySample* glossy) {
     const uint k = begin + (uint)get_global_id(0);
     if (k >= end) {
         return;

@@ -98,7 +98,8 @@ RC_FUNC float3 rc_sdrc_interpolate(const SdrcParams* params, RC_GLOBAL const Mat
         const float u2 = rc_rng_next_float(&rng);
         float3 wi;
         float pdf, weight;
-        if (cell >= 0 && rc_sdrc_lobe_sample(&material, q->outgoing.xyz, u1, u2, &wi, &pdf, &weight)) {
+        if (cell >= 0 &&
+            rc_sdrc_lobe_sample(&material, q->outgoing.xyz, u1, u2, &wi, &pdf, &weight)) {
             const float3 w = rc_from_local(&frame, wi);
             if (dot(w, q->geometric_normal.xyz) > 0.0f) {
                 float3 radiance;

@@ -80,10 +80,6 @@ typedef struct SdrcParams {
     int rr_depth;        // the depth where Russian roulette starts
     int count_emission;  // 1 to count emission the rays see (tests)
     int first_record;    // stream index of the launch's first record
-    int round_stride;    // the interpolation round (sdrc_round)
-    int camera_spp;      // camera samples per pixel
-    int width;           // image width in pixels
-    int pad0;
 } SdrcParams;
 
 RC_SHARED_END
@@ -116,10 +112,7 @@ RC_SHARED_END
     FIELD(SdrcParams, max_depth)        \
     FIELD(SdrcParams, rr_depth)         \
     FIELD(SdrcParams, count_emission)   \
-    FIELD(SdrcParams, first_record)     \
-    FIELD(SdrcParams, round_stride)     \
-    FIELD(SdrcParams, camera_spp)       \
-    FIELD(SdrcParams, width)
+    FIELD(SdrcParams, first_record)
 // clang-format on
 
 RC_SHARED_BEGIN
@@ -197,5 +190,5 @@ static_assert(sizeof(rc::shared::LTreeNode) == 8);
 static_assert(sizeof(rc::shared::SdrcTree) == 16);
 static_assert(sizeof(rc::shared::SdrcMiss) == 32);
 static_assert(offsetof(rc::shared::SdrcMiss, record) == 24);
-static_assert(sizeof(rc::shared::SdrcParams) == 64);
+static_assert(sizeof(rc::shared::SdrcParams) == 48);
 #endif

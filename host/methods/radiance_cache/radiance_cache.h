@@ -50,7 +50,7 @@ struct RadianceCacheStats {
     uint64_t reflections = 0;  // record reflections evaluated (one rotation each)
     double table_seconds = 0.0;
     double query_seconds = 0.0;
-    double splat_seconds = 0.0;      // the glossy buffer
+    double splat_seconds = 0.0;  // the glossy buffer
 };
 
 // Error (exit status 2) naming the option radiance caching cannot honour.

@@ -131,9 +131,10 @@ class RadianceCaching final : public Method {
             {"placement_passes", passes},
             {"glossy_samples", rc.placement.glossy_samples},
             {"fallback_samples", rc.placement.fallback_samples},
-            {"fallback_fraction", rc.placement.glossy_samples > 0 ? static_cast<double>(rc.placement.fallback_samples) /
-                                                              static_cast<double>(rc.placement.glossy_samples)
-                                                        : 0.0},
+            {"fallback_fraction", rc.placement.glossy_samples > 0
+                                      ? static_cast<double>(rc.placement.fallback_samples) /
+                                            static_cast<double>(rc.placement.glossy_samples)
+                                      : 0.0},
             {"record_rays", rc.record_rays},
             {"reflections", rc.reflections},
             {"coefficients_projected_per_second",

@@ -117,8 +117,6 @@ shared::SdrcParams SdrcCache::kernel_params(const shared::IcParams& params) cons
     p.max_depth = options_.max_depth;
     p.rr_depth = options_.rr_depth;
     p.count_emission = options_.count_emission ? 1 : 0;
-    p.camera_spp = params.camera_spp;
-    p.width = params.width;
     return p;
 }
 
@@ -140,7 +138,9 @@ void SdrcCache::check_memory() {
 void SdrcCache::add_records(const std::vector<shared::RcQuery>& sites,
                             const shared::SdrcParams& base, const RadianceSource& diffuse) {
     const size_t n = static_cast<size_t>(base.samples);
-    const size_t batch_limit = std::max<size_t>(1, kMaxRecordSamples / n);
+    const size_t batch_limit = options_.record_batch > 0
+                                   ? options_.record_batch
+                                   : std::max<size_t>(1, kMaxRecordSamples / n);
     const SceneArguments scene(bvh_, device_scene_);
     Buffer<unsigned> counters(context_, 1, "sdrc_record_counters");
     for (size_t begin = 0; begin < sites.size(); begin += batch_limit) {
@@ -198,10 +198,12 @@ void SdrcCache::interpolate_round(const std::vector<uint32_t>& samples,
     Buffer<unsigned> counters(context_, 1, "sdrc_interpolation_counters");
     Buffer<unsigned> ray_counters(context_, 1, "sdrc_miss_counters");
     std::vector<std::pair<int, shared::LTreeNode>> inserts;  // in sample, then direction order
-    for (size_t begin = 0; begin < samples.size(); begin += kRoundBatch) {
-        const size_t count = std::min(kRoundBatch, samples.size() - begin);
+    const size_t batch_limit = options_.round_batch > 0 ? options_.round_batch : kRoundBatch;
+    for (size_t begin = 0; begin < samples.size(); begin += batch_limit) {
+        const size_t count = std::min(batch_limit, samples.size() - begin);
         const Buffer<unsigned> batch(
-            context_, std::vector<uint32_t>(samples.begin() + begin, samples.begin() + begin + count),
+            context_,
+            std::vector<uint32_t>(samples.begin() + begin, samples.begin() + begin + count),
             "sdrc_round_samples");
         Buffer<shared::SdrcMiss> misses(context_, count * m, "sdrc_misses");
         Buffer<shared::float4> radiance(context_, count * m, "sdrc_miss_radiance");
@@ -277,9 +279,7 @@ Buffer<shared::RcGlossySample> SdrcCache::glossy_samples(const shared::IcParams&
             }
         }
         if (!round.empty()) {
-            shared::SdrcParams p = base;
-            p.round_stride = stride;
-            interpolate_round(round, p, queries, glossy, diffuse);
+            interpolate_round(round, base, queries, glossy, diffuse);
         }
     }
     stats_.interpolation_seconds = seconds_since(start);

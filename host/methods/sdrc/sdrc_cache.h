@@ -28,9 +28,9 @@
 namespace rc {
 
 struct SdrcOptions {
-    int samples = 0;          // N, directions of a new record; 0: auto, 12 M spp (SDRC §4.3)
-    int interp = 1;           // M, directions per camera sample (SDRC §4.4)
-    float max_radius = 0.15f;  // r_max in D (SDRC §4.4)
+    int samples = 0;             // N, directions of a new record; 0: auto, 12 M spp (SDRC §4.3)
+    int interp = 1;              // M, directions per camera sample (SDRC §4.4)
+    float max_radius = 0.15f;    // r_max in D (SDRC §4.4)
     double memory_mib = 4096.0;  // cap on the L-trees' nodes
     float accuracy = 0.35f;      // a (shared with irradiance caching's --accuracy)
     Spacing min_spacing{8.0f, false};
@@ -39,6 +39,10 @@ struct SdrcOptions {
     int max_depth = 64;
     int rr_depth = 3;
     bool count_emission = false;  // count emitters the rays see (tests)
+    // Records per record launch and camera samples per interpolation launch (0: the defaults);
+    // the image does not depend on them (tests).
+    size_t record_batch = 0;
+    size_t round_batch = 0;
 };
 
 // Directions of a new record for these options at `spp` camera samples per pixel: N if given,
@@ -56,13 +60,13 @@ struct SdrcStats {
     uint64_t ltree_nodes = 0;  // at the end, trees and buffers
     uint64_t record_rays = 0;
     uint64_t miss_rays = 0;
-    uint64_t directions = 0;   // interpolation directions drawn (M per served camera sample)
-    uint64_t answered = 0;     // of those, answered from the L-trees
-    uint64_t misses = 0;       // traced: inserted into an L-tree, or from the camera sample
-    uint64_t unstored = 0;     // of the misses, no record could take them (traced from the sample)
+    uint64_t directions = 0;  // interpolation directions drawn (M per served camera sample)
+    uint64_t answered = 0;    // of those, answered from the L-trees
+    uint64_t misses = 0;      // traced: inserted into an L-tree, or from the camera sample
+    uint64_t unstored = 0;    // of the misses, no record could take them (traced from the sample)
     size_t rebuilds = 0;
     double query_seconds = 0.0;
-    double tree_build_seconds = 0.0;     // the host's L-tree builds (in record_seconds) and rebuilds
+    double tree_build_seconds = 0.0;  // the host's L-tree builds (in record_seconds) and rebuilds
     double interpolation_seconds = 0.0;  // range queries, miss rays and insertions
 };
 
@@ -97,8 +101,8 @@ class SdrcCache final : public GlossyCache, private FrameBound {
     SdrcOptions options_;
     SdrcStats stats_;
     RecordStore store_;
-    std::vector<LTree> trees_;             // one per record
-    std::vector<shared::RcQuery> sites_;   // where each record was made
+    std::vector<LTree> trees_;            // one per record
+    std::vector<shared::RcQuery> sites_;  // where each record was made
     Kernel queries_kernel_;
     Kernel radius_kernel_;
     Kernel interpolate_kernel_;

@@ -121,8 +121,8 @@ class SpatialDirectionalRadianceCaching final : public Method {
                  std::to_string(s.records) + " SDRC records (" + std::to_string(s.ltree_nodes) +
                  " L-tree samples), " +
                  std::to_string(static_cast<int>(
-                     100.0 * (s.directions > 0 ? static_cast<double>(s.answered) / s.directions
-                                               : 0.0))) +
+                     100.0 *
+                     (s.directions > 0 ? static_cast<double>(s.answered) / s.directions : 0.0))) +
                  "% of directions from the cache");
         return result;
     }

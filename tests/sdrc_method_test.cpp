@@ -1,0 +1,314 @@
+// Spatial directional radiance caching through the whole `sdrc` path
+// (host/methods/sdrc/sdrc_cache.h): the glossy buffer irradiance caching's render pass reads,
+// against independent oracles (a quadrature of the BRDF, path-traced references).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
+#include "image/image_error.h"
+#include "methods/irradiance_cache/irradiance_cache.h"
+#include "methods/path_tracer/path_tracer.h"
+#include "methods/sdrc/sdrc_cache.h"
+#include "scene/camera.h"
+#include "scene/scene_loader.h"
+#include "sh_quadrature.h"
+#include "test_support.h"
+#include "util/error.h"
+#include "util/glm_helpers.h"
+
+namespace rc {
+namespace {
+
+struct SdrcRender {
+    Image image;
+    SdrcStats stats;
+};
+
+// Irradiance caching's options for a size x size image, one cache level of `rays` hemisphere
+// rays (the diffuse records are not what these tests measure).
+IrradianceCacheOptions ic_options(int size, int spp, uint64_t seed, int rays = 256) {
+    IrradianceCacheOptions ic;
+    ic.width = size;
+    ic.height = size;
+    ic.spp = spp;
+    ic.seed = seed;
+    ic.rays = rays;
+    ic.bounces = 1;
+    ic.records_overlay = false;
+    return ic;
+}
+
+SdrcRender render_sdrc(test::DeviceFrame& device, IrradianceCacheOptions ic,
+                       SdrcOptions sdrc = {}) {
+    sdrc.seed = ic.seed;
+    SdrcCache glossy(device.frame(), sdrc);
+    ic.glossy = &glossy;
+    IrradianceCache cache(device.frame());
+    SdrcRender r;
+    r.image = cache.render(ic);
+    r.stats = glossy.stats();
+    return r;
+}
+
+// relMSE ((v - r)^2 / (r^2 + 0.01)) of `image` against `reference` over the pixels where
+// `mask`'s first channel is positive; *pixels their count.
+double masked_relmse(const Image& image, const Image& reference, const Image& mask,
+                     size_t* pixels) {
+    double sum = 0.0;
+    *pixels = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            if (!(mask.at(x, y, 0) > 0.0f)) {
+                continue;
+            }
+            ++*pixels;
+            for (int c = 0; c < image.channels; ++c) {
+                const double r = reference.at(x, y, c);
+                const double d = image.at(x, y, c) - r;
+                sum += d * d / (r * r + 0.01);
+            }
+        }
+    }
+    return *pixels > 0 ? sum / (*pixels * image.channels) : 0.0;
+}
+
+// A glossy plane (material JSON `material`) under a constant sky, nothing else, seen steeply from
+// above (every pixel's lobe clear of the horizon, so the estimate's weights barely vary).
+Scene white_sky_scene(const std::string& name, const std::string& material) {
+    const auto dir = test::scratch_dir("sdrc_white_sky_" + name);
+    std::ofstream(dir / "scene.json") << R"({
+        "camera": {"position": [0, 5, -1.5], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 30,
+                   "resolution": [16, 16]},
+        "materials": {"glossy": )" << material
+                                      << R"(},
+        "shapes": [{"type": "rectangle", "material": "glossy",
+                    "transform": [{"scale": 1000}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]}],
+        "emitters": [{"type": "constant", "radiance": [0.8, 0.6, 0.45]}]
+    })";
+    return load_scene(dir / "scene.json");
+}
+
+// Under a constant sky L with no occluder, every radiance sample is L, so the glossy-indirect
+// layer must be L albedo(w_o) at each pixel (w_o: its centre's; the albedo, the integral of
+// f_s cos over the hemisphere with unit rho_s, by the test's own quadrature of the BRDF). The
+// estimate is M lobe directions per camera sample weighted f_s cos / p, so its noise is that
+// weight's (for Phong (n + 2) / (n + 1) cos theta_i, about 6% here) over 4 x 16 directions a
+// pixel, 0.75%; RGBE adds at most 1/256 of the largest channel. Bounds: 4% per pixel (over 5
+// sigma), 1% over the image (measured in the printout).
+void expect_white_sky(const std::string& name, const std::string& json, const Material& material) {
+    constexpr int kSize = 16;
+    test::DeviceFrame device(white_sky_scene(name, json));
+    SdrcOptions options;
+    options.count_emission = true;
+    options.interp = 16;
+    const SdrcRender r = render_sdrc(device, ic_options(kSize, 4, 3, 64), options);
+    ASSERT_GT(r.stats.records, 0u);
+    const Image glossy = select_layers(r.image, {"glossy-indirect"});
+    const shared::CameraParams camera = camera_params(device.scene.camera, kSize, kSize);
+    const double sky[3] = {0.8, 0.6, 0.45};
+    double worst = 0.0;
+    double mean = 0.0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const glm::vec3 d = glm::normalize(vec3_of(camera.top_left) +
+                                               vec3_of(camera.right) * ((x + 0.5f) / kSize) +
+                                               vec3_of(camera.down) * ((y + 0.5f) / kSize));
+            // The plane's frame: its normal +y is z; w_o = -d.
+            const shared::float4 wo = {-d.x, -d.z, -d.y, 0.0f};
+            const double albedo =
+                test::record_hemisphere_albedo(test::shared_context(), material, wo);
+            for (int c = 0; c < 3; ++c) {
+                const double expected = sky[c] * albedo;
+                const double error = glossy.at(x, y, c) / expected - 1.0;
+                worst = std::max(worst, std::abs(error));
+                mean += error / (3 * kSize * kSize);
+                EXPECT_LT(std::abs(error), 0.04)
+                    << name << " pixel " << x << ", " << y << " channel " << c << ": "
+                    << glossy.at(x, y, c) << " vs " << expected;
+            }
+        }
+    }
+    std::printf(
+        "white sky %s: %zu records, %llu L-tree samples, hit rate %.3f; relative error: "
+        "largest %.4f, mean %.4f\n",
+        name.c_str(), r.stats.records, static_cast<unsigned long long>(r.stats.ltree_nodes),
+        static_cast<double>(r.stats.answered) / static_cast<double>(r.stats.directions), worst,
+        mean);
+    EXPECT_LT(std::abs(mean), 0.01) << name;
+}
+
+TEST(SdrcMethod, WhiteSkyPhongPlaneReflectsRadianceTimesAlbedo) {
+    expect_white_sky("phong64", R"({"type": "phong", "diffuse": 0, "specular": 1, "exponent": 64})",
+                     test::pure_phong(64.0f));
+}
+
+TEST(SdrcMethod, WhiteSkyWardPlaneReflectsRadianceTimesAlbedo) {
+    Material ward = test::pure_phong(1.0f);
+    ward.kind = MaterialKind::kWard;
+    ward.alpha_x = 0.18f;
+    ward.alpha_y = 0.09f;
+    expect_white_sky(
+        "ward",
+        R"({"type": "ward", "diffuse": 0, "specular": 1, "alpha_x": 0.18, "alpha_y": 0.09})", ward);
+}
+
+// A sphere of Phong exponent `exponent` (diffuse 0.1, specular 0.6) on a white floor in a box
+// with a red and a blue wall, lit by a small area light: its glossy reflection of the walls is
+// indirect light.
+Scene phong_sphere_scene(int exponent) {
+    const auto dir = test::scratch_dir("sdrc_phong_" + std::to_string(exponent));
+    std::ofstream(dir / "scene.json") << R"({
+        "camera": {"position": [0, 0.2, -3.4], "look_at": [0, -0.4, 0], "up": [0, 1, 0],
+                   "fov": 24, "resolution": [32, 32]},
+        "materials": {
+            "white": {"type": "diffuse", "reflectance": 0.5},
+            "red": {"type": "diffuse", "reflectance": [0.7, 0.1, 0.1]},
+            "blue": {"type": "diffuse", "reflectance": [0.1, 0.15, 0.7]},
+            "sphere": {"type": "phong", "diffuse": 0.1, "specular": 0.6, "exponent": )"
+                                      << exponent << R"(}},
+        "shapes": [
+            {"type": "rectangle", "material": "white",
+             "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}}, {"translate": [0, -1, 0]}]},
+            {"type": "rectangle", "material": "white",
+             "transform": [{"rotate": {"axis": [1, 0, 0], "angle": 90}}, {"translate": [0, 1, 0]}]},
+            {"type": "rectangle", "material": "white",
+             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 180}}, {"translate": [0, 0, 1]}]},
+            {"type": "rectangle", "material": "red",
+             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": -90}}, {"translate": [1, 0, 0]}]},
+            {"type": "rectangle", "material": "blue",
+             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 90}}, {"translate": [-1, 0, 0]}]},
+            {"type": "rectangle", "material": "white", "emitter": {"type": "area", "radiance": 12},
+             "transform": [{"scale": 0.3}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
+                           {"translate": [0, 0.998, 0]}]},
+            {"type": "sphere", "center": [0, -0.55, 0], "radius": 0.45, "material": "sphere"}
+        ]
+    })";
+    return load_scene(dir / "scene.json");
+}
+
+// The pixels all of whose camera samples see the sphere (albedo 0.7 in every channel: the
+// walls' are 0.5 or coloured).
+Image sphere_mask(const Image& albedo) {
+    Image mask(albedo.width, albedo.height, 1);
+    for (int y = 0; y < albedo.height; ++y) {
+        for (int x = 0; x < albedo.width; ++x) {
+            bool sphere = true;
+            for (int c = 0; c < 3; ++c) {
+                sphere = sphere && std::abs(albedo.at(x, y, c) - 0.7f) < 1e-4f;
+            }
+            mask.at(x, y, 0) = sphere ? 1.0f : 0.0f;
+        }
+    }
+    return mask;
+}
+
+// On sharp lobes, where radiance caching's spherical harmonics blur or give up (exponents 16 to
+// 256), SDRC's indirect light on the sphere (relMSE against a 1024-spp path-traced reference)
+// beats path tracing the lobe at the same camera samples (irradiance caching with the same
+// diffuse records), and its cache answers most directions.
+TEST(SdrcMethod, SharpLobesBeatMonteCarloAtTheSameSamples) {
+    constexpr int kSize = 32;
+    for (int exponent : {16, 64, 256}) {
+        test::DeviceFrame device(phong_sphere_scene(exponent));
+        PathTracerOptions pt;
+        pt.width = kSize;
+        pt.height = kSize;
+        pt.spp = 1024;
+        pt.seed = 11;
+        const Image reference = select_layers(PathTracer(device.frame()).render(pt), {"indirect"});
+        const IrradianceCacheOptions ic = ic_options(kSize, 8, 5);
+        const SdrcRender r = render_sdrc(device, ic);
+        const Image mc = IrradianceCache(device.frame()).render(ic);
+        const Image mask = sphere_mask(select_layers(r.image, {"albedo"}));
+        size_t pixels = 0;
+        const double sdrc_error =
+            masked_relmse(select_layers(r.image, {"indirect"}), reference, mask, &pixels);
+        const double mc_error =
+            masked_relmse(select_layers(mc, {"indirect"}), reference, mask, &pixels);
+        const double hit_rate =
+            static_cast<double>(r.stats.answered) / static_cast<double>(r.stats.directions);
+        std::printf(
+            "Phong %3d: %zu records x %d samples, hit rate %.3f, %llu misses; sphere (%zu "
+            "pixels) indirect relMSE sdrc %.3g, Monte Carlo lobe %.3g\n",
+            exponent, r.stats.records, r.stats.samples, hit_rate,
+            static_cast<unsigned long long>(r.stats.misses), pixels, sdrc_error, mc_error);
+        ASSERT_GT(pixels, 50u);
+        EXPECT_LT(sdrc_error, mc_error) << "exponent " << exponent;
+        EXPECT_GT(hit_rate, 0.5) << "exponent " << exponent;
+    }
+}
+
+// glossy-box at 64², 4 camera samples: the indirect layer against the shipped reference (box
+// filtered), means within 1.5% per channel and relMSE below the bound.
+TEST(SdrcMethod, GlossyBoxIndirectIsCloseToTheReference) {
+    constexpr int kSize = 64;
+    test::DeviceFrame device(load_scene(test::source_dir() / "scenes/glossy-box/scene.json"));
+    const SdrcRender r = render_sdrc(device, ic_options(kSize, 4, 7));
+    const Image reference = test::scene_reference("glossy-box", "indirect", kSize);
+    const ImageError e = image_error(select_layers(r.image, {"indirect"}), reference);
+    std::printf(
+        "sdrc glossy-box %d^2: %zu records, hit rate %.3f, indirect relMSE %.3g, means %.4f "
+        "%.4f %.4f vs %.4f %.4f %.4f\n",
+        kSize, r.stats.records,
+        static_cast<double>(r.stats.answered) / static_cast<double>(r.stats.directions), e.relmse,
+        e.test_means[0], e.test_means[1], e.test_means[2], e.reference_means[0],
+        e.reference_means[1], e.reference_means[2]);
+    EXPECT_GT(r.stats.records, 0u);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(e.test_means[c], e.reference_means[c], 0.015 * e.reference_means[c]);
+    }
+    EXPECT_LT(e.relmse, 0.02);
+}
+
+bool bitwise_equal(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height && a.pixels.size() == b.pixels.size() &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
+}
+
+Image render_sdrc_with(size_t local_size, size_t max_chunk, size_t batch, const Scene& scene) {
+    ContextOptions options = test::default_context_options();
+    options.local_size = local_size;
+    options.max_chunk_items = max_chunk;
+    Context context(options);
+    test::DeviceFrame device(scene, context);
+    SdrcOptions sdrc;
+    sdrc.interp = 2;
+    sdrc.record_batch = batch;
+    sdrc.round_batch = batch;
+    return render_sdrc(device, ic_options(16, 2, 99, 128), sdrc).image;
+}
+
+// Same seed and options: the same image, bit for bit, whatever the chunking, the work-group size
+// and the record and interpolation batch sizes (the L-trees change only between rounds, in sample
+// order).
+TEST(SdrcMethod, ImageIsBitwiseIdenticalAcrossRunsChunksWorkGroupsAndBatches) {
+    const Scene scene = phong_sphere_scene(64);
+    const Image reference = render_sdrc_with(0, 0, 0, scene);
+    EXPECT_TRUE(bitwise_equal(reference, render_sdrc_with(0, 0, 0, scene))) << "second run";
+    EXPECT_TRUE(bitwise_equal(reference, render_sdrc_with(8, 1000, 7, scene)))
+        << "local 8, chunk 1000, batch 7";
+    EXPECT_TRUE(bitwise_equal(reference, render_sdrc_with(32, 4096, 3, scene)))
+        << "local 32, chunk 4096, batch 3";
+    const Image glossy = select_layers(reference, {"glossy-indirect"});
+    EXPECT_GT(*std::max_element(glossy.pixels.begin(), glossy.pixels.end()), 0.0f);
+}
+
+// A memory cap the L-trees exceed stops the render with an error naming the option.
+TEST(SdrcMethod, MemoryCapTooSmallFailsWithAClearError) {
+    test::DeviceFrame device(phong_sphere_scene(64));
+    SdrcOptions sdrc;
+    sdrc.memory_mib = 0.01;
+    try {
+        render_sdrc(device, ic_options(16, 2, 5), sdrc);
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("--sdrc-memory"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace rc
