@@ -1,9 +1,11 @@
 // Host and device agree on the layout of every shared struct: RC_SHARED_LAYOUTS
 // (kernels/shared/types.h) and radiance caching's RC_RADIANCE_CACHE_LAYOUTS
-// (kernels/shared/radiance_cache.h), each reported by its probe kernel.
+// (kernels/shared/radiance_cache.h) and SDRC's RC_SDRC_LAYOUTS (kernels/shared/sdrc.h), each
+// reported by its probe kernel.
 #include <gtest/gtest.h>
 
 #include "shared/radiance_cache.h"
+#include "shared/sdrc.h"
 #include "shared/types.h"
 #include "test_support.h"
 
@@ -51,6 +53,11 @@ TEST(SharedLayout, DeviceMatchesHost) {
 TEST(SharedLayout, RadianceCacheDeviceMatchesHost) {
     expect_device_matches(RC_HOST_LAYOUTS(RC_RADIANCE_CACHE_LAYOUTS), "radiance_cache/rc_probe.cl",
                           "rc_report_layouts");
+}
+
+TEST(SharedLayout, SdrcDeviceMatchesHost) {
+    expect_device_matches(RC_HOST_LAYOUTS(RC_SDRC_LAYOUTS), "sdrc/sdrc_probe.cl",
+                          "sdrc_report_layouts");
 }
 
 }  // namespace
