@@ -17,6 +17,8 @@ std::string cornell_box() {
     return (test::source_dir() / "scenes/cornell-box/scene.json").string();
 }
 
+std::string glossy_box() { return (test::source_dir() / "scenes/glossy-box/scene.json").string(); }
+
 TEST(Cli, RenderWritesEachImageFormatAndStats) {
     const auto dir = test::scratch_dir("cli_render");
     for (const char* name : {"out.png", "out.exr", "out.hdr", "out.pfm"}) {
@@ -59,7 +61,9 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
     const std::vector<BadCommand> cases = {
         {{"render", cornell_box(), "-o", (dir / "out.xyz").string()}, 2, "unsupported output"},
         {{"render", cornell_box(), "-o", (dir / "missing/out.png").string()}, 2, "does not exist"},
-        {{"render", cornell_box(), "-o", out, "--method", "sdrc"}, 2, "unknown method 'sdrc'"},
+        {{"render", cornell_box(), "-o", out, "--method", "decomposition"},
+         2,
+         "unknown method 'decomposition'"},
         {{"render", cornell_box(), "-o", out, "--bogus"}, 2, "unknown option '--bogus'"},
         {{"render", cornell_box(), "-o", out, "--spp", "0"}, 2, "--spp"},
         {{"render", cornell_box(), "-o", out, "--width", "abc"}, 2, "--width"},
@@ -133,10 +137,10 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
          "--light-samples: expected an integer in [1, 64], got '65'"},
         {{"render", cornell_box(), "-o", out, "--light-samples", "4"},
          2,
-         "--light-samples applies to --method ic, rc, ivg or ivg-gather only"},
+         "--light-samples applies to --method ic, rc, sdrc, ivg or ivg-gather only"},
         {{"render", cornell_box(), "-o", out, "--method", "normals", "--light-samples", "4"},
          2,
-         "--light-samples applies to --method ic, rc, ivg or ivg-gather only"},
+         "--light-samples applies to --method ic, rc, sdrc, ivg or ivg-gather only"},
         {{"render", cornell_box(), "-o", out, "--method", "rc", "--rc-order", "0"},
          2,
          "--rc-order: expected an integer in [1, 10], got '0'"},
@@ -171,6 +175,31 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
           (dir / "missing.rcc").string()},
          2,
          "--rc-cache-in applies to --method rc only"},
+        {{"render", cornell_box(), "-o", out, "--method", "sdrc", "--sdrc-interp", "0"},
+         2,
+         "--sdrc-interp: expected an integer in [1, 64], got '0'"},
+        {{"render", cornell_box(), "-o", out, "--method", "sdrc", "--sdrc-samples", "8"},
+         2,
+         "--sdrc-samples: expected an integer in [16, 65536], got '8'"},
+        {{"render", cornell_box(), "-o", out, "--method", "sdrc", "--sdrc-samples", "many"},
+         2,
+         "--sdrc-samples: expected an integer"},
+        {{"render", cornell_box(), "-o", out, "--method", "sdrc", "--sdrc-max-radius", "0"},
+         2,
+         "--sdrc-max-radius"},
+        {{"render", cornell_box(), "-o", out, "--method", "sdrc", "--sdrc-memory", "-1"},
+         2,
+         "--sdrc-memory"},
+        {{"render", cornell_box(), "-o", out, "--method", "rc", "--sdrc-interp", "4"},
+         2,
+         "--sdrc-interp applies to --method sdrc only"},
+        {{"render", cornell_box(), "-o", out, "--method", "sdrc", "--ic-ivg"},
+         2,
+         "--ic-ivg applies to --method ic only"},
+        {{"render", glossy_box(), "-o", out, "--method", "sdrc", "--width", "16", "--height", "16",
+          "--spp", "1", "--sdrc-memory", "0.001"},
+         1,
+         "more than --sdrc-memory"},
         {{"render", cornell_box(), "-o", out, "--method", "rc", "--ic-ivg"},
          2,
          "--ic-ivg applies to --method ic only"},

@@ -10,8 +10,10 @@
 #ifndef __OPENCL_VERSION__
 #include <cmath>
 namespace rc::shared {
-using std::sqrt;  // the float overload, as OpenCL C's sqrt
-}
+using std::fmax;
+using std::fmin;  // the float overloads, as OpenCL C's
+using std::sqrt;
+}  // namespace rc::shared
 #endif
 
 // Cells per side of the quantised paraboloid map: SDRC §4.3 quantises a sample's position in D
@@ -150,10 +152,10 @@ RC_FUNC uint rc_ltree_node_v(uint position) { return (position >> 8) & 255u; }
 // channel, m = f 2^e, f in [0.5, 1), each channel c is stored as floor(c 256 / 2^e) and e + 128;
 // decoding returns the cell's centre, (byte + 0.5) 2^(e - 8), so every channel is within
 // m / 256 of its value (the bound tests/sdrc_ltree_test.cpp checks). Below 1e-32 (and for
-// negative or NaN input) the colour is black; m is capped below 2^127.
+// negative or NaN input) the colour is black, a NaN channel beside finite ones reads 0; m is
+// capped below 2^127.
 RC_FUNC uint rc_rgbe_encode(float r, float g, float b) {
-    float m = r > g ? r : g;
-    m = m > b ? m : b;
+    float m = fmax(fmax(r, g), b);  // fmax skips a NaN channel
     if (!(m >= 1e-32f)) {
         return 0u;
     }
@@ -163,7 +165,7 @@ RC_FUNC uint rc_rgbe_encode(float r, float g, float b) {
     const float c[3] = {r, g, b};
     uint bytes[3];
     for (int k = 0; k < 3; ++k) {
-        const float x = c[k] > 0.0f ? (c[k] < m ? c[k] : m) * scale : 0.0f;
+        const float x = c[k] > 0.0f ? fmin(c[k], m) * scale : 0.0f;
         bytes[k] = x >= 255.0f ? 255u : (uint)x;
     }
     return bytes[0] | bytes[1] << 8 | bytes[2] << 16 | (uint)(e + 128) << 24;
