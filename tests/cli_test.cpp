@@ -478,7 +478,8 @@ TEST(Cli, BenchAllMeasuresEveryFamilyOnTheDevice) {
           "path_samples_per_second", "path_tracing_mrays", "hemisphere_samples_per_second",
           "records_per_second", "shade_samples_per_second", "splat_samples_per_second",
           "gather_samples_per_second", "photons_per_second", "photon_crossings_per_second",
-          "sh_coefficients_per_second", "rc_reflections_per_second"}) {
+          "sh_coefficients_per_second", "rc_reflections_per_second", "ltree_queries_per_second",
+          "sdrc_directions_per_second"}) {
         ASSERT_TRUE(device.contains(key)) << key;
         EXPECT_GT(device[key].get<double>(), 0.0) << key;
     }

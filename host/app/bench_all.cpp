@@ -17,6 +17,7 @@
 #include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
 #include "methods/path_tracer/path_tracer.h"
 #include "methods/radiance_cache/radiance_cache.h"
+#include "methods/sdrc/sdrc_cache.h"
 #include "scene/camera.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
@@ -99,6 +100,45 @@ void bench_radiance_cache(Context& context, int width, int height, DeviceResult*
     const double splat_seconds = kernel_seconds_since(context, before, {"rc_glossy_splat"});
     result->figures.push_back({"rc_reflections_per_second", "RC records interpolated/s (M)",
                                static_cast<double>(stats.reflections) / splat_seconds * 1e-6, 0.0});
+}
+
+// SDRC on glossy-box at the benchmark's size up to 128², 2 camera samples, its defaults with 4
+// directions per camera sample (the diffuse records as radiance caching's benchmark), after a
+// 16² warm-up: L-tree range queries per second of the interpolation kernel (one record's L-tree
+// searched for one direction each) and lobe directions interpolated per second.
+void bench_sdrc(Context& context, int width, int height, DeviceResult* result) {
+    const Scene scene = load_scene(shipped_scene("glossy-box"));
+    const Bvh bvh = build_bvh(scene.mesh);
+    const DeviceBvh device_bvh(context, bvh);
+    const DeviceScene device_scene(context, scene);
+    const FrameScene frame{context, scene, device_bvh, device_scene};
+    SdrcStats stats;
+    std::map<std::string, KernelTime> before;
+    for (int pass = 0; pass < 2; ++pass) {
+        before = context.kernel_times();
+        IrradianceCacheOptions ic;
+        ic.width = pass == 0 ? 16 : std::min(width, 128);
+        ic.height = pass == 0 ? 16 : std::min(height, 128);
+        ic.spp = 2;
+        ic.rays = 256;
+        ic.bounces = 1;
+        ic.max_depth = scene.render.max_depth;
+        ic.rr_depth = scene.render.rr_depth;
+        ic.records_overlay = false;
+        SdrcOptions options;
+        options.interp = 4;
+        options.max_depth = ic.max_depth;
+        options.rr_depth = ic.rr_depth;
+        SdrcCache glossy(frame, options);
+        ic.glossy = &glossy;
+        IrradianceCache(frame).render(ic);
+        stats = glossy.stats();
+    }
+    const double seconds = kernel_seconds_since(context, before, {"sdrc_interpolate"});
+    result->figures.push_back({"ltree_queries_per_second", "SDRC L-tree range queries/s (M)",
+                               static_cast<double>(stats.range_queries) / seconds * 1e-6, 0.0});
+    result->figures.push_back({"sdrc_directions_per_second", "SDRC directions interpolated/s (M)",
+                               static_cast<double>(stats.directions) / seconds * 1e-6, 0.0});
 }
 
 DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_options,
@@ -222,6 +262,7 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
                               static_cast<double>(grid_stats.crossings) / photon_seconds * 1e-6,
                               0.0});
     bench_radiance_cache(context, width, height, &result);
+    bench_sdrc(context, width, height, &result);
     return result;
 }
 
@@ -253,7 +294,8 @@ int run_bench_all(const std::vector<std::string>& args) {
             "photons/s\n"
             "into the irradiance vector grid, radiance caching's SH coefficients projected/s and "
             "records\n"
-            "interpolated/s (on glossy-box). Device\n"
+            "interpolated/s, SDRC's L-tree range queries/s and directions interpolated/s (on "
+            "glossy-box). Device\n"
             "kernel time from profiling events; kernels are built and warmed up first.",
             specs);
         return 0;

@@ -47,7 +47,7 @@ __kernel void sdrc_record_radius(uint begin, uint end, SdrcParams params,
 // (RcGlossySample: reflected = (1/M) sum of the answered directions' L~ f_s cos / (rho_s p),
 // weight 1, order 1, hits the fraction of its M directions that need no ray; the misses' light is
 // added by sdrc_add_misses) and its M miss slots misses[k M ...]. counters[0] counts the
-// directions answered from the cache.
+// directions answered from the cache, counters[1] the L-trees range-queried.
 __kernel void sdrc_interpolate(uint begin, uint end, SdrcParams params,
                                __global const Material* materials, RecordGrid grid,
                                __global const int* cell_start, __global const int* cell_records,
@@ -70,9 +70,10 @@ __kernel void sdrc_interpolate(uint begin, uint end, SdrcParams params,
     cache.nodes = nodes;
     const uint sample = samples[k];
     const RcQuery q = queries[sample];
-    uint answered;
+    uint answered, range_queries;
     __global SdrcMiss* own = misses + (size_t)k * (uint)params.interp;
-    const float3 sum = rc_sdrc_interpolate(&params, materials, &cache, &q, sample, own, &answered);
+    const float3 sum =
+        rc_sdrc_interpolate(&params, materials, &cache, &q, sample, own, &answered, &range_queries);
     int missed = 0;
     for (int j = 0; j < params.interp; ++j) {
         missed += own[j].record != -2 ? 1 : 0;
@@ -85,6 +86,7 @@ __kernel void sdrc_interpolate(uint begin, uint end, SdrcParams params,
     out.pad0 = 0;
     glossy[sample] = out;
     atomic_add(&counters[0], answered);
+    atomic_add(&counters[1], range_queries);
 }
 
 // Item k: camera sample samples[k]: the light its misses (misses[k M ...], traced into

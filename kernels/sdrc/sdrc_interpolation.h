@@ -34,9 +34,10 @@ RC_FUNC float rc_sdrc_query_radius(const SdrcParams* params, float pdf) {
 // was found. *record: one of those records above whose geometric plane w leaves, chosen
 // uniformly by reservoir sampling with rng (SDRC §4.4: "selected randomly from among the
 // contributing L-trees for which w is above their tangent plane"), -1 when there is none.
+// *range_queries counts the L-trees queried.
 RC_FUNC bool rc_sdrc_lookup(const SdrcParams* params, const SdrcCache* cache, const RcQuery* q,
                             int cell, float3 w, float radius, RngStream* rng, float3* radiance,
-                            int* record) {
+                            int* record, uint* range_queries) {
     float3 sum = (float3)(0.0f);
     float total = 0.0f;
     int eligible = 0;
@@ -66,6 +67,7 @@ RC_FUNC bool rc_sdrc_lookup(const SdrcParams* params, const SdrcCache* cache, co
         found.weight = 0.0f;
         found.count = 0u;
         rc_ltree_query(cache->nodes, cache->trees[i], u, v, radius, &found, 0, 0u);
+        *range_queries += 1u;
         sum += ws * found.radiance;
         total += ws * found.weight;
     }
@@ -76,12 +78,15 @@ RC_FUNC bool rc_sdrc_lookup(const SdrcParams* params, const SdrcCache* cache, co
 // The M directions of camera sample `sample` (query q, covered by the cache): sum over the
 // answered ones of L~ f_s cos / (rho_s p) (eq. 3 before the 1/M), returned; misses[j] for each
 // direction j: record -2 when it needs nothing more (answered, or zero weight), else the miss to
-// trace. *answered counts the directions answered from the cache.
+// trace. *answered counts the directions answered from the cache, *range_queries the L-trees
+// queried.
 RC_FUNC float3 rc_sdrc_interpolate(const SdrcParams* params, RC_GLOBAL const Material* materials,
                                    const SdrcCache* cache, const RcQuery* q, uint sample,
-                                   RC_GLOBAL SdrcMiss* misses, uint* answered) {
+                                   RC_GLOBAL SdrcMiss* misses, uint* answered,
+                                   uint* range_queries) {
     float3 sum = (float3)(0.0f);
     *answered = 0u;
+    *range_queries = 0u;
     const int cell = rc_ic_grid_cell(&cache->grid, q->position.xyz);
     const Material material = materials[q->material];
     const Frame frame = rc_query_frame(q);
@@ -105,7 +110,7 @@ RC_FUNC float3 rc_sdrc_interpolate(const SdrcParams* params, RC_GLOBAL const Mat
                 float3 radiance;
                 int record;
                 if (rc_sdrc_lookup(params, cache, q, cell, w, rc_sdrc_query_radius(params, pdf),
-                                   &rng, &radiance, &record)) {
+                                   &rng, &radiance, &record, range_queries)) {
                     sum += weight * radiance;
                     *answered += 1u;
                 } else {

@@ -195,7 +195,7 @@ void SdrcCache::interpolate_round(const std::vector<uint32_t>& samples,
                                   const RadianceSource& diffuse) {
     const DeviceSdrcCache cache(context_, store_, sites_, trees_);
     const size_t m = static_cast<size_t>(params.interp);
-    Buffer<unsigned> counters(context_, 1, "sdrc_interpolation_counters");
+    Buffer<unsigned> counters(context_, 2, "sdrc_interpolation_counters");
     Buffer<unsigned> ray_counters(context_, 1, "sdrc_miss_counters");
     std::vector<std::pair<int, shared::LTreeNode>> inserts;  // in sample, then direction order
     const size_t batch_limit = options_.round_batch > 0 ? options_.round_batch : kRoundBatch;
@@ -218,7 +218,9 @@ void SdrcCache::interpolate_round(const std::vector<uint32_t>& samples,
                         diffuse, radiance, nodes, ray_counters);
         context_.launch(add_misses_kernel_, count, params, batch, misses, radiance, glossy);
         stats_.directions += count * m;
-        stats_.answered += counters.download()[0];
+        const std::vector<unsigned> counted = counters.download();
+        stats_.answered += counted[0];
+        stats_.range_queries += counted[1];
         stats_.miss_rays += ray_counters.download()[0];
         const std::vector<shared::SdrcMiss> miss = misses.download();
         const std::vector<shared::LTreeNode> node = nodes.download();

@@ -60,10 +60,11 @@ struct SdrcStats {
     uint64_t ltree_nodes = 0;  // at the end, trees and buffers
     uint64_t record_rays = 0;
     uint64_t miss_rays = 0;
-    uint64_t directions = 0;  // interpolation directions drawn (M per served camera sample)
-    uint64_t answered = 0;    // of those, answered from the L-trees
-    uint64_t misses = 0;      // traced: inserted into an L-tree, or from the camera sample
-    uint64_t unstored = 0;    // of the misses, no record could take them (traced from the sample)
+    uint64_t directions = 0;     // interpolation directions drawn (M per served camera sample)
+    uint64_t answered = 0;       // of those, answered from the L-trees
+    uint64_t range_queries = 0;  // L-trees queried (each direction queries every covering record)
+    uint64_t misses = 0;         // traced: inserted into an L-tree, or from the camera sample
+    uint64_t unstored = 0;  // of the misses, no record could take them (traced from the sample)
     size_t rebuilds = 0;
     double query_seconds = 0.0;
     double tree_build_seconds = 0.0;  // the host's L-tree builds (in record_seconds) and rebuilds

@@ -81,6 +81,7 @@ nlohmann::json sdrc_stats(const SdrcStats& s) {
             {"directions", s.directions},
             {"answered", s.answered},
             {"hit_rate", ratio(static_cast<double>(s.answered), static_cast<double>(s.directions))},
+            {"range_queries", s.range_queries},
             {"misses", s.misses},
             {"unstored_misses", s.unstored},
             {"miss_rays", s.miss_rays},
