@@ -20,8 +20,8 @@ RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 SCRATCH = os.path.join(os.environ.get("RADCACHE_TEST_SCRATCH_DIR") or "/tmp", "sweep_test")
 # The columns docs/results.md and the sweep's docstring document, in order.
 DOCUMENTED_COLUMNS = ["scene", "frame", "method", "curve", "setting", "spp", "accuracy",
-                      "ic_rays", "ic_min_spacing", "rc_rays", "photons", "grid", "gather_rays",
-                      "repeats",
+                      "ic_rays", "ic_min_spacing", "rc_rays", "sdrc_interp", "photons", "grid",
+                      "gather_rays", "repeats",
                       "wall_seconds", "wall_seconds_min", "wall_seconds_max", "render_seconds",
                       "render_seconds_min", "render_seconds_max", "kernel_seconds",
                       "kernel_seconds_min", "kernel_seconds_max", "compile_seconds", "rmse",

@@ -18,7 +18,9 @@ Methods and their knobs: pt (--pt-spp); ic (one curve per --ic-rays x --ic-spp x
 --ic-min-spacing, --ic-accuracy along it); ic-ivg (ic whose records read the irradiance vector
 grid: --ic-accuracy at the first --ic-spp, --ic-rays and --ic-min-spacing); rc (radiance caching
 for glossy lobes beside ic's defaults for diffuse ones: one curve per --rc-rays, --ic-accuracy
-along it at the first --ic-spp); ivg (one curve per
+along it at the first --ic-spp); sdrc (spatial directional radiance caching for glossy lobes,
+the same way: one curve per --sdrc-interp, --ic-accuracy along it at the first --ic-spp); ivg
+(one curve per
 --ivg-grid, --ivg-photons along it, at --ivg-spp camera samples); ivg-gather (--gather-rays per
 camera sample at --gather-spp camera samples, the grid at its defaults). A grid is auto (about
 32k vertices), auto*K (K times auto's voxels per axis, read off the untimed warm-up render) or
@@ -39,7 +41,7 @@ its ray and record counts, and the sweep fails naming the point if one differs. 
 measured once, on the first repeat's image. The time columns are the median over the repeats
 (the mean of the middle two for an even count) and their _min and _max the fastest and slowest.
 
-Columns: scene, frame, method, curve, setting, spp, accuracy, ic_rays, ic_min_spacing, rc_rays,
+Columns: scene, frame, method, curve, setting, spp, accuracy, ic_rays, ic_min_spacing, rc_rays, sdrc_interp,
 photons, grid, gather_rays, repeats, wall_seconds, wall_seconds_min, wall_seconds_max,
 render_seconds, render_seconds_min, render_seconds_max, kernel_seconds, kernel_seconds_min,
 kernel_seconds_max, compile_seconds, rmse, relmse, relmse_net, flip, indirect_relmse, records,
@@ -93,11 +95,11 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 TIMES = ["wall_seconds", "render_seconds", "kernel_seconds"]
 COLUMNS = ["scene", "frame", "method", "curve", "setting", "spp", "accuracy", "ic_rays",
-           "ic_min_spacing", "rc_rays", "photons", "grid", "gather_rays", "repeats"] + [
+           "ic_min_spacing", "rc_rays", "sdrc_interp", "photons", "grid", "gather_rays", "repeats"] + [
            "%s%s" % (t, suffix) for t in TIMES for suffix in ("", "_min", "_max")] + [
            "compile_seconds", "rmse", "relmse", "relmse_net", "flip", "indirect_relmse",
            "records", "device", "image"]
-METHODS = ["pt", "ic", "ic-ivg", "rc", "ivg", "ivg-gather"]
+METHODS = ["pt", "ic", "ic-ivg", "rc", "sdrc", "ivg", "ivg-gather"]
 GRID_FORM = re.compile(r"^(auto|auto\*(\d+(\.\d+)?)|\d+x\d+x\d+)$")
 SPACING_FORM = re.compile(r"^(default|\d+(\.\d+)?(px|u)?)$")
 
@@ -240,6 +242,15 @@ def ic_runs(args):
                              {"spp": spp, "accuracy": accuracy, "rc_rays": rays},
                              ["--method", "rc", "--spp", str(spp), "--accuracy", str(accuracy),
                               "--rc-rays", str(rays)]))
+    if "sdrc" in args.methods:
+        spp = args.ic_spp[0]
+        for interp in args.sdrc_interp:
+            for accuracy in args.ic_accuracy:
+                runs.append(("sdrc", "sdrc %d directions, %d spp" % (interp, spp),
+                             "accuracy=%g sdrc_interp=%d spp=%d" % (accuracy, interp, spp),
+                             {"spp": spp, "accuracy": accuracy, "sdrc_interp": interp},
+                             ["--method", "sdrc", "--spp", str(spp), "--accuracy", str(accuracy),
+                              "--sdrc-interp", str(interp)]))
     return runs
 
 
@@ -372,6 +383,7 @@ def radcache_rows(runs, measured, first_stats, reference, out):
                "ic_rays": knobs.get("ic_rays", ""),
                "ic_min_spacing": knobs.get("ic_min_spacing", ""),
                "rc_rays": knobs.get("rc_rays", ""),
+               "sdrc_interp": knobs.get("sdrc_interp", ""),
                "grid": "x".join(str(c) for c in grid["cells"]) if grid else "",
                "photons": grid.get("photons", ""), "gather_rays": knobs.get("gather_rays", ""),
                "records": frame.get("records", ""), "device": stats["device"]}
@@ -399,7 +411,7 @@ def povray_rows(args, scene, reference, out):
             seconds = float(peer["seconds"])
             row = {"method": "povray", "curve": "POV-Ray 3.7 radiosity",
                    "setting": peer["setting"], "spp": "", "accuracy": "", "ic_rays": "",
-                   "ic_min_spacing": "", "rc_rays": "", "photons": "", "grid": "", "gather_rays": "",
+                   "ic_min_spacing": "", "rc_rays": "", "sdrc_interp": "", "photons": "", "grid": "", "gather_rays": "",
                    "repeats": 1, "kernel_seconds": "", "kernel_seconds_min": "",
                    "kernel_seconds_max": "", "compile_seconds": "", "records": "",
                    "device": "POV-Ray, %s threads" % peer["threads"]}
@@ -459,6 +471,10 @@ def parse_arguments(argv):
                         help="rc's hemisphere rays per radiance record, one curve each, "
                              "--ic-accuracy along it at the first --ic-spp, the diffuse records "
                              "at their defaults (default: %(default)s)")
+    parser.add_argument("--sdrc-interp", nargs="+", type=int, default=[1, 4],
+                        help="sdrc's lobe directions per camera sample, one curve each, "
+                             "--ic-accuracy along it at the first --ic-spp, the diffuse records "
+                             "at their defaults (default: %(default)s)")
     parser.add_argument("--ivg-photons", nargs="+", type=int,
                         default=[65536, 262144, 1048576, 4194304],
                         help="ivg's photons along each curve (default: %(default)s)")
@@ -485,7 +501,8 @@ def parse_arguments(argv):
     else:
         args = parser.parse_args(argv)
         args.extra = []
-    for name in ("pt_spp", "ic_rays", "ic_spp", "rc_rays", "ivg_photons", "gather_rays"):
+    for name in ("pt_spp", "ic_rays", "ic_spp", "rc_rays", "sdrc_interp", "ivg_photons",
+                 "gather_rays"):
         if any(v < 1 for v in getattr(args, name)):
             parser.error("--%s: values must be positive" % name.replace("_", "-"))
     if any(not 0.0 < a for a in args.ic_accuracy):
