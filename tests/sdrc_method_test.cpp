@@ -264,6 +264,51 @@ TEST(SdrcMethod, GlossyBoxIndirectIsCloseToTheReference) {
     EXPECT_LT(e.relmse, 0.02);
 }
 
+// The kettle (the paper's case: anisotropic Ward 0.18 / 0.09 reflecting checkered walls) at 64²,
+// 4 camera samples, 4 directions each: on the kettle's pixels (those SDRC serves), the indirect
+// layer against the shipped reference (box filtered) has a relMSE below 0.05 (measured 0.030) and
+// below half of Monte Carlo's at the same camera samples (irradiance caching with the same
+// diffuse records, the lobe path traced; measured 0.17x), and its mean is within 2% of the
+// reference's (measured 0.7%).
+TEST(SdrcMethod, KettleIndirectBeatsMonteCarloAgainstTheReference) {
+    constexpr int kSize = 64;
+    test::DeviceFrame device(load_scene(test::source_dir() / "scenes/kettle/scene.json"));
+    const IrradianceCacheOptions ic = ic_options(kSize, 4, 13);
+    SdrcOptions sdrc;
+    sdrc.interp = 4;
+    const SdrcRender r = render_sdrc(device, ic, sdrc);
+    const Image mc = IrradianceCache(device.frame()).render(ic);
+    const Image reference = test::scene_reference("kettle", "indirect", kSize);
+    const Image mask = select_layers(r.image, {"sdrc-hits"});
+    size_t pixels = 0;
+    const Image indirect = select_layers(r.image, {"indirect"});
+    const double sdrc_error = masked_relmse(indirect, reference, mask, &pixels);
+    const double mc_error =
+        masked_relmse(select_layers(mc, {"indirect"}), reference, mask, &pixels);
+    double mean = 0.0;
+    double reference_mean = 0.0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            if (mask.at(x, y, 0) > 0.0f) {
+                for (int c = 0; c < 3; ++c) {
+                    mean += indirect.at(x, y, c);
+                    reference_mean += reference.at(x, y, c);
+                }
+            }
+        }
+    }
+    std::printf(
+        "sdrc kettle %d^2: %zu records, hit rate %.3f; kettle (%zu pixels) indirect relMSE sdrc "
+        "%.3g, Monte Carlo lobe %.3g; mean %.4f vs %.4f\n",
+        kSize, r.stats.records,
+        static_cast<double>(r.stats.answered) / static_cast<double>(r.stats.directions), pixels,
+        sdrc_error, mc_error, mean / (3.0 * pixels), reference_mean / (3.0 * pixels));
+    ASSERT_GT(pixels, 500u);
+    EXPECT_LT(sdrc_error, 0.05);
+    EXPECT_LT(sdrc_error, 0.5 * mc_error);
+    EXPECT_NEAR(mean, reference_mean, 0.02 * reference_mean);
+}
+
 bool bitwise_equal(const Image& a, const Image& b) {
     return a.width == b.width && a.height == b.height && a.pixels.size() == b.pixels.size() &&
            std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;

@@ -9,6 +9,18 @@
 
 namespace rc {
 
+int first_candidate_stride(uint32_t i, uint32_t width, uint32_t spp) {
+    const uint32_t pixel = i / spp;
+    if (i % spp == 0) {
+        for (int stride : {16, 8, 4, 2}) {
+            if ((pixel % width) % stride == 0 && (pixel / width) % stride == 0) {
+                return stride;
+            }
+        }
+    }
+    return 1;
+}
+
 GlossyPlacement::GlossyPlacement(Context& context)
     : context_(context),
       served_kernel_(context.kernel("glossy/glossy_placement.cl", "rc_served_queries")),
@@ -106,9 +118,7 @@ void GlossyPlacement::place(const Buffer<shared::RcQuery>& queries, const Record
     for (int stride : {16, 8, 4, 2, 1}) {
         std::vector<uint32_t> candidates;
         for (uint32_t i : served_) {
-            const uint32_t pixel = i / spp;
-            const bool on_grid = (pixel % width) % stride == 0 && (pixel / width) % stride == 0;
-            if (on_grid && (stride == 1 || i % spp == 0)) {
+            if (first_candidate_stride(i, width, spp) >= stride) {
                 candidates.push_back(i);
             }
         }

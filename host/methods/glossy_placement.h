@@ -18,6 +18,11 @@
 
 namespace rc {
 
+// The coarsest placement stride at which camera sample i (entry pixel * spp + s of an image
+// `width` pixels wide) is a candidate: the largest of 16, 8, 4, 2 whose grid holds its pixel when
+// it is its pixel's first sample, else 1. A sample is a candidate at every stride up to it.
+int first_candidate_stride(uint32_t i, uint32_t width, uint32_t spp);
+
 struct GlossyPlacementStats {
     std::vector<PlacementPass> passes;  // level 0 only
     size_t glossy_samples = 0;          // camera samples on a specular lobe the cache serves

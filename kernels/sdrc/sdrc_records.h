@@ -77,7 +77,8 @@ RC_FUNC float4 rc_sdrc_record_radius(const SdrcParams* params, RC_GLOBAL const M
     const Material material = materials[site->material];
     const Frame frame = rc_query_frame(site);
     const float3 wo = site->outgoing.xyz;
-    float lo = 0.0f, lx = 0.0f, ly = 0.0f;
+    float outgoing = 0.0f, moved_x = 0.0f,
+          moved_y = 0.0f;  // N times L_o at p, p + delta t, p + delta b
     for (int k = 0; k < n; ++k) {
         float3 direction;
         float weight;
@@ -86,10 +87,10 @@ RC_FUNC float4 rc_sdrc_record_radius(const SdrcParams* params, RC_GLOBAL const M
             continue;
         }
         const float l = rc_luminance(samples[k].xyz);
-        lo += l * weight;
+        outgoing += l * weight;
         if (!(delta > 0.0f) || !isfinite(samples[k].w)) {
-            lx += l * weight;
-            ly += l * weight;
+            moved_x += l * weight;  // no hit: the direction does not turn
+            moved_y += l * weight;
             continue;
         }
         const float3 wi = rc_to_local(&frame, direction);
@@ -98,16 +99,16 @@ RC_FUNC float4 rc_sdrc_record_radius(const SdrcParams* params, RC_GLOBAL const M
         const float3 towards_x = rc_to_local(&frame, normalize(hit - delta * frame.t));
         const float3 towards_y = rc_to_local(&frame, normalize(hit - delta * frame.b));
         if (pdf > 0.0f) {
-            lx += l * rc_sdrc_lobe_value(&material, wo, towards_x) / pdf;
-            ly += l * rc_sdrc_lobe_value(&material, wo, towards_y) / pdf;
+            moved_x += l * rc_sdrc_lobe_value(&material, wo, towards_x) / pdf;
+            moved_y += l * rc_sdrc_lobe_value(&material, wo, towards_y) / pdf;
         }
     }
     float limit = INFINITY;
-    if (delta > 0.0f && lo > 0.0f) {
-        const float gx = (lx - lo) / delta;
-        const float gy = (ly - lo) / delta;
+    if (delta > 0.0f && outgoing > 0.0f) {
+        const float gx = (moved_x - outgoing) / delta;
+        const float gy = (moved_y - outgoing) / delta;
         const float gradient = sqrt(gx * gx + gy * gy);
-        limit = gradient > 0.0f ? lo / gradient : INFINITY;
+        limit = gradient > 0.0f ? outgoing / gradient : INFINITY;
     }
-    return (float4)(harmonic, nearest, limit, lo / (float)n);
+    return (float4)(harmonic, nearest, limit, outgoing / (float)n);
 }

@@ -8,7 +8,8 @@
 //     array of them); a payload whose size P is chosen at run time is P floats, record i's at
 //     [i P, (i + 1) P) of a float array: radiance caching's n^2 spherical-harmonic coefficients
 //     per channel and their two translational-gradient vectors (P = 3 n^2 + 2 x 3 n^2 for order
-//     n), SDRC's offset and size of the record's L-tree in a node array.
+//     n). SDRC's records have no payload in the store: their L-trees (kernels/shared/sdrc.h) live
+//     beside it, record i's described by entry i of an SdrcTree array.
 // So the shared part, and everything written against it, does not depend on the method.
 #pragma once
 

@@ -34,20 +34,6 @@ void build_trees_in_parallel(std::vector<LTree*>& trees) {
     }
 }
 
-// The interpolation round of camera sample i (entry pixel * spp + s): the placement's stride
-// (GlossyPlacement) at which it is first a candidate.
-int round_of(uint32_t i, uint32_t width, uint32_t spp) {
-    const uint32_t pixel = i / spp;
-    if (i % spp == 0) {
-        for (int stride : {16, 8, 4, 2}) {
-            if ((pixel % width) % stride == 0 && (pixel / width) % stride == 0) {
-                return stride;
-            }
-        }
-    }
-    return 1;
-}
-
 // The store's records and the world-space grid over them, with the records' sites and L-trees,
 // on the device.
 struct DeviceSdrcCache {
@@ -79,7 +65,7 @@ int sdrc_record_samples(const SdrcOptions& options, int spp) {
     if (options.samples > 0) {
         return options.samples;
     }
-    const double n = 12.0 * options.interp * spp;
+    const double n = 3.0 * options.interp * spp;
     return static_cast<int>(std::clamp(n, 64.0, 8192.0));
 }
 
@@ -276,7 +262,7 @@ Buffer<shared::RcGlossySample> SdrcCache::glossy_samples(const shared::IcParams&
     for (int stride : {16, 8, 4, 2, 1}) {
         std::vector<uint32_t> round;
         for (uint32_t i : placement_.served()) {
-            if (round_of(i, width, spp) == stride) {
+            if (first_candidate_stride(i, width, spp) == stride) {
                 round.push_back(i);
             }
         }

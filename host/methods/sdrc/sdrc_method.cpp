@@ -27,9 +27,9 @@ std::vector<OptionSpec> sdrc_option_specs() {
     std::vector<OptionSpec> specs = {
         {"--sdrc-samples", "", "N|auto",
          "sdrc: directions a new record samples from its lobe and keeps in its L-tree, 16-65536 "
-         "(default auto: 12 x interp x spp within [64, 8192])"},
+         "(default auto: 3 x interp x spp within [64, 8192])"},
         {"--sdrc-interp", "", "M",
-         "sdrc: lobe directions per camera sample looked up in the L-trees, 1-64 (default 1)"},
+         "sdrc: lobe directions per camera sample looked up in the L-trees, 1-64 (default 4)"},
         {"--sdrc-max-radius", "", "R",
          "sdrc: ceiling of a lookup's radius in the paraboloid map, (0, 2] (default 0.15)"},
         {"--sdrc-memory", "", "MIB",
