@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "glossy_scenes.h"
 #include "image/image_error.h"
 #include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/path_tracer/path_tracer.h"
@@ -53,28 +54,6 @@ RcRender render_rc(test::DeviceFrame& device, IrradianceCacheOptions ic,
     return r;
 }
 
-// relMSE ((v - r)^2 / (r^2 + 0.01), image_error's) of layer `layer` of `image` over the pixels
-// where `mask`'s first channel is positive; *pixels their count.
-double masked_relmse(const Image& image, const Image& reference, const Image& mask,
-                     size_t* pixels) {
-    double sum = 0.0;
-    *pixels = 0;
-    for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width; ++x) {
-            if (!(mask.at(x, y, 0) > 0.0f)) {
-                continue;
-            }
-            ++*pixels;
-            for (int c = 0; c < image.channels; ++c) {
-                const double r = reference.at(x, y, c);
-                const double d = image.at(x, y, c) - r;
-                sum += d * d / (r * r + 0.01);
-            }
-        }
-    }
-    return *pixels > 0 ? sum / (*pixels * image.channels) : 0.0;
-}
-
 // glossy-box at 64², 4 camera samples: the indirect layer against the shipped reference (box
 // filtered), means within 1% per channel; and, on the pixels radiance caching serves (the satin
 // sphere), against irradiance caching with the same diffuse records, which path traces the lobe.
@@ -93,9 +72,9 @@ TEST(RadianceCacheMethod, GlossyBoxIndirectIsCloseToTheReference) {
     const Image ic_image = IrradianceCache(device.frame()).render(ic_options(kSize, 4, 7, 256));
     size_t pixels = 0;
     const double rc_satin =
-        masked_relmse(select_layers(r.image, {"indirect"}), reference, order, &pixels);
+        test::masked_relmse(select_layers(r.image, {"indirect"}), reference, order, &pixels);
     const double ic_satin =
-        masked_relmse(select_layers(ic_image, {"indirect"}), reference, order, &pixels);
+        test::masked_relmse(select_layers(ic_image, {"indirect"}), reference, order, &pixels);
     std::printf("over the %zu pixels rc serves: indirect relMSE rc %.3g, ic %.3g\n", pixels,
                 rc_satin, ic_satin);
     EXPECT_GT(r.stats.records, 0u);
@@ -166,56 +145,6 @@ TEST(RadianceCacheMethod, WhiteSkyPlaneReflectsRadianceTimesAlbedo) {
     EXPECT_LT(std::abs(mean), 0.01);
 }
 
-// A sphere of Phong exponent `exponent` (diffuse 0.1, specular 0.6) on a white floor in a box
-// with a red and a blue wall, lit by a small area light: its glossy reflection of the walls is
-// indirect light.
-Scene phong_sphere_scene(int exponent) {
-    const auto dir = test::scratch_dir("rc_phong_" + std::to_string(exponent));
-    std::ofstream(dir / "scene.json") << R"({
-        "camera": {"position": [0, 0.2, -3.4], "look_at": [0, -0.4, 0], "up": [0, 1, 0],
-                   "fov": 24, "resolution": [32, 32]},
-        "materials": {
-            "white": {"type": "diffuse", "reflectance": 0.5},
-            "red": {"type": "diffuse", "reflectance": [0.7, 0.1, 0.1]},
-            "blue": {"type": "diffuse", "reflectance": [0.1, 0.15, 0.7]},
-            "sphere": {"type": "phong", "diffuse": 0.1, "specular": 0.6, "exponent": )"
-                                      << exponent << R"(}},
-        "shapes": [
-            {"type": "rectangle", "material": "white",
-             "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}}, {"translate": [0, -1, 0]}]},
-            {"type": "rectangle", "material": "white",
-             "transform": [{"rotate": {"axis": [1, 0, 0], "angle": 90}}, {"translate": [0, 1, 0]}]},
-            {"type": "rectangle", "material": "white",
-             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 180}}, {"translate": [0, 0, 1]}]},
-            {"type": "rectangle", "material": "red",
-             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": -90}}, {"translate": [1, 0, 0]}]},
-            {"type": "rectangle", "material": "blue",
-             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 90}}, {"translate": [-1, 0, 0]}]},
-            {"type": "rectangle", "material": "white", "emitter": {"type": "area", "radiance": 12},
-             "transform": [{"scale": 0.3}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
-                           {"translate": [0, 0.998, 0]}]},
-            {"type": "sphere", "center": [0, -0.55, 0], "radius": 0.45, "material": "sphere"}
-        ]
-    })";
-    return load_scene(dir / "scene.json");
-}
-
-// The pixels all of whose camera samples see the sphere (albedo 0.7 in every channel: the
-// walls' are 0.5 or coloured).
-Image sphere_mask(const Image& albedo) {
-    Image mask(albedo.width, albedo.height, 1);
-    for (int y = 0; y < albedo.height; ++y) {
-        for (int x = 0; x < albedo.width; ++x) {
-            bool sphere = true;
-            for (int c = 0; c < 3; ++c) {
-                sphere = sphere && std::abs(albedo.at(x, y, c) - 0.7f) < 1e-4f;
-            }
-            mask.at(x, y, 0) = sphere ? 1.0f : 0.0f;
-        }
-    }
-    return mask;
-}
-
 // Where radiance caching fails, its fallback must catch the lobe: over Phong exponents 4 to 256
 // on one sphere, rc's indirect light on the sphere is never more than 20% worse (relMSE against
 // a 1024-spp path-traced reference) than irradiance caching's, which path traces the glossy lobe
@@ -224,7 +153,7 @@ Image sphere_mask(const Image& albedo) {
 TEST(RadianceCacheMethod, SharpLobesFallBackWithoutLosingToMonteCarlo) {
     constexpr int kSize = 32;
     for (int exponent : {4, 16, 64, 256}) {
-        test::DeviceFrame device(phong_sphere_scene(exponent));
+        test::DeviceFrame device(test::phong_sphere_scene(exponent, "rc"));
         PathTracerOptions pt;
         pt.width = kSize;
         pt.height = kSize;
@@ -236,12 +165,12 @@ TEST(RadianceCacheMethod, SharpLobesFallBackWithoutLosingToMonteCarlo) {
         rc.rays = 1024;
         const RcRender r = render_rc(device, ic, rc);
         const Image mc = IrradianceCache(device.frame()).render(ic);
-        const Image mask = sphere_mask(select_layers(r.image, {"albedo"}));
+        const Image mask = test::sphere_mask(select_layers(r.image, {"albedo"}));
         size_t pixels = 0;
         const double rc_error =
-            masked_relmse(select_layers(r.image, {"indirect"}), reference, mask, &pixels);
+            test::masked_relmse(select_layers(r.image, {"indirect"}), reference, mask, &pixels);
         const double mc_error =
-            masked_relmse(select_layers(mc, {"indirect"}), reference, mask, &pixels);
+            test::masked_relmse(select_layers(mc, {"indirect"}), reference, mask, &pixels);
         std::printf(
             "Phong %3d: order %d, %zu records, fallback %.2f; sphere (%zu pixels) "
             "indirect relMSE rc %.3g, Monte Carlo lobe %.3g\n",
@@ -259,11 +188,6 @@ TEST(RadianceCacheMethod, SharpLobesFallBackWithoutLosingToMonteCarlo) {
     }
 }
 
-bool bitwise_equal(const Image& a, const Image& b) {
-    return a.width == b.width && a.height == b.height && a.pixels.size() == b.pixels.size() &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
-}
-
 Image render_rc_with(size_t local_size, size_t max_chunk, const Scene& scene) {
     ContextOptions options = test::default_context_options();
     options.local_size = local_size;
@@ -278,11 +202,12 @@ Image render_rc_with(size_t local_size, size_t max_chunk, const Scene& scene) {
 // Same seed and options: the same image, bit for bit, whatever the chunking and work-group
 // size (records placed in the same order, sums in list order).
 TEST(RadianceCacheMethod, ImageIsBitwiseIdenticalAcrossRunsChunksAndWorkGroups) {
-    const Scene scene = phong_sphere_scene(8);
+    const Scene scene = test::phong_sphere_scene(8, "rc");
     const Image reference = render_rc_with(0, 0, scene);
-    EXPECT_TRUE(bitwise_equal(reference, render_rc_with(0, 0, scene))) << "second run";
-    EXPECT_TRUE(bitwise_equal(reference, render_rc_with(8, 1000, scene))) << "local 8, chunk 1000";
-    EXPECT_TRUE(bitwise_equal(reference, render_rc_with(32, 4096, scene)))
+    EXPECT_TRUE(test::bitwise_equal(reference, render_rc_with(0, 0, scene))) << "second run";
+    EXPECT_TRUE(test::bitwise_equal(reference, render_rc_with(8, 1000, scene)))
+        << "local 8, chunk 1000";
+    EXPECT_TRUE(test::bitwise_equal(reference, render_rc_with(32, 4096, scene)))
         << "local 32, chunk 4096";
     const Image glossy = select_layers(reference, {"glossy-indirect"});
     EXPECT_GT(*std::max_element(glossy.pixels.begin(), glossy.pixels.end()), 0.0f);
@@ -292,7 +217,7 @@ TEST(RadianceCacheMethod, ImageIsBitwiseIdenticalAcrossRunsChunksAndWorkGroups) 
 // its glossy light is the first's bit for bit; a file of another order is refused.
 TEST(RadianceCacheMethod, CacheFilesRoundTripTheRadianceRecords) {
     const auto dir = test::scratch_dir("rc_cache_files");
-    test::DeviceFrame device(phong_sphere_scene(8));
+    test::DeviceFrame device(test::phong_sphere_scene(8, "rc"));
     const IrradianceCacheOptions ic = ic_options(24, 2, 17, 128);
     RadianceCacheOptions rc;
     rc.rays = 256;
@@ -305,8 +230,8 @@ TEST(RadianceCacheMethod, CacheFilesRoundTripTheRadianceRecords) {
     EXPECT_EQ(second.stats.loaded_records, first.stats.records);
     EXPECT_EQ(second.stats.records, first.stats.records);
     EXPECT_TRUE(second.stats.placement.passes.empty());
-    EXPECT_TRUE(bitwise_equal(select_layers(first.image, {"glossy-indirect"}),
-                              select_layers(second.image, {"glossy-indirect"})));
+    EXPECT_TRUE(test::bitwise_equal(select_layers(first.image, {"glossy-indirect"}),
+                                    select_layers(second.image, {"glossy-indirect"})));
     rc.order = 4;
     EXPECT_THROW(RadianceCache(device.frame(), rc), Error);
 }

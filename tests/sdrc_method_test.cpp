@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "glossy_scenes.h"
 #include "image/image_error.h"
 #include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/path_tracer/path_tracer.h"
@@ -52,28 +53,6 @@ SdrcRender render_sdrc(test::DeviceFrame& device, IrradianceCacheOptions ic,
     r.image = cache.render(ic);
     r.stats = glossy.stats();
     return r;
-}
-
-// relMSE ((v - r)^2 / (r^2 + 0.01)) of `image` against `reference` over the pixels where
-// `mask`'s first channel is positive; *pixels their count.
-double masked_relmse(const Image& image, const Image& reference, const Image& mask,
-                     size_t* pixels) {
-    double sum = 0.0;
-    *pixels = 0;
-    for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width; ++x) {
-            if (!(mask.at(x, y, 0) > 0.0f)) {
-                continue;
-            }
-            ++*pixels;
-            for (int c = 0; c < image.channels; ++c) {
-                const double r = reference.at(x, y, c);
-                const double d = image.at(x, y, c) - r;
-                sum += d * d / (r * r + 0.01);
-            }
-        }
-    }
-    return *pixels > 0 ? sum / (*pixels * image.channels) : 0.0;
 }
 
 // A glossy plane (material JSON `material`) under a constant sky, nothing else, seen steeply from
@@ -156,56 +135,6 @@ TEST(SdrcMethod, WhiteSkyWardPlaneReflectsRadianceTimesAlbedo) {
         R"({"type": "ward", "diffuse": 0, "specular": 1, "alpha_x": 0.18, "alpha_y": 0.09})", ward);
 }
 
-// A sphere of Phong exponent `exponent` (diffuse 0.1, specular 0.6) on a white floor in a box
-// with a red and a blue wall, lit by a small area light: its glossy reflection of the walls is
-// indirect light.
-Scene phong_sphere_scene(int exponent) {
-    const auto dir = test::scratch_dir("sdrc_phong_" + std::to_string(exponent));
-    std::ofstream(dir / "scene.json") << R"({
-        "camera": {"position": [0, 0.2, -3.4], "look_at": [0, -0.4, 0], "up": [0, 1, 0],
-                   "fov": 24, "resolution": [32, 32]},
-        "materials": {
-            "white": {"type": "diffuse", "reflectance": 0.5},
-            "red": {"type": "diffuse", "reflectance": [0.7, 0.1, 0.1]},
-            "blue": {"type": "diffuse", "reflectance": [0.1, 0.15, 0.7]},
-            "sphere": {"type": "phong", "diffuse": 0.1, "specular": 0.6, "exponent": )"
-                                      << exponent << R"(}},
-        "shapes": [
-            {"type": "rectangle", "material": "white",
-             "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}}, {"translate": [0, -1, 0]}]},
-            {"type": "rectangle", "material": "white",
-             "transform": [{"rotate": {"axis": [1, 0, 0], "angle": 90}}, {"translate": [0, 1, 0]}]},
-            {"type": "rectangle", "material": "white",
-             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 180}}, {"translate": [0, 0, 1]}]},
-            {"type": "rectangle", "material": "red",
-             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": -90}}, {"translate": [1, 0, 0]}]},
-            {"type": "rectangle", "material": "blue",
-             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 90}}, {"translate": [-1, 0, 0]}]},
-            {"type": "rectangle", "material": "white", "emitter": {"type": "area", "radiance": 12},
-             "transform": [{"scale": 0.3}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
-                           {"translate": [0, 0.998, 0]}]},
-            {"type": "sphere", "center": [0, -0.55, 0], "radius": 0.45, "material": "sphere"}
-        ]
-    })";
-    return load_scene(dir / "scene.json");
-}
-
-// The pixels all of whose camera samples see the sphere (albedo 0.7 in every channel: the
-// walls' are 0.5 or coloured).
-Image sphere_mask(const Image& albedo) {
-    Image mask(albedo.width, albedo.height, 1);
-    for (int y = 0; y < albedo.height; ++y) {
-        for (int x = 0; x < albedo.width; ++x) {
-            bool sphere = true;
-            for (int c = 0; c < 3; ++c) {
-                sphere = sphere && std::abs(albedo.at(x, y, c) - 0.7f) < 1e-4f;
-            }
-            mask.at(x, y, 0) = sphere ? 1.0f : 0.0f;
-        }
-    }
-    return mask;
-}
-
 // On sharp lobes, where radiance caching's spherical harmonics blur or give up (exponents 16 to
 // 256), SDRC's indirect light on the sphere (relMSE against a 1024-spp path-traced reference)
 // beats path tracing the lobe at the same camera samples (irradiance caching with the same
@@ -213,7 +142,7 @@ Image sphere_mask(const Image& albedo) {
 TEST(SdrcMethod, SharpLobesBeatMonteCarloAtTheSameSamples) {
     constexpr int kSize = 32;
     for (int exponent : {16, 64, 256}) {
-        test::DeviceFrame device(phong_sphere_scene(exponent));
+        test::DeviceFrame device(test::phong_sphere_scene(exponent, "sdrc"));
         PathTracerOptions pt;
         pt.width = kSize;
         pt.height = kSize;
@@ -223,12 +152,12 @@ TEST(SdrcMethod, SharpLobesBeatMonteCarloAtTheSameSamples) {
         const IrradianceCacheOptions ic = ic_options(kSize, 8, 5);
         const SdrcRender r = render_sdrc(device, ic);
         const Image mc = IrradianceCache(device.frame()).render(ic);
-        const Image mask = sphere_mask(select_layers(r.image, {"albedo"}));
+        const Image mask = test::sphere_mask(select_layers(r.image, {"albedo"}));
         size_t pixels = 0;
         const double sdrc_error =
-            masked_relmse(select_layers(r.image, {"indirect"}), reference, mask, &pixels);
+            test::masked_relmse(select_layers(r.image, {"indirect"}), reference, mask, &pixels);
         const double mc_error =
-            masked_relmse(select_layers(mc, {"indirect"}), reference, mask, &pixels);
+            test::masked_relmse(select_layers(mc, {"indirect"}), reference, mask, &pixels);
         const double hit_rate =
             static_cast<double>(r.stats.answered) / static_cast<double>(r.stats.directions);
         std::printf(
@@ -282,9 +211,9 @@ TEST(SdrcMethod, KettleIndirectBeatsMonteCarloAgainstTheReference) {
     const Image mask = select_layers(r.image, {"sdrc-hits"});
     size_t pixels = 0;
     const Image indirect = select_layers(r.image, {"indirect"});
-    const double sdrc_error = masked_relmse(indirect, reference, mask, &pixels);
+    const double sdrc_error = test::masked_relmse(indirect, reference, mask, &pixels);
     const double mc_error =
-        masked_relmse(select_layers(mc, {"indirect"}), reference, mask, &pixels);
+        test::masked_relmse(select_layers(mc, {"indirect"}), reference, mask, &pixels);
     double mean = 0.0;
     double reference_mean = 0.0;
     for (int y = 0; y < kSize; ++y) {
@@ -309,11 +238,6 @@ TEST(SdrcMethod, KettleIndirectBeatsMonteCarloAgainstTheReference) {
     EXPECT_NEAR(mean, reference_mean, 0.02 * reference_mean);
 }
 
-bool bitwise_equal(const Image& a, const Image& b) {
-    return a.width == b.width && a.height == b.height && a.pixels.size() == b.pixels.size() &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
-}
-
 Image render_sdrc_with(size_t local_size, size_t max_chunk, size_t batch, const Scene& scene) {
     ContextOptions options = test::default_context_options();
     options.local_size = local_size;
@@ -331,12 +255,12 @@ Image render_sdrc_with(size_t local_size, size_t max_chunk, size_t batch, const 
 // and the record and interpolation batch sizes (the L-trees change only between rounds, in sample
 // order).
 TEST(SdrcMethod, ImageIsBitwiseIdenticalAcrossRunsChunksWorkGroupsAndBatches) {
-    const Scene scene = phong_sphere_scene(64);
+    const Scene scene = test::phong_sphere_scene(64, "sdrc");
     const Image reference = render_sdrc_with(0, 0, 0, scene);
-    EXPECT_TRUE(bitwise_equal(reference, render_sdrc_with(0, 0, 0, scene))) << "second run";
-    EXPECT_TRUE(bitwise_equal(reference, render_sdrc_with(8, 1000, 7, scene)))
+    EXPECT_TRUE(test::bitwise_equal(reference, render_sdrc_with(0, 0, 0, scene))) << "second run";
+    EXPECT_TRUE(test::bitwise_equal(reference, render_sdrc_with(8, 1000, 7, scene)))
         << "local 8, chunk 1000, batch 7";
-    EXPECT_TRUE(bitwise_equal(reference, render_sdrc_with(32, 4096, 3, scene)))
+    EXPECT_TRUE(test::bitwise_equal(reference, render_sdrc_with(32, 4096, 3, scene)))
         << "local 32, chunk 4096, batch 3";
     const Image glossy = select_layers(reference, {"glossy-indirect"});
     EXPECT_GT(*std::max_element(glossy.pixels.begin(), glossy.pixels.end()), 0.0f);
@@ -344,7 +268,7 @@ TEST(SdrcMethod, ImageIsBitwiseIdenticalAcrossRunsChunksWorkGroupsAndBatches) {
 
 // A memory cap the L-trees exceed stops the render with an error naming the option.
 TEST(SdrcMethod, MemoryCapTooSmallFailsWithAClearError) {
-    test::DeviceFrame device(phong_sphere_scene(64));
+    test::DeviceFrame device(test::phong_sphere_scene(64, "sdrc"));
     SdrcOptions sdrc;
     sdrc.memory_mib = 0.01;
     try {

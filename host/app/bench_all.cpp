@@ -2,8 +2,10 @@
 // one run (DESIGN.md §7), with Embree's native intersector on the same rays as the anchor.
 #include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -59,19 +61,22 @@ double kernel_seconds_since(const Context& context, const std::map<std::string, 
     return seconds;
 }
 
-// Radiance caching on glossy-box (the shipped scene with a lobe the records represent: the
-// benchmark's own scene may have none) at the benchmark's size up to 128², 2 camera samples, its
-// defaults (the diffuse records with 256 rays, one level: not what is measured), after a 16²
-// warm-up: SH coefficients projected per second of the projection kernel (one coefficient of one
-// channel from one hemisphere cell each) and record reflections interpolated per second of the
-// glossy buffer's kernel (a rotation and three dot products each).
-void bench_radiance_cache(Context& context, int width, int height, DeviceResult* result) {
+// Irradiance caching on glossy-box (the shipped scene with glossy lobes: the benchmark's own
+// scene may have none) with a glossy cache serving the specular lobes, at the benchmark's size up
+// to 128², 2 camera samples, the diffuse records with 256 rays and one level (not what is
+// measured), after a 16² warm-up. `make_cache(frame)` makes the cache of a render and
+// `keep(cache)` reads its statistics; returns the kernel times before the timed render.
+template <class Cache, class Keep>
+std::map<std::string, KernelTime> render_glossy_box(
+    Context& context, int width, int height,
+    const std::function<std::unique_ptr<Cache>(const FrameScene&, int max_depth, int rr_depth)>&
+        make_cache,
+    const Keep& keep) {
     const Scene scene = load_scene(shipped_scene("glossy-box"));
     const Bvh bvh = build_bvh(scene.mesh);
     const DeviceBvh device_bvh(context, bvh);
     const DeviceScene device_scene(context, scene);
     const FrameScene frame{context, scene, device_bvh, device_scene};
-    RadianceCacheStats stats;
     std::map<std::string, KernelTime> before;
     for (int pass = 0; pass < 2; ++pass) {
         before = context.kernel_times();
@@ -84,14 +89,29 @@ void bench_radiance_cache(Context& context, int width, int height, DeviceResult*
         ic.max_depth = scene.render.max_depth;
         ic.rr_depth = scene.render.rr_depth;
         ic.records_overlay = false;
-        RadianceCacheOptions options;
-        options.max_depth = ic.max_depth;
-        options.rr_depth = ic.rr_depth;
-        RadianceCache glossy(frame, options);
-        ic.glossy = &glossy;
+        const std::unique_ptr<Cache> cache = make_cache(frame, ic.max_depth, ic.rr_depth);
+        ic.glossy = cache.get();
         IrradianceCache(frame).render(ic);
-        stats = glossy.stats();
+        keep(*cache);
     }
+    return before;
+}
+
+// Radiance caching at its defaults (render_glossy_box): SH coefficients projected per second of
+// the projection kernel (one coefficient of one channel from one hemisphere cell each) and record
+// reflections interpolated per second of the glossy buffer's kernel (a rotation and three dot
+// products each).
+void bench_radiance_cache(Context& context, int width, int height, DeviceResult* result) {
+    RadianceCacheStats stats;
+    const auto before = render_glossy_box<RadianceCache>(
+        context, width, height,
+        [](const FrameScene& frame, int max_depth, int rr_depth) {
+            RadianceCacheOptions options;
+            options.max_depth = max_depth;
+            options.rr_depth = rr_depth;
+            return std::make_unique<RadianceCache>(frame, options);
+        },
+        [&](const RadianceCache& cache) { stats = cache.stats(); });
     const double project_seconds = kernel_seconds_since(context, before, {"rc_record_project"});
     const double coefficients = static_cast<double>(stats.records) * stats.strata_m *
                                 stats.strata_n * 3.0 * stats.order * stats.order;
@@ -102,38 +122,20 @@ void bench_radiance_cache(Context& context, int width, int height, DeviceResult*
                                static_cast<double>(stats.reflections) / splat_seconds * 1e-6, 0.0});
 }
 
-// SDRC on glossy-box at the benchmark's size up to 128², 2 camera samples, its defaults with 4
-// directions per camera sample (the diffuse records as radiance caching's benchmark), after a
-// 16² warm-up: L-tree range queries per second of the interpolation kernel (one record's L-tree
-// searched for one direction each) and lobe directions interpolated per second.
+// SDRC at its defaults (render_glossy_box): L-tree range queries per second of the interpolation
+// kernel (one record's L-tree searched for one direction each) and lobe directions interpolated
+// per second.
 void bench_sdrc(Context& context, int width, int height, DeviceResult* result) {
-    const Scene scene = load_scene(shipped_scene("glossy-box"));
-    const Bvh bvh = build_bvh(scene.mesh);
-    const DeviceBvh device_bvh(context, bvh);
-    const DeviceScene device_scene(context, scene);
-    const FrameScene frame{context, scene, device_bvh, device_scene};
     SdrcStats stats;
-    std::map<std::string, KernelTime> before;
-    for (int pass = 0; pass < 2; ++pass) {
-        before = context.kernel_times();
-        IrradianceCacheOptions ic;
-        ic.width = pass == 0 ? 16 : std::min(width, 128);
-        ic.height = pass == 0 ? 16 : std::min(height, 128);
-        ic.spp = 2;
-        ic.rays = 256;
-        ic.bounces = 1;
-        ic.max_depth = scene.render.max_depth;
-        ic.rr_depth = scene.render.rr_depth;
-        ic.records_overlay = false;
-        SdrcOptions options;
-        options.interp = 4;
-        options.max_depth = ic.max_depth;
-        options.rr_depth = ic.rr_depth;
-        SdrcCache glossy(frame, options);
-        ic.glossy = &glossy;
-        IrradianceCache(frame).render(ic);
-        stats = glossy.stats();
-    }
+    const auto before = render_glossy_box<SdrcCache>(
+        context, width, height,
+        [](const FrameScene& frame, int max_depth, int rr_depth) {
+            SdrcOptions options;
+            options.max_depth = max_depth;
+            options.rr_depth = rr_depth;
+            return std::make_unique<SdrcCache>(frame, options);
+        },
+        [&](const SdrcCache& cache) { stats = cache.stats(); });
     const double seconds = kernel_seconds_since(context, before, {"sdrc_interpolate"});
     result->figures.push_back({"ltree_queries_per_second", "SDRC L-tree range queries/s (M)",
                                static_cast<double>(stats.range_queries) / seconds * 1e-6, 0.0});

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <memory>
 
+#include "methods/glossy_method.h"
 #include "methods/irradiance_cache/ic_options.h"
-#include "methods/irradiance_cache/ic_stats.h"
 #include "methods/method.h"
 #include "methods/radiance_cache/radiance_cache.h"
 #include "util/error.h"
@@ -15,14 +15,6 @@
 
 namespace rc {
 namespace {
-
-// Irradiance caching's options radiance caching takes: all but the grid as the hemisphere rays'
-// source (the cache files hold the irradiance records; --rc-cache-* the radiance records).
-bool shared_with_ic(const OptionSpec& spec) {
-    return spec.name == "--accuracy" || spec.name.rfind("--ic-", 0) == 0 ||
-           spec.name == "--light-samples" || spec.name == "--cache-in" ||
-           spec.name == "--cache-out";
-}
 
 std::vector<OptionSpec> radiance_cache_option_specs() {
     std::vector<OptionSpec> specs = {
@@ -39,10 +31,8 @@ std::vector<OptionSpec> radiance_cache_option_specs() {
          "rc: start from the radiance records of a saved cache (same scene, frame, accuracy and "
          "order)"},
     };
-    for (OptionSpec& spec : irradiance_cache_option_specs()) {
-        if (shared_with_ic(spec) && spec.name != "--ic-ivg") {
-            specs.push_back(std::move(spec));
-        }
+    for (OptionSpec& spec : glossy_method_ic_option_specs()) {
+        specs.push_back(std::move(spec));
     }
     return specs;
 }
@@ -86,19 +76,11 @@ class RadianceCaching final : public Method {
           rc_(parse_options(arguments, settings, ic_)) {}
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks&) override {
-        FrameResult result;
         RadianceCache glossy(frame, rc_);
-        IrradianceCache cache(frame);
-        IrradianceCacheOptions options = ic_;
-        options.glossy = &glossy;
         IrradianceCacheStats stats;
-        result.image = cache.render(options, &stats);
-        result.spp = options.spp;
+        FrameResult result = render_with_glossy_cache(frame, ic_, glossy, &stats);
         const RadianceCacheStats& rc = glossy.stats();
-        result.rays += stats.record_rays + stats.shading_rays + rc.record_rays;
-        result.nonfinite_samples = stats.nonfinite_samples;
-        result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
-        add_irradiance_cache_stats(stats, options, &result.stats);
+        result.rays += rc.record_rays;
         result.stats["radiance_cache"] = radiance_stats(rc);
         log_note(std::to_string(stats.records) + " irradiance records, " +
                  std::to_string(rc.records) + " radiance records (order " +
@@ -153,20 +135,13 @@ class RadianceCaching final : public Method {
     RadianceCacheOptions rc_;
 };
 
-std::vector<std::string> radiance_cache_aovs() {
-    std::vector<std::string> aovs(std::begin(kIrradianceCacheAovs), std::end(kIrradianceCacheAovs));
-    aovs.push_back("glossy-indirect");
-    aovs.push_back("rc-order");
-    return aovs;
-}
-
 }  // namespace
 
 MethodEntry radiance_cache_method_entry() {
     return {"rc",
             "radiance caching: glossy lobes from spherical-harmonic records with gradients, "
             "rotated and interpolated; diffuse lobes from irradiance records",
-            radiance_cache_option_specs(), radiance_cache_aovs(),
+            radiance_cache_option_specs(), glossy_method_aovs("rc-order"),
             [](const ParsedArguments& arguments, const MethodSettings& settings) {
                 return std::make_unique<RadianceCaching>(arguments, settings);
             }};

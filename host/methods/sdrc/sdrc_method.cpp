@@ -4,8 +4,8 @@
 // rays read at their hits.
 #include <memory>
 
+#include "methods/glossy_method.h"
 #include "methods/irradiance_cache/ic_options.h"
-#include "methods/irradiance_cache/ic_stats.h"
 #include "methods/method.h"
 #include "methods/sdrc/sdrc_cache.h"
 #include "util/error.h"
@@ -13,15 +13,6 @@
 
 namespace rc {
 namespace {
-
-// Irradiance caching's options SDRC takes: all but the grid as the rays' source (the cache files
-// hold the irradiance records).
-bool shared_with_ic(const OptionSpec& spec) {
-    return spec.name == "--accuracy" ||
-           (spec.name.rfind("--ic-", 0) == 0 && spec.name != "--ic-ivg") ||
-           spec.name == "--light-samples" || spec.name == "--cache-in" ||
-           spec.name == "--cache-out";
-}
 
 std::vector<OptionSpec> sdrc_option_specs() {
     std::vector<OptionSpec> specs = {
@@ -36,10 +27,8 @@ std::vector<OptionSpec> sdrc_option_specs() {
          "sdrc: cap on the L-trees' memory; a render that needs more stops with an error "
          "(default 4096)"},
     };
-    for (OptionSpec& spec : irradiance_cache_option_specs()) {
-        if (shared_with_ic(spec)) {
-            specs.push_back(std::move(spec));
-        }
+    for (OptionSpec& spec : glossy_method_ic_option_specs()) {
+        specs.push_back(std::move(spec));
     }
     return specs;
 }
@@ -88,6 +77,8 @@ nlohmann::json sdrc_stats(const SdrcStats& s) {
             {"rebuilds", s.rebuilds},
             {"directions_per_second",
              ratio(static_cast<double>(s.directions), s.interpolation_seconds)},
+            {"range_queries_per_second",
+             ratio(static_cast<double>(s.range_queries), s.interpolation_seconds)},
             {"seconds",
              {{"queries", s.query_seconds},
               {"placement", s.placement.placement_seconds},
@@ -104,19 +95,11 @@ class SpatialDirectionalRadianceCaching final : public Method {
           sdrc_(parse_options(arguments, ic_)) {}
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks&) override {
-        FrameResult result;
         SdrcCache glossy(frame, sdrc_);
-        IrradianceCache cache(frame);
-        IrradianceCacheOptions options = ic_;
-        options.glossy = &glossy;
         IrradianceCacheStats stats;
-        result.image = cache.render(options, &stats);
-        result.spp = options.spp;
+        FrameResult result = render_with_glossy_cache(frame, ic_, glossy, &stats);
         const SdrcStats& s = glossy.stats();
-        result.rays += stats.record_rays + stats.shading_rays + s.record_rays + s.miss_rays;
-        result.nonfinite_samples = stats.nonfinite_samples;
-        result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
-        add_irradiance_cache_stats(stats, options, &result.stats);
+        result.rays += s.record_rays + s.miss_rays;
         result.stats["sdrc"] = sdrc_stats(s);
         log_note(std::to_string(stats.records) + " irradiance records, " +
                  std::to_string(s.records) + " SDRC records (" + std::to_string(s.ltree_nodes) +
@@ -133,13 +116,6 @@ class SpatialDirectionalRadianceCaching final : public Method {
     SdrcOptions sdrc_;
 };
 
-std::vector<std::string> sdrc_aovs() {
-    std::vector<std::string> aovs(std::begin(kIrradianceCacheAovs), std::end(kIrradianceCacheAovs));
-    aovs.push_back("glossy-indirect");
-    aovs.push_back("sdrc-hits");
-    return aovs;
-}
-
 }  // namespace
 
 MethodEntry sdrc_method_entry() {
@@ -147,7 +123,7 @@ MethodEntry sdrc_method_entry() {
             "spatial directional radiance caching: glossy lobes from records of importance-sampled "
             "radiance samples in per-record kd-trees (L-trees), range-queried; diffuse lobes from "
             "irradiance records",
-            sdrc_option_specs(), sdrc_aovs(),
+            sdrc_option_specs(), glossy_method_aovs("sdrc-hits"),
             [](const ParsedArguments& arguments, const MethodSettings& settings) {
                 return std::make_unique<SpatialDirectionalRadianceCaching>(arguments, settings);
             }};

@@ -1,0 +1,28 @@
+// What the glossy caches' methods (`rc`, `sdrc`) share as registered methods: irradiance caching's
+// options they take, their layers, and one frame rendered by irradiance caching with the cache
+// serving the specular lobes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "methods/glossy_cache.h"
+#include "methods/irradiance_cache/irradiance_cache.h"
+#include "methods/method.h"
+
+namespace rc {
+
+// Irradiance caching's options a glossy method takes: all but the grid as the hemisphere rays'
+// source (--ic-ivg); the cache files hold the irradiance records.
+std::vector<OptionSpec> glossy_method_ic_option_specs();
+
+// Irradiance caching's layers, glossy-indirect and the cache's own `layer`.
+std::vector<std::string> glossy_method_aovs(const std::string& layer);
+
+// One frame by irradiance caching with `glossy` serving the specular lobes: the image, its spp,
+// irradiance caching's rays, non-finite samples and statistics into the result (the caller adds
+// its cache's rays and statistics); irradiance caching's statistics into *stats.
+FrameResult render_with_glossy_cache(const FrameScene& frame, IrradianceCacheOptions options,
+                                     GlossyCache& glossy, IrradianceCacheStats* stats);
+
+}  // namespace rc
