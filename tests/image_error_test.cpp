@@ -81,6 +81,57 @@ TEST(ImageError, CompareCommandReportsTheFigures) {
     EXPECT_NE(layer.output.find("indirect"), std::string::npos) << layer.output;
 }
 
+// A mask selecting the second pixel only: every figure is that pixel's (differences 0, 0, -0.5:
+// squared sum 0.25 over 3 values; relMSE (0.25 / 0.26) / 3; means its own values); a mask that
+// selects nothing, or of another size, is refused. Through the command too (--mask, --mask-aov).
+TEST(ImageError, MaskTakesTheFiguresOverItsPixelsOnly) {
+    const Image test = image_of({1, 2, 3, 0, 0, 0});
+    const Image reference = image_of({1, 1, 1, 0, 0, 0.5f});
+    Image mask(2, 1, 1);
+    mask.pixels = {0.0f, 1.0f};
+    const ImageError e = image_error(test, reference, "test", PixelMask{&mask});
+    EXPECT_EQ(e.pixels, 1u);
+    EXPECT_NEAR(e.rmse, std::sqrt(0.25 / 3.0), 1e-12);
+    EXPECT_NEAR(e.relmse, 0.25 / 0.26 / 3.0, 1e-12);
+    EXPECT_NEAR(e.test_means[0], 0.0, 1e-12);
+    EXPECT_NEAR(e.reference_means[2], 0.5, 1e-12);
+    EXPECT_EQ(e.max_x, 1);
+    EXPECT_EQ(image_error(test, reference).pixels, 2u);
+    Image none(2, 1, 1);
+    EXPECT_THROW(image_error(test, reference, "test", PixelMask{&none}), Error);
+    Image wide(3, 1, 1);
+    EXPECT_THROW(image_error(test, reference, "test", PixelMask{&wide}), Error);
+
+    const auto dir = test::scratch_dir("compare_mask");
+    write_image(dir / "test.exr", test);
+    write_image(dir / "reference.exr", reference);
+    Image layered(2, 1, 4);
+    layered.channel_names = {"R", "G", "B", "hits.Y"};
+    layered.pixels = {1, 1, 1, 0, 0, 0, 0, 1};
+    write_image(dir / "mask.exr", layered);
+    const test::CommandResult result = test::run_radcache(
+        {"compare", (dir / "test.exr").string(), (dir / "reference.exr").string(), "--mask",
+         (dir / "mask.exr").string(), "--mask-aov", "hits", "--json", (dir / "e.json").string()});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const nlohmann::json j = nlohmann::json::parse(read_file(dir / "e.json"));
+    EXPECT_NEAR(j["relmse"].get<double>(), 0.25 / 0.26 / 3.0, 1e-6);
+    EXPECT_EQ(j["pixels"].get<int>(), 1);
+    const test::CommandResult first_layer = test::run_radcache(
+        {"compare", (dir / "test.exr").string(), (dir / "reference.exr").string(), "--mask",
+         (dir / "mask.exr").string(), "--json", (dir / "f.json").string()});
+    ASSERT_EQ(first_layer.exit_code, 0) << first_layer.output;
+    EXPECT_EQ(nlohmann::json::parse(read_file(dir / "f.json"))["pixels"].get<int>(), 1);
+    const test::CommandResult no_layer = test::run_radcache(
+        {"compare", (dir / "test.exr").string(), (dir / "reference.exr").string(), "--mask",
+         (dir / "mask.exr").string(), "--mask-aov", "coverage"});
+    EXPECT_EQ(no_layer.exit_code, 2);
+    EXPECT_NE(no_layer.output.find("coverage"), std::string::npos) << no_layer.output;
+    const test::CommandResult alone =
+        test::run_radcache({"compare", (dir / "test.exr").string(),
+                            (dir / "reference.exr").string(), "--mask-aov", "hits"});
+    EXPECT_EQ(alone.exit_code, 2);
+}
+
 // Synthetic images of known noise for the relMSE net of the reference's noise. Every value has
 // mean mu; the reference's per-sample standard deviation is sigma_left on the left half and
 // sigma_right on the right (so a per-pixel mix-up shows), its mean carries Gaussian noise of

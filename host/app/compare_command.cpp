@@ -96,7 +96,8 @@ Image stddev_matching(const Image& reference_file, const Image& reference,
 // Error (exit 2) when --reference-spp asks for a net figure that cannot be had.
 ImageError compare_images(const Image& test_file, const Image& reference_file,
                           const std::string& layer, const std::string& test_path,
-                          const std::string& reference_path, ReferenceNoiseSource& source) {
+                          const std::string& reference_path, ReferenceNoiseSource& source,
+                          PixelMask mask) {
     const Image test = select_layers(test_file, {layer});
     const Image reference = select_layers(reference_file, {layer});
     const std::vector<std::string> layers = layer_names(reference_file);
@@ -120,9 +121,21 @@ ImageError compare_images(const Image& test_file, const Image& reference_file,
         source.note = "the reference's stddev layer describes the beauty layer, not " + layer;
     } else if (source.spp > 0.0) {
         const Image stddev = stddev_matching(reference_file, reference, reference_path);
-        return image_error_net(test, reference, stddev, source.spp, test_path);
+        return image_error_net(test, reference, stddev, source.spp, test_path, mask);
     }
-    return image_error(test, reference, test_path);
+    return image_error(test, reference, test_path, mask);
+}
+
+// The --mask image: the layer --mask-aov of FILE (default its first), its first channel.
+Image read_mask(const ParsedArguments& arguments) {
+    const std::string path = arguments.value("--mask");
+    const Image file = read_image(path);
+    const std::string layer = arguments.value("--mask-aov", layer_names(file).front());
+    const std::vector<std::string> layers = layer_names(file);
+    if (std::find(layers.begin(), layers.end(), layer) == layers.end()) {
+        throw Error("--mask-aov: " + path + " has no layer '" + layer + "'", kExitUsage);
+    }
+    return select_layers(file, {layer});
 }
 
 void print_figures(const ImageError& e, const ReferenceNoiseSource& source) {
@@ -177,6 +190,12 @@ int run_compare_command(const std::vector<std::string>& args) {
         {"--json", "", "FILE", "also write the figures as JSON"},
         {"--error-image", "", "FILE",
          "write a false-colour image of each pixel's relMSE (.png, .exr, .hdr, .pfm)"},
+        {"--mask", "", "FILE",
+         "take every figure over the pixels where FILE's mask layer is positive (FILE the size of "
+         "REF)"},
+        {"--mask-aov", "", "NAME",
+         "the layer of --mask whose first channel is the mask (default: "
+         "its first layer)"},
         {"--reference-spp", "", "N",
          "samples per pixel of REF, for the relMSE net of its noise (default: `spp` of "
          "REF's .stats.json or .json beside it)"},
@@ -210,12 +229,20 @@ int run_compare_command(const std::vector<std::string>& args) {
     if (!error_image_path.empty()) {
         check_output_path(error_image_path);
     }
+    if (arguments.has("--mask-aov") && !arguments.has("--mask")) {
+        throw Error("--mask-aov needs --mask FILE", kExitUsage);
+    }
     ReferenceNoiseSource source = find_reference_spp(arguments, reference_path);
     const Image test_file = read_image(test_path);
     const Image reference_file = read_image(reference_path);
+    const Image mask_image = arguments.has("--mask") ? read_mask(arguments) : Image();
+    const PixelMask mask{arguments.has("--mask") ? &mask_image : nullptr};
     const ImageError e =
-        compare_images(test_file, reference_file, layer, test_path, reference_path, source);
+        compare_images(test_file, reference_file, layer, test_path, reference_path, source, mask);
     print_figures(e, source);
+    if (mask.mask != nullptr) {
+        std::cout << "over the " << e.pixels << " pixels of the mask\n";
+    }
     char line[256];
     if (!error_image_path.empty()) {
         write_image(error_image_path,
@@ -231,6 +258,10 @@ int run_compare_command(const std::vector<std::string>& args) {
         j["test"] = test_path;
         j["reference"] = reference_path;
         j["aov"] = layer;
+        j["pixels"] = e.pixels;
+        if (mask.mask != nullptr) {
+            j["mask"] = arguments.value("--mask");
+        }
         if (!error_image_path.empty()) {
             j["error_image"] = error_image_path.string();
         }

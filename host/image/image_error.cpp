@@ -27,6 +27,18 @@ void check_comparable(const Image& test, const Image& reference, const std::stri
     }
 }
 
+void check_mask(const PixelMask& mask, const Image& reference, const std::string& test_name) {
+    if (mask.mask != nullptr &&
+        (mask.mask->width != reference.width || mask.mask->height != reference.height ||
+         mask.mask->channels < 1)) {
+        throw Error(test_name + ": a " + std::to_string(mask.mask->width) + "x" +
+                        std::to_string(mask.mask->height) + " mask against a " +
+                        std::to_string(reference.width) + "x" + std::to_string(reference.height) +
+                        " reference",
+                    kExitUsage);
+    }
+}
+
 // sRGB transfer function, display value to linear.
 float srgb_to_linear(float v) {
     return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
@@ -34,8 +46,10 @@ float srgb_to_linear(float v) {
 
 }  // namespace
 
-ImageError image_error(const Image& test, const Image& reference, const std::string& test_name) {
+ImageError image_error(const Image& test, const Image& reference, const std::string& test_name,
+                       PixelMask mask) {
     check_comparable(test, reference, test_name);
+    check_mask(mask, reference, test_name);
     ImageError e;
     const int channels = test.channels;
     e.channels = test.channel_names;
@@ -45,6 +59,10 @@ ImageError image_error(const Image& test, const Image& reference, const std::str
     double relative = 0.0;
     for (int y = 0; y < test.height; ++y) {
         for (int x = 0; x < test.width; ++x) {
+            if (!mask.selects(x, y)) {
+                continue;
+            }
+            ++e.pixels;
             for (int c = 0; c < channels; ++c) {
                 const double v = test.at(x, y, c);
                 const double r = reference.at(x, y, c);
@@ -63,11 +81,14 @@ ImageError image_error(const Image& test, const Image& reference, const std::str
             }
         }
     }
-    const double values = static_cast<double>(test.width) * test.height * channels;
+    if (mask.mask != nullptr && e.pixels == 0) {
+        throw Error(test_name + ": the mask selects no pixel", kExitUsage);
+    }
+    const double values = static_cast<double>(e.pixels) * channels;
     if (values > 0.0) {
         e.rmse = std::sqrt(squared / values);
         e.relmse = relative / values;
-        const double pixels = static_cast<double>(test.width) * test.height;
+        const double pixels = static_cast<double>(e.pixels);
         for (int c = 0; c < channels; ++c) {
             e.test_means[c] /= pixels;
             e.reference_means[c] /= pixels;
@@ -78,27 +99,38 @@ ImageError image_error(const Image& test, const Image& reference, const std::str
     return e;
 }
 
-double reference_noise_relmse(const Image& reference, const Image& stddev, double spp) {
+double reference_noise_relmse(const Image& reference, const Image& stddev, double spp,
+                              PixelMask mask) {
     check_comparable(stddev, reference, "the reference's stddev layer");
+    check_mask(mask, reference, "the reference's stddev layer");
     if (!(spp > 0.0)) {
         throw Error("the reference's sample count must be positive, got " + std::to_string(spp),
                     kExitUsage);
     }
     // Var(r) = stddev^2 / spp per value, over the relMSE denominator r^2 + 0.01, averaged.
     double noise = 0.0;
-    for (size_t i = 0; i < reference.pixels.size(); ++i) {
-        const double r = reference.pixels[i];
-        const double s = stddev.pixels[i];
-        noise += s * s / spp / (r * r + 0.01);
+    size_t values = 0;
+    for (int y = 0; y < reference.height; ++y) {
+        for (int x = 0; x < reference.width; ++x) {
+            if (!mask.selects(x, y)) {
+                continue;
+            }
+            for (int c = 0; c < reference.channels; ++c) {
+                const double r = reference.at(x, y, c);
+                const double s = stddev.at(x, y, c);
+                noise += s * s / spp / (r * r + 0.01);
+                ++values;
+            }
+        }
     }
-    return reference.pixels.empty() ? 0.0 : noise / static_cast<double>(reference.pixels.size());
+    return values == 0 ? 0.0 : noise / static_cast<double>(values);
 }
 
 ImageError image_error_net(const Image& test, const Image& reference, const Image& reference_stddev,
-                           double reference_spp, const std::string& test_name) {
-    ImageError e = image_error(test, reference, test_name);
+                           double reference_spp, const std::string& test_name, PixelMask mask) {
+    ImageError e = image_error(test, reference, test_name, mask);
     // relMSE_net = relMSE - mean(Var(r) / (r^2 + 0.01)); kept signed.
-    e.reference_noise = reference_noise_relmse(reference, reference_stddev, reference_spp);
+    e.reference_noise = reference_noise_relmse(reference, reference_stddev, reference_spp, mask);
     e.relmse_net = e.relmse - *e.reference_noise;
     return e;
 }

@@ -2,6 +2,7 @@
 // means and the largest absolute difference.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,27 +30,41 @@ struct ImageError {
     // (the sign is kept so that averages over runs stay unbiased).
     std::optional<double> reference_noise;
     std::optional<double> relmse_net;
+    size_t pixels = 0;  // the pixels the figures are over (the mask's, or every pixel)
+};
+
+// The pixels an error is taken over: those whose value in `mask`'s first channel is positive
+// (NaN is not), or every pixel when `mask` is null. Error naming `test_name` when the mask's size
+// differs from the images'.
+struct PixelMask {
+    const Image* mask = nullptr;
+    bool selects(int x, int y) const { return mask == nullptr || mask->at(x, y, 0) > 0.0f; }
 };
 
 // The relMSE term of one value: (v - r)^2 / (r^2 + 0.01).
 double relative_squared_error(double value, double reference);
 
-// `test` against `reference`; Error naming `test_name` when their sizes or channel counts differ.
+// `test` against `reference` over the pixels `mask` selects (means and the largest difference
+// too); Error naming `test_name` when their sizes or channel counts differ, or when the mask
+// selects no pixel.
 ImageError image_error(const Image& test, const Image& reference,
-                       const std::string& test_name = "image");
+                       const std::string& test_name = "image", PixelMask mask = {});
 
 // The expected relMSE contribution of the reference's own noise: the mean over pixels and channels
 // of Var(r) / (r^2 + 0.01), Var(r) = stddev^2 / spp, where `stddev` holds the standard deviation of
 // one sample of each reference value (the same size and channel count as `reference`) and `spp` is
-// the reference's sample count. Error when the sizes differ or spp is not positive.
-double reference_noise_relmse(const Image& reference, const Image& stddev, double spp);
+// the reference's sample count, over the pixels `mask` selects. Error when the sizes differ or spp
+// is not positive.
+double reference_noise_relmse(const Image& reference, const Image& stddev, double spp,
+                              PixelMask mask = {});
 
 // image_error with reference_noise and relmse_net filled in from the reference's per-sample
 // standard deviation `reference_stddev` and its sample count `reference_spp`. Since
 // E[(v - r)^2] = (v - mu)^2 + Var(r) for a reference r independent of v with mean mu, the net
 // figure is the error against the reference's mean to first order (the denominator uses r, not mu).
 ImageError image_error_net(const Image& test, const Image& reference, const Image& reference_stddev,
-                           double reference_spp, const std::string& test_name = "image");
+                           double reference_spp, const std::string& test_name = "image",
+                           PixelMask mask = {});
 
 // The false-colour scale of error images: log10 of a pixel's relMSE from kErrorImageLog10Min
 // (black) to kErrorImageLog10Max (white), through blue, magenta, red and yellow.
