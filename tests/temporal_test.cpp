@@ -232,5 +232,137 @@ TEST(TemporalCaching, ReprojectionPredictsTheIrradianceAfterAnObjectMoves) {
     EXPECT_LT(predicted, changed / 2.0);
 }
 
+// Two closed boxes side by side: box A (x in [-1, 1]) holds a cube moving across it, box B
+// (x in [3, 5]) is still, with its own point light. Records on B's floor see no motion: their
+// estimate is their value bit for bit and they live the longest lifespan; records on A's floor
+// beside the cube live shorter.
+TEST(TemporalCaching, StillHemispheresLiveTheLongestLifespan) {
+    const auto path = box_scene("two_boxes",
+                                R"(,
+            {"type": "cube", "name": "cube", "material": "red", "transform": [{"scale": 0.25}]},
+            {"type": "cube", "name": "room_b", "material": "white", "flip_normals": true,
+             "transform": [{"translate": [4, 0, 0]}]})",
+                                R"({"type": "point", "position": [0, 0.6, 0], "intensity": 2},
+            {"type": "point", "position": [4, 0.6, 0], "intensity": 2})",
+                                R"({"frame_start": 0, "frame_end": 1, "tracks": [
+            {"target": "shape:cube", "keyframes": [
+                {"frame": 0, "translate": [-0.2, -0.75, 0]},
+                {"frame": 1, "translate": [0.2, -0.75, 0]}]}]})");
+    PosedFrame frame0(path, 0);
+    Scene next = load_scene(path);
+    next.set_frame(1);
+    const std::vector<RecordSite> still = floor_sites({{3.5f, 0.2f}, {4.6f, -0.5f}});
+    const std::vector<RecordSite> beside = floor_sites({{0.6f, 0.0f}, {-0.6f, 0.3f}});
+    std::vector<RecordSite> sites = still;
+    sites.insert(sites.end(), beside.begin(), beside.end());
+    std::vector<CarriedRecord> carried;
+    const auto e0 = records_at(frame0.frame(), sites, 1024, 3, 64, &next, &carried);
+    TemporalOptions options;
+    options.max_frames = 20;
+    for (size_t i = 0; i < sites.size(); ++i) {
+        const int lifespan =
+            temporal_lifespan(temporal_change(e0[i], carried[i].next), options, false);
+        if (i < still.size()) {
+            EXPECT_EQ(std::memcmp(&carried[i].next, &e0[i], sizeof e0[i]), 0) << i;
+            EXPECT_EQ(lifespan, options.max_frames) << i;
+        } else {
+            EXPECT_LT(lifespan, options.max_frames) << i;
+        }
+    }
+}
+
+// A point light moves across the box at constant speed over 20 frames. Records on the floor at
+// frame 0 (direct light beyond their rays' hits, so that records at other frames with the same
+// streams differ by the light's move alone) get lifespans shorter than the longest; computed
+// fresh at the last frame each one serves, their irradiance has changed from frame 0 by no more
+// than the temporal accuracy a^t = 0.05 (with 20% slack for the change not being linear).
+TEST(TemporalCaching, RecordsSeeingAMovingLightExpireBeforeTheirErrorBound) {
+    const auto path = box_scene("moving_light", "", R"({"type": "point", "name": "bulb",
+                                                       "position": [0, 0, 0], "intensity": 2})",
+                                R"({"frame_start": 0, "frame_end": 20, "tracks": [
+            {"target": "emitter:bulb", "keyframes": [
+                {"frame": 0, "translate": [-0.6, 0.5, 0]},
+                {"frame": 20, "translate": [0.6, 0.5, 0]}]}]})");
+    PosedFrame frame0(path, 0);
+    Scene next = load_scene(path);
+    next.set_frame(1);
+    const std::vector<RecordSite> sites =
+        floor_sites({{-0.5f, 0.0f}, {0.0f, 0.5f}, {0.5f, -0.3f}, {0.8f, 0.7f}, {-0.8f, -0.6f}});
+    std::vector<CarriedRecord> carried;
+    const auto e0 = records_at(frame0.frame(), sites, 4096, 9, 2, &next, &carried);
+    TemporalOptions options;
+    int checked = 0;
+    for (size_t i = 0; i < sites.size(); ++i) {
+        const int lifespan =
+            temporal_lifespan(temporal_change(e0[i], carried[i].next), options, false);
+        ASSERT_LT(lifespan, options.max_frames) << "site " << i << " sees the light move";
+        PosedFrame last(path, lifespan - 1);
+        const auto e_last = records_at(last.frame(), {sites[i]}, 4096, 9, 2);
+        const double change =
+            std::fabs(luminance(e_last[0].irradiance) / luminance(e0[i].irradiance) - 1.0);
+        std::printf("site %zu: lifespan %d, change over it %.4f\n", i, lifespan, change);
+        EXPECT_LE(change, 1.2 * options.accuracy) << "site " << i;
+        ++checked;
+    }
+    EXPECT_EQ(checked, 5);
+}
+
+bool same_pixels(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height && a.channels == b.channels &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
+}
+
+// `radcache render SCENE args... -o dir/name####.exr --stats dir/name.json --quiet`; its stats.
+nlohmann::json render_frames(const std::filesystem::path& scene, const std::filesystem::path& dir,
+                             const std::string& name, std::vector<std::string> args) {
+    std::vector<std::string> command = {"render", scene.string()};
+    command.insert(command.end(), args.begin(), args.end());
+    for (const std::string& a :
+         {std::string("-o"), (dir / (name + "####.exr")).string(), std::string("--stats"),
+          (dir / (name + ".json")).string(), std::string("--quiet")}) {
+        command.push_back(a);
+    }
+    const test::CommandResult result = test::run_radcache(command);
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    return nlohmann::json::parse(read_file(dir / (name + ".json")));
+}
+
+std::filesystem::path frame_file(const std::filesystem::path& dir, const std::string& name,
+                                 int frame) {
+    char number[8];
+    std::snprintf(number, sizeof number, "%04d", frame);
+    return dir / (name + number + ".exr");
+}
+
+// The Cornell box (no animation) over frames 0-4 with --temporal: every frame is, every layer bit
+// for bit, the single-frame `ic` render; frame 0 creates every record and the later frames reuse
+// them all, computing, replacing and dropping none.
+TEST(TemporalCaching, StaticSceneRendersFrameZerosImageEveryFrame) {
+    const auto dir = test::scratch_dir("temporal_static");
+    const auto scene = test::source_dir() / "scenes" / "cornell-box" / "scene.json";
+    const std::vector<std::string> common = {"--method", "ic", "--width",   "24", "--height", "24",
+                                             "--spp",    "2",  "--ic-rays", "256"};
+    std::vector<std::string> single = common;
+    single.insert(single.end(), {"-o", (dir / "single.exr").string(), "--quiet"});
+    std::vector<std::string> command = {"render", scene.string()};
+    command.insert(command.end(), single.begin(), single.end());
+    ASSERT_EQ(test::run_radcache(command).exit_code, 0);
+    std::vector<std::string> temporal = common;
+    temporal.insert(temporal.end(), {"--temporal", "--frames", "0:4"});
+    const nlohmann::json stats = render_frames(scene, dir, "t", temporal);
+    const Image expected = read_image(dir / "single.exr");
+    const size_t records = stats["frames"][0]["records"].get<size_t>();
+    EXPECT_GT(records, 0u);
+    for (int f = 0; f <= 4; ++f) {
+        EXPECT_TRUE(same_pixels(read_image(frame_file(dir, "t", f)), expected)) << "frame " << f;
+        const nlohmann::json& t = stats["frames"][f]["temporal"];
+        EXPECT_EQ(t["records"].get<size_t>(), records) << f;
+        EXPECT_EQ(t["created"].get<size_t>(), f == 0 ? records : 0u) << f;
+        EXPECT_EQ(t["reused"].get<size_t>(), f == 0 ? 0u : records) << f;
+        EXPECT_EQ(t["recomputed"].get<size_t>(), 0u) << f;
+        EXPECT_EQ(t["dropped"].get<size_t>(), 0u) << f;
+    }
+}
+
 }  // namespace
 }  // namespace rc

@@ -23,10 +23,12 @@ typedef struct TcEmitter {
 
 // Parameters of the reprojection kernels (kernels/temporal/temporal.cl).
 typedef struct TcParams {
-    int emitter_count;  // in each of the two emitter lists
-    int hole_passes;    // 3 x 3 hole-filling passes (the report's §4.3)
+    float4 moving_lower;  // xyz: the bounds of the triangles that move, at this frame (lower >
+    float4 moving_upper;  // upper when none does)
+    int emitter_count;    // in each of the two emitter lists
+    int hole_passes;      // 3 x 3 hole-filling passes (the report's §4.3)
+    int emitters_change;  // 0: the two emitter lists are the same
     int pad0;
-    int pad1;
 } TcParams;
 
 // A record's hemisphere sample carried to the next frame (rc_tc_carry_sample).
@@ -55,8 +57,11 @@ RC_SHARED_END
     FIELD(TcEmitter, v1)                     \
     FIELD(TcEmitter, v2)                     \
     STRUCT(TcParams)                         \
+    FIELD(TcParams, moving_lower)            \
+    FIELD(TcParams, moving_upper)            \
     FIELD(TcParams, emitter_count)           \
     FIELD(TcParams, hole_passes)             \
+    FIELD(TcParams, emitters_change)         \
     STRUCT(TcCarriedSample)                  \
     FIELD(TcCarriedSample, radiance)         \
     FIELD(TcCarriedSample, depth)            \
@@ -68,6 +73,6 @@ RC_SHARED_END
 
 #ifndef __OPENCL_VERSION__
 static_assert(sizeof(rc::shared::TcEmitter) == sizeof(rc::shared::Light) + 48);
-static_assert(sizeof(rc::shared::TcParams) == 16);
+static_assert(sizeof(rc::shared::TcParams) == 48);
 static_assert(sizeof(rc::shared::TcCarriedSample) == 48);
 #endif

@@ -38,6 +38,23 @@ RC_FUNC int rc_tc_cell_of(float3 d, int m, int n) {
     return min(m - 1, (int)position.x) * n + min(n - 1, (int)position.y);
 }
 
+// Whether the segment of `ray` from its origin to distance t_max meets the box [lower, upper]
+// (slabs, widened by a small margin; an empty box, lower > upper, meets nothing).
+RC_FUNC bool rc_tc_segment_meets_box(Ray ray, float t_max, float3 lower, float3 upper) {
+    if (!(lower.x <= upper.x)) {
+        return false;
+    }
+    const float3 margin = 1e-4f * (upper - lower) + (float3)(1e-6f);
+    const float3 inverse = 1.0f / ray.direction.xyz;
+    const float3 t0 = (lower - margin - ray.origin.xyz) * inverse;
+    const float3 t1 = (upper + margin - ray.origin.xyz) * inverse;
+    const float3 near = fmin(t0, t1);
+    const float3 far = fmax(t0, t1);
+    const float enter = fmax(fmax(near.x, near.y), fmax(near.z, 0.0f));
+    const float leave = fmin(fmin(far.x, far.y), fmin(far.z, t_max * 1.0001f));
+    return enter <= leave;
+}
+
 // The largest side, in cells, of a moved sample's square (rc_tc_assemble looks 1 cell around the
 // cell it lands in).
 #define RC_TC_MAX_SQUARE 2.0f
@@ -51,14 +68,20 @@ RC_FUNC int rc_tc_cell_of(float3 d, int m, int n) {
 // it stands for grows as the inverse square of the distance), up to RC_TC_MAX_SQUARE.
 RC_FUNC TcCarriedSample rc_tc_carry_sample(const SceneData* scene, MovedTriangles moved,
                                            RC_GLOBAL const TcEmitter* now,
-                                           RC_GLOBAL const TcEmitter* next, int emitter_count,
+                                           RC_GLOBAL const TcEmitter* next, const TcParams* tc,
                                            const IcParams* params, Frame frame, float3 origin,
                                            int cell, Ray ray, float4 seen) {
+    const int emitter_count = tc->emitter_count;
     TcCarriedSample s;
     s.pad0 = s.pad1 = s.pad2 = 0;
     s.cell = cell;
     s.depth = seen.w;
     s.row = s.column = s.size = 0.0f;
+    s.radiance = (float4)(seen.xyz, 0.0f);
+    if (tc->emitters_change == 0 &&
+        !rc_tc_segment_meets_box(ray, seen.w, tc->moving_lower.xyz, tc->moving_upper.xyz)) {
+        return s;  // still light on a still hit: carried as it is (what the steps below give)
+    }
     const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
     if (hit.primitive == RC_NO_HIT) {
         const float3 e0 = rc_tc_environment(now, emitter_count);

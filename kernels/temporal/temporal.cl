@@ -30,7 +30,7 @@ __kernel void tc_carry_cells(uint begin, uint end, IcParams params, TcParams tc,
         rc_ic_cell_ray(&params, (uint)params.first_record + b, cell, normal, origins[b].xyz, &rng);
     const MovedTriangles moved = {moved_slot, moved_triangles};
     carried[i] =
-        rc_tc_carry_sample(&scene, moved, emitters_now, emitters_next, tc.emitter_count, &params,
+        rc_tc_carry_sample(&scene, moved, emitters_now, emitters_next, &tc, &params,
                            rc_ic_record_frame(normal), origins[b].xyz, (int)cell, ray, cells[i]);
 }
 

@@ -1,5 +1,9 @@
 #include "methods/temporal/tc_reprojection.h"
 
+#include <cstring>
+#include <glm/common.hpp>
+#include <limits>
+
 #include "methods/scene_arguments.h"
 #include "methods/temporal/tc_emitters.h"
 #include "util/error.h"
@@ -45,13 +49,22 @@ TemporalReprojection::TemporalReprojection(const FrameScene& frame, const Scene&
     std::vector<int> slots(now.mesh.triangles.size(), -1);
     std::vector<shared::Triangle> moved;
     moves_.assign(slots.size(), 0);
+    glm::vec3 lower(std::numeric_limits<float>::infinity());
+    glm::vec3 upper(-std::numeric_limits<float>::infinity());
     for (size_t p = 0; p < slots.size(); ++p) {
         if (!same_triangle(now, next, p)) {
             slots[p] = static_cast<int>(moved.size());
             moved.push_back(world_triangle(next, p));
             moves_[p] = 1;
+            const glm::uvec3 v = now.mesh.triangles[p];
+            for (int i = 0; i < 3; ++i) {
+                lower = glm::min(lower, now.mesh.positions[v[i]]);
+                upper = glm::max(upper, now.mesh.positions[v[i]]);
+            }
         }
     }
+    params_.moving_lower = float4_of(lower);
+    params_.moving_upper = float4_of(upper);
     moving_ = moved.size();
     moved_slot_ = Buffer<int>(context_, slots, "tc_moved_slot");
     moved_triangles_ = Buffer<shared::Triangle>(context_, moved, "tc_moved_triangles");
@@ -64,6 +77,10 @@ TemporalReprojection::TemporalReprojection(const FrameScene& frame, const Scene&
     emitters_now_ = Buffer<shared::TcEmitter>(context_, emitters_now, "tc_emitters_now");
     emitters_next_ = Buffer<shared::TcEmitter>(context_, emitters_next, "tc_emitters_next");
     params_.emitter_count = static_cast<int>(emitters_now.size());
+    params_.emitters_change =
+        emitters_now.empty() ? 0
+                             : std::memcmp(emitters_now.data(), emitters_next.data(),
+                                           emitters_now.size() * sizeof(shared::TcEmitter)) != 0;
     params_.hole_passes = hole_passes;
 }
 
