@@ -221,19 +221,19 @@ std::string figure_text(const std::optional<double>& value) {
 void print_sequence(const SequenceJob& job, const std::vector<FrameRow>& rows,
                     const SequenceMeans& means) {
     char line[256];
-    std::snprintf(line, sizeof line, "%6s  %-11s %-11s %-11s %-11s\n", "frame", "relmse",
+    std::snprintf(line, sizeof line, "%6s  %-11s %-11s %-11s %s\n", "frame", "relmse",
                   "relmse_net", "temporal", "temporal_net");
     std::cout << line;
     for (const FrameRow& row : rows) {
         std::snprintf(
-            line, sizeof line, "%6d  %-11s %-11s %-11s %-11s\n", row.frame,
+            line, sizeof line, "%6d  %-11s %-11s %-11s %s\n", row.frame,
             figure_text(row.error.relmse).c_str(), figure_text(row.error.relmse_net).c_str(),
             figure_text(row.temporal ? std::optional(row.temporal->temporal_error) : std::nullopt)
                 .c_str(),
             figure_text(row.temporal ? row.temporal->temporal_error_net : std::nullopt).c_str());
         std::cout << line;
     }
-    std::snprintf(line, sizeof line, "%6s  %-11s %-11s %-11s %-11s\n", "mean",
+    std::snprintf(line, sizeof line, "%6s  %-11s %-11s %-11s %s\n", "mean",
                   figure_text(means.relmse).c_str(), figure_text(means.relmse_net).c_str(),
                   figure_text(means.temporal_error).c_str(),
                   figure_text(means.temporal_error_net).c_str());
