@@ -171,8 +171,8 @@ std::vector<FrameRow> compare_sequence(const SequenceJob& job, const ParsedArgum
     return rows;
 }
 
-// The mean of a figure over the rows that have it; absent when a row lacks it (net figures of
-// frames whose reference noise is unknown) or no row has it.
+// The mean of a figure over the rows (after the first with `skip_first`); absent when a row
+// lacks it (the net figures of a frame whose reference noise is unknown).
 template <typename Figure>
 std::optional<double> mean_of(const std::vector<FrameRow>& rows, bool skip_first, Figure figure) {
     double sum = 0.0;
@@ -221,8 +221,8 @@ std::string figure_text(const std::optional<double>& value) {
 void print_sequence(const SequenceJob& job, const std::vector<FrameRow>& rows,
                     const SequenceMeans& means) {
     char line[256];
-    std::snprintf(line, sizeof line, "%6s  %-11s %-11s %-11s %s\n", "frame", "relmse",
-                  "relmse_net", "temporal", "temporal_net");
+    std::snprintf(line, sizeof line, "%6s  %-11s %-11s %-11s %s\n", "frame", "relmse", "relmse_net",
+                  "temporal", "temporal_net");
     std::cout << line;
     for (const FrameRow& row : rows) {
         std::snprintf(
