@@ -116,9 +116,12 @@ def draw(sequences, args):
 
     keys = figure_keys(args.net)
     noise_keys = ("reference_noise", "temporal_reference_noise")
+    noise_labels = ("references' own noise",
+                    "references' own noise (frames taken as independent: an upper bound)")
     titles = ("relMSE per frame", "temporal error per frame (frames f-1, f)")
     figure, axes = plt.subplots(2, 1, figsize=(8, 7), dpi=110, sharex=True)
-    for panel, key, noise_key, title in zip(axes, keys, noise_keys, titles):
+    for panel, key, noise_key, noise_label, title in zip(axes, keys, noise_keys, noise_labels,
+                                                          titles):
         positive = True
         for index, (label, report) in enumerate(sequences):
             frames, values = series(report, key)
@@ -132,8 +135,7 @@ def draw(sequences, args):
         if not args.net:
             frames, values = series(sequences[0][1], noise_key)
             if values:
-                panel.plot(frames, values, linestyle=":", color="grey",
-                           label="references' own noise")
+                panel.plot(frames, values, linestyle=":", color="grey", label=noise_label)
                 positive = positive and all(v > 0 for v in values)
         if positive:
             panel.set_yscale("log")
