@@ -28,7 +28,7 @@ void render_frame(const RenderJob& job, int frame, Context& context, Scene& scen
     }
     const std::filesystem::path output = frame_path(job.output_pattern, frame);
     auto start = SteadyClock::now();
-    bvh = build_bvh(scene.mesh);
+    bvh = build_bvh(scene.mesh, context.bvh_layout());
     totals.phase("bvh") += seconds_since(start);
     start = SteadyClock::now();
     const DeviceBvh device_bvh(context, bvh);
