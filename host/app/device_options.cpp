@@ -16,8 +16,8 @@ std::vector<OptionSpec> device_option_specs() {
         {"--local-size", "", "N", "work-group size of every launch (default: per kernel)"},
         {"--max-chunk", "", "N", "largest number of work items in one launch (default 2^20)"},
         {"--bvh", "", "LAYOUT",
-         "BVH layout the traversal uses: bvh4 (4-wide, float boxes) or wide (8-wide, compressed) "
-         "(default: per device type, docs/bvh.md)"},
+         "BVH layout the traversal uses: wide (8-wide, compressed; the default) or bvh4 (4-wide, "
+         "float boxes); docs/bvh.md"},
     };
 }
 

@@ -1,6 +1,7 @@
 // The compressed 8-wide layout (docs/bvh.md): Embree's 8-wide tree with each node's child boxes
 // quantised to bytes on a per-node grid (Ylitie, Karras and Laine 2017, §3.1), the children that
-// are inner nodes stored next to each other, and the triangles of the node's leaves too.
+// are inner nodes stored next to each other, and the node's leaves as packets of four triangles
+// next to each other.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -121,8 +122,8 @@ class WideFlattener {
     WideFlattener(const TriangleMesh& mesh, Bvh& bvh) : mesh_(mesh), bvh_(bvh) {}
 
     // Fills node `index` from `build`, places its inner children next to each other at the end
-    // of the node array and its leaves' triangles next to each other, then flattens the
-    // children.
+    // of the node array and its leaves' packets next to each other at the end of the packets,
+    // then flattens the inner children.
     void flatten(const InnerBuildNode& build, size_t index, unsigned depth) {
         if (build.child_count > kWidth) {
             throw Error("the wide BVH got a node of " + std::to_string(build.child_count) +
@@ -131,13 +132,15 @@ class WideFlattener {
         bvh_.depth = std::max(bvh_.depth, depth);
         // Inner children take the first slots, leaves the next ones.
         InnerBuildNode sorted = build;
-        std::stable_partition(sorted.children, sorted.children + sorted.child_count,
-                              [](const BuildNode* child) { return !child->is_leaf; });
-        for (unsigned i = 0; i < build.child_count; ++i) {
-            const size_t from =
-                std::find(build.children, build.children + build.child_count, sorted.children[i]) -
-                build.children;
-            sorted.bounds[i] = build.bounds[from];
+        unsigned slot = 0;
+        for (bool leaves : {false, true}) {
+            for (unsigned i = 0; i < build.child_count; ++i) {
+                if (build.children[i]->is_leaf == leaves) {
+                    sorted.children[slot] = build.children[i];
+                    sorted.bounds[slot] = build.bounds[i];
+                    ++slot;
+                }
+            }
         }
         shared::WideBvhNode node = empty_wide_node();
         quantise_children(sorted, node);

@@ -1,7 +1,5 @@
 #include "device/bvh_layout.h"
 
-#include "device/device_list.h"
-
 namespace rc {
 
 const char* bvh_layout_name(BvhLayout layout) {
@@ -17,9 +15,6 @@ std::optional<BvhLayout> parse_bvh_layout(const std::string& name) {
     return std::nullopt;
 }
 
-BvhLayout default_bvh_layout(const DeviceInfo& device) {
-    (void)device;
-    return BvhLayout::kWide;
-}
+BvhLayout default_bvh_layout() { return BvhLayout::kWide; }
 
 }  // namespace rc

@@ -36,7 +36,7 @@ size_t round_up(size_t value, size_t multiple) {
 Context::Context(const ContextOptions& options)
     : options_(options),
       device_(select_device(list_devices(), options.device_spec)),
-      bvh_layout_(options.bvh_layout.value_or(default_bvh_layout(device_))),
+      bvh_layout_(options.bvh_layout.value_or(default_bvh_layout())),
       sources_(kernel_dir_option(options)),
       cache_(options.cache_dir) {
     cl_int status = CL_SUCCESS;

@@ -30,7 +30,7 @@ struct ContextOptions {
     size_t local_size = 0;                   // work-group size; 0: chosen per kernel
     size_t max_chunk_items = 0;              // largest launch; 0: the default (2^20)
     double chunk_seconds = 0.1;              // launches aim at this duration
-    std::optional<BvhLayout> bvh_layout;     // --bvh; none: default_bvh_layout(device)
+    std::optional<BvhLayout> bvh_layout;     // --bvh; none: default_bvh_layout()
 };
 
 // Accumulated device time of one kernel (from profiling events).
