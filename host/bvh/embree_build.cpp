@@ -125,6 +125,15 @@ EmbreeBuild::EmbreeBuild(const TriangleMesh& mesh, const EmbreeBuildSettings& se
 
 EmbreeBuild::~EmbreeBuild() { rtcReleaseBVH(bvh_); }
 
+void grow_bounds(RTCBounds& bounds, const RTCBounds& other) {
+    bounds.lower_x = std::min(bounds.lower_x, other.lower_x);
+    bounds.lower_y = std::min(bounds.lower_y, other.lower_y);
+    bounds.lower_z = std::min(bounds.lower_z, other.lower_z);
+    bounds.upper_x = std::max(bounds.upper_x, other.upper_x);
+    bounds.upper_y = std::max(bounds.upper_y, other.upper_y);
+    bounds.upper_z = std::max(bounds.upper_z, other.upper_z);
+}
+
 RTCBounds leaf_bounds(const LeafBuildNode& leaf, const TriangleMesh& mesh) {
     RTCBounds bounds{};
     bounds.lower_x = bounds.lower_y = bounds.lower_z = std::numeric_limits<float>::max();
@@ -133,12 +142,7 @@ RTCBounds leaf_bounds(const LeafBuildNode& leaf, const TriangleMesh& mesh) {
         const glm::uvec3& t = mesh.triangles[leaf.primitives[i]];
         for (unsigned corner = 0; corner < 3; ++corner) {
             const glm::vec3& v = mesh.positions[t[corner]];
-            bounds.lower_x = std::min(bounds.lower_x, v.x);
-            bounds.lower_y = std::min(bounds.lower_y, v.y);
-            bounds.lower_z = std::min(bounds.lower_z, v.z);
-            bounds.upper_x = std::max(bounds.upper_x, v.x);
-            bounds.upper_y = std::max(bounds.upper_y, v.y);
-            bounds.upper_z = std::max(bounds.upper_z, v.z);
+            grow_bounds(bounds, {v.x, v.y, v.z, 0.0f, v.x, v.y, v.z, 0.0f});
         }
     }
     return bounds;

@@ -53,6 +53,9 @@ class EmbreeBuild {
     const BuildNode* root_ = nullptr;
 };
 
+// `bounds` grown to hold `other`.
+void grow_bounds(RTCBounds& bounds, const RTCBounds& other);
+
 // The bounds of a leaf's triangles.
 RTCBounds leaf_bounds(const LeafBuildNode& leaf, const TriangleMesh& mesh);
 

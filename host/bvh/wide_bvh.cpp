@@ -70,13 +70,7 @@ uint8_t biased(int exponent) { return static_cast<uint8_t>(exponent + 127); }
 void quantise_children(const InnerBuildNode& build, shared::WideBvhNode& node) {
     RTCBounds box = build.bounds[0];
     for (unsigned i = 1; i < build.child_count; ++i) {
-        const RTCBounds& b = build.bounds[i];
-        box.lower_x = std::min(box.lower_x, b.lower_x);
-        box.lower_y = std::min(box.lower_y, b.lower_y);
-        box.lower_z = std::min(box.lower_z, b.lower_z);
-        box.upper_x = std::max(box.upper_x, b.upper_x);
-        box.upper_y = std::max(box.upper_y, b.upper_y);
-        box.upper_z = std::max(box.upper_z, b.upper_z);
+        grow_bounds(box, build.bounds[i]);
     }
     const AxisGrid x = axis_grid(box.lower_x, box.upper_x);
     const AxisGrid y = axis_grid(box.lower_y, box.upper_y);

@@ -8,11 +8,14 @@
 #include "common/bvh_ray.h"
 #include "shared/types.h"
 
-// One axis of the node's child planes: origin + q * 2^(exponent - 127), exact as built. The
-// eight bytes are read as one 8-byte word (they are 8-byte aligned in the node).
-RC_FUNC float8 rc_wide_planes(RC_GLOBAL const uchar* q, float origin, uchar exponent) {
+// The ray's distances to one axis's planes of the eight children: origin + q * 2^(exponent -
+// 127), exact as built (the eight bytes read as one 8-byte word: they are 8-byte aligned in the
+// node), minus the ray's origin, times its inverse direction.
+RC_FUNC float8 rc_wide_slab(RC_GLOBAL const uchar* q, float origin, uchar exponent,
+                            float ray_origin, float inv_direction) {
     const float scale = rc_as_float((uint)exponent << 23);
-    return convert_float8(as_uchar8(*(RC_GLOBAL const ulong*)q)) * scale + origin;
+    const float8 planes = convert_float8(as_uchar8(*(RC_GLOBAL const ulong*)q)) * scale + origin;
+    return (planes - ray_origin) * inv_direction;
 }
 
 // The entry distance of the ray into each child box over [tmin, tmax]; returns the children
@@ -20,30 +23,20 @@ RC_FUNC float8 rc_wide_planes(RC_GLOBAL const uchar* q, float origin, uchar expo
 // the 4-wide test (bvh4_traversal.h), with the same robust far scale.
 RC_FUNC uint rc_intersect_wide_node(RC_GLOBAL const WideBvhNode* node, const BoxRay* r, float tmin,
                                     float tmax, float* t_enter) {
-    const float8 near_x = (rc_wide_planes(r->negative_x ? node->upper_x : node->lower_x,
-                                          node->origin_x, node->exponent_x) -
-                           r->origin.x) *
-                          r->inv_direction.x;
-    const float8 far_x = (rc_wide_planes(r->negative_x ? node->lower_x : node->upper_x,
-                                         node->origin_x, node->exponent_x) -
-                          r->origin.x) *
-                         r->inv_direction.x;
-    const float8 near_y = (rc_wide_planes(r->negative_y ? node->upper_y : node->lower_y,
-                                          node->origin_y, node->exponent_y) -
-                           r->origin.y) *
-                          r->inv_direction.y;
-    const float8 far_y = (rc_wide_planes(r->negative_y ? node->lower_y : node->upper_y,
-                                         node->origin_y, node->exponent_y) -
-                          r->origin.y) *
-                         r->inv_direction.y;
-    const float8 near_z = (rc_wide_planes(r->negative_z ? node->upper_z : node->lower_z,
-                                          node->origin_z, node->exponent_z) -
-                           r->origin.z) *
-                          r->inv_direction.z;
-    const float8 far_z = (rc_wide_planes(r->negative_z ? node->lower_z : node->upper_z,
-                                         node->origin_z, node->exponent_z) -
-                          r->origin.z) *
-                         r->inv_direction.z;
+    const float3 o = r->origin;
+    const float3 inv = r->inv_direction;
+    const float8 near_x = rc_wide_slab(r->negative_x ? node->upper_x : node->lower_x,
+                                       node->origin_x, node->exponent_x, o.x, inv.x);
+    const float8 far_x = rc_wide_slab(r->negative_x ? node->lower_x : node->upper_x, node->origin_x,
+                                      node->exponent_x, o.x, inv.x);
+    const float8 near_y = rc_wide_slab(r->negative_y ? node->upper_y : node->lower_y,
+                                       node->origin_y, node->exponent_y, o.y, inv.y);
+    const float8 far_y = rc_wide_slab(r->negative_y ? node->lower_y : node->upper_y, node->origin_y,
+                                      node->exponent_y, o.y, inv.y);
+    const float8 near_z = rc_wide_slab(r->negative_z ? node->upper_z : node->lower_z,
+                                       node->origin_z, node->exponent_z, o.z, inv.z);
+    const float8 far_z = rc_wide_slab(r->negative_z ? node->lower_z : node->upper_z, node->origin_z,
+                                      node->exponent_z, o.z, inv.z);
     // A 0 * inf = NaN slab (ray in a box plane) drops out: each comparison below keeps the
     // running bound when the slab is NaN.
     float8 near_t = (float8)(tmin);
