@@ -428,6 +428,41 @@ TEST(Cli, CompareSubtractsTheReferencesNoise) {
     EXPECT_NE(negative.output.find("--reference-spp"), std::string::npos) << negative.output;
 }
 
+// A reference at twice the test's resolution: box-filtered 2 x 2 first, its noise that of a mean
+// of four pixels of 4 samples each (variance (s1^2 + ... + s4^2) / 16 / 4); a reference at a
+// resolution that is no such multiple is refused.
+TEST(Cli, CompareBoxFiltersAReferenceAtAMultipleOfTheResolution) {
+    const auto dir = test::scratch_dir("cli_compare_box");
+    Image test(1, 1, 3);
+    test.channel_names = {"R", "G", "B"};
+    test.pixels = {1, 2, 3};
+    Image reference(2, 2, 6);
+    reference.channel_names = {"R", "G", "B", "stddev.R", "stddev.G", "stddev.B"};
+    // R 0, 1, 2, 1 (mean 1); G 1, 1, 1, 1 (mean 1); B 2, 2, 2, 2 (mean 2); stddev 1, 2, 0, 1.
+    reference.pixels = {0, 1, 2, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 1, 2, 0, 0, 0, 1, 1, 2, 1, 1, 1};
+    write_image(dir / "test.exr", test);
+    write_image(dir / "reference.exr", reference);
+    const test::CommandResult result = test::run_radcache(
+        {"compare", (dir / "test.exr").string(), (dir / "reference.exr").string(),
+         "--reference-spp", "4", "--json", (dir / "error.json").string()});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("box-filtered 2 x 2"), std::string::npos) << result.output;
+    const nlohmann::json j = nlohmann::json::parse(read_file(dir / "error.json"));
+    // Differences 0, 1, 1 against references 1, 1, 2.
+    const double relmse = (0.0 + 1.0 / 1.01 + 1.0 / 4.01) / 3.0;
+    const double variance = (1.0 + 4.0 + 0.0 + 1.0) / 16.0 / 4.0;  // every channel alike
+    const double noise = (variance / 1.01 + variance / 1.01 + variance / 4.01) / 3.0;
+    EXPECT_NEAR(j["relmse"].get<double>(), relmse, 1e-6);
+    EXPECT_NEAR(j["reference_noise"].get<double>(), noise, 1e-6);
+    EXPECT_EQ(j["reference_box_filter"].get<int>(), 2);
+    Image odd(3, 2, 3);
+    write_image(dir / "odd.exr", odd);
+    const test::CommandResult refused =
+        test::run_radcache({"compare", (dir / "test.exr").string(), (dir / "odd.exr").string()});
+    EXPECT_NE(refused.exit_code, 0);
+    EXPECT_NE(refused.output.find("test.exr"), std::string::npos) << refused.output;
+}
+
 TEST(Cli, HelpListsOptions) {
     const test::CommandResult render = test::run_radcache({"render", "--help"});
     EXPECT_EQ(render.exit_code, 0);

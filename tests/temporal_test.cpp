@@ -370,7 +370,7 @@ Image moving_sphere_reference(int frame) {
     std::snprintf(name, sizeof name, "frame%04d.exr", frame);
     const Image reference =
         read_image(test::source_dir() / "scenes" / "moving-sphere" / "reference" / name);
-    return test::box_filtered(select_layers(reference, {"indirect"}), 8);
+    return box_filtered(select_layers(reference, {"indirect"}), 8);
 }
 
 // Mean over pixels and channels of ((v_f - v_{f-1}) - (r_f - r_{f-1}))^2 / (r_f^2 + 0.01): the

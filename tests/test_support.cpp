@@ -51,26 +51,6 @@ Material pure_phong(float exponent) {
     return m;
 }
 
-Image box_filtered(const Image& image, int factor) {
-    Image out(image.width / factor, image.height / factor, image.channels);
-    out.channel_names = image.channel_names;
-    const double weight = 1.0 / (static_cast<double>(factor) * factor);
-    for (int y = 0; y < out.height; ++y) {
-        for (int x = 0; x < out.width; ++x) {
-            for (int c = 0; c < image.channels; ++c) {
-                double sum = 0.0;
-                for (int j = 0; j < factor; ++j) {
-                    for (int i = 0; i < factor; ++i) {
-                        sum += image.at(factor * x + i, factor * y + j, c);
-                    }
-                }
-                out.at(x, y, c) = static_cast<float>(sum * weight);
-            }
-        }
-    }
-    return out;
-}
-
 Image scene_reference(const std::string& scene, const std::string& layer, int size) {
     const Image full =
         select_layers(read_image(source_dir() / "scenes" / scene / "reference.exr"), {layer});

@@ -32,10 +32,6 @@ Scene load_cornell_box();
 // A Phong material with white specular reflectance and no diffuse lobe ("phong E").
 Material pure_phong(float exponent);
 
-// `image` box filtered by an integer factor in both directions. The camera's pixel filter is a
-// box, so a reference box filtered by f is the reference of the same view at 1/f its size.
-Image box_filtered(const Image& image, int factor);
-
 // The shipped reference of scenes/<scene>/ (512 x 512): its layer `layer`, box filtered to
 // size x size.
 Image scene_reference(const std::string& scene, const std::string& layer, int size);

@@ -62,18 +62,22 @@ int compare_one(const ParsedArguments& arguments) {
     const Image mask_image =
         arguments.has("--mask") ? read_mask(arguments.value("--mask"), arguments) : Image();
     const PixelMask mask{arguments.has("--mask") ? &mask_image : nullptr};
-    const ImageError e = compare_layer(
-        select_layers(test_file, {layer}),
-        reference_layer(reference_file, layer, reference_path, source), test_path, mask);
+    const Image test = select_layers(test_file, {layer});
+    int factor = 1;
+    const ReferenceLayer reference =
+        matched_to(reference_layer(reference_file, layer, reference_path, source), test, &factor);
+    const ImageError e = compare_layer(test, reference, test_path, mask);
     print_figures(e, source);
+    if (factor > 1) {
+        std::cout << "reference box-filtered " << factor << " x " << factor
+                  << " to the test's resolution\n";
+    }
     if (mask.mask != nullptr) {
         std::cout << "over the " << e.pixels << " pixels of the mask\n";
     }
     char line[256];
     if (!error_image_path.empty()) {
-        write_image(error_image_path,
-                    error_image(select_layers(test_file, {layer}),
-                                select_layers(reference_file, {layer}), test_path));
+        write_image(error_image_path, error_image(test, reference.values, test_path));
         std::snprintf(line, sizeof(line),
                       "error image %s: log10 relMSE per pixel, %g black to %g white\n",
                       error_image_path.string().c_str(), kErrorImageLog10Min, kErrorImageLog10Max);
@@ -85,6 +89,7 @@ int compare_one(const ParsedArguments& arguments) {
         j["reference"] = reference_path;
         j["aov"] = layer;
         j["pixels"] = e.pixels;
+        j["reference_box_filter"] = factor;
         if (mask.mask != nullptr) {
             j["mask"] = arguments.value("--mask");
         }
@@ -106,7 +111,7 @@ int run_compare_command(const std::vector<std::string>& args) {
          "write a false-colour image of each pixel's relMSE (.png, .exr, .hdr, .pfm)"},
         {"--mask", "", "FILE",
          "take every figure over the pixels where FILE's mask layer is positive (FILE the size of "
-         "REF)"},
+         "TEST)"},
         {"--mask-aov", "", "NAME",
          "the layer of --mask whose first channel is the mask (default: "
          "its first layer)"},
@@ -136,7 +141,9 @@ int run_compare_command(const std::vector<std::string>& args) {
             "of ((v_f-v_f-1)-(r_f-r_f-1))^2/(r_f^2+0.01), net of the "
             "references' noise (both frames' stddev^2/spp over "
             "r_f^2+0.01) where known; and their means over the sequence "
-            "(docs/path-tracer.md, \"Flicker\").",
+            "(docs/path-tracer.md, \"Flicker\"). A REF at k times TEST's "
+            "resolution on both axes is box-filtered k x k to TEST's first "
+            "(its stddev as the root mean square, its spp times k^2).",
             specs);
         return 0;
     }

@@ -37,7 +37,8 @@ struct LoadedFrame {
     Image test;
     ReferenceLayer reference;
     ReferenceNoiseSource source;
-    Image mask;  // 0 x 0: none
+    int reference_factor = 1;  // the reference box-filtered factor x factor to the test's size
+    Image mask;                // 0 x 0: none
 };
 
 // The figures of one frame: its error, and the temporal error of the pair it closes.
@@ -47,6 +48,7 @@ struct FrameRow {
     std::string reference_path;
     ImageError error;
     ReferenceNoiseSource source;
+    int reference_factor = 1;
     std::optional<TemporalError> temporal;  // absent for the first frame
 };
 
@@ -105,8 +107,9 @@ LoadedFrame load_frame(const SequenceJob& job, const ParsedArguments& arguments,
     loaded.reference_path = path_of(job.reference_pattern, frame);
     loaded.test = select_layers(read_image(loaded.test_path), {job.layer});
     loaded.source = find_reference_spp(arguments, loaded.reference_path);
-    loaded.reference = reference_layer(read_image(loaded.reference_path), job.layer,
-                                       loaded.reference_path, loaded.source);
+    loaded.reference = matched_to(reference_layer(read_image(loaded.reference_path), job.layer,
+                                                  loaded.reference_path, loaded.source),
+                                  loaded.test, &loaded.reference_factor);
     if (job.mask_pattern.find('#') != std::string::npos) {
         loaded.mask = read_mask(path_of(job.mask_pattern, frame), arguments);
     } else {
@@ -160,6 +163,7 @@ std::vector<FrameRow> compare_sequence(const SequenceJob& job, const ParsedArgum
         row.test_path = current.test_path;
         row.reference_path = current.reference_path;
         row.source = current.source;
+        row.reference_factor = current.reference_factor;
         const PixelMask mask{current.mask.width > 0 ? &current.mask : nullptr};
         row.error = compare_layer(current.test, current.reference, current.test_path, mask);
         if (previous) {
@@ -245,6 +249,10 @@ void print_sequence(const SequenceJob& job, const std::vector<FrameRow>& rows,
     } else {
         std::cout << ", over the pixels of " << job.mask_pattern << "\n";
     }
+    if (rows.front().reference_factor > 1) {
+        std::cout << "references box-filtered " << rows.front().reference_factor << " x "
+                  << rows.front().reference_factor << " to the test's resolution\n";
+    }
     if (means.reference_noise && means.temporal_reference_noise) {
         std::cout << "references' noise subtracted (means): " << figure_text(means.reference_noise)
                   << " of relmse, " << figure_text(means.temporal_reference_noise)
@@ -283,6 +291,7 @@ nlohmann::json sequence_json(const SequenceJob& job, const std::vector<FrameRow>
         f["test"] = row.test_path;
         f["reference"] = row.reference_path;
         f["pixels"] = row.error.pixels;
+        f["reference_box_filter"] = row.reference_factor;
         // The pair (frame - 1, frame); null for the first frame.
         const std::optional<TemporalError>& t = row.temporal;
         f["temporal_error"] = t ? nlohmann::json(t->temporal_error) : nlohmann::json(nullptr);

@@ -107,6 +107,32 @@ ReferenceLayer reference_layer(const Image& reference_file, const std::string& l
     return reference;
 }
 
+ReferenceLayer matched_to(const ReferenceLayer& reference, const Image& test, int* factor) {
+    *factor = 1;
+    const int w = reference.values.width;
+    const int h = reference.values.height;
+    if (test.width <= 0 || test.height <= 0 || w % test.width != 0 || h % test.height != 0 ||
+        w / test.width != h / test.height || w / test.width < 2) {
+        return reference;
+    }
+    const int k = w / test.width;
+    ReferenceLayer filtered;
+    filtered.values = box_filtered(reference.values, k);
+    if (reference.noise_known()) {
+        Image variance = reference.stddev;
+        for (float& v : variance.pixels) {
+            v *= v;
+        }
+        filtered.stddev = box_filtered(variance, k);
+        for (float& v : filtered.stddev.pixels) {
+            v = std::sqrt(v);
+        }
+        filtered.spp = reference.spp * k * k;
+    }
+    *factor = k;
+    return filtered;
+}
+
 ImageError compare_layer(const Image& test, const ReferenceLayer& reference,
                          const std::string& test_path, PixelMask mask) {
     if (reference.noise_known()) {

@@ -41,6 +41,13 @@ struct ReferenceLayer {
 ReferenceLayer reference_layer(const Image& reference_file, const std::string& layer,
                                const std::string& reference_path, ReferenceNoiseSource& source);
 
+// A reference at k times the test's resolution on both axes (k >= 2) box-filtered to the test's:
+// the values averaged over k x k pixels, the stddev as their root mean square and the sample
+// count times k^2 (the filtered pixel, a mean of k^2 pixels of spp samples each, has the variance
+// mean(stddev^2) / (k^2 spp)). Any other reference is returned as it is; `factor` is set to k
+// (1 when nothing was done).
+ReferenceLayer matched_to(const ReferenceLayer& reference, const Image& test, int* factor);
+
 // `test` (one layer) against the reference layer, net of its noise where known.
 ImageError compare_layer(const Image& test, const ReferenceLayer& reference,
                          const std::string& test_path, PixelMask mask);

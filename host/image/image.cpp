@@ -23,6 +23,26 @@ std::string layer_of(const std::string& channel) {
 
 }  // namespace
 
+Image box_filtered(const Image& image, int factor) {
+    Image out(image.width / factor, image.height / factor, image.channels);
+    out.channel_names = image.channel_names;
+    const double weight = 1.0 / (static_cast<double>(factor) * factor);
+    for (int y = 0; y < out.height; ++y) {
+        for (int x = 0; x < out.width; ++x) {
+            for (int c = 0; c < image.channels; ++c) {
+                double sum = 0.0;
+                for (int j = 0; j < factor; ++j) {
+                    for (int i = 0; i < factor; ++i) {
+                        sum += image.at(factor * x + i, factor * y + j, c);
+                    }
+                }
+                out.at(x, y, c) = static_cast<float>(sum * weight);
+            }
+        }
+    }
+    return out;
+}
+
 std::vector<std::string> layer_names(const Image& image) {
     std::vector<std::string> names;
     for (const std::string& channel : image.channel_names) {

@@ -29,6 +29,11 @@ struct Image {
 // image does not have.
 Image select_layers(const Image& image, const std::vector<std::string>& layers);
 
+// The image box-filtered by `factor` on both axes: each output pixel the mean of factor x factor
+// input pixels (a box-filtered render at factor times the resolution gives the box-filtered
+// render at this one); a width or height not divisible by factor loses its last pixels.
+Image box_filtered(const Image& image, int factor);
+
 // The layer names of an image, in channel order ("beauty" for unprefixed channels).
 std::vector<std::string> layer_names(const Image& image);
 
