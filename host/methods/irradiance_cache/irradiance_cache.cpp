@@ -264,6 +264,17 @@ void IrradianceCache::measure_tile_depths(const Buffer<shared::GBufferSample>& s
     tile_depths_ = depths.download();
 }
 
+void IrradianceCache::drop_uncached(std::vector<shared::GBufferSample>* hits) const {
+    if (uncached_primitives_.empty()) {
+        return;
+    }
+    const auto uncached = [&](const shared::GBufferSample& g) {
+        return g.primitive >= 0 && static_cast<size_t>(g.primitive) < uncached_primitives_.size() &&
+               uncached_primitives_[static_cast<size_t>(g.primitive)] != 0;
+    };
+    hits->erase(std::remove_if(hits->begin(), hits->end(), uncached), hits->end());
+}
+
 void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samples,
                             Candidates placement, size_t candidates, bool until_covered) {
     Buffer<unsigned> uncovered_buffer(context_, candidates, "ic_uncovered");
@@ -303,6 +314,9 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
                 context_.launch(select_kernel_, count, samples, index_buffer, selected);
                 uncovered = selected.download();
             }
+        }
+        if (level > 0) {
+            drop_uncached(&uncovered);
         }
         std::vector<float> min_influence(uncovered.size());
         for (size_t c = 0; c < uncovered.size(); ++c) {
@@ -527,6 +541,7 @@ void IrradianceCache::begin(const IrradianceCacheOptions& options) {
     check_options(options, samples);
     reset(sampling_of(options));
     observer_ = options.observer;
+    uncached_primitives_ = options.uncached_primitives;
     camera_spp_ = options.spp;
     camera_ = camera_params(scene_.camera, width_, height_);
     // 1. G-buffer.

@@ -62,6 +62,10 @@ struct IrradianceCacheOptions {
     // Shown every batch of records the kernels compute, before insertion (temporal caching
     // reprojects their hemisphere samples).
     RecordBatchObserver* observer = nullptr;
+    // Per primitive (empty: none): nonzero where hemisphere hits get no deeper-level record and
+    // path-trace the diffuse lobe beyond instead, as a hit no record covers does (temporal
+    // caching: records on moving triangles serve one frame, not worth their rays).
+    std::vector<uint8_t> uncached_primitives;
 };
 
 // One pass of placement: records created at one cache level (0: the camera's) from candidates
@@ -235,6 +239,8 @@ class IrradianceCache : private FrameBound {
                                          const shared::CameraParams* camera);
     // Places records at `level` where candidates of `samples` are not covered. One pass, or
     // passes until all are covered.
+    // Removes the hits on IrradianceCacheOptions::uncached_primitives.
+    void drop_uncached(std::vector<shared::GBufferSample>* hits) const;
     void cover(int level, const Buffer<shared::GBufferSample>& samples, Candidates placement,
                size_t candidates, bool until_covered);
     // Records of `level` at `sites`, numbered from the level's current size.
@@ -271,6 +277,7 @@ class IrradianceCache : private FrameBound {
     std::vector<shared::TileDepths> tile_depths_;  // their depths per splat tile
     std::vector<uint32_t> next_streams_;           // per level: random stream of its next record
     RecordBatchObserver* observer_ = nullptr;
+    std::vector<uint8_t> uncached_primitives_;
     std::vector<RecordStore> stores_;
     IrradianceCacheStats stats_;
 };

@@ -36,6 +36,8 @@ class TemporalReprojection final : public RecordBatchObserver, private FrameBoun
 
     // Primitives that move between the two frames.
     size_t moving_primitives() const { return moving_; }
+    // Per primitive: 1 where it moves between the two frames.
+    const std::vector<uint8_t>& moves() const { return moves_; }
 
    private:
     Kernel carry_kernel_;

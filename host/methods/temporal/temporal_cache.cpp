@@ -137,6 +137,9 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
     IrradianceCache cache(frame);
     IrradianceCacheOptions options = ic_;
     options.observer = &reprojection;
+    if (!temporal_.cache_moving_hits) {
+        options.uncached_primitives = reprojection.moves();
+    }
     options.records_overlay = false;
     cache.begin(options);
 
@@ -173,7 +176,12 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
             stats.created = carried.size() - replaced.size();
             stats.mean_new_lifespan = lifespan;
         } else {
-            stats.deeper.push_back({serving[l].size(), carried.size(), expired[l].size()});
+            size_t on_moving = 0;
+            for (const CarriedRecord& c : carried) {
+                on_moving += c.site_moves ? 1 : 0;
+            }
+            stats.deeper.push_back(
+                {serving[l].size(), carried.size(), expired[l].size(), on_moving, lifespan});
         }
     }
     // The first level as it serves this frame, for shading.
@@ -266,7 +274,9 @@ FrameResult TemporalIrradianceCache::shade_frame(const FrameScene& frame) {
         deeper.push_back({{"level", l + 1},
                           {"reused", placed.deeper[l].reused},
                           {"created", placed.deeper[l].created},
-                          {"dropped", placed.deeper[l].dropped}});
+                          {"dropped", placed.deeper[l].dropped},
+                          {"on_moving_surfaces", placed.deeper[l].on_moving_surfaces},
+                          {"mean_new_lifespan", placed.deeper[l].mean_new_lifespan}});
     }
     result.stats["temporal"]["deeper_levels"] = deeper;
     return result;

@@ -28,6 +28,8 @@ struct TemporalLevelStats {
     size_t reused = 0;
     size_t created = 0;
     size_t dropped = 0;
+    size_t on_moving_surfaces = 0;   // of the created: on triangles that move (lifespan 1)
+    double mean_new_lifespan = 0.0;  // of the created
 };
 
 // What placement did at one frame (pass 1); the counts are the first level's.
@@ -95,8 +97,8 @@ class TemporalIrradianceCache {
     TemporalOptions temporal_;
     int first_frame_;
     int last_frame_;
-    int placed_until_;  // the last frame placed (pass 1)
-    int shaded_until_;  // the last frame shaded (pass 2)
+    int placed_until_;           // the last frame placed (pass 1)
+    int shaded_until_;           // the last frame shaded (pass 2)
     std::optional<Scene> next_;  // the scene posed at the frame after the one being placed
     std::vector<Level> levels_;  // 0: the camera's
     std::vector<std::vector<Serving>> serving_;    // per frame from first_frame_: first level

@@ -15,9 +15,13 @@ std::vector<OptionSpec> temporal_option_specs() {
          "(two passes, default), extrapolated from its reprojected next frame (one pass), or held"},
         {"--temporal-accuracy", "", "A",
          "ic --temporal: a^t, the largest relative change of a record's irradiance over its "
-         "lifespan, estimated by reprojection (default 0.05)"},
+         "lifespan, estimated by reprojection (default 0.02)"},
         {"--temporal-max-frames", "", "N",
          "ic --temporal: the longest lifespan of a record, in frames (default 20)"},
+        {"--temporal-moving-hits", "", "trace|cache",
+         "ic --temporal: hemisphere hits on objects that move before the next frame path-trace "
+         "the light beyond them (trace, default) or get deeper-level records, which live one "
+         "frame (cache)"},
     };
 }
 
@@ -25,8 +29,8 @@ TemporalOptions parse_temporal_options(const ParsedArguments& arguments) {
     TemporalOptions t;
     t.enabled = arguments.has("--temporal");
     if (!t.enabled) {
-        for (const char* option :
-             {"--temporal-gradients", "--temporal-accuracy", "--temporal-max-frames"}) {
+        for (const char* option : {"--temporal-gradients", "--temporal-accuracy",
+                                   "--temporal-max-frames", "--temporal-moving-hits"}) {
             if (arguments.has(option)) {
                 throw Error(std::string(option) + " needs --temporal", kExitUsage);
             }
@@ -46,6 +50,14 @@ TemporalOptions parse_temporal_options(const ParsedArguments& arguments) {
                             value + "'",
                         kExitUsage);
         }
+    }
+    if (arguments.has("--temporal-moving-hits")) {
+        const std::string value = arguments.value("--temporal-moving-hits");
+        if (value != "trace" && value != "cache") {
+            throw Error("--temporal-moving-hits: expected trace or cache, got '" + value + "'",
+                        kExitUsage);
+        }
+        t.cache_moving_hits = value == "cache";
     }
     t.accuracy =
         static_cast<float>(arguments.number("--temporal-accuracy", t.accuracy, 1e-4, 10.0));

@@ -16,9 +16,12 @@ enum class TemporalGradients { kNone, kExtrapolated, kInterpolated };
 struct TemporalOptions {
     bool enabled = false;
     TemporalGradients gradients = TemporalGradients::kInterpolated;
-    float accuracy = 0.05f;  // a^t of eq. 10 (the report's §6 uses 0.05)
+    float accuracy = 0.02f;  // a^t of eq. 10 (the report's §6 uses 0.05; docs/temporal-caching.md)
     int max_frames = 20;     // delta t_max of eq. 12 (the report's §6: 20 frames)
     int hole_passes = 4;     // 3 x 3 hole-filling passes of the reprojection (§4.3)
+    // Hemisphere hits on triangles that move before the next frame get deeper-level records
+    // (which serve that frame only) when true; path-trace the diffuse lobe beyond when false.
+    bool cache_moving_hits = false;
 };
 
 std::vector<OptionSpec> temporal_option_specs();

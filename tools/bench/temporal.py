@@ -1,0 +1,222 @@
+#!/usr/bin/env python3
+"""Temporal caching against per-frame irradiance caching over a clip (issue 13's targets: the
+speed-up at equal per-frame relMSE, and the temporal error, flicker, at equal time).
+
+On an animated scene with per-frame references (default scenes/moving-sphere), all in this one
+invocation on one device with warm kernel binaries (one untimed small render first):
+
+  1. `ic --temporal` over --frames: its time T and, against the references (`radcache compare
+     --frames`, the references box-filtered to the render's resolution), the mean per-frame relMSE
+     and the mean temporal error of the indirect layer (the caches' part of the image; the direct
+     light is the same estimator in both) and of the beauty layer.
+  2. Per-frame `ic` over the same frames at each --ladder hemisphere ray count (the first is the
+     temporal render's own): its times and errors.
+  3. Speed-up at equal error: the per-frame time at the temporal render's indirect relMSE,
+     interpolated log-log between the ladder runs that bracket it, over T. When every ladder run
+     is more accurate, the cheapest one's time over T is a lower bound ("≥"); when every one is
+     less accurate, the most accurate one's time over T is an upper bound ("≤").
+  4. Flicker at equal time: per-frame caching's mean temporal error at T, interpolated log-log
+     in time between the ladder runs (or the nearest run's, said so), over the temporal render's.
+  5. A chart of per-frame relMSE and temporal error over the clip (tools/flicker_chart.py,
+     needs matplotlib): --chart FILE.
+
+The clock (--clock): `cpu` (default), the CPU seconds (user + system) of the radcache processes,
+which other processes on a shared machine barely change; or `wall`, the render phase of --stats.
+Per-frame caching in one `--frames` run draws the same random streams every frame (records land
+in the same places while nothing moves), so its flicker is that of a renderer whose streams do
+not depend on the frame; that is the baseline here.
+
+Usage: tools/bench/temporal.py [--scene scenes/moving-sphere] [--frames 0:11] [--width 128]
+           [--height 128] [--spp 16] [--ladder "1024 512 256"] [--options "--ic-bounces 1"]
+           [--temporal-options "--temporal-accuracy 0.05"] [--clock cpu] [--chart FILE.png]
+           [--out build/bench/temporal] [-- extra radcache render options, e.g. --device 0:0]
+Writes OUT/temporal.json and prints a table. Python 3 standard library (matplotlib for --chart).
+"""
+
+import argparse
+import json
+import math
+import os
+import resource
+import shlex
+import subprocess
+import sys
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
+
+
+def run(args):
+    result = subprocess.run([RADCACHE] + args, capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit("radcache %s failed:\n%s%s" % (" ".join(args), result.stdout, result.stderr))
+    return result.stdout
+
+
+def cpu_seconds():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def render(scene, pattern, options, clock):
+    """Renders a frame sequence; its seconds on `clock` and its --stats."""
+    stats_path = os.path.join(os.path.dirname(pattern), os.path.basename(pattern).split("#")[0]
+                              + "stats.json")
+    before = cpu_seconds()
+    run(["render", scene, "-o", pattern, "--stats", stats_path, "--quiet"] + options)
+    cpu = cpu_seconds() - before
+    with open(stats_path) as f:
+        stats = json.load(f)
+    return (cpu if clock == "cpu" else stats["seconds"]["render"]), stats
+
+
+def sequence_errors(pattern, reference, frames, layer):
+    """Means over the clip of `compare --frames` on `layer`, and its per-frame rows."""
+    json_path = pattern.replace("####", "") + "." + layer + ".json"
+    run(["compare", "--frames", frames, pattern, reference, "--aov", layer, "--json", json_path])
+    with open(json_path) as f:
+        result = json.load(f)
+    return result["mean"], json_path
+
+
+def measure(label, scene, pattern, options, args):
+    seconds, stats = render(scene, pattern, options, args.clock)
+    indirect, indirect_json = sequence_errors(pattern, args.reference, args.frames, "indirect")
+    beauty, _ = sequence_errors(pattern, args.reference, args.frames, "beauty")
+    row = {"label": label, "options": options, "seconds": seconds,
+           "indirect_relmse": indirect["relmse"], "indirect_temporal": indirect["temporal_error"],
+           "beauty_relmse": beauty["relmse"], "beauty_relmse_net": beauty["relmse_net"],
+           "beauty_temporal": beauty["temporal_error"],
+           "beauty_temporal_net": beauty["temporal_error_net"], "compare_json": indirect_json}
+    temporal = [f.get("temporal") for f in stats.get("frames", []) if f.get("temporal")]
+    if temporal:
+        row["records_computed"] = sum(t["created"] + t["recomputed"] for t in temporal)
+    print("  %-28s %8.1f s  indirect relMSE %.3g  temporal %.3g  beauty relMSE %.3g"
+          % (label, seconds, row["indirect_relmse"], row["indirect_temporal"],
+             row["beauty_relmse"]), flush=True)
+    return row
+
+
+def log_interpolate(x, x0, x1, y0, y1):
+    if x0 == x1:
+        return y0
+    f = (math.log(x) - math.log(x0)) / (math.log(x1) - math.log(x0))
+    return math.exp(math.log(y0) + f * (math.log(y1) - math.log(y0)))
+
+
+def time_at_error(error, ladder):
+    """Per-frame caching's time at `error` and how it was found: "=", "≥" or "≤" (a bound on the
+    speed-up it gives)."""
+    runs = sorted(ladder, key=lambda r: r["indirect_relmse"])
+    if error <= runs[0]["indirect_relmse"]:
+        return runs[0]["seconds"], "≥"
+    if error >= runs[-1]["indirect_relmse"]:
+        return runs[-1]["seconds"], "≤"
+    for a, b in zip(runs, runs[1:]):
+        if a["indirect_relmse"] <= error <= b["indirect_relmse"]:
+            return log_interpolate(error, a["indirect_relmse"], b["indirect_relmse"],
+                                   a["seconds"], b["seconds"]), "="
+    return runs[-1]["seconds"], "≤"
+
+
+def temporal_error_at_time(seconds, ladder, key):
+    """Per-frame caching's temporal error at `seconds`, and whether runs bracket it."""
+    runs = sorted(ladder, key=lambda r: r["seconds"])
+    below = [r for r in runs if r["seconds"] <= seconds]
+    above = [r for r in runs if r["seconds"] >= seconds]
+    if below and above:
+        a, b = below[-1], above[0]
+        return log_interpolate(seconds, a["seconds"], b["seconds"], a[key], b[key]), True
+    nearest = below[-1] if below else above[0]
+    return nearest[key], False
+
+
+def chart(path, rows, args):
+    command = [sys.executable, os.path.join(ROOT, "tools", "flicker_chart.py"), "--reference",
+               args.reference, "--frames", args.frames, "--aov", "indirect", "--out", path,
+               "--title", "%s, frames %s, indirect layer" % (os.path.basename(args.scene_dir),
+                                                           args.frames)]
+    for row in rows:
+        command.append("%s=%s" % (row["label"], row["compare_json"]))
+    subprocess.run(command, check=True)
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--scene", default=os.path.join(ROOT, "scenes", "moving-sphere"))
+    parser.add_argument("--frames", default="0:11")
+    parser.add_argument("--width", type=int, default=128)
+    parser.add_argument("--height", type=int, default=128)
+    parser.add_argument("--spp", type=int, default=16)
+    parser.add_argument("--ladder", default="1024 512 256",
+                        help="per-frame ic's hemisphere rays per record, the first the temporal "
+                             "render's own")
+    parser.add_argument("--options", default="", help="options of every render (quoted)")
+    parser.add_argument("--temporal-options", default="",
+                        help="options of the temporal render only (quoted)")
+    parser.add_argument("--clock", choices=["cpu", "wall"], default="cpu")
+    parser.add_argument("--chart", default="", help="write the flicker chart here (.png)")
+    parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "temporal"))
+    if "--" in argv:
+        split = argv.index("--")
+        args = parser.parse_args(argv[:split])
+        extra = argv[split + 1:]
+    else:
+        args = parser.parse_args(argv)
+        extra = []
+    args.scene_dir = args.scene if os.path.isdir(args.scene) else os.path.dirname(args.scene)
+    scene = os.path.join(args.scene_dir, "scene.json")
+    args.reference = os.path.join(args.scene_dir, "reference", "frame####.exr")
+    ladder_rays = [int(n) for n in args.ladder.split()]
+    common = ["--method", "ic", "--frames", args.frames, "--width", str(args.width), "--height",
+              str(args.height), "--spp", str(args.spp), "--aovs", "beauty,indirect"] \
+        + shlex.split(args.options) + extra
+    os.makedirs(args.out, exist_ok=True)
+    out = lambda name: os.path.join(args.out, name)
+    run(["render", scene, "-o", out("warm.exr"), "--quiet", "--method", "ic", "--width", "16",
+         "--height", "16", "--spp", "1", "--ic-rays", "64"] + extra)
+
+    print("%s, frames %s at %dx%d, %d spp (%s clock):" % (os.path.relpath(scene, ROOT),
+                                                        args.frames, args.width, args.height,
+                                                        args.spp, args.clock))
+    temporal = measure("temporal ic, %d rays" % ladder_rays[0], scene, out("tc####.exr"),
+                       common + ["--ic-rays", str(ladder_rays[0]), "--temporal"]
+                       + shlex.split(args.temporal_options), args)
+    ladder = [measure("per-frame ic, %d rays" % rays, scene, out("ic%d-####.exr" % rays),
+                      common + ["--ic-rays", str(rays)], args) for rays in ladder_rays]
+
+    per_frame_time, bound = time_at_error(temporal["indirect_relmse"], ladder)
+    speedup = per_frame_time / temporal["seconds"]
+    flicker, bracketed = temporal_error_at_time(temporal["seconds"], ladder, "indirect_temporal")
+    flicker_ratio = flicker / temporal["indirect_temporal"]
+    same = ladder[0]
+    result = {"scene": scene, "frames": args.frames, "resolution": [args.width, args.height],
+              "spp": args.spp, "clock": args.clock, "extra_options": extra,
+              "temporal": temporal, "ladder": ladder,
+              "speedup_at_equal_indirect_relmse": {"value": speedup, "bound": bound,
+                                                   "per_frame_seconds": per_frame_time},
+              "flicker_at_equal_time": {"per_frame": flicker, "bracketed": bracketed,
+                                        "ratio": flicker_ratio},
+              "same_settings": {"speedup": same["seconds"] / temporal["seconds"],
+                                "indirect_relmse_ratio":
+                                    temporal["indirect_relmse"] / same["indirect_relmse"],
+                                "flicker_ratio":
+                                    same["indirect_temporal"] / temporal["indirect_temporal"]}}
+    with open(out("temporal.json"), "w") as f:
+        json.dump(result, f, indent=2)
+    print("same settings: per-frame / temporal time %.2f×, indirect relMSE temporal / per-frame "
+          "%.2f, temporal error per-frame / temporal %.2f×"
+          % (result["same_settings"]["speedup"], result["same_settings"]["indirect_relmse_ratio"],
+             result["same_settings"]["flicker_ratio"]))
+    print("speed-up at equal indirect relMSE: %s %.2f× (per-frame %.1f s against %.1f s)"
+          % ("" if bound == "=" else bound, speedup, per_frame_time, temporal["seconds"]))
+    print("temporal error at equal time: per-frame %.3g against %.3g: %.2f× lower%s"
+          % (flicker, temporal["indirect_temporal"], flicker_ratio,
+             "" if bracketed else " (nearest per-frame run, not interpolated)"))
+    if args.chart:
+        chart(args.chart, [temporal] + ladder, args)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
