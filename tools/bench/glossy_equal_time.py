@@ -25,7 +25,8 @@ of the reference's noise), and relMSE of the indirect layer over the glossy pixe
 SDRC serves), through `compare --mask`.
 
 Usage: tools/bench/glossy_equal_time.py [--scene scenes/kettle] [--pt-spp 1024] [--clock cpu]
-           [--sdrc-options "--sdrc-interp 8"] [--out build/bench/glossy]
+           [--sdrc-options "--sdrc-interp 8"] [--rc-options "--ic-bounces 1"]
+           [--out build/bench/glossy]
            [-- extra radcache render options for every render, e.g. --device 0:0]
 Writes OUT/glossy_equal_time.json and prints a table. Python 3 standard library only.
 """
@@ -129,6 +130,8 @@ def main(argv):
     parser.add_argument("--clock", choices=["cpu", "wall"], default="cpu")
     parser.add_argument("--sdrc-options", default="",
                         help="options of the sdrc render (quoted), e.g. \"--sdrc-interp 8\"")
+    parser.add_argument("--rc-options", default="",
+                        help="options of the rc renders (quoted), e.g. \"--ic-bounces 1\"")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "glossy"))
     if "--" in argv:
         split = argv.index("--")
@@ -140,6 +143,7 @@ def main(argv):
     global CLOCK
     CLOCK = args.clock
     sdrc_options = shlex.split(args.sdrc_options)
+    rc_options = shlex.split(args.rc_options)
     scene_dir = args.scene if os.path.isdir(args.scene) else os.path.dirname(args.scene)
     scene = os.path.join(scene_dir, "scene.json")
     reference = references.reference_path(scene_dir)
@@ -160,7 +164,7 @@ def main(argv):
     rc_spp = spp
     for attempt in range(2):
         name = out("rc-%d.exr" % rc_spp)
-        stats = render(scene, name, ["--method", "rc", "--spp", str(rc_spp)] + extra)
+        stats = render(scene, name, ["--method", "rc", "--spp", str(rc_spp)] + rc_options + extra)
         rc_runs.append(dict(errors(name, reference, mask, args.out), seconds=seconds(stats),
                             spp=rc_spp))
         next_spp = max(1, int(round(rc_spp * target / seconds(stats))))
@@ -187,7 +191,7 @@ def main(argv):
     pt_at, _ = at_time(target, pt_points)
 
     result = {"scene": scene, "reference": reference, "clock": CLOCK, "seconds": target,
-              "sdrc_options": sdrc_options, "sdrc": sdrc,
+              "sdrc_options": sdrc_options, "rc_options": rc_options, "sdrc": sdrc,
               "rc_runs": rc_runs, "rc_at_sdrc_time": rc_at, "rc_bracketed": rc_brackets,
               "pt_points": pt_points, "pt_at_sdrc_time": pt_at, "extra_options": extra}
     with open(out("glossy_equal_time.json"), "w") as f:
