@@ -66,8 +66,8 @@ RC_FUNC DecompIrradiance rc_decomp_irradiance(const FarField* far, const NearFie
                                               const GBufferSample* g) {
     DecompIrradiance e;
     e.far = e.near = (float4)(0.0f);
-    e.near_count = e.far_samples = 0;
-    e.pad0 = e.pad1 = 0;
+    e.near_count = e.far_samples = e.near_rays = 0;
+    e.pad0 = 0;
     if (g->served == 0) {
         return e;
     }
@@ -81,8 +81,12 @@ RC_FUNC DecompIrradiance rc_decomp_irradiance(const FarField* far, const NearFie
                                           far->coefficients, p, n, &radiance);
     e.far = (float4)(rc_decomp_sh_irradiance(&radiance, n), 0.0f);
     uint count = 0;
-    e.near = (float4)(rc_decomp_near_correction(near, &radiance, p, n, &count), 0.0f);
+    uint rays = 0;
+    e.near =
+        (float4)(rc_decomp_near_correction(near, &radiance, p, g->origin.xyz, n, &count, &rays),
+                 0.0f);
     e.near_count = count;
+    e.near_rays = rays;
     return e;
 }
 

@@ -70,21 +70,28 @@ __kernel void decomp_fit(uint begin, uint end, DecompParams params, __global con
 }
 
 // Item i: I_D and I_N at G-buffer entry i (eq. 3, 4) into irradiance[i].
-__kernel void decomp_irradiance(uint begin, uint end, DecompParams params,
+__kernel void decomp_irradiance(uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
                                 __global const GBufferSample* gbuffer, RecordGrid far_grid,
                                 __global const int* far_start, __global const int* far_samples,
                                 __global const Record* samples,
                                 __global const ShSample* coefficients, RecordGrid near_grid,
                                 __global const int* near_start, __global const int* near_list,
-                                __global const NearTriangle* triangles,
+                                __global const NearTriangle* near_triangles,
                                 __global const float4* radiance,
                                 __global DecompIrradiance* irradiance) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {
         return;
     }
+    const SceneData scene = RC_SCENE_DATA();
     const FarField far = {far_grid, far_start, far_samples, samples, coefficients};
-    const NearField near = {near_grid, near_start, near_list, triangles, radiance, params.alpha};
+    const NearField near = {near_grid,
+                            near_start,
+                            near_list,
+                            near_triangles,
+                            radiance,
+                            params.alpha,
+                            params.near_visibility != 0 ? &scene : 0};
     const GBufferSample g = gbuffer[i];
     irradiance[i] = rc_decomp_irradiance(&far, &near, &g);
 }

@@ -43,10 +43,10 @@ typedef struct DecompParams {
     int radiosity_samples;  // points per split triangle of its radiosity B(t) (§6, pass 1)
     uint seed_lo;           // the 64-bit seed
     uint seed_hi;
-    float alpha;         // the near/far distance (§3)
-    float ridge;         // Tikhonov weight of the fit, per ray, relative to 1 / (4 pi)
-    int count_emission;  // 1 to count emission the rays see (tests)
-    int pad0;
+    float alpha;          // the near/far distance (§3)
+    float ridge;          // Tikhonov weight of the fit, per ray, relative to 1 / (4 pi)
+    int count_emission;   // 1 to count emission the rays see (tests)
+    int near_visibility;  // 1: a shadow ray tests each near triangle (--decomp-visibility rays)
     int pad1;
     int pad2;
 } DecompParams;
@@ -101,10 +101,10 @@ typedef struct NearTriangle {
 typedef struct DecompIrradiance {
     float4 far;        // rgb: I_D; w: 0
     float4 near;       // rgb: I_N (signed); w: 0
-    uint near_count;   // triangles in the sum of eq. 4 (after the visibility heuristic)
+    uint near_count;   // triangles in the sum of eq. 4 (after the visibility test)
     uint far_samples;  // far-field samples with a positive weight
+    uint near_rays;    // shadow rays of the visibility test (--decomp-visibility rays)
     uint pad0;
-    uint pad1;
 } DecompIrradiance;
 
 RC_SHARED_END
@@ -127,6 +127,7 @@ RC_SHARED_END
     FIELD(DecompParams, alpha)                  \
     FIELD(DecompParams, ridge)                  \
     FIELD(DecompParams, count_emission)         \
+    FIELD(DecompParams, near_visibility)        \
     STRUCT(DecompCluster)                       \
     FIELD(DecompCluster, centre)                \
     FIELD(DecompCluster, test_radius)           \
@@ -152,7 +153,8 @@ RC_SHARED_END
     FIELD(DecompIrradiance, far)                \
     FIELD(DecompIrradiance, near)               \
     FIELD(DecompIrradiance, near_count)         \
-    FIELD(DecompIrradiance, far_samples)
+    FIELD(DecompIrradiance, far_samples)        \
+    FIELD(DecompIrradiance, near_rays)
 // clang-format on
 
 #ifndef __OPENCL_VERSION__

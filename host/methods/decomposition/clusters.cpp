@@ -125,9 +125,9 @@ std::pair<std::vector<uint32_t>, std::vector<uint32_t>> split_in_two(const Shadi
     return halves;
 }
 
-bool needs_split(const PointCluster& cluster, uint32_t inside_hits, float alpha,
+bool needs_split(const PointCluster& cluster, uint32_t inside_hits, float min_diameter,
                  uint32_t min_points) {
-    return inside_hits > 0 && 2.0f * cluster.radius >= alpha &&
+    return inside_hits > 0 && 2.0f * cluster.radius >= min_diameter &&
            cluster.members.size() >= 2 * static_cast<size_t>(min_points);
 }
 

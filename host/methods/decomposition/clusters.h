@@ -42,10 +42,11 @@ std::pair<std::vector<uint32_t>, std::vector<uint32_t>> split_in_two(const Shadi
 // §4.1: a cluster's sample is split "if any of these rays intersects a surface within the
 // bounding sphere of the samples ... A set is not split if the diameter of the bounding sphere
 // for the shading points in the set is less than alpha, or if the rays do not intersect other
-// surfaces within the bounding sphere"; nor, here, when it holds fewer than 2 min_points points
-// (a floor on the far field's sampling density, which alpha -> 0 would otherwise not have). The
-// rays' test sphere may be larger than the bounding sphere (DecompCluster.test_radius).
-bool needs_split(const PointCluster& cluster, uint32_t inside_hits, float alpha,
+// surfaces within the bounding sphere"; here the diameter's floor is `min_diameter` (the paper's:
+// alpha), the rays' test sphere may be larger than the bounding sphere
+// (DecompCluster.test_radius), and a cluster of fewer than 2 min_points points is not split (a
+// floor on the far field's sampling density in pixels).
+bool needs_split(const PointCluster& cluster, uint32_t inside_hits, float min_diameter,
                  uint32_t min_points);
 
 }  // namespace rc

@@ -53,7 +53,10 @@ void check_options(const DecompositionOptions& options, size_t samples) {
         throw Error("--decomp-rays and --light-samples must be at least 1", kExitUsage);
     }
     if (!(options.split_factor >= 1.0f) || !std::isfinite(options.split_factor)) {
-        throw Error("--decomp-cluster must be a finite factor >= 1", kExitUsage);
+        throw Error("--decomp-split must be a finite factor >= 1", kExitUsage);
+    }
+    if (!(options.min_cluster_size >= 0.0f) || !std::isfinite(options.min_cluster_size)) {
+        throw Error("--decomp-cluster must be a finite length >= 0", kExitUsage);
     }
     if (samples > std::numeric_limits<uint32_t>::max()) {
         throw Error("irradiance decomposition: width x height x spp exceeds 2^32 camera samples",
@@ -202,7 +205,7 @@ void IrradianceDecomposition::sample_far_field(const DecompositionOptions& optio
         stats_.clusters_sampled += batch.size();
         for (size_t b = 0; b < batch.size(); ++b) {
             const PointCluster& c = batch[b].cluster;
-            if (needs_split(c, fits[b].inside, options.alpha,
+            if (needs_split(c, fits[b].inside, options.min_cluster_size,
                             static_cast<uint32_t>(options.min_cluster))) {
                 auto halves = split_in_two(points, c);
                 if (!halves.second.empty()) {
@@ -255,7 +258,8 @@ void IrradianceDecomposition::build_far_grid() {
 Buffer<shared::DecompIrradiance> IrradianceDecomposition::evaluate(
     const Buffer<shared::GBufferSample>& points, size_t count) {
     Buffer<shared::DecompIrradiance> out(context_, count, "decomp_irradiance");
-    context_.launch(kernel("decomp_irradiance"), count, params_, points, far_grid_.grid, far_start_,
+    context_.launch(kernel("decomp_irradiance"), count, params_,
+                    SceneArguments(bvh_, device_scene_), points, far_grid_.grid, far_start_,
                     far_list_, far_records_, far_coefficients_, near_grid_.grid, near_start_,
                     near_list_, triangle_buffer_, radiance_buffer_, out);
     return out;
@@ -285,12 +289,14 @@ void add_evaluation_stats(const std::vector<shared::DecompIrradiance>& terms,
                           DecompositionStats* stats) {
     uint64_t near = 0;
     uint64_t far = 0;
+    uint64_t rays = 0;
     for (size_t i = 0; i < terms.size(); ++i) {
         if (samples[i].served == 0) {
             continue;
         }
         ++stats->served_samples;
         near += terms[i].near_count;
+        rays += terms[i].near_rays;
         far += terms[i].far_samples;
         stats->near_max = std::max(stats->near_max, terms[i].near_count);
         stats->far_uncovered += terms[i].far_samples == 0 ? 1 : 0;
@@ -298,6 +304,7 @@ void add_evaluation_stats(const std::vector<shared::DecompIrradiance>& terms,
     const double served = static_cast<double>(std::max<size_t>(stats->served_samples, 1));
     stats->near_mean = static_cast<double>(near) / served;
     stats->far_mean = static_cast<double>(far) / served;
+    stats->near_rays = rays;
 }
 
 }  // namespace
@@ -326,6 +333,7 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
     params_.alpha = options.alpha;
     params_.ridge = kRidge;
     params_.count_emission = options.count_emission ? 1 : 0;
+    params_.near_visibility = options.visibility_rays ? 1 : 0;
     camera_ = camera_params(scene_.camera, width, height);
 
     auto start = SteadyClock::now();

@@ -36,15 +36,21 @@ struct DecompositionOptions {
     uint64_t seed = 0;
     int max_depth = 64;
     int rr_depth = 3;
-    float alpha = 0.0f;      // the near/far distance, scene units (0: no near field)
+    float alpha = 0.0f;  // the near/far distance, scene units (0: no near field)
+    // A cluster less than this across is not split (--decomp-cluster, scene units; the paper's
+    // rule: alpha).
+    float min_cluster_size = 0.0f;
     int cluster_rays = 512;  // rays per cluster's fit (§4.1: 512)
     // §4.1's split test looks for hits inside the cluster's bounding sphere scaled by this
-    // (--decomp-cluster; the paper's test: 1).
+    // (--decomp-split; the paper's test: 1).
     float split_factor = 4.0f;
     int min_cluster = 16;         // a cluster of fewer than 2 min_cluster points is not split
     int light_samples = 4;        // the render pass's light samples per camera hit
-    int radiosity_samples = 16;   // points per split triangle of its radiosity
+    int radiosity_samples = 4;    // points per split triangle of its radiosity
     bool count_emission = false;  // rays count the emission they see (tests)
+    // Test each near triangle that passes the paper's heuristic with a shadow ray to its centroid
+    // (--decomp-visibility rays) instead of taking it as visible.
+    bool visibility_rays = false;
     // The coarse solution the rays read at their hits (the method's: the irradiance vector grid;
     // path continuation in tests); required.
     const RadianceSource* source = nullptr;
@@ -74,6 +80,7 @@ struct DecompositionStats {
     size_t far_uncovered = 0;     // served samples no far-field sample reached (nearest used)
     uint64_t radiosity_rays = 0;  // the split triangles' radiosity
     uint64_t cluster_rays = 0;    // the clusters' fits (and the source's rays for them)
+    uint64_t near_rays = 0;       // shadow rays of the near field (--decomp-visibility rays)
     uint64_t shading_rays = 0;    // the G-buffer and the render pass
     double gbuffer_seconds = 0.0;
     double near_seconds = 0.0;        // splitting, radiosity, the near triangles' grid

@@ -22,38 +22,45 @@ constexpr int kDefaultClusterRays = 512;  // the paper's "512 rays per harmonic"
 // §4.1's split test, hits inside the bounding sphere, looks inside 4 times it: with the paper's
 // sphere the far field's relMSE on the Cornell box was 2.7 times higher (docs/decomposition.md).
 constexpr double kDefaultSplitFactor = 4.0;
-const char* const kDefaultAlpha = "5%";
+// Measured on the relief scene and the Cornell box (docs/decomposition.md): the near field
+// within 1 % of the diagonal, clusters down to 5 % of it.
+const char* const kDefaultAlpha = "1%";
+const char* const kDefaultMinCluster = "5%";
+// Points per split triangle of its radiosity: from the grid 4 (16 changed the relief's relMSE by
+// 1 %); path-traced, 16 (4 raised it by 11 %; docs/decomposition.md).
+constexpr int kRadiositySamplesGrid = 4;
+constexpr int kRadiositySamplesPath = 16;
 
-// --alpha: a length in scene units ("0.2", "0.2u") or a percentage of the diagonal of the
-// scene's bounding box ("5%").
-struct Alpha {
+// A length option (--alpha, --decomp-cluster): in scene units ("0.2", "0.2u") or a percentage of
+// the diagonal of the scene's bounding box ("5%").
+struct SceneLength {
     float value = 0.0f;
     bool relative = false;
 };
 
-Alpha parse_alpha(const std::string& text) {
+SceneLength parse_length(const std::string& option, const std::string& text) {
     static const std::regex form(R"(^\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*(%|u)?\s*$)");
     std::smatch match;
     if (!std::regex_match(text, match, form)) {
-        throw Error(
-            "--alpha: expected a length in scene units (\"0.2\", \"0.2u\") or a "
-            "percentage of the scene's diagonal (\"5%\"), got '" +
-                text + "'",
-            kExitUsage);
+        throw Error(option +
+                        ": expected a length in scene units (\"0.2\", \"0.2u\") or a "
+                        "percentage of the scene's diagonal (\"5%\"), got '" +
+                        text + "'",
+                    kExitUsage);
     }
-    Alpha alpha;
-    alpha.value = std::stof(match[1].str());
-    alpha.relative = match[2].str() == "%";
-    if (!std::isfinite(alpha.value) || alpha.value < 0.0f) {
-        throw Error("--alpha: must be finite and at least 0, got '" + text + "'", kExitUsage);
+    SceneLength length;
+    length.value = std::stof(match[1].str());
+    length.relative = match[2].str() == "%";
+    if (!std::isfinite(length.value) || length.value < 0.0f) {
+        throw Error(option + ": must be finite and at least 0, got '" + text + "'", kExitUsage);
     }
-    return alpha;
+    return length;
 }
 
-// Alpha in scene units for the frame's world geometry.
-float resolve_alpha(const Alpha& alpha, const Scene& scene) {
-    if (!alpha.relative) {
-        return alpha.value;
+// The length in scene units for the frame's world geometry.
+float resolve_length(const SceneLength& length, const Scene& scene) {
+    if (!length.relative) {
+        return length.value;
     }
     glm::vec3 lower(std::numeric_limits<float>::max());
     glm::vec3 upper(-std::numeric_limits<float>::max());
@@ -62,7 +69,7 @@ float resolve_alpha(const Alpha& alpha, const Scene& scene) {
         upper = glm::max(upper, p);
     }
     const float diagonal = scene.mesh.positions.empty() ? 0.0f : glm::length(upper - lower);
-    return 0.01f * alpha.value * diagonal;
+    return 0.01f * length.value * diagonal;
 }
 
 nlohmann::json stats_json(const DecompositionStats& s, const DecompositionOptions& options,
@@ -71,6 +78,7 @@ nlohmann::json stats_json(const DecompositionStats& s, const DecompositionOption
             {"light_samples", options.light_samples},
             {"alpha", options.alpha},
             {"cluster_rays", options.cluster_rays},
+            {"min_cluster_size", options.min_cluster_size},
             {"split_factor", options.split_factor},
             {"source", options.source->source_name()},
             {"records", s.sh_samples},
@@ -84,6 +92,8 @@ nlohmann::json stats_json(const DecompositionStats& s, const DecompositionOption
             {"served_samples", s.served_samples},
             {"radiosity_rays", s.radiosity_rays},
             {"cluster_rays_traced", s.cluster_rays},
+            {"near_rays", s.near_rays},
+            {"visibility", options.visibility_rays ? "rays" : "heuristic"},
             {"shading_rays", s.shading_rays},
             {"rays_per_pixel", static_cast<double>(frame_rays) / static_cast<double>(pixels)},
             {"seconds",
@@ -97,7 +107,9 @@ nlohmann::json stats_json(const DecompositionStats& s, const DecompositionOption
 class Decomposition final : public Method {
    public:
     Decomposition(const ParsedArguments& arguments, const MethodSettings& settings)
-        : alpha_(parse_alpha(arguments.value("--alpha", kDefaultAlpha))) {
+        : alpha_(parse_length("--alpha", arguments.value("--alpha", kDefaultAlpha))),
+          min_cluster_(parse_length("--decomp-cluster",
+                                    arguments.value("--decomp-cluster", kDefaultMinCluster))) {
         const std::string source = arguments.value("--decomp-source", "grid");
         if (source == "grid") {
             grid_options_ = ivg_options(arguments, settings);
@@ -107,12 +119,19 @@ class Decomposition final : public Method {
             throw Error("--decomp-source: expected grid or path, got '" + source + "'", kExitUsage);
         }
         with_grid_ = source == "grid";
+        options_.radiosity_samples = with_grid_ ? kRadiositySamplesGrid : kRadiositySamplesPath;
         settings.apply_to(options_);
         options_.cluster_rays =
             static_cast<int>(arguments.integer("--decomp-rays", kDefaultClusterRays, 4, 1 << 16));
         options_.split_factor =
-            static_cast<float>(arguments.number("--decomp-cluster", kDefaultSplitFactor, 1.0, 1e3));
+            static_cast<float>(arguments.number("--decomp-split", kDefaultSplitFactor, 1.0, 1e3));
         options_.light_samples = light_samples(arguments);
+        const std::string visibility = arguments.value("--decomp-visibility", "heuristic");
+        if (visibility != "heuristic" && visibility != "rays") {
+            throw Error("--decomp-visibility: expected heuristic or rays, got '" + visibility + "'",
+                        kExitUsage);
+        }
+        options_.visibility_rays = visibility == "rays";
     }
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
@@ -124,13 +143,15 @@ class Decomposition final : public Method {
         }
         hooks.progress(0.5, "decomposition");
         DecompositionOptions options = options_;
-        options.alpha = resolve_alpha(alpha_, frame.scene);
+        options.alpha = resolve_length(alpha_, frame.scene);
+        options.min_cluster_size = resolve_length(min_cluster_, frame.scene);
         options.source = with_grid_ ? static_cast<const RadianceSource*>(grid.get()) : &path;
         IrradianceDecomposition decomposition(frame);
         DecompositionStats stats;
         result.image = decomposition.render(options, &stats);
         result.spp = options.spp;
-        result.rays += stats.radiosity_rays + stats.cluster_rays + stats.shading_rays;
+        result.rays +=
+            stats.radiosity_rays + stats.cluster_rays + stats.near_rays + stats.shading_rays;
         result.nonfinite_samples = stats.nonfinite_samples;
         result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
         const size_t pixels = static_cast<size_t>(result.image.width) * result.image.height;
@@ -142,7 +163,8 @@ class Decomposition final : public Method {
     }
 
    private:
-    Alpha alpha_;
+    SceneLength alpha_;
+    SceneLength min_cluster_;
     bool with_grid_ = true;
     IvgOptions grid_options_;
     DecompositionOptions options_;
@@ -152,12 +174,19 @@ std::vector<OptionSpec> decomposition_option_specs() {
     std::vector<OptionSpec> specs = {
         {"--alpha", "", "L",
          "decomposition: the near/far distance alpha, in scene units (\"0.2\", \"0.2u\") or a "
-         "percentage of the scene's bounding-box diagonal (\"5%\"; default 5%)"},
+         "percentage of the scene's bounding-box diagonal (\"1%\"; default 1%)"},
         {"--decomp-rays", "", "N",
          "decomposition: rays per cluster's far-field fit (default 512, the paper's)"},
-        {"--decomp-cluster", "", "S",
+        {"--decomp-cluster", "", "L",
+         "decomposition: a cluster of shading points less than L across is not split (a length "
+         "as --alpha takes; the paper's rule: alpha; default 5%)"},
+        {"--decomp-split", "", "S",
          "decomposition: a cluster is split while its rays hit inside S times its bounding "
-         "sphere and it is at least alpha across (>= 1; the paper's test is 1; default 4)"},
+         "sphere (>= 1; the paper's test is 1; default 4)"},
+        {"--decomp-visibility", "", "NAME",
+         "decomposition: which near triangles count: heuristic (the paper's: all but the "
+         "back-facing and those below the horizon; default) or rays (of those, the ones a "
+         "shadow ray to the centroid reaches)"},
         {"--decomp-source", "", "NAME",
          "decomposition: the coarse solution the rays read at their hits and the near "
          "triangles' radiosity comes from: grid (the irradiance vector grid, default; its "
