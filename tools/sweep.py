@@ -23,8 +23,8 @@ the same way: one curve per --sdrc-interp, --ic-accuracy along it at the first -
 (one curve per
 --ivg-grid, --ivg-photons along it, at --ivg-spp camera samples); ivg-gather (--gather-rays per
 camera sample at --gather-spp camera samples, the grid at its defaults); decomposition (irradiance
-decomposition, docs/decomposition.md: one curve per --decomp-rays x --decomp-alpha, the split
-factor --decomp-cluster along it, at --decomp-spp camera samples; its knobs are named in the
+decomposition, docs/decomposition.md: one curve per --decomp-rays x --decomp-alpha, the smallest
+cluster --decomp-cluster along it, at --decomp-spp camera samples; its knobs are named in the
 curve and setting columns). A grid is auto (about
 32k vertices), auto*K (K times auto's voxels per axis, read off the untimed warm-up render) or
 NxMxK; a min spacing is `default` (the method's) or what --ic-min-spacing takes (8px, 5u).
@@ -106,6 +106,7 @@ COLUMNS = ["scene", "frame", "method", "curve", "setting", "spp", "accuracy", "i
 METHODS = ["pt", "ic", "ic-ivg", "rc", "sdrc", "ivg", "ivg-gather", "decomposition"]
 GRID_FORM = re.compile(r"^(auto|auto\*(\d+(\.\d+)?)|\d+x\d+x\d+)$")
 SPACING_FORM = re.compile(r"^(default|\d+(\.\d+)?(px|u)?)$")
+LENGTH_FORM = re.compile(r"^\d*\.?\d+(%|u)?$")
 
 
 def fail(message):
@@ -286,8 +287,8 @@ def radcache_runs(args, auto_cells):
 
 
 def decomposition_runs(args):
-    """Irradiance decomposition: a curve per rays per cluster and alpha, the split factor along
-    it (its knobs live in the curve and setting columns)."""
+    """Irradiance decomposition: a curve per rays per cluster and alpha, the smallest cluster
+    along it (its knobs live in the curve and setting columns)."""
     runs = []
     if "decomposition" not in args.methods:
         return runs
@@ -295,12 +296,12 @@ def decomposition_runs(args):
     for rays in args.decomp_rays:
         for alpha in args.decomp_alpha:
             curve = "decomposition alpha %s, %d rays, %d spp" % (alpha, rays, spp)
-            for factor in args.decomp_cluster:
+            for size in args.decomp_cluster:
                 runs.append(("decomposition", curve,
-                             "alpha=%s cluster=%g rays=%d spp=%d" % (alpha, factor, rays, spp),
+                             "alpha=%s cluster=%s rays=%d spp=%d" % (alpha, size, rays, spp),
                              {"spp": spp},
                              ["--method", "decomposition", "--spp", str(spp), "--alpha", alpha,
-                              "--decomp-cluster", "%g" % factor, "--decomp-rays", str(rays)]))
+                              "--decomp-cluster", size, "--decomp-rays", str(rays)]))
     return runs
 
 
@@ -510,12 +511,12 @@ def parse_arguments(argv):
                         help="ivg-gather's rays per camera sample (default: %(default)s)")
     parser.add_argument("--gather-spp", type=int, default=4,
                         help="ivg-gather's camera samples per pixel (default: %(default)s)")
-    parser.add_argument("--decomp-alpha", nargs="+", default=["5%"],
-                        help="decomposition's alpha, one curve each: what --alpha takes (5%%, "
+    parser.add_argument("--decomp-alpha", nargs="+", default=["1%"],
+                        help="decomposition's alpha, one curve each: what --alpha takes (1%%, "
                              "0.2) (default: %(default)s)")
-    parser.add_argument("--decomp-cluster", nargs="+", type=float, default=[1, 2, 4, 8],
-                        help="decomposition's split factor along each curve (default: "
-                             "%(default)s)")
+    parser.add_argument("--decomp-cluster", nargs="+", default=["20%", "10%", "5%", "2%"],
+                        help="decomposition's smallest cluster along each curve: what "
+                             "--decomp-cluster takes (default: %(default)s)")
     parser.add_argument("--decomp-rays", nargs="+", type=int, default=[512],
                         help="decomposition's rays per cluster, one curve each (default: "
                              "%(default)s)")
@@ -541,8 +542,10 @@ def parse_arguments(argv):
             parser.error("--%s: values must be positive" % name.replace("_", "-"))
     if any(not 0.0 < a for a in args.ic_accuracy):
         parser.error("--ic-accuracy: values must be positive")
-    if any(not f >= 1.0 for f in args.decomp_cluster):
-        parser.error("--decomp-cluster: factors must be at least 1")
+    for value in args.decomp_alpha + args.decomp_cluster:
+        if not LENGTH_FORM.match(value):
+            parser.error("--decomp-alpha, --decomp-cluster: expected a length like 1%% or 0.2, "
+                         "got '%s'" % value)
     if args.repeats < 1:
         parser.error("--repeats: at least 1, got %d" % args.repeats)
     for grid in args.ivg_grid:

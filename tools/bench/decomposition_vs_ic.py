@@ -8,8 +8,9 @@ most 1/10 of its rays.
 
 For each scene: renders `--method ic` at its defaults (the irradiance caches the issue names;
 and `ic --ic-ivg`, irradiance caching over the same grid the decomposition reads, with
---with-ic-ivg), then `--method decomposition` over a ladder of settings (--alpha x
---decomp-cluster x --decomp-rays), each point --repeats times in rounds (median render time).
+--with-ic-ivg), then `--method decomposition` over a ladder of settings (--source x --rays x
+--alpha x --cluster: --decomp-source, --decomp-rays, --alpha, --decomp-cluster), each point
+--repeats times in rounds (median render time).
 Every image is measured against the scene's reference: relMSE of the beauty and of the indirect
 layer (`radcache compare`). For each ic run it names the fastest decomposition setting whose
 relMSE (of the layer --layer, default indirect) is at most ic's, and the ratios of render time
@@ -19,9 +20,9 @@ All runs happen side by side in this one invocation, on the same device, kernel 
 (one untimed render of each method first). Times are the render phase of `--stats` (scene
 loading, device start and image writing excluded).
 
-Usage: tools/bench/decomposition_vs_ic.py [--scenes relief] [--alpha 2% 5% 10%]
-           [--cluster 1 2 4 8] [--rays 512] [--repeats 2] [--with-ic-ivg] [--layer indirect]
-           [--out build/bench/decomposition] [-- extra radcache render options]
+Usage: tools/bench/decomposition_vs_ic.py [--scenes relief] [--source grid path]
+           [--alpha 1%] [--cluster 10% 5% 2%] [--rays 512 2048] [--repeats 2] [--with-ic-ivg]
+           [--layer indirect] [--out build/bench/decomposition] [-- extra render options]
 Writes OUT/decomposition_vs_ic.json (every run) and OUT/decomposition_vs_ic.md (the tables),
 and prints the tables. Python 3 standard library only.
 """
@@ -77,13 +78,15 @@ def runs_of(args):
     runs = [("ic", "ic", "defaults", ["--method", "ic"])]
     if args.with_ic_ivg:
         runs.append(("ic-ivg", "ic", "--ic-ivg", ["--method", "ic", "--ic-ivg"]))
-    for rays in args.rays:
-        for alpha in args.alpha:
-            for factor in args.cluster:
-                setting = "alpha %s, cluster %g, %d rays" % (alpha, factor, rays)
-                runs.append(("decomposition", "decomposition", setting,
-                             ["--method", "decomposition", "--alpha", alpha, "--decomp-cluster",
-                              "%g" % factor, "--decomp-rays", str(rays)]))
+    for source in args.source:
+        for rays in args.rays:
+            for alpha in args.alpha:
+                for size in args.cluster:
+                    setting = "%s, alpha %s, cluster %s, %d rays" % (source, alpha, size, rays)
+                    runs.append(("decomposition", "decomposition", setting,
+                                 ["--method", "decomposition", "--decomp-source", source,
+                                  "--alpha", alpha, "--decomp-cluster", size, "--decomp-rays",
+                                  str(rays)]))
     return runs
 
 
@@ -173,9 +176,10 @@ def main():
         argv = argv[:argv.index("--")]
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--scenes", nargs="+", default=["relief"])
-    parser.add_argument("--alpha", nargs="+", default=["2%", "5%", "10%"])
-    parser.add_argument("--cluster", nargs="+", type=float, default=[1, 2, 4, 8])
-    parser.add_argument("--rays", nargs="+", type=int, default=[512])
+    parser.add_argument("--source", nargs="+", choices=["grid", "path"], default=["grid", "path"])
+    parser.add_argument("--alpha", nargs="+", default=["1%"])
+    parser.add_argument("--cluster", nargs="+", default=["10%", "5%", "2%"])
+    parser.add_argument("--rays", nargs="+", type=int, default=[512, 2048])
     parser.add_argument("--repeats", type=int, default=2)
     parser.add_argument("--with-ic-ivg", action="store_true",
                         help="also irradiance caching over the grid (ic --ic-ivg)")
@@ -186,8 +190,8 @@ def main():
     args = parser.parse_args(argv)
     if not os.access(RADCACHE, os.X_OK):
         sys.exit("build radcache first (see README): %s is missing" % RADCACHE)
-    if args.repeats < 1 or any(f < 1 for f in args.cluster):
-        sys.exit("--repeats must be at least 1 and --cluster factors at least 1")
+    if args.repeats < 1:
+        sys.exit("--repeats must be at least 1")
     os.makedirs(args.out, exist_ok=True)
     rows = []
     for name in args.scenes:
