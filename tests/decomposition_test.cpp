@@ -189,15 +189,15 @@ TEST(DecompositionFormFactor, MatchesMonteCarloForTrianglesAboveAndAcrossTheHori
     EXPECT_GE(crossing, 4) << "the set should hold triangles across the horizon";
 }
 
-// The fit of rays by the probe kernel (as the method's decomp_fit): one cluster per entry of
-// `clusters`, each of params.cluster_rays rays.
+// The fit of rays by the method's decomp_fit: params.cluster_rays rays per cluster.
 std::vector<shared::ClusterFit> fit(const shared::DecompParams& params,
                                     const std::vector<shared::ClusterRay>& rays) {
     Context& context = test::shared_context();
     const size_t clusters = rays.size() / static_cast<size_t>(params.cluster_rays);
     const Buffer<shared::ClusterRay> ray_buffer(context, rays, "rays");
     Buffer<shared::ClusterFit> fits(context, clusters, "fits");
-    Kernel kernel = context.kernel("decomposition/decomp_probe.cl", "decomp_fit");
+    Kernel kernel = context.kernel("decomposition/decomposition.cl", "decomp_fit",
+                                   PathContinuation().build_options());
     context.launch(kernel, clusters, params, ray_buffer, fits);
     return fits.download();
 }

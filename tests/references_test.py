@@ -42,12 +42,12 @@ class Layout(unittest.TestCase):
 
     def test_every_named_reference_exists_with_its_record(self):
         named = []
-        for scene in ("cornell-box", "glossy-box", "two-rooms", "kettle"):
+        for scene in ("cornell-box", "glossy-box", "two-rooms", "kettle", "relief"):
             named.append((references.reference_path(os.path.join(SCENES, scene)), 0))
         for frame in range(24):
             named.append((references.reference_path(os.path.join(SCENES, "moving-sphere"),
                                                     frame), frame))
-        self.assertTrue(named[4][0].endswith(os.path.join("reference", "frame0000.exr")))
+        self.assertTrue(named[5][0].endswith(os.path.join("reference", "frame0000.exr")))
         for path, frame in named:
             self.assertTrue(os.path.isfile(path), path)
             with open(os.path.splitext(path)[0] + ".json") as f:

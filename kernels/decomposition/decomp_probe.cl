@@ -1,6 +1,6 @@
 // Test kernels of irradiance decomposition (tests/decomposition_test.cpp,
-// tests/shared_layout_test.cpp): the shared layouts, the form factor, the fit and the distant
-// term, each on given inputs.
+// tests/shared_layout_test.cpp): the shared layouts, the form factor and the distant term, each on
+// given inputs (the fit's own kernel, decomp_fit, is the method's).
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_form_factor.h"
 #include "shared/decomposition.h"
@@ -28,16 +28,6 @@ __kernel void decomp_form_factors(uint begin, uint end, __global const float4* p
     }
     out[i] = rc_decomp_form_factor(points[i].xyz, normals[i].xyz, triangles[i].v0.xyz,
                                    triangles[i].v1.xyz, triangles[i].v2.xyz);
-}
-
-// Item c: the fit of rays[c * params.cluster_rays ..] (as the method's decomp_fit).
-__kernel void decomp_fit(uint begin, uint end, DecompParams params, __global const ClusterRay* rays,
-                         __global ClusterFit* fits) {
-    const uint c = begin + (uint)get_global_id(0);
-    if (c >= end) {
-        return;
-    }
-    fits[c] = rc_decomp_fit_cluster(&params, rays + (size_t)c * (uint)params.cluster_rays);
 }
 
 // Item q: I_D of sample samples[q] about the unit normal normals[q] into irradiance[q], and its

@@ -6,11 +6,13 @@ while providing the same quality images", with far fewer rays. Ours: on the deta
 (scenes/relief) `decomposition` reaches `ic`'s relMSE in at most 1/5 of its time and with at
 most 1/10 of its rays.
 
-For each scene: renders `--method ic` at its defaults (the irradiance caches the issue names;
-and `ic --ic-ivg`, irradiance caching over the same grid the decomposition reads, with
---with-ic-ivg), then `--method decomposition` over a ladder of settings (--source x --rays x
---alpha x --cluster: --decomp-source, --decomp-rays, --alpha, --decomp-cluster), each point
---repeats times in rounds (median render time).
+For each scene, at --spp camera samples per pixel (default 4, the sweep's for the caching
+methods): renders `--method ic` at its defaults (the irradiance cache the issue names; and
+`ic --ic-ivg`, irradiance caching over the same grid the decomposition reads, with
+--with-ic-ivg), then `--method decomposition` at its defaults and over a ladder of settings
+(--source x --rays x --alpha x --cluster x --visibility: --decomp-source, --decomp-rays,
+--alpha, --decomp-cluster, --decomp-visibility), each point --repeats times in rounds (median
+render time).
 Every image is measured against the scene's reference: relMSE of the beauty and of the indirect
 layer (`radcache compare`). For each ic run it names the fastest decomposition setting whose
 relMSE (of the layer --layer, default indirect) is at most ic's, and the ratios of render time
@@ -20,14 +22,16 @@ All runs happen side by side in this one invocation, on the same device, kernel 
 (one untimed render of each method first). Times are the render phase of `--stats` (scene
 loading, device start and image writing excluded).
 
-Usage: tools/bench/decomposition_vs_ic.py [--scenes relief] [--source grid path]
-           [--alpha 1%] [--cluster 10% 5% 2%] [--rays 512 2048] [--repeats 2] [--with-ic-ivg]
-           [--layer indirect] [--out build/bench/decomposition] [-- extra render options]
+Usage: tools/bench/decomposition_vs_ic.py [--scenes relief] [--spp 4] [--source grid path]
+           [--alpha 1%] [--cluster 10% 5% 2%] [--rays 512 2048] [--visibility heuristic]
+           [--repeats 2] [--with-ic-ivg] [--layer indirect] [--out build/bench/decomposition]
+           [-- extra render options]
 Writes OUT/decomposition_vs_ic.json (every run) and OUT/decomposition_vs_ic.md (the tables),
 and prints the tables. Python 3 standard library only.
 """
 
 import argparse
+import itertools
 import json
 import os
 import statistics
@@ -75,18 +79,20 @@ def indirect_rays(method, frame):
 
 def runs_of(args):
     """(name, method, setting, options) of every timed run of a scene."""
-    runs = [("ic", "ic", "defaults", ["--method", "ic"])]
+    spp = ["--spp", str(args.spp)]
+    runs = [("ic", "ic", "defaults", ["--method", "ic"] + spp)]
     if args.with_ic_ivg:
-        runs.append(("ic-ivg", "ic", "--ic-ivg", ["--method", "ic", "--ic-ivg"]))
-    for source in args.source:
-        for rays in args.rays:
-            for alpha in args.alpha:
-                for size in args.cluster:
-                    setting = "%s, alpha %s, cluster %s, %d rays" % (source, alpha, size, rays)
-                    runs.append(("decomposition", "decomposition", setting,
-                                 ["--method", "decomposition", "--decomp-source", source,
-                                  "--alpha", alpha, "--decomp-cluster", size, "--decomp-rays",
-                                  str(rays)]))
+        runs.append(("ic-ivg", "ic", "--ic-ivg", ["--method", "ic", "--ic-ivg"] + spp))
+    runs.append(("decomposition", "decomposition", "defaults",
+                 ["--method", "decomposition"] + spp))
+    for source, rays, alpha, size, visibility in itertools.product(
+            args.source, args.rays, args.alpha, args.cluster, args.visibility):
+        setting = "%s, alpha %s, cluster %s, %d rays, %s" % (source, alpha, size, rays,
+                                                             visibility)
+        runs.append(("decomposition", "decomposition", setting,
+                     ["--method", "decomposition", "--decomp-source", source, "--alpha", alpha,
+                      "--decomp-cluster", size, "--decomp-rays", str(rays),
+                      "--decomp-visibility", visibility] + spp))
     return runs
 
 
@@ -180,6 +186,10 @@ def main():
     parser.add_argument("--alpha", nargs="+", default=["1%"])
     parser.add_argument("--cluster", nargs="+", default=["10%", "5%", "2%"])
     parser.add_argument("--rays", nargs="+", type=int, default=[512, 2048])
+    parser.add_argument("--visibility", nargs="+", choices=["heuristic", "rays"],
+                        default=["heuristic"])
+    parser.add_argument("--spp", type=int, default=4,
+                        help="camera samples per pixel of every run (default %(default)s)")
     parser.add_argument("--repeats", type=int, default=2)
     parser.add_argument("--with-ic-ivg", action="store_true",
                         help="also irradiance caching over the grid (ic --ic-ivg)")
@@ -190,8 +200,8 @@ def main():
     args = parser.parse_args(argv)
     if not os.access(RADCACHE, os.X_OK):
         sys.exit("build radcache first (see README): %s is missing" % RADCACHE)
-    if args.repeats < 1:
-        sys.exit("--repeats must be at least 1")
+    if args.repeats < 1 or args.spp < 1:
+        sys.exit("--repeats and --spp must be at least 1")
     os.makedirs(args.out, exist_ok=True)
     rows = []
     for name in args.scenes:
