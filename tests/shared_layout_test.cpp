@@ -1,13 +1,14 @@
 // Host and device agree on the layout of every shared struct: RC_SHARED_LAYOUTS
 // (kernels/shared/types.h) and radiance caching's RC_RADIANCE_CACHE_LAYOUTS
-// (kernels/shared/radiance_cache.h), SDRC's RC_SDRC_LAYOUTS (kernels/shared/sdrc.h) and
-// irradiance decomposition's RC_DECOMP_LAYOUTS (kernels/shared/decomposition.h), each reported by
-// its probe kernel.
+// (kernels/shared/radiance_cache.h), SDRC's RC_SDRC_LAYOUTS (kernels/shared/sdrc.h), temporal
+// caching's RC_TEMPORAL_LAYOUTS (kernels/shared/temporal.h) and irradiance decomposition's
+// RC_DECOMP_LAYOUTS (kernels/shared/decomposition.h), each reported by its probe kernel.
 #include <gtest/gtest.h>
 
 #include "shared/decomposition.h"
 #include "shared/radiance_cache.h"
 #include "shared/sdrc.h"
+#include "shared/temporal.h"
 #include "shared/types.h"
 #include "test_support.h"
 
@@ -65,6 +66,11 @@ TEST(SharedLayout, SdrcDeviceMatchesHost) {
 TEST(SharedLayout, DecompositionDeviceMatchesHost) {
     expect_device_matches(RC_HOST_LAYOUTS(RC_DECOMP_LAYOUTS), "decomposition/decomp_probe.cl",
                           "decomp_report_layouts");
+}
+
+TEST(SharedLayout, TemporalDeviceMatchesHost) {
+    expect_device_matches(RC_HOST_LAYOUTS(RC_TEMPORAL_LAYOUTS), "temporal/tc_probe.cl",
+                          "tc_report_layouts");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 
 #include "app/device_options.h"
 #include "methods/registry.h"
@@ -48,8 +49,6 @@ std::vector<OptionSpec> render_option_specs() {
     return specs;
 }
 
-namespace {
-
 FrameRange parse_frames(const std::string& text) {
     static const std::regex form(R"(^(-?\d+):(-?\d+)$)");
     std::smatch match;
@@ -57,14 +56,20 @@ FrameRange parse_frames(const std::string& text) {
         throw Error("--frames: expected A:B, got '" + text + "'", kExitUsage);
     }
     FrameRange range;
-    range.first = std::stoi(match[1].str());
-    range.last = std::stoi(match[2].str());
+    try {
+        range.first = std::stoi(match[1].str());
+        range.last = std::stoi(match[2].str());
+    } catch (const std::out_of_range&) {
+        throw Error("--frames: " + text + " holds a frame number out of range", kExitUsage);
+    }
     range.given = true;
     if (range.last < range.first) {
         throw Error("--frames: " + text + " ends before it starts", kExitUsage);
     }
     return range;
 }
+
+namespace {
 
 std::vector<std::string> parse_layers(const std::string& text) {
     std::vector<std::string> layers;
@@ -140,6 +145,7 @@ MethodSettings method_settings(const ParsedArguments& arguments, const RenderSet
     method.rr_depth = settings.rr_depth;
     const long long frames = static_cast<long long>(last) - first + 1;
     method.frame_count = static_cast<int>(std::min<long long>(frames, 1 << 30));
+    method.first_frame = first;
     method.layers = job.layers;
     return method;
 }

@@ -23,6 +23,9 @@ struct FrameRange {
     bool given = false;  // --frames A:B; otherwise the scene's first frame alone
 };
 
+// --frames A:B: Error (exit status 2) naming --frames for another form or when B < A.
+FrameRange parse_frames(const std::string& text);
+
 struct RenderJob {
     std::filesystem::path scene;
     std::string output_pattern;  // #### becomes the frame number

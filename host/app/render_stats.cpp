@@ -76,7 +76,8 @@ nlohmann::json RenderTotals::json(const RenderSettings& settings, const Scene& s
     stats["nonfinite_samples"] = nonfinite_;
     stats["first_nonfinite_pixel"] = first_nonfinite_pixel_;
     stats["program_builds"] = program_builds_json(context);
-    stats["bvh"] = {{"nodes", bvh.nodes.size()},
+    stats["bvh"] = {{"layout", bvh_layout_name(bvh.layout)},
+                    {"nodes", bvh.node_count()},
                     {"leaves", bvh.leaf_count},
                     {"depth", bvh.depth},
                     {"bytes", bvh.device_bytes()}};

@@ -41,6 +41,13 @@ struct PixelMask {
     bool selects(int x, int y) const { return mask == nullptr || mask->at(x, y, 0) > 0.0f; }
 };
 
+// Error naming `test_name` when `test` and `reference` differ in size or channel count.
+void check_comparable(const Image& test, const Image& reference, const std::string& test_name);
+
+// Error (exit status 2) naming `test_name` when `mask` is set and its size differs from
+// `reference`'s.
+void check_mask(const PixelMask& mask, const Image& reference, const std::string& test_name);
+
 // The relMSE term of one value: (v - r)^2 / (r^2 + 0.01).
 double relative_squared_error(double value, double reference);
 
