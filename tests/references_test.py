@@ -44,7 +44,7 @@ class Layout(unittest.TestCase):
 
     def test_every_named_reference_exists_with_its_record(self):
         named = []
-        for scene in ("cornell-box", "glossy-box", "two-rooms", "kettle"):
+        for scene in ("cornell-box", "glossy-box", "two-rooms", "kettle", "relief"):
             named.append((references.reference_path(os.path.join(SCENES, scene)), 0))
         for frame in range(24):
             named.append((references.reference_path(os.path.join(SCENES, "moving-sphere"),
@@ -52,7 +52,7 @@ class Layout(unittest.TestCase):
         for frame in range(16):
             named.append((references.reference_path(os.path.join(SCENES, "moving-light"),
                                                     frame), frame))
-        self.assertTrue(named[4][0].endswith(os.path.join("reference", "frame0000.exr")))
+        self.assertTrue(named[5][0].endswith(os.path.join("reference", "frame0000.exr")))
         self.assertTrue(named[-1][0].endswith(os.path.join("moving-light", "reference",
                                                            "frame0015.exr")))
         for path, frame in named:

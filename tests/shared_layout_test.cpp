@@ -1,9 +1,11 @@
 // Host and device agree on the layout of every shared struct: RC_SHARED_LAYOUTS
 // (kernels/shared/types.h) and radiance caching's RC_RADIANCE_CACHE_LAYOUTS
-// (kernels/shared/radiance_cache.h), SDRC's RC_SDRC_LAYOUTS (kernels/shared/sdrc.h) and temporal
-// caching's RC_TEMPORAL_LAYOUTS (kernels/shared/temporal.h), each reported by its probe kernel.
+// (kernels/shared/radiance_cache.h), SDRC's RC_SDRC_LAYOUTS (kernels/shared/sdrc.h), temporal
+// caching's RC_TEMPORAL_LAYOUTS (kernels/shared/temporal.h) and irradiance decomposition's
+// RC_DECOMP_LAYOUTS (kernels/shared/decomposition.h), each reported by its probe kernel.
 #include <gtest/gtest.h>
 
+#include "shared/decomposition.h"
 #include "shared/radiance_cache.h"
 #include "shared/sdrc.h"
 #include "shared/temporal.h"
@@ -59,6 +61,11 @@ TEST(SharedLayout, RadianceCacheDeviceMatchesHost) {
 TEST(SharedLayout, SdrcDeviceMatchesHost) {
     expect_device_matches(RC_HOST_LAYOUTS(RC_SDRC_LAYOUTS), "sdrc/sdrc_probe.cl",
                           "sdrc_report_layouts");
+}
+
+TEST(SharedLayout, DecompositionDeviceMatchesHost) {
+    expect_device_matches(RC_HOST_LAYOUTS(RC_DECOMP_LAYOUTS), "decomposition/decomp_probe.cl",
+                          "decomp_report_layouts");
 }
 
 TEST(SharedLayout, TemporalDeviceMatchesHost) {

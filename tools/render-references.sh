@@ -2,6 +2,7 @@
 # Renders the path-traced references of the shipped scenes with the settings of the shipped ones
 # (65 536 samples per pixel, seed 20261123; moving-sphere every frame 0-23 at 16 384 samples;
 # kettle, the glossy kettle of the SDRC paper, 256 x 256 at 4096 samples, rendered on a CPU;
+# relief, the detail scene of irradiance decomposition, 256 x 256 at 4096 samples, on a CPU;
 # moving-light, the moving light of the temporal radiance caching report, every frame 0-15 at
 # 128 x 96 and 4096 samples, rendered on a CPU;
 # half floats: beauty, direct, indirect and the per-sample standard deviation of the beauty) and
@@ -10,7 +11,7 @@
 # + frameFFFF.json for every frame of an animated one (scenes/README.md).
 #
 # Usage: tools/render-references.sh [--device SPEC] [--out DIR] [--spp N] [scene ...]
-#   scene ...      cornell-box glossy-box two-rooms moving-sphere kettle moving-light
+#   scene ...      cornell-box glossy-box two-rooms moving-sphere kettle relief moving-light
 #                  (default: all)
 #   --device SPEC  the OpenCL device (radcache render --device: P:D or part of its name;
 #                  default: radcache's, the first GPU, else the first CPU device)
@@ -31,11 +32,12 @@ fail() { echo "render-references: $*" >&2; exit 2; }
 # animated scene (every one).
 seed=20261123
 declare -A spp=([cornell-box]=65536 [glossy-box]=65536 [two-rooms]=65536 [moving-sphere]=16384
-                [kettle]=4096 [moving-light]=4096)
+                [kettle]=4096 [relief]=4096 [moving-light]=4096)
 declare -A size=([cornell-box]=512x512 [glossy-box]=512x512 [two-rooms]=512x384
-                 [moving-sphere]=256x256 [kettle]=256x256 [moving-light]=128x96)
+                 [moving-sphere]=256x256 [kettle]=256x256 [relief]=256x256
+                 [moving-light]=128x96)
 declare -A frames=([moving-sphere]=0:23 [moving-light]=0:15)
-all=(cornell-box glossy-box two-rooms moving-sphere kettle moving-light)
+all=(cornell-box glossy-box two-rooms moving-sphere kettle relief moving-light)
 
 out=$root/scenes
 spp_override=""

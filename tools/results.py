@@ -27,7 +27,7 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 DOCS = os.path.join(ROOT, "docs")
 # Every method at tools/sweep.py's default knobs.
-METHODS = ["pt", "ic", "ic-ivg", "rc", "sdrc", "ivg", "ivg-gather"]
+METHODS = ["pt", "ic", "ic-ivg", "rc", "sdrc", "ivg", "ivg-gather", "decomposition"]
 
 
 def run(command):

@@ -22,7 +22,10 @@ along it at the first --ic-spp); sdrc (spatial directional radiance caching for 
 the same way: one curve per --sdrc-interp, --ic-accuracy along it at the first --ic-spp); ivg
 (one curve per
 --ivg-grid, --ivg-photons along it, at --ivg-spp camera samples); ivg-gather (--gather-rays per
-camera sample at --gather-spp camera samples, the grid at its defaults). A grid is auto (about
+camera sample at --gather-spp camera samples, the grid at its defaults); decomposition (irradiance
+decomposition, docs/decomposition.md: one curve per --decomp-rays x --decomp-alpha, the smallest
+cluster --decomp-cluster along it, at --decomp-spp camera samples; its knobs are named in the
+curve and setting columns). A grid is auto (about
 32k vertices), auto*K (K times auto's voxels per axis, read off the untimed warm-up render) or
 NxMxK; a min spacing is `default` (the method's) or what --ic-min-spacing takes (8px, 5u).
 
@@ -65,7 +68,8 @@ program builds, from that cache; median) says what was left. Peers (POV-Ray, `--
 Usage: tools/sweep.py SCENE [--frame F] [--reference EXR] [--repeats N] [--methods pt ic ...]
            [--pt-spp 1 2 4 ...] [--ic-accuracy ...] [--ic-rays ...] [--ic-spp ...]
            [--ic-min-spacing ...] [--ivg-photons ...] [--ivg-grid ...] [--ivg-spp N]
-           [--gather-rays ...] [--gather-spp N] [--width N --height N]
+           [--gather-rays ...] [--gather-spp N] [--decomp-alpha ...] [--decomp-cluster ...]
+           [--decomp-rays ...] [--decomp-spp N] [--width N --height N]
            [--povray [SETTING ...]] [--out DIR] [-- extra radcache render options]
 SCENE is a scene directory or its scene.json. The reference defaults to the scene's shipped one
 for the frame (tools/references.py: reference.exr beside it, or reference/frameFFFF.exr of an
@@ -99,9 +103,10 @@ COLUMNS = ["scene", "frame", "method", "curve", "setting", "spp", "accuracy", "i
            "%s%s" % (t, suffix) for t in TIMES for suffix in ("", "_min", "_max")] + [
            "compile_seconds", "rmse", "relmse", "relmse_net", "flip", "indirect_relmse",
            "records", "device", "image"]
-METHODS = ["pt", "ic", "ic-ivg", "rc", "sdrc", "ivg", "ivg-gather"]
+METHODS = ["pt", "ic", "ic-ivg", "rc", "sdrc", "ivg", "ivg-gather", "decomposition"]
 GRID_FORM = re.compile(r"^(auto|auto\*(\d+(\.\d+)?)|\d+x\d+x\d+)$")
 SPACING_FORM = re.compile(r"^(default|\d+(\.\d+)?(px|u)?)$")
+LENGTH_FORM = re.compile(r"^\d*\.?\d+(%|u)?$")
 
 
 def fail(message):
@@ -278,6 +283,25 @@ def radcache_runs(args, auto_cells):
                          {"spp": spp, "gather_rays": gathers},
                          ["--method", "ivg-gather", "--spp", str(spp), "--gather-rays",
                           str(gathers)]))
+    return runs + decomposition_runs(args)
+
+
+def decomposition_runs(args):
+    """Irradiance decomposition: a curve per rays per cluster and alpha, the smallest cluster
+    along it (its knobs live in the curve and setting columns)."""
+    runs = []
+    if "decomposition" not in args.methods:
+        return runs
+    spp = args.decomp_spp
+    for rays in args.decomp_rays:
+        for alpha in args.decomp_alpha:
+            curve = "decomposition alpha %s, %d rays, %d spp" % (alpha, rays, spp)
+            for size in args.decomp_cluster:
+                runs.append(("decomposition", curve,
+                             "alpha=%s cluster=%s rays=%d spp=%d" % (alpha, size, rays, spp),
+                             {"spp": spp},
+                             ["--method", "decomposition", "--spp", str(spp), "--alpha", alpha,
+                              "--decomp-cluster", size, "--decomp-rays", str(rays)]))
     return runs
 
 
@@ -289,7 +313,7 @@ def warm_up(scene, out, methods, options):
     auto_cells = None
     for method in sorted(set(methods)):
         warm = ["--method", "ic", "--ic-ivg"] if method == "ic-ivg" else ["--method", method]
-        if method in ("ivg", "ivg-gather", "ic-ivg"):
+        if method in ("ivg", "ivg-gather", "ic-ivg", "decomposition"):
             warm += ["--photons", "1000"]
         _, stats = render(scene, os.path.join(out, "warm-%s.exr" % method),
                           warm + ["--spp", "1"] + options)
@@ -487,6 +511,17 @@ def parse_arguments(argv):
                         help="ivg-gather's rays per camera sample (default: %(default)s)")
     parser.add_argument("--gather-spp", type=int, default=4,
                         help="ivg-gather's camera samples per pixel (default: %(default)s)")
+    parser.add_argument("--decomp-alpha", nargs="+", default=["1%"],
+                        help="decomposition's alpha, one curve each: what --alpha takes (1%%, "
+                             "0.2) (default: %(default)s)")
+    parser.add_argument("--decomp-cluster", nargs="+", default=["20%", "10%", "5%", "2%"],
+                        help="decomposition's smallest cluster along each curve: what "
+                             "--decomp-cluster takes (default: %(default)s)")
+    parser.add_argument("--decomp-rays", nargs="+", type=int, default=[512],
+                        help="decomposition's rays per cluster, one curve each (default: "
+                             "%(default)s)")
+    parser.add_argument("--decomp-spp", type=int, default=4,
+                        help="decomposition's camera samples per pixel (default: %(default)s)")
     parser.add_argument("--width", type=int, help="override the scene's resolution")
     parser.add_argument("--height", type=int)
     parser.add_argument("--povray", nargs="*", metavar="SETTING",
@@ -502,11 +537,15 @@ def parse_arguments(argv):
         args = parser.parse_args(argv)
         args.extra = []
     for name in ("pt_spp", "ic_rays", "ic_spp", "rc_rays", "sdrc_interp", "ivg_photons",
-                 "gather_rays"):
+                 "gather_rays", "decomp_rays"):
         if any(v < 1 for v in getattr(args, name)):
             parser.error("--%s: values must be positive" % name.replace("_", "-"))
     if any(not 0.0 < a for a in args.ic_accuracy):
         parser.error("--ic-accuracy: values must be positive")
+    for value in args.decomp_alpha + args.decomp_cluster:
+        if not LENGTH_FORM.match(value):
+            parser.error("--decomp-alpha, --decomp-cluster: expected a length like 1%% or 0.2, "
+                         "got '%s'" % value)
     if args.repeats < 1:
         parser.error("--repeats: at least 1, got %d" % args.repeats)
     for grid in args.ivg_grid:

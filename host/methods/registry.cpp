@@ -14,6 +14,7 @@
     X(sdrc_method)             \
     X(ivg_method)              \
     X(ivg_gather_method)       \
+    X(decomposition_method)    \
     X(normals_method)
 
 namespace rc {

@@ -1,0 +1,403 @@
+#include "methods/decomposition/decomposition.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <glm/geometric.hpp>
+#include <limits>
+
+#include "image/film.h"
+#include "methods/decomposition/clusters.h"
+#include "methods/decomposition/triangle_split.h"
+#include "methods/records/record_store.h"
+#include "methods/scene_arguments.h"
+#include "scene/camera.h"
+#include "util/error.h"
+#include "util/glm_helpers.h"
+#include "util/timing.h"
+
+namespace rc {
+
+const char* const kDecompositionAovs[7] = {"beauty", "direct",    "indirect",  "albedo",
+                                           "normal", "far-field", "near-field"};
+
+namespace {
+
+constexpr size_t kMaxBatchRays = size_t{1} << 22;  // cluster rays per launch
+constexpr size_t kMaxNearTriangles = size_t{1} << 22;
+// The fit's Tikhonov weight per kept ray relative to 1 / (4 pi) (rc_decomp_solve): it shrinks a
+// fit of a constant over a hemisphere by 0.01 % and keeps a cluster whose kept rays cover a
+// quarter of the sphere within a few per cent of its irradiance, where no weight lets the
+// unsampled directions swing (docs/decomposition.md).
+constexpr float kRidge = 1e-3f;
+// A far-field sample is interpolated within kReach times its cluster's bounding radius, that
+// radius taken as at least kMinRadiusFootprints pixel footprints (a cluster of one point).
+// Measured on the Cornell box (docs/decomposition.md): 1.5 beats 2 and 1.2.
+constexpr float kReach = 1.5f;
+constexpr float kMinRadiusFootprints = 2.0f;
+
+// Error (exit status 2) for options render() cannot honour; `samples` camera samples in all.
+void check_options(const DecompositionOptions& options, size_t samples) {
+    if (options.source == nullptr) {
+        throw Error("irradiance decomposition: no coarse solution (radiance source) given");
+    }
+    if (options.spp < 1) {
+        throw Error("irradiance decomposition needs at least one camera sample per pixel",
+                    kExitUsage);
+    }
+    if (!(options.alpha >= 0.0f) || !std::isfinite(options.alpha)) {
+        throw Error("--alpha must be a finite length >= 0", kExitUsage);
+    }
+    if (options.cluster_rays < 1 || options.min_cluster < 1 || options.light_samples < 1 ||
+        options.radiosity_samples < 1) {
+        throw Error("--decomp-rays and --light-samples must be at least 1", kExitUsage);
+    }
+    if (!(options.split_factor >= 1.0f) || !std::isfinite(options.split_factor)) {
+        throw Error("--decomp-split must be a finite factor >= 1", kExitUsage);
+    }
+    if (!(options.min_cluster_size >= 0.0f) || !std::isfinite(options.min_cluster_size)) {
+        throw Error("--decomp-cluster must be a finite length >= 0", kExitUsage);
+    }
+    if (samples > std::numeric_limits<uint32_t>::max()) {
+        throw Error("irradiance decomposition: width x height x spp exceeds 2^32 camera samples",
+                    kExitUsage);
+    }
+}
+
+// Records (the shared layout the record grid reads) of spheres of radius `reach[i]` about
+// `centres[i]`.
+std::vector<shared::Record> reach_records(const std::vector<glm::vec3>& centres,
+                                          const std::vector<float>& reach,
+                                          const std::vector<glm::vec3>& normals) {
+    std::vector<shared::Record> records;
+    records.reserve(centres.size());
+    for (size_t i = 0; i < centres.size(); ++i) {
+        shared::Record record = make_record(centres[i], normals[i]);
+        record.radius = reach[i];
+        records.push_back(record);
+    }
+    return records;
+}
+
+}  // namespace
+
+// A cluster waiting for its rays: its points and its random stream (clusters are numbered as
+// they are made, so the streams do not depend on the batches).
+struct IrradianceDecomposition::PendingCluster {
+    PointCluster cluster;
+    uint32_t stream = 0;
+};
+
+IrradianceDecomposition::IrradianceDecomposition(const FrameScene& frame) : FrameBound(frame) {}
+
+Kernel& IrradianceDecomposition::kernel(const char* name) {
+    auto found = kernels_.find(name);
+    if (found == kernels_.end()) {
+        Kernel k =
+            context_.kernel("decomposition/decomposition.cl", name, source_->build_options());
+        found = kernels_.emplace(name, std::move(k)).first;
+    }
+    return found->second;
+}
+
+void IrradianceDecomposition::compute_gbuffer() {
+    const size_t count = static_cast<size_t>(params_.width) * params_.height *
+                         static_cast<size_t>(params_.camera_spp);
+    gbuffer_ = Buffer<shared::GBufferSample>(context_, count, "decomp_gbuffer");
+    context_.launch(kernel("decomp_gbuffer"), count, params_, camera_,
+                    SceneArguments(bvh_, device_scene_), gbuffer_);
+    samples_ = gbuffer_.download();
+}
+
+// §5 and §6 pass 1: the scene's triangles split to alpha, B(t) / pi of each one's front from the
+// coarse solution, and the grid that finds the ones within alpha of a point.
+void IrradianceDecomposition::build_near_field(const DecompositionOptions& options) {
+    triangles_.clear();
+    if (options.alpha > 0.0f) {
+        triangles_ = split_triangles(scene_.mesh, options.alpha, kMaxNearTriangles);
+    }
+    stats_.scene_triangles = scene_.mesh.triangles.size();
+    stats_.near_triangles = triangles_.size();
+    triangle_buffer_ = Buffer<shared::NearTriangle>(context_, triangles_, "decomp_triangles");
+    radiance_buffer_ = Buffer<shared::float4>(context_, triangles_.size(), "decomp_radiance");
+    if (!triangles_.empty()) {
+        Buffer<unsigned> counters(context_, 1, "decomp_radiosity_counters");
+        counters.fill_zero();
+        context_.launch(kernel("decomp_radiosity"), triangles_.size(), params_,
+                        SceneArguments(bvh_, device_scene_), *source_, triangle_buffer_,
+                        radiance_buffer_, counters);
+        stats_.radiosity_rays = counters.download()[0];
+    }
+    std::vector<glm::vec3> centroids;
+    centroids.reserve(triangles_.size());
+    for (const shared::NearTriangle& t : triangles_) {
+        centroids.push_back((vec3_of(t.v0) + vec3_of(t.v1) + vec3_of(t.v2)) / 3.0f);
+    }
+    near_grid_ = build_record_grid(
+        reach_records(centroids, std::vector<float>(centroids.size(), options.alpha),
+                      std::vector<glm::vec3>(centroids.size(), glm::vec3(0.0f))),
+        1.0f);
+    near_start_ = Buffer<int>(context_, near_grid_.cell_start, "decomp_near_start");
+    near_list_ = Buffer<int>(context_, near_grid_.cell_records, "decomp_near_list");
+}
+
+std::vector<shared::ClusterFit> IrradianceDecomposition::fit_batch(
+    const std::vector<PendingCluster>& batch, std::vector<shared::ClusterRay>* rays) {
+    std::vector<shared::DecompCluster> clusters;
+    std::vector<uint32_t> members;
+    for (const PendingCluster& p : batch) {
+        shared::DecompCluster c{};
+        c.centre = float4_of(p.cluster.centre);
+        c.test_radius = split_factor_ * p.cluster.radius;
+        c.first_member = static_cast<uint32_t>(members.size());
+        c.member_count = static_cast<uint32_t>(p.cluster.members.size());
+        c.stream = p.stream;
+        clusters.push_back(c);
+        members.insert(members.end(), p.cluster.members.begin(), p.cluster.members.end());
+    }
+    const size_t ray_count = batch.size() * static_cast<size_t>(params_.cluster_rays);
+    const Buffer<shared::DecompCluster> cluster_buffer(context_, clusters, "decomp_clusters");
+    const Buffer<uint32_t> member_buffer(context_, members, "decomp_members");
+    Buffer<shared::ClusterRay> ray_buffer(context_, ray_count, "decomp_cluster_rays");
+    Buffer<shared::ClusterFit> fit_buffer(context_, batch.size(), "decomp_fits");
+    Buffer<unsigned> counters(context_, 1, "decomp_cluster_counters");
+    counters.fill_zero();
+    context_.launch(kernel("decomp_cluster_rays"), ray_count, params_,
+                    SceneArguments(bvh_, device_scene_), *source_, cluster_buffer, member_buffer,
+                    gbuffer_, ray_buffer, counters);
+    context_.launch(kernel("decomp_fit"), batch.size(), params_, ray_buffer, fit_buffer);
+    stats_.cluster_rays += counters.download()[0];
+    if (rays != nullptr) {
+        *rays = ray_buffer.download();
+    }
+    return fit_buffer.download();
+}
+
+// §4.1: clusters of the camera samples (the first of each pixel), split in two while their rays
+// see a surface inside their bounding sphere and they are at least alpha across; each cluster
+// that stays whole gives a far-field sample.
+void IrradianceDecomposition::sample_far_field(const DecompositionOptions& options) {
+    far_.clear();
+    ShadingPoints points;
+    std::vector<uint32_t> members;
+    for (size_t i = 0; i < samples_.size(); ++i) {
+        points.positions.push_back(vec3_of(samples_[i].position));
+        points.normals.push_back(vec3_of(samples_[i].normal));
+        if (samples_[i].served != 0 && i % static_cast<size_t>(params_.camera_spp) == 0) {
+            members.push_back(static_cast<uint32_t>(i));
+        }
+    }
+    stats_.clustered_points = members.size();
+    std::deque<PendingCluster> pending;
+    if (!members.empty()) {
+        pending.push_back({make_cluster(points, std::move(members)), 0});
+    }
+    uint32_t next_stream = 1;
+    const size_t batch_limit =
+        std::max<size_t>(1, kMaxBatchRays / static_cast<size_t>(options.cluster_rays));
+    while (!pending.empty()) {
+        std::vector<PendingCluster> batch;
+        while (!pending.empty() && batch.size() < batch_limit) {
+            batch.push_back(std::move(pending.front()));
+            pending.pop_front();
+        }
+        const std::vector<shared::ClusterFit> fits = fit_batch(batch);
+        stats_.clusters_sampled += batch.size();
+        for (size_t b = 0; b < batch.size(); ++b) {
+            const PointCluster& c = batch[b].cluster;
+            if (needs_split(c, fits[b].inside, options.min_cluster_size,
+                            static_cast<uint32_t>(options.min_cluster))) {
+                auto halves = split_in_two(points, c);
+                if (!halves.second.empty()) {
+                    pending.push_back(
+                        {make_cluster(points, std::move(halves.first)), next_stream++});
+                    pending.push_back(
+                        {make_cluster(points, std::move(halves.second)), next_stream++});
+                    continue;
+                }
+            }
+            double footprints = 0.0;
+            for (uint32_t m : c.members) {
+                footprints += samples_[m].footprint;
+            }
+            const float footprint = static_cast<float>(footprints / c.members.size());
+            FarSample s;
+            s.centre = c.centre;
+            s.normal = c.normal;
+            s.radius = c.radius;
+            s.reach = kReach * std::max(c.radius, kMinRadiusFootprints * footprint);
+            s.members = static_cast<uint32_t>(c.members.size());
+            s.kept_rays = fits[b].kept;
+            s.sh = fits[b].sample;
+            far_.push_back(s);
+        }
+    }
+    stats_.sh_samples = far_.size();
+    build_far_grid();
+}
+
+void IrradianceDecomposition::build_far_grid() {
+    std::vector<glm::vec3> centres;
+    std::vector<float> reach;
+    std::vector<glm::vec3> normals;
+    std::vector<shared::ShSample> coefficients;
+    for (const FarSample& s : far_) {
+        centres.push_back(s.centre);
+        normals.push_back(s.normal);
+        reach.push_back(s.reach);
+        coefficients.push_back(s.sh);
+    }
+    const std::vector<shared::Record> records = reach_records(centres, reach, normals);
+    far_grid_ = build_record_grid(records, 1.0f);
+    far_start_ = Buffer<int>(context_, far_grid_.cell_start, "decomp_far_start");
+    far_list_ = Buffer<int>(context_, far_grid_.cell_records, "decomp_far_list");
+    far_records_ = Buffer<shared::Record>(context_, records, "decomp_far_records");
+    far_coefficients_ = Buffer<shared::ShSample>(context_, coefficients, "decomp_far_sh");
+}
+
+Buffer<shared::DecompIrradiance> IrradianceDecomposition::evaluate(
+    const Buffer<shared::GBufferSample>& points, size_t count) {
+    Buffer<shared::DecompIrradiance> out(context_, count, "decomp_irradiance");
+    context_.launch(kernel("decomp_irradiance"), count, params_,
+                    SceneArguments(bvh_, device_scene_), points, far_grid_.grid, far_start_,
+                    far_list_, far_records_, far_coefficients_, near_grid_.grid, near_start_,
+                    near_list_, triangle_buffer_, radiance_buffer_, out);
+    return out;
+}
+
+std::vector<shared::float4> IrradianceDecomposition::shade(
+    const Buffer<shared::DecompIrradiance>& irradiance) {
+    const size_t pixels = static_cast<size_t>(params_.width) * params_.height;
+    Buffer<shared::float4> film(context_, pixels * RC_DECOMP_FILM_SLOTS, "decomp_film");
+    Buffer<unsigned> counters(context_, 3, "decomp_counters");
+    counters.upload({0u, 0u, 0xffffffffu});
+    context_.launch(kernel("decomp_shade"), pixels, params_, camera_,
+                    SceneArguments(bvh_, device_scene_), irradiance, film, counters);
+    std::vector<shared::float4> sums = film.download();
+    const std::vector<unsigned> c = counters.download();
+    stats_.shading_rays += c[0];
+    stats_.nonfinite_samples = c[1];
+    stats_.first_nonfinite_pixel = c[1] > 0 ? static_cast<int64_t>(c[2]) : -1;
+    return sums;
+}
+
+namespace {
+
+// The figures of the evaluation: near triangles and far-field samples per served camera sample.
+void add_evaluation_stats(const std::vector<shared::DecompIrradiance>& terms,
+                          const std::vector<shared::GBufferSample>& samples,
+                          DecompositionStats* stats) {
+    uint64_t near = 0;
+    uint64_t far = 0;
+    uint64_t rays = 0;
+    for (size_t i = 0; i < terms.size(); ++i) {
+        if (samples[i].served == 0) {
+            continue;
+        }
+        ++stats->served_samples;
+        near += terms[i].near_count;
+        rays += terms[i].near_rays;
+        far += terms[i].far_samples;
+        stats->near_max = std::max(stats->near_max, terms[i].near_count);
+        stats->far_uncovered += terms[i].far_samples == 0 ? 1 : 0;
+    }
+    const double served = static_cast<double>(std::max<size_t>(stats->served_samples, 1));
+    stats->near_mean = static_cast<double>(near) / served;
+    stats->far_mean = static_cast<double>(far) / served;
+    stats->near_rays = rays;
+}
+
+}  // namespace
+
+Image IrradianceDecomposition::render(const DecompositionOptions& options,
+                                      DecompositionStats* stats) {
+    const int width = options.width > 0 ? options.width : scene_.camera.width;
+    const int height = options.height > 0 ? options.height : scene_.camera.height;
+    const size_t samples =
+        static_cast<size_t>(width) * height * static_cast<size_t>(std::max(options.spp, 0));
+    check_options(options, samples);
+    source_ = options.source;
+    split_factor_ = options.split_factor;
+    stats_ = DecompositionStats{};
+    params_ = shared::DecompParams{};
+    params_.width = width;
+    params_.height = height;
+    params_.camera_spp = options.spp;
+    params_.light_samples = options.light_samples;
+    params_.max_depth = options.max_depth;
+    params_.rr_depth = options.rr_depth;
+    params_.cluster_rays = options.cluster_rays;
+    params_.radiosity_samples = options.radiosity_samples;
+    params_.seed_lo = static_cast<unsigned>(options.seed);
+    params_.seed_hi = static_cast<unsigned>(options.seed >> 32);
+    params_.alpha = options.alpha;
+    params_.ridge = kRidge;
+    params_.count_emission = options.count_emission ? 1 : 0;
+    params_.near_visibility = options.visibility_rays ? 1 : 0;
+    camera_ = camera_params(scene_.camera, width, height);
+
+    auto start = SteadyClock::now();
+    compute_gbuffer();
+    stats_.gbuffer_seconds = seconds_since(start);
+    // Pass 1 (§6): the near field's triangles and radiosity, the far field's samples.
+    start = SteadyClock::now();
+    build_near_field(options);
+    context_.finish();
+    stats_.near_seconds = seconds_since(start);
+    start = SteadyClock::now();
+    sample_far_field(options);
+    stats_.far_seconds = seconds_since(start);
+    // Pass 2: both terms at every camera sample, then the render pass.
+    start = SteadyClock::now();
+    const Buffer<shared::DecompIrradiance> terms = evaluate(gbuffer_, samples);
+    add_evaluation_stats(terms.download(), samples_, &stats_);
+    stats_.evaluation_seconds = seconds_since(start);
+    start = SteadyClock::now();
+    const std::vector<shared::float4> sums = shade(terms);
+    stats_.shading_seconds = seconds_since(start);
+
+    Image image = unpack_film(sums, RC_DECOMP_FILM_SLOTS, width, height,
+                              {{"beauty", RC_DECOMP_FILM_BEAUTY},
+                               {"direct", RC_DECOMP_FILM_DIRECT},
+                               {"indirect", RC_DECOMP_FILM_INDIRECT},
+                               {"albedo", RC_DECOMP_FILM_ALBEDO},
+                               {"normal", RC_DECOMP_FILM_NORMAL},
+                               {"far-field", RC_DECOMP_FILM_FAR},
+                               {"near-field", RC_DECOMP_FILM_NEAR}});
+    if (stats != nullptr) {
+        *stats = stats_;
+    }
+    return image;
+}
+
+std::vector<glm::vec3> IrradianceDecomposition::near_radiance() const {
+    std::vector<glm::vec3> out;
+    for (const shared::float4& r : radiance_buffer_.download()) {
+        out.push_back(vec3_of(r));
+    }
+    out.resize(triangles_.size());
+    return out;
+}
+
+std::vector<shared::DecompIrradiance> IrradianceDecomposition::irradiance_at(
+    const std::vector<shared::GBufferSample>& points) {
+    const Buffer<shared::GBufferSample> buffer(context_, points, "decomp_points");
+    return evaluate(buffer, points.size()).download();
+}
+
+std::vector<shared::ClusterRay> IrradianceDecomposition::cluster_rays(
+    const std::vector<uint32_t>& members, uint32_t stream) {
+    PendingCluster p;
+    ShadingPoints points;
+    for (const shared::GBufferSample& g : samples_) {
+        points.positions.push_back(vec3_of(g.position));
+        points.normals.push_back(vec3_of(g.normal));
+    }
+    p.cluster = make_cluster(points, members);
+    p.stream = stream;
+    std::vector<shared::ClusterRay> rays;
+    fit_batch({p}, &rays);
+    return rays;
+}
+
+}  // namespace rc

@@ -1,0 +1,156 @@
+// Irradiance decomposition on the device (DESIGN.md §6.6b; `radcache render --method
+// decomposition`; Arikan, Forsyth and O'Brien, "Fast and Detailed Approximate Global Illumination
+// by Irradiance Decomposition", SIGGRAPH 2005, and the course's chapter "Irradiance
+// Decomposition"). The irradiance at a shading point is split at a distance alpha (eq. 3):
+// B = rho / pi (I_D + I_N). The distant term I_D comes from spherical-harmonic samples of the
+// distant incident radiance L_D*, one per cluster of shading points, fitted to rays that ignore
+// hits nearer than alpha and interpolated (§4); the near correction I_N of eq. 4 is computed at
+// every shading point from the triangles within alpha, their form factors and coarse
+// radiosities, with the paper's visibility heuristic and no rays (§5). The coarse solution is a
+// radiance source (the irradiance vector grid). The algorithm (§6): a G-buffer of camera samples;
+// pass 1, the triangles split to alpha and their radiosity, the clusters and their fits; pass 2,
+// both terms at every camera sample and the render pass. Owns its buffers; reports its
+// statistics.
+#pragma once
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "device/buffer.h"
+#include "image/image.h"
+#include "methods/frame_scene.h"
+#include "methods/radiance_source.h"
+#include "methods/records/record_grid.h"
+#include "shared/decomposition.h"
+#include "shared/types.h"
+
+namespace rc {
+
+struct DecompositionOptions {
+    int width = 0;  // 0: the scene camera's
+    int height = 0;
+    int spp = 4;  // camera samples per pixel
+    uint64_t seed = 0;
+    int max_depth = 64;
+    int rr_depth = 3;
+    float alpha = 0.0f;  // the near/far distance, scene units (0: no near field)
+    // A cluster less than this across is not split (--decomp-cluster, scene units; the paper's
+    // rule: alpha).
+    float min_cluster_size = 0.0f;
+    int cluster_rays = 512;  // rays per cluster's fit (§4.1: 512)
+    // §4.1's split test looks for hits inside the cluster's bounding sphere scaled by this
+    // (--decomp-split; the paper's test: 1).
+    float split_factor = 4.0f;
+    int min_cluster = 16;         // a cluster of fewer than 2 min_cluster points is not split
+    int light_samples = 4;        // the render pass's light samples per camera hit
+    int radiosity_samples = 4;    // points per split triangle of its radiosity
+    bool count_emission = false;  // rays count the emission they see (tests)
+    // Test each near triangle that passes the paper's heuristic with a shadow ray to its centroid
+    // (--decomp-visibility rays) instead of taking it as visible.
+    bool visibility_rays = false;
+    // The coarse solution the rays read at their hits (the method's: the irradiance vector grid;
+    // path continuation in tests); required.
+    const RadianceSource* source = nullptr;
+};
+
+// One far-field sample (§4.1): the fit of a cluster that needed no split.
+struct FarSample {
+    glm::vec3 centre{0.0f};  // where it is stored: its cluster's centre
+    glm::vec3 normal{0.0f};  // its cluster's mean normal (shorter than 1 for mixed orientations)
+    float radius = 0.0f;     // its cluster's bounding radius
+    float reach = 0.0f;      // it is interpolated at points within this distance
+    uint32_t members = 0;    // its cluster's shading points
+    uint32_t kept_rays = 0;  // its rays that entered the fit
+    shared::ShSample sh{};
+};
+
+struct DecompositionStats {
+    size_t scene_triangles = 0;
+    size_t near_triangles = 0;    // after splitting to alpha
+    size_t clustered_points = 0;  // shading points the clusters partition
+    size_t clusters_sampled = 0;  // clusters whose rays were traced (split ones included)
+    size_t sh_samples = 0;        // far-field samples
+    size_t served_samples = 0;    // camera samples whose diffuse lobe the decomposition serves
+    double near_mean = 0.0;       // near triangles per served camera sample
+    uint32_t near_max = 0;
+    double far_mean = 0.0;        // far-field samples with a positive weight per served sample
+    size_t far_uncovered = 0;     // served samples no far-field sample reached (nearest used)
+    uint64_t radiosity_rays = 0;  // the split triangles' radiosity
+    uint64_t cluster_rays = 0;    // the clusters' fits (and the source's rays for them)
+    uint64_t near_rays = 0;       // shadow rays of the near field (--decomp-visibility rays)
+    uint64_t shading_rays = 0;    // the G-buffer and the render pass
+    double gbuffer_seconds = 0.0;
+    double near_seconds = 0.0;        // splitting, radiosity, the near triangles' grid
+    double far_seconds = 0.0;         // clusters, their rays and fits, the samples' grid
+    double evaluation_seconds = 0.0;  // both terms at every camera sample
+    double shading_seconds = 0.0;     // the render pass
+    uint64_t nonfinite_samples = 0;
+    int64_t first_nonfinite_pixel = -1;
+};
+
+// The layers of a decomposed image, in channel order (3 channels each): beauty (R, G, B),
+// direct, indirect, albedo, normal, far-field (rho_d / pi I_D), near-field (rho_d / pi I_N,
+// signed).
+extern const char* const kDecompositionAovs[7];
+
+class IrradianceDecomposition : private FrameBound {
+   public:
+    explicit IrradianceDecomposition(const FrameScene& frame);
+
+    Image render(const DecompositionOptions& options, DecompositionStats* stats = nullptr);
+
+    // After render(): its camera samples (entry pixel * spp + s), far-field samples, split
+    // triangles and their B(t) / pi.
+    const std::vector<shared::GBufferSample>& camera_samples() const { return samples_; }
+    const std::vector<FarSample>& far_samples() const { return far_; }
+    const std::vector<shared::NearTriangle>& near_triangles() const { return triangles_; }
+    std::vector<glm::vec3> near_radiance() const;
+
+    // After render(): I_D and I_N at G-buffer-like points from its far and near fields.
+    std::vector<shared::DecompIrradiance> irradiance_at(
+        const std::vector<shared::GBufferSample>& points);
+    // After render(): the rays of a cluster of its camera samples (`members`: G-buffer entries)
+    // with random stream `stream`.
+    std::vector<shared::ClusterRay> cluster_rays(const std::vector<uint32_t>& members,
+                                                 uint32_t stream);
+
+   private:
+    struct PendingCluster;
+    void compute_gbuffer();
+    void build_near_field(const DecompositionOptions& options);
+    void sample_far_field(const DecompositionOptions& options);
+    // Rays and fits of a batch of clusters (their rays in *rays when given).
+    std::vector<shared::ClusterFit> fit_batch(const std::vector<PendingCluster>& batch,
+                                              std::vector<shared::ClusterRay>* rays = nullptr);
+    void build_far_grid();
+    Buffer<shared::DecompIrradiance> evaluate(const Buffer<shared::GBufferSample>& points,
+                                              size_t count);
+    std::vector<shared::float4> shade(const Buffer<shared::DecompIrradiance>& irradiance);
+    Kernel& kernel(const char* name);
+
+    const RadianceSource* source_ = nullptr;
+    float split_factor_ = 1.0f;
+    shared::DecompParams params_{};
+    shared::CameraParams camera_{};
+    Buffer<shared::GBufferSample> gbuffer_;
+    std::vector<shared::GBufferSample> samples_;
+    std::vector<shared::NearTriangle> triangles_;
+    Buffer<shared::NearTriangle> triangle_buffer_;
+    Buffer<shared::float4> radiance_buffer_;
+    RecordGridData near_grid_;
+    Buffer<int> near_start_;
+    Buffer<int> near_list_;
+    std::vector<FarSample> far_;
+    RecordGridData far_grid_;
+    Buffer<int> far_start_;
+    Buffer<int> far_list_;
+    Buffer<shared::Record> far_records_;
+    Buffer<shared::ShSample> far_coefficients_;
+    std::map<std::string, Kernel> kernels_;  // by name, from the program built for the source
+    DecompositionStats stats_;
+};
+
+}  // namespace rc

@@ -1,0 +1,123 @@
+// The near field (the paper, §5): the correction I_N of eq. 4 at a shading point from the split
+// triangles whose centroids lie within alpha, their form factors taken as wholly visible after
+// the paper's visibility heuristic (or, with --decomp-visibility rays, after a shadow ray to each
+// one's centroid), and their coarse radiosities.
+#pragma once
+
+#include "common/path_radiance.h"
+#include "decomposition/decomp_form_factor.h"
+#include "decomposition/decomp_sh.h"
+#include "irradiance_cache/ic_records.h"  // rc_ic_grid_cell: the record grid's cell of a point
+
+// The near triangles as the kernels read them: the triangles, the outgoing radiance of each
+// one's front, B(t) / pi (the coarse solution, emission left out), and a record grid over their
+// centroids with reach alpha (cell c lists the triangles whose centroid lies within alpha of some
+// point of it, ascending). With a scene, a triangle that passes the heuristic counts only when a
+// shadow ray reaches its centroid (--decomp-visibility rays).
+typedef struct NearField {
+    RecordGrid grid;
+    RC_GLOBAL const int* cell_start;
+    RC_GLOBAL const int* cell_triangles;
+    RC_GLOBAL const NearTriangle* triangles;
+    RC_GLOBAL const float4* radiance;
+    float alpha;
+    const SceneData* visibility;  // 0: the paper's heuristic alone
+} NearField;
+
+// Whether a shadow ray from `origin` (the shading point's ray origin) reaches just short of the
+// centroid of a near triangle; counted in *rays.
+RC_FUNC bool rc_decomp_reaches(const SceneData* scene, float3 origin, float3 centroid, uint* rays) {
+    *rays += 1;
+    const float3 target = centroid + 1e-3f * (origin - centroid);
+    return !rc_occluded(scene, origin, target, false, target - origin);
+}
+
+// The paper's visibility heuristic (§5): "discards any triangles that are either back-facing to
+// the shading point, P, or that are completely below the plane passing through P with normal N
+// ... We then assume that all other triangles within distance alpha are visible". `tolerance`
+// (a small length) keeps p's own triangle and its coplanar neighbours out.
+RC_FUNC bool rc_decomp_may_see(float3 p, float3 n, float3 v0, float3 v1, float3 v2,
+                               float tolerance) {
+    const float3 normal = cross(v1 - v0, v2 - v0);
+    const float length_normal = length(normal);
+    if (length_normal <= 0.0f || dot(normal, p - v0) <= tolerance * length_normal) {
+        return false;  // back-facing (or edge-on)
+    }
+    return dot(v0 - p, n) > tolerance || dot(v1 - p, n) > tolerance || dot(v2 - p, n) > tolerance;
+}
+
+// The largest subdivision of a near triangle's quadrature: m^2 pieces.
+#define RC_DECOMP_MAX_PIECES_PER_EDGE 4
+
+// The distant power a near triangle hides from p (the second term of eq. 4's bracket times its
+// FF): the paper takes L_D* as "constant over directions spanned by one of the split triangles",
+// L_D*(w_t) FF(t). A triangle close to p spans a wide cone over which the order-2 fit varies, so
+// here it is cut into m^2 pieces on a regular grid of its barycentric coordinates, m = the
+// triangle's longest edge over half its centroid's distance (1 to RC_DECOMP_MAX_PIECES_PER_EDGE),
+// and the sum runs over the pieces, each with its own form factor and L_D* at its centroid
+// (measured on the relief scene: docs/decomposition.md). Returns sum FF_k L_D*(w_k).
+RC_FUNC float3 rc_decomp_hidden(const ShSample* far, float3 p, float3 n, float3 v0, float3 v1,
+                                float3 v2) {
+    const float3 e1 = v1 - v0;
+    const float3 e2 = v2 - v0;
+    const float longest = fmax(length(e1), fmax(length(e2), length(v2 - v1)));
+    const float distance = length((v0 + v1 + v2) * (1.0f / 3.0f) - p);
+    const int m = (int)clamp(ceil(2.0f * longest / fmax(distance, 1e-30f)), 1.0f,
+                             (float)RC_DECOMP_MAX_PIECES_PER_EDGE);
+    const float step = 1.0f / (float)m;
+    float3 hidden = (float3)(0.0f);
+    for (int i = 0; i < m; ++i) {
+        for (int j = 0; i + j < m; ++j) {
+            // The upward piece at lattice point (i, j), and the downward one beside it.
+            for (int down = 0; down < 2 && (down == 0 || i + j + 1 < m); ++down) {
+                const float3 a = v0 + ((float)(i + down) * e1 + (float)j * e2) * step;
+                const float3 b = v0 + ((float)(i + 1) * e1 + (float)(j + down) * e2) * step;
+                const float3 c = v0 + ((float)i * e1 + (float)(j + 1) * e2) * step;
+                const float ff = rc_decomp_form_factor(p, n, a, b, c);
+                if (ff > 0.0f) {
+                    hidden +=
+                        ff * rc_decomp_sh_radiance(far, normalize((a + b + c) * (1.0f / 3.0f) - p));
+                }
+            }
+        }
+    }
+    return hidden;
+}
+
+// I_N at point p with unit normal n (eq. 4): the sum over the triangles t whose centroid lies
+// within alpha and that pass the heuristic of FF(t) [B(t) - pi L_D*(P, w_t)], w_t the direction
+// to t's centroid and L_D* read from the interpolated far field `far` (the two terms of the
+// bracket are the power the triangle reflects towards p and the distant power it hides; the
+// latter by rc_decomp_hidden's quadrature). The
+// triangles are visited in the grid cell's order. *count receives the triangles summed, *rays the
+// shadow rays traced (with near->visibility; from `origin`, p's ray origin).
+RC_FUNC float3 rc_decomp_near_correction(const NearField* near, const ShSample* far, float3 p,
+                                         float3 origin, float3 n, uint* count, uint* rays) {
+    float3 sum = (float3)(0.0f);
+    *count = 0;
+    const int cell = rc_ic_grid_cell(&near->grid, p);
+    if (cell < 0) {
+        return sum;
+    }
+    const float tolerance = 1e-4f * near->alpha;
+    for (int k = near->cell_start[cell]; k < near->cell_start[cell + 1]; ++k) {
+        const int t = near->cell_triangles[k];
+        const float3 v0 = near->triangles[t].v0.xyz;
+        const float3 v1 = near->triangles[t].v1.xyz;
+        const float3 v2 = near->triangles[t].v2.xyz;
+        const float3 centroid = (v0 + v1 + v2) * (1.0f / 3.0f);
+        const float3 offset = centroid - p;
+        if (dot(offset, offset) >= near->alpha * near->alpha ||
+            !rc_decomp_may_see(p, n, v0, v1, v2, tolerance)) {
+            continue;
+        }
+        const float ff = rc_decomp_form_factor(p, n, v0, v1, v2);
+        if (ff <= 0.0f || (near->visibility != 0 &&
+                           !rc_decomp_reaches(near->visibility, origin, centroid, rays))) {
+            continue;
+        }
+        sum += RC_PI * (ff * near->radiance[t].xyz - rc_decomp_hidden(far, p, n, v0, v1, v2));
+        *count += 1;
+    }
+    return sum;
+}

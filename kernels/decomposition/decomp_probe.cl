@@ -1,0 +1,45 @@
+// Test kernels of irradiance decomposition (tests/decomposition_test.cpp,
+// tests/shared_layout_test.cpp): the shared layouts, the form factor and the distant term, each on
+// given inputs (the fit's own kernel, decomp_fit, is the method's).
+#include "decomposition/decomp_far.h"
+#include "decomposition/decomp_form_factor.h"
+#include "shared/decomposition.h"
+
+// sizeof and offsetof of every struct of RC_DECOMP_LAYOUTS, in its order.
+__kernel void decomp_report_layouts(uint begin, uint end, __global uint* out) {
+    if (begin + (uint)get_global_id(0) != 0u || end == 0u) {
+        return;
+    }
+    uint i = 0;
+#define RC_REPORT_STRUCT(type) out[i++] = (uint)sizeof(type);
+#define RC_REPORT_FIELD(type, field) out[i++] = (uint)rc_offsetof(type, field);
+    RC_DECOMP_LAYOUTS(RC_REPORT_STRUCT, RC_REPORT_FIELD)
+#undef RC_REPORT_STRUCT
+#undef RC_REPORT_FIELD
+}
+
+// Item i: FF of triangles[i] to the differential area at points[i] with unit normal normals[i].
+__kernel void decomp_form_factors(uint begin, uint end, __global const float4* points,
+                                  __global const float4* normals,
+                                  __global const NearTriangle* triangles, __global float* out) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    out[i] = rc_decomp_form_factor(points[i].xyz, normals[i].xyz, triangles[i].v0.xyz,
+                                   triangles[i].v1.xyz, triangles[i].v2.xyz);
+}
+
+// Item q: I_D of sample samples[q] about the unit normal normals[q] into irradiance[q], and its
+// L_D* in direction normals[q] into radiance[q].
+__kernel void decomp_sh_terms(uint begin, uint end, __global const ShSample* samples,
+                              __global const float4* normals, __global float4* irradiance,
+                              __global float4* radiance) {
+    const uint q = begin + (uint)get_global_id(0);
+    if (q >= end) {
+        return;
+    }
+    const ShSample s = samples[q];
+    irradiance[q] = (float4)(rc_decomp_sh_irradiance(&s, normals[q].xyz), 0.0f);
+    radiance[q] = (float4)(rc_decomp_sh_radiance(&s, normals[q].xyz), 0.0f);
+}

@@ -1,0 +1,173 @@
+// The decomposition's camera side (the paper, §6 "The Whole Algorithm", pass 2): camera samples,
+// the two terms of eq. 3 at each one, and the render pass that shades them: direct light by
+// next-event estimation, the diffuse lobe's indirect light rho_d / pi (I_D + I_N) (eq. 3), the
+// other lobes by path tracing.
+#pragma once
+
+#include "common/cached_radiance.h"
+#include "common/camera.h"
+#include "decomposition/decomp_far.h"
+#include "decomposition/decomp_near.h"
+
+// The camera ray of sample s of a pixel (the G-buffer and the render pass draw the same one).
+RC_FUNC Ray rc_decomp_camera_ray(const DecompParams* params, const CameraParams* camera, uint pixel,
+                                 uint s, RngStream* rng, float* x, float* y) {
+    *rng = rc_rng_stream(params->seed_lo, params->seed_hi, pixel, s);
+    *x = (float)(pixel % (uint)params->width) + rc_rng_next_float(rng);
+    *y = (float)(pixel / (uint)params->width) + rc_rng_next_float(rng);
+    return rc_camera_ray(camera, *x, *y);
+}
+
+// The first hit of camera sample s of a pixel: where the far field is sampled and the two terms
+// are evaluated. served: it has a diffuse lobe and indirect light (max_depth >= 2). footprint:
+// the world size of a pixel there.
+RC_FUNC GBufferSample rc_decomp_gbuffer_sample(const DecompParams* params, const SceneData* scene,
+                                               const CameraParams* camera, uint pixel, uint s) {
+    RngStream rng;
+    float x, y;
+    const Ray ray = rc_decomp_camera_ray(params, camera, pixel, s, &rng, &x, &y);
+    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
+    GBufferSample g;
+    g.position = g.normal = g.origin = (float4)(0.0f);
+    g.footprint = g.diffuse = 0.0f;
+    g.primitive = -1;
+    g.served = 0;
+    if (hit.primitive == RC_NO_HIT) {
+        return g;
+    }
+    const SurfacePoint sp = rc_surface_point(scene, ray, hit);
+    const SurfaceMaterial material = rc_surface_material(scene, &sp);
+    const float3 d = camera->top_left.xyz + camera->right.xyz * (x / (float)camera->resolution.x) +
+                     camera->down.xyz * (y / (float)camera->resolution.y);
+    g.position = (float4)(sp.position, 0.0f);
+    g.normal = (float4)(sp.shading.n, 0.0f);
+    g.origin = (float4)(sp.origin, 0.0f);
+    g.footprint = hit.t * length(camera->right.xyz) / ((float)camera->resolution.x * length(d));
+    g.diffuse = rc_luminance(material.diffuse);
+    g.primitive = (int)hit.primitive;
+    g.served = g.diffuse > 0.0f && params->max_depth >= 2 ? 1 : 0;
+    return g;
+}
+
+// The far-field samples as the kernels read them: a record grid over their reach (the shared
+// record layout: position = the cluster's centre, radius = its reach) and their coefficients.
+typedef struct FarField {
+    RecordGrid grid;
+    RC_GLOBAL const int* cell_start;
+    RC_GLOBAL const int* cell_samples;
+    RC_GLOBAL const Record* samples;
+    RC_GLOBAL const ShSample* coefficients;
+} FarField;
+
+// I_D and I_N at a G-buffer entry (eq. 3 and 4): the far-field samples interpolated at its point,
+// I_D their irradiance about its normal, I_N the near correction read against them. Zero where
+// the entry is not served.
+RC_FUNC DecompIrradiance rc_decomp_irradiance(const FarField* far, const NearField* near,
+                                              const GBufferSample* g) {
+    DecompIrradiance e;
+    e.far = e.near = (float4)(0.0f);
+    e.near_count = e.far_samples = e.near_rays = 0;
+    e.pad0 = 0;
+    if (g->served == 0) {
+        return e;
+    }
+    const float3 p = g->position.xyz;
+    const float3 n = g->normal.xyz;
+    ShSample radiance;
+    const int cell = rc_ic_grid_cell(&far->grid, p);
+    const int begin = cell < 0 ? 0 : far->cell_start[cell];
+    const int end = cell < 0 ? 0 : far->cell_start[cell + 1];
+    e.far_samples = rc_decomp_interpolate(far->cell_samples, begin, end, far->samples,
+                                          far->coefficients, p, n, &radiance);
+    e.far = (float4)(rc_decomp_sh_irradiance(&radiance, n), 0.0f);
+    uint count = 0;
+    uint rays = 0;
+    e.near =
+        (float4)(rc_decomp_near_correction(near, &radiance, p, g->origin.xyz, n, &count, &rays),
+                 0.0f);
+    e.near_count = count;
+    e.near_rays = rays;
+    return e;
+}
+
+// What one camera sample gives the film: its light (the diffuse lobe's indirect light from the
+// decomposition) and that light's two parts, rho_d / pi I_D and rho_d / pi I_N.
+typedef struct DecompSample {
+    CachedRadiance light;
+    float3 far;
+    float3 near;
+} DecompSample;
+
+// Camera sample s of a pixel: emission and direct light at its hit (params->light_samples light
+// samples), the diffuse lobe's indirect light rho_d / pi max(0, I_D + I_N) from its entry of the
+// evaluation buffer (eq. 3: B = rho / pi (I_D + I_N); negative where the near correction
+// overshoots, clamped), the other lobes by a path sampled from them.
+RC_FUNC DecompSample rc_decomp_shade_sample(const DecompParams* params, const SceneData* scene,
+                                            const CameraParams* camera,
+                                            RC_GLOBAL const DecompIrradiance* irradiance,
+                                            uint pixel, uint s) {
+    DecompSample out;
+    out.far = out.near = (float3)(0.0f);
+    RngStream rng;
+    float x, y;
+    const Ray ray = rc_decomp_camera_ray(params, camera, pixel, s, &rng, &x, &y);
+    SurfacePoint sp;
+    SurfaceMaterial material;
+    float3 wo;
+    if (!rc_cached_vertex(scene, ray, &rng, true, true, params->light_samples, 0, params->max_depth,
+                          &out.light, &sp, &material, &wo) ||
+        1 >= params->max_depth) {
+        return out;
+    }
+    SurfaceMaterial traced = rc_without_diffuse(&material);
+    if (rc_luminance(material.diffuse) > 0.0f) {
+        const DecompIrradiance e = irradiance[(size_t)pixel * (uint)params->camera_spp + s];
+        const float3 reflectance = material.diffuse * RC_INV_PI;
+        out.far = reflectance * e.far.xyz;
+        out.near = reflectance * e.near.xyz;
+        out.light.indirect += reflectance * fmax(e.far.xyz + e.near.xyz, (float3)(0.0f));
+        out.light.served = true;
+    }
+    rc_trace_lobes(scene, &sp, &traced, wo, &rng, 0, params->max_depth, params->rr_depth,
+                   &out.light);
+    return out;
+}
+
+// Shades a pixel's camera samples and writes the means over the finite ones to its
+// RC_DECOMP_FILM_SLOTS film slots. counters: [0] rays traced, [1] non-finite samples (dropped),
+// [2] the first pixel that had one.
+RC_FUNC void rc_decomp_shade_pixel(const DecompParams* params, const SceneData* scene,
+                                   const CameraParams* camera,
+                                   RC_GLOBAL const DecompIrradiance* irradiance, uint pixel,
+                                   RC_GLOBAL float4* film, RC_GLOBAL uint* counters) {
+    float3 sums[RC_DECOMP_FILM_SLOTS];
+    for (int k = 0; k < RC_DECOMP_FILM_SLOTS; ++k) {
+        sums[k] = (float3)(0.0f);
+    }
+    uint rays = 0;
+    uint finite = 0;
+    for (uint s = 0; s < (uint)params->camera_spp; ++s) {
+        const DecompSample c = rc_decomp_shade_sample(params, scene, camera, irradiance, pixel, s);
+        const float3 radiance = c.light.direct + c.light.indirect;
+        rays += c.light.rays;
+        if (!all(isfinite(radiance)) || !all(isfinite(c.near)) || !all(isfinite(c.far))) {
+            atomic_inc(&counters[1]);
+            atomic_min(&counters[2], pixel);
+            continue;
+        }
+        ++finite;
+        sums[RC_DECOMP_FILM_BEAUTY] += radiance;
+        sums[RC_DECOMP_FILM_DIRECT] += c.light.direct;
+        sums[RC_DECOMP_FILM_INDIRECT] += c.light.indirect;
+        sums[RC_DECOMP_FILM_ALBEDO] += c.light.albedo;
+        sums[RC_DECOMP_FILM_NORMAL] += c.light.normal;
+        sums[RC_DECOMP_FILM_FAR] += c.far;
+        sums[RC_DECOMP_FILM_NEAR] += c.near;
+    }
+    atomic_add(&counters[0], rays);
+    const float inv = finite > 0 ? 1.0f / (float)finite : 0.0f;
+    RC_GLOBAL float4* out = film + RC_DECOMP_FILM_SLOTS * (size_t)pixel;
+    for (int k = 0; k < RC_DECOMP_FILM_SLOTS; ++k) {
+        out[k] = (float4)(sums[k] * inv, 0.0f);
+    }
+}

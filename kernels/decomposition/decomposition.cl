@@ -1,0 +1,111 @@
+// Entry kernels of irradiance decomposition (host/methods/decomposition/decomposition.cpp; the
+// paper: Arikan, Forsyth and O'Brien 2005): the G-buffer, the split triangles' radiosity, a
+// cluster's far-field rays and their least-squares fit, the two terms of eq. 3 per camera sample,
+// and the render pass. Built for the radiance source the rays read (the irradiance vector grid).
+#include "decomposition/decomp_shading.h"
+#include "scene_arguments.h"
+// The source after the method's own headers (see common/radiance_source.h).
+#include "decomposition/decomp_source_rays.h"
+
+// Entry i = pixel * spp + s: the first hit of that camera sample.
+__kernel void decomp_gbuffer(uint begin, uint end, DecompParams params, CameraParams camera,
+                             RC_SCENE_PARAMETERS, __global GBufferSample* gbuffer) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const uint spp = (uint)params.camera_spp;
+    gbuffer[i] = rc_decomp_gbuffer_sample(&params, &scene, &camera, i / spp, i % spp);
+}
+
+// Item t: B(t) / pi of split triangle t into radiance[t]. counters[0] counts the rays.
+__kernel void decomp_radiosity(
+    uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
+    RC_RADIANCE_SOURCE_PARAMETERS __global const NearTriangle* near_triangles,
+    __global float4* radiance, __global uint* counters) {
+    const uint t = begin + (uint)get_global_id(0);
+    if (t >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
+    uint rays = 0;
+    radiance[t] = (float4)(rc_decomp_triangle_radiance(&params, &scene, &source, near_triangles + t,
+                                                       t, &rays),
+                           0.0f);
+    atomic_add(&counters[0], rays);
+}
+
+// Item i: ray i % params.cluster_rays of batch cluster i / params.cluster_rays, into rays_out[i].
+// counters[0] counts the rays traced.
+__kernel void decomp_cluster_rays(
+    uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
+    RC_RADIANCE_SOURCE_PARAMETERS __global const DecompCluster* clusters,
+    __global const uint* members, __global const GBufferSample* gbuffer,
+    __global ClusterRay* rays_out, __global uint* counters) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
+    const uint per_cluster = (uint)params.cluster_rays;
+    const DecompCluster cluster = clusters[i / per_cluster];
+    uint rays = 0;
+    rays_out[i] = rc_decomp_trace_cluster_ray(&params, &scene, &source, &cluster, members, gbuffer,
+                                              i % per_cluster, &rays);
+    atomic_add(&counters[0], rays);
+}
+
+// Item c: batch cluster c's least-squares fit of L_D* to its kept rays (in ray order) and its
+// rays' counts.
+__kernel void decomp_fit(uint begin, uint end, DecompParams params, __global const ClusterRay* rays,
+                         __global ClusterFit* fits) {
+    const uint c = begin + (uint)get_global_id(0);
+    if (c >= end) {
+        return;
+    }
+    fits[c] = rc_decomp_fit_cluster(&params, rays + (size_t)c * (uint)params.cluster_rays);
+}
+
+// Item i: I_D and I_N at G-buffer entry i (eq. 3, 4) into irradiance[i].
+__kernel void decomp_irradiance(uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
+                                __global const GBufferSample* gbuffer, RecordGrid far_grid,
+                                __global const int* far_start, __global const int* far_samples,
+                                __global const Record* samples,
+                                __global const ShSample* coefficients, RecordGrid near_grid,
+                                __global const int* near_start, __global const int* near_list,
+                                __global const NearTriangle* near_triangles,
+                                __global const float4* radiance,
+                                __global DecompIrradiance* irradiance) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const FarField far = {far_grid, far_start, far_samples, samples, coefficients};
+    const NearField near = {near_grid,
+                            near_start,
+                            near_list,
+                            near_triangles,
+                            radiance,
+                            params.alpha,
+                            params.near_visibility != 0 ? &scene : 0};
+    const GBufferSample g = gbuffer[i];
+    irradiance[i] = rc_decomp_irradiance(&far, &near, &g);
+}
+
+// The render pass. Item = pixel: its camera samples shaded, the means written to film
+// (RC_DECOMP_FILM_SLOTS per pixel). counters: [0] rays, [1] non-finite samples (dropped), [2] the
+// first pixel that had one.
+__kernel void decomp_shade(uint begin, uint end, DecompParams params, CameraParams camera,
+                           RC_SCENE_PARAMETERS, __global const DecompIrradiance* irradiance,
+                           __global float4* film, __global uint* counters) {
+    const uint pixel = begin + (uint)get_global_id(0);
+    if (pixel >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    rc_decomp_shade_pixel(&params, &scene, &camera, irradiance, pixel, film, counters);
+}
