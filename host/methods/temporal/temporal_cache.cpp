@@ -137,8 +137,15 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
     IrradianceCache cache(frame);
     IrradianceCacheOptions options = ic_;
     options.observer = &reprojection;
+    // Triangles in motion into or out of this frame (at the sequence's last frame the next pose
+    // may be the same: the motion into it still counts).
+    std::vector<uint8_t> moving = reprojection.moves();
+    for (size_t p = 0; p < std::min(moving.size(), moved_before_.size()); ++p) {
+        moving[p] |= moved_before_[p];
+    }
+    moved_before_ = reprojection.moves();
     if (!temporal_.cache_moving_hits) {
-        options.uncached_primitives = reprojection.moves();
+        options.uncached_primitives = std::move(moving);
     }
     options.records_overlay = false;
     cache.begin(options);

@@ -100,7 +100,9 @@ class TemporalIrradianceCache {
     int placed_until_;           // the last frame placed (pass 1)
     int shaded_until_;           // the last frame shaded (pass 2)
     std::optional<Scene> next_;  // the scene posed at the frame after the one being placed
-    std::vector<Level> levels_;  // 0: the camera's
+    // Per primitive: 1 where it moved from the frame placed last to the one after it.
+    std::vector<uint8_t> moved_before_;
+    std::vector<Level> levels_;                    // 0: the camera's
     std::vector<std::vector<Serving>> serving_;    // per frame from first_frame_: first level
     std::vector<TemporalFrameStats> frame_stats_;  // per frame from first_frame_
 };

@@ -19,7 +19,7 @@ std::vector<OptionSpec> temporal_option_specs() {
         {"--temporal-max-frames", "", "N",
          "ic --temporal: the longest lifespan of a record, in frames (default 20)"},
         {"--temporal-moving-hits", "", "trace|cache",
-         "ic --temporal: hemisphere hits on objects that move before the next frame path-trace "
+         "ic --temporal: hemisphere hits on objects moving into or out of the frame path-trace "
          "the light beyond them (trace, default) or get deeper-level records, which live one "
          "frame (cache)"},
     };
