@@ -143,7 +143,7 @@ TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
          scene_with(
              R"({"position": [0,0,-5], "look_at": [0,0,0], "fov": 40, "resolution": [0, 48]})",
              shape),
-         {"camera.resolution", "positive"}},
+         {"camera.resolution", "[1, 65536]"}},
         {"bad_fov",
          scene_with(R"({"position": [0,0,-5], "look_at": [0,0,0], "fov": "wide"})", shape),
          {"camera.fov", "number"}},

@@ -196,6 +196,9 @@ int run_compare_command(const std::vector<std::string>& args) {
         {"--mask-aov", "", "NAME",
          "the layer of --mask whose first channel is the mask (default: "
          "its first layer)"},
+        {"--allow-nan", "", "",
+         "accept NaN or infinite pixels: the figures are over the pixels finite in both images "
+         "(without it such pixels are counted and the command fails)"},
         {"--reference-spp", "", "N",
          "samples per pixel of REF, for the relMSE net of its noise (default: `spp` of "
          "REF's .stats.json or .json beside it)"},
@@ -232,16 +235,39 @@ int run_compare_command(const std::vector<std::string>& args) {
     if (arguments.has("--mask-aov") && !arguments.has("--mask")) {
         throw Error("--mask-aov needs --mask FILE", kExitUsage);
     }
+    OutputBatch outputs;  // the JSON and the error image are written together, or neither
     ReferenceNoiseSource source = find_reference_spp(arguments, reference_path);
     const Image test_file = read_image(test_path);
     const Image reference_file = read_image(reference_path);
     const Image mask_image = arguments.has("--mask") ? read_mask(arguments) : Image();
-    const PixelMask mask{arguments.has("--mask") ? &mask_image : nullptr};
+    PixelMask mask{arguments.has("--mask") ? &mask_image : nullptr};
+    const NonfinitePixels nonfinite = count_nonfinite_pixels(
+        select_layers(test_file, {layer}), select_layers(reference_file, {layer}), mask);
+    const Image finite_mask = nonfinite.any()
+                                  ? finite_pixel_mask(select_layers(test_file, {layer}),
+                                                      select_layers(reference_file, {layer}), mask)
+                                  : Image();
+    if (nonfinite.any()) {
+        if (nonfinite.finite == 0) {
+            throw Error(test_path + ": no pixel is finite in both images");
+        }
+        mask.mask = &finite_mask;
+    }
     const ImageError e =
         compare_images(test_file, reference_file, layer, test_path, reference_path, source, mask);
     print_figures(e, source);
     if (mask.mask != nullptr) {
-        std::cout << "over the " << e.pixels << " pixels of the mask\n";
+        std::cout << "over the " << e.pixels << " pixels of the mask"
+                  << (nonfinite.any() ? " that are finite in both images" : "") << "\n";
+    }
+    if (nonfinite.any()) {
+        std::cout << "nonfinite pixels (NaN or infinite): " << nonfinite.test << " in TEST, "
+                  << nonfinite.reference << " in REF\n";
+        if (!arguments.has("--allow-nan")) {
+            throw Error(test_path + ": " + std::to_string(nonfinite.test) +
+                        " NaN or infinite pixels (" + std::to_string(nonfinite.reference) + " in " +
+                        reference_path + "); --allow-nan takes the figures over the finite ones");
+        }
     }
     char line[256];
     if (!error_image_path.empty()) {
@@ -259,6 +285,7 @@ int run_compare_command(const std::vector<std::string>& args) {
         j["reference"] = reference_path;
         j["aov"] = layer;
         j["pixels"] = e.pixels;
+        j["nonfinite_pixels"] = {{"test", nonfinite.test}, {"reference", nonfinite.reference}};
         if (mask.mask != nullptr) {
             j["mask"] = arguments.value("--mask");
         }
@@ -267,6 +294,7 @@ int run_compare_command(const std::vector<std::string>& args) {
         }
         write_file_atomically(json_path, j.dump(2) + "\n");
     }
+    outputs.commit();
     return 0;
 }
 

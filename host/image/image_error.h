@@ -41,6 +41,20 @@ struct PixelMask {
     bool selects(int x, int y) const { return mask == nullptr || mask->at(x, y, 0) > 0.0f; }
 };
 
+// Pixels with a NaN or infinite channel (issue 17: compare counts them instead of reporting
+// "psnr inf"), among those a mask selects.
+struct NonfinitePixels {
+    size_t test = 0;       // pixels of the test image with a NaN or infinite channel
+    size_t reference = 0;  // the same in the reference
+    size_t finite = 0;     // pixels finite in both
+    bool any() const { return test > 0 || reference > 0; }
+};
+NonfinitePixels count_nonfinite_pixels(const Image& test, const Image& reference,
+                                       PixelMask mask = {});
+
+// A one-channel mask of the pixels `mask` selects that are finite in both images (1, else 0).
+Image finite_pixel_mask(const Image& test, const Image& reference, PixelMask mask = {});
+
 // The relMSE term of one value: (v - r)^2 / (r^2 + 0.01).
 double relative_squared_error(double value, double reference);
 
