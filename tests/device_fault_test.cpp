@@ -190,7 +190,11 @@ TEST_P(DeviceFaultSweep, EveryCallSiteFailsCleanly) {
         }
     }
     std::cout << render.name << ": " << sites.size() << " call sites, " << faults
-              << " faults injected\n";
+              << " faults injected:";
+    for (const auto& [key, site] : sites) {
+        std::cout << " " << key;
+    }
+    std::cout << "\n";
     set_quiet(false);
 }
 

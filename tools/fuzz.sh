@@ -91,7 +91,9 @@ for t in "${targets[@]}"; do
         echo "fuzz $t: FAILED (see $log; the input is in $artifacts/)" >&2
         grep -E "ERROR|SUMMARY|Test unit written" "$log" >&2 || tail -20 "$log" >&2
     fi
-    executed="$(sed -n 's/^stat::number_executed_units: *//p' "$log" | tail -1)"
-    echo "fuzz $t: ${executed:-?} inputs executed in ${seconds} s, corpus $(ls "$corpus" | wc -l) files"
+    executed="$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)"
+    took="$(sed -n 's/^Done [0-9]* runs in \([0-9]*\) second.*/\1/p' "$log" | tail -1)"
+    echo "fuzz $t: ${executed:-?} inputs executed in ${took:-$seconds} s," \
+        "corpus $(find "$corpus" -type f | wc -l) files"
 done
 exit $status

@@ -92,7 +92,7 @@ GridFile parse_grid_file(const std::string& bytes, const std::string& name, uint
     uint64_t vertices = 1;
     for (int axis = 0; axis < 3; ++axis) {
         sizes_fit = sizes_fit && header.cells[axis] >= 1 && header.cells[axis] <= 1024;
-        vertices *= static_cast<uint64_t>(std::max(header.cells[axis], 0) + 1);
+        vertices *= static_cast<uint64_t>(std::max(header.cells[axis], 0)) + 1;
     }
     sizes_fit =
         sizes_fit && bytes.size() == sizeof header +

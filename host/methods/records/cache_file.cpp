@@ -60,8 +60,10 @@ Header checked_header(const std::string& name, const std::string& bytes, const C
     }
     const size_t fixed = sizeof header + sizeof(uint64_t);
     const size_t per_record = kRecordBytes + header.payload_bytes;
+    // The accuracy a is in (0, 1] (--accuracy): influence radii a R stay within the world.
     const bool sizes_fit =
         header.record_bytes == kRecordBytes && header.levels <= kMaxLevels &&
+        header.accuracy > 0.0f && header.accuracy <= 1.0f &&
         header.count <= (bytes.size() - fixed) / per_record &&
         bytes.size() == fixed + header.levels * sizeof(uint64_t) + header.count * per_record;
     if (!sizes_fit) {
@@ -186,7 +188,9 @@ std::vector<RecordStore> parse_cache_file(const std::string& bytes, const std::s
                                           const CacheFileKey& key) {
     const Header header = checked_header(name, bytes, key);
     std::vector<uint64_t> counts(header.levels);
-    std::memcpy(counts.data(), bytes.data() + sizeof header, counts.size() * sizeof(uint64_t));
+    if (!counts.empty()) {  // (memcpy to an empty vector's null data is undefined)
+        std::memcpy(counts.data(), bytes.data() + sizeof header, counts.size() * sizeof(uint64_t));
+    }
     uint64_t total = 0;
     for (uint64_t c : counts) {
         total += std::min<uint64_t>(c, header.count + 1);
@@ -208,7 +212,9 @@ std::vector<RecordStore> parse_cache_file(const std::string& bytes, const std::s
             in += sizeof(shared::Record);
             std::memcpy(&host[i], in, sizeof(RecordHostData));
             in += sizeof(RecordHostData);
-            std::memcpy(payloads.data() + i * key.payload_bytes, in, key.payload_bytes);
+            if (key.payload_bytes > 0) {
+                std::memcpy(payloads.data() + i * key.payload_bytes, in, key.payload_bytes);
+            }
             in += key.payload_bytes;
             check_record(name, key, index, records[i], host[i],
                          payloads.data() + i * key.payload_bytes);
