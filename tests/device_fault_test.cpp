@@ -239,6 +239,62 @@ TEST(DeviceFault, AFailureAtTheEndKeepsEveryOldOutput) {
     set_quiet(false);
 }
 
+// The build log is read only after a build has failed (program.cpp's build_log): a kernel with a
+// syntax error reaches those call sites, and a fault there leaves the build's own error, without
+// the log.
+TEST(DeviceFault, ABuildLogThatCannotBeReadLeavesTheBuildError) {
+    const auto dir = test::scratch_dir("device_fault_build_log");
+    const auto kernels = dir / "kernels";
+    std::filesystem::copy(test::source_dir() / "kernels", kernels,
+                          std::filesystem::copy_options::recursive);
+    std::ofstream(kernels / "normals/normals.cl", std::ios::app) << "\nthis is not OpenCL C\n";
+    const auto out = test::scratch_dir("device_fault_build_log_out");
+    const std::vector<std::string> args = {
+        (test::source_dir() / "scenes/cornell-box/scene.json").string(),
+        "-o",
+        (out / "out.png").string(),
+        "--method",
+        "normals",
+        "--width",
+        "8",
+        "--height",
+        "8",
+        "--quiet",
+        "--no-kernel-cache",
+        "--kernel-dir",
+        kernels.string()};
+    disarm_device_fault();
+    reset_device_call_counts();
+    const RunResult failed_build = run(args);
+    EXPECT_EQ(failed_build.exit_code, kExitFailure);
+    EXPECT_NE(failed_build.message.find("clBuildProgram(normals/normals.cl) failed: "
+                                        "CL_BUILD_PROGRAM_FAILURE"),
+              std::string::npos)
+        << failed_build.message;
+    EXPECT_NE(failed_build.message.find("build log:\n"), std::string::npos);
+    size_t log_sites = 0;
+    for (const auto& [key, site] : device_call_sites()) {
+        if (site.api != "clGetProgramBuildInfo") {
+            continue;
+        }
+        ++log_sites;
+        SCOPED_TRACE(key);
+        arm_device_fault(site.api, site.first_call, -6);
+        const RunResult failed = run(args);
+        EXPECT_TRUE(device_fault_fired());
+        disarm_device_fault();
+        EXPECT_EQ(failed.exit_code, kExitFailure);
+        EXPECT_NE(failed.message.find("clBuildProgram(normals/normals.cl) failed: "
+                                      "CL_BUILD_PROGRAM_FAILURE on "),
+                  std::string::npos)
+            << failed.message;
+        EXPECT_EQ(failed.message.find('\n'), std::string::npos) << "no log: " << failed.message;
+        EXPECT_EQ(files_in(out), std::vector<std::string>{});
+        EXPECT_EQ(live_objects(), (std::map<std::string, long long>{}));
+    }
+    EXPECT_EQ(log_sites, 2u);  // its size, then its text
+}
+
 SmallRender only_last_calls(SmallRender render) {
     render.name += "-last";
     render.first_calls = false;

@@ -80,7 +80,7 @@ for t in "${targets[@]}"; do
     case "$t" in
         scene | obj)
             [ "$t" = scene ] && shipped_seeds "$seeds" scene || shipped_seeds "$seeds" obj
-            options+=(-max_len=65536 -dict="$root/tests/fuzz/scene.dict") ;;
+            options+=(-max_len=16384 -dict="$root/tests/fuzz/scene.dict") ;;
         kernel_cache) options+=(-max_len=4096) ;;
         *) options+=(-max_len=65536) ;;
     esac
