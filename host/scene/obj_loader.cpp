@@ -262,8 +262,16 @@ void build_mesh(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shap
                 const std::string& file, TriangleMesh& mesh) {
     bool all_normals = true;
     bool all_uvs = true;
+    const size_t vertex_count = attrib.vertices.size() / 3;
     for (const tinyobj::shape_t& shape : shapes) {
         for (const tinyobj::index_t& index : shape.mesh.indices) {
+            // The text was checked line by line, but tinyobjloader splits lines and words its own
+            // way (a vertical tab is not a space to it): its own indices are checked again.
+            if (index.vertex_index < 0 || static_cast<size_t>(index.vertex_index) >= vertex_count) {
+                throw Error(file + ": vertex index " + std::to_string(index.vertex_index + 1) +
+                            " out of range (" + std::to_string(vertex_count) +
+                            " vertices as parsed)");
+            }
             all_normals = all_normals && index.normal_index >= 0;
             all_uvs = all_uvs && index.texcoord_index >= 0;
         }
