@@ -5,7 +5,7 @@
 #include "common/scene_data.h"
 
 #define RC_SCENE_PARAMETERS                                                                    \
-    RC_GLOBAL const BvhNode *nodes, RC_GLOBAL const Triangle *triangles,                       \
+    RC_GLOBAL const TraversalNode *nodes, RC_GLOBAL const Triangle *triangles,                 \
         RC_GLOBAL const uint *triangle_of_primitive, RC_GLOBAL const TriangleShading *shading, \
         RC_GLOBAL const float4 *normals, RC_GLOBAL const float2 *uvs,                          \
         RC_GLOBAL const Material *materials, RC_GLOBAL const TextureInfo *textures,            \
@@ -14,7 +14,7 @@
         RC_GLOBAL const float *light_triangle_cdf, int light_count, int environment
 
 RC_FUNC SceneData
-rc_scene_data(RC_GLOBAL const BvhNode* nodes, RC_GLOBAL const Triangle* triangles,
+rc_scene_data(RC_GLOBAL const TraversalNode* nodes, RC_GLOBAL const Triangle* triangles,
               RC_GLOBAL const uint* triangle_of_primitive, RC_GLOBAL const TriangleShading* shading,
               RC_GLOBAL const float4* normals, RC_GLOBAL const float2* uvs,
               RC_GLOBAL const Material* materials, RC_GLOBAL const TextureInfo* textures,

@@ -2,7 +2,7 @@
 #include "common/bvh_traversal.h"
 
 __kernel void trace_closest(uint begin, uint end, __global const Ray* rays,
-                            __global const BvhNode* nodes, __global const Triangle* triangles,
+                            __global const TraversalNode* nodes, __global const Triangle* triangles,
                             __global Hit* hits) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {
@@ -12,7 +12,7 @@ __kernel void trace_closest(uint begin, uint end, __global const Ray* rays,
 }
 
 __kernel void trace_any(uint begin, uint end, __global const Ray* rays,
-                        __global const BvhNode* nodes, __global const Triangle* triangles,
+                        __global const TraversalNode* nodes, __global const Triangle* triangles,
                         __global uint* occluded) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {

@@ -226,6 +226,10 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
         {{"compare", (dir / "a.exr").string(), (dir / "b.exr").string(), "--reference-spp", "0"},
          2,
          "--reference-spp"},
+        {{"render", cornell_box(), "-o", out, "--bvh", "binary"},
+         2,
+         "--bvh: unknown BVH layout 'binary' (bvh4 or wide)"},
+        {{"bench", "rays", "--bvh", "octree"}, 2, "--bvh: unknown BVH layout 'octree'"},
         {{"frobnicate"}, 2, "unknown command"},
         {{"bench", "nothing"}, 2, "unknown benchmark"},
         {{"devices", "extra"}, 2, "no arguments"},
@@ -449,14 +453,22 @@ TEST(Cli, BenchRaysWritesTheDocumentedJson) {
         EXPECT_TRUE(entry.contains(key)) << key;
     }
     EXPECT_EQ(entry["triangles"], 38);
-    for (const char* name :
-         {"coherent_closest", "coherent_any", "incoherent_closest", "incoherent_any"}) {
-        ASSERT_TRUE(entry.contains(name)) << name;
-        EXPECT_GT(entry[name]["device_mrays"].get<double>(), 0.0);
-        EXPECT_GT(entry[name]["embree_mrays"].get<double>(), 0.0);
-        EXPECT_GT(entry[name]["ratio"].get<double>(), 0.0);
-        // Both tracers answer (almost) every ray the same way; ties at edges are rare.
-        EXPECT_GT(entry[name]["agreement"].get<double>(), 0.99);
+    // Both BVH layouts, side by side.
+    for (const char* layout : {"bvh4", "wide"}) {
+        SCOPED_TRACE(layout);
+        ASSERT_TRUE(entry["layouts"].contains(layout));
+        const nlohmann::json& figures = entry["layouts"][layout];
+        EXPECT_GT(figures["node_bytes"].get<double>(), 0.0);
+        EXPECT_GT(figures["leaf_bytes"].get<double>(), 0.0);
+        for (const char* name :
+             {"coherent_closest", "coherent_any", "incoherent_closest", "incoherent_any"}) {
+            ASSERT_TRUE(figures.contains(name)) << name;
+            EXPECT_GT(figures[name]["device_mrays"].get<double>(), 0.0);
+            EXPECT_GT(figures[name]["embree_mrays"].get<double>(), 0.0);
+            EXPECT_GT(figures[name]["ratio"].get<double>(), 0.0);
+            // Both tracers answer (almost) every ray the same way; ties at edges are rare.
+            EXPECT_GT(figures[name]["agreement"].get<double>(), 0.99);
+        }
     }
 }
 
@@ -517,6 +529,23 @@ TEST(Cli, FramesEndingAtTheLargestFrameNumberStop) {
     const test::CommandResult result = test::run_radcache(
         {"render", cornell_box(), "-o", (dir / "f####.png").string(), "--frames",
          "2147483646:2147483647", "--method", "normals", "--width", "4", "--height", "4", "-q"});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    size_t files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        files += entry.is_regular_file() ? 1 : 0;
+    }
+    EXPECT_EQ(files, 2u);
+    EXPECT_TRUE(std::filesystem::exists(dir / "f2147483647.png"));
+}
+
+// Temporal caching places frames ahead of the one it shades (hooks.visit_frame): its own frame
+// loop must stop at the largest frame number too (issue 17's overflow, in the merged code).
+TEST(Cli, TemporalFramesEndingAtTheLargestFrameNumberStop) {
+    const auto dir = test::scratch_dir("cli_temporal_frames_max");
+    const test::CommandResult result =
+        test::run_radcache({"render", cornell_box(), "-o", (dir / "f####.png").string(), "--frames",
+                            "2147483646:2147483647", "--method", "ic", "--temporal", "--ic-rays",
+                            "16", "--spp", "1", "--width", "8", "--height", "8", "-q"});
     ASSERT_EQ(result.exit_code, 0) << result.output;
     size_t files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {

@@ -98,7 +98,7 @@ Scene square_light_scene(bool blocker) {
 struct ProbeScene {
     explicit ProbeScene(Scene s)
         : scene(std::move(s)),
-          bvh(build_bvh(scene.mesh)),
+          bvh(build_bvh(scene.mesh, test::shared_context().bvh_layout())),
           device_bvh(test::shared_context(), bvh),
           device_scene(test::shared_context(), scene) {}
     SceneArguments arguments() const { return SceneArguments(device_bvh, device_scene); }

@@ -1,4 +1,5 @@
-// Device traversal against Embree's rtcIntersect1 / rtcOccluded1 on the same triangles.
+// Device traversal against Embree's rtcIntersect1 / rtcOccluded1 on the same triangles, in
+// every BVH layout.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 #include "bvh/device_bvh.h"
 #include "bvh/device_tracer.h"
 #include "bvh/embree_scene.h"
+#include "layout_params.h"
 #include "ray_sets.h"
 #include "reference_intersector.h"
 #include "scene/generated_meshes.h"
@@ -17,10 +19,10 @@ namespace rc {
 namespace {
 
 struct Tracers {
-    explicit Tracers(const TriangleMesh& mesh)
-        : bvh(build_bvh(mesh)),
-          device_bvh(test::shared_context(), bvh),
-          device(test::shared_context(), device_bvh),
+    Tracers(const TriangleMesh& mesh, BvhLayout layout)
+        : bvh(build_bvh(mesh, layout)),
+          device_bvh(test::layout_context(layout), bvh),
+          device(test::layout_context(layout), device_bvh),
           embree(mesh) {}
     Bvh bvh;
     DeviceBvh device_bvh;
@@ -111,8 +113,8 @@ void expect_crossings_hit(Tracers& tracers, const test::AimedRays& aimed, const 
     EXPECT_EQ(escapes, 0u) << label;
 }
 
-void check_scene(const TriangleMesh& mesh, uint32_t seed) {
-    Tracers tracers(mesh);
+void check_scene(const TriangleMesh& mesh, uint32_t seed, BvhLayout layout) {
+    Tracers tracers(mesh, layout);
     const test::Bounds bounds = test::mesh_bounds(mesh);
     const auto random = test::random_rays(bounds, 40000, seed);
     const auto surface = tracers.device.diffuse_bounce_rays(random, seed + 1);
@@ -136,14 +138,17 @@ void check_scene(const TriangleMesh& mesh, uint32_t seed) {
     }
 }
 
-TEST(EmbreeAgreement, CornellBox) { check_scene(test::load_cornell_box().mesh, 11); }
+class EmbreeAgreement : public ::testing::TestWithParam<BvhLayout> {};
 
-TEST(EmbreeAgreement, RandomTriangleSoup) {
-    check_scene(make_triangle_soup(20000, 7, glm::vec3(-1.0f), glm::vec3(1.0f), 0.3f), 21);
+TEST_P(EmbreeAgreement, CornellBox) { check_scene(test::load_cornell_box().mesh, 11, GetParam()); }
+
+TEST_P(EmbreeAgreement, RandomTriangleSoup) {
+    check_scene(make_triangle_soup(20000, 7, glm::vec3(-1.0f), glm::vec3(1.0f), 0.3f), 21,
+                GetParam());
 }
 
-TEST(EmbreeAgreement, DenseTessellatedSphere) {
-    check_scene(make_icosphere(glm::vec3(0.5f, -2.0f, 3.0f), 2.0f, 6, 0.05f, 7.0f), 31);
+TEST_P(EmbreeAgreement, DenseTessellatedSphere) {
+    check_scene(make_icosphere(glm::vec3(0.5f, -2.0f, 3.0f), 2.0f, 6, 0.05f, 7.0f), 31, GetParam());
 }
 
 }  // namespace
@@ -154,9 +159,9 @@ namespace {
 
 // NaN, infinite or otherwise untraceable rays: no crash, no hang, no hit. Embree is not asked:
 // such rays violate its API contract (Debian's build aborts on the assertion ray.valid()).
-TEST(EmbreeAgreement, MalformedRaysHitNothing) {
+TEST_P(EmbreeAgreement, MalformedRaysHitNothing) {
     const Scene scene = test::load_cornell_box();
-    Tracers tracers(scene.mesh);
+    Tracers tracers(scene.mesh, GetParam());
     const std::vector<shared::Ray> rays = test::malformed_rays();
     const std::vector<shared::Hit> hits = tracers.device.trace_closest(rays);
     const std::vector<unsigned> occluded = tracers.device.trace_any(rays);
@@ -165,6 +170,9 @@ TEST(EmbreeAgreement, MalformedRaysHitNothing) {
         EXPECT_EQ(occluded[i], 0u) << describe(rays[i]);
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(Layouts, EmbreeAgreement, test::kAllBvhLayouts,
+                         test::bvh_layout_test_name);
 
 }  // namespace
 }  // namespace rc

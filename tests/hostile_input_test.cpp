@@ -3,6 +3,7 @@
 // right exit status and no output file. The inputs the fuzzers found are in fuzz_regression_test.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <fstream>
 #include <glm/geometric.hpp>
@@ -269,6 +270,53 @@ TEST(HostileInput, CompareCountsNanPixels) {
     EXPECT_EQ(j["pixels"], 6);
 }
 
+// The same for a frame sequence (compare --frames, merged after the fix): a NaN pixel in any
+// frame fails the command naming that frame's file; --allow-nan takes every frame's figures and
+// every pair's temporal error over the pixels finite in both images.
+TEST(HostileInput, CompareFramesCountsNanPixels) {
+    const auto dir = test::scratch_dir("hostile_compare_frames_nan");
+    Image reference(4, 2, 3);
+    for (size_t i = 0; i < reference.pixels.size(); ++i) {
+        reference.pixels[i] = 0.25f + 0.01f * static_cast<float>(i);
+    }
+    Image with_nan = reference;
+    with_nan.at(2, 1, 0) = std::numeric_limits<float>::quiet_NaN();
+    for (int frame = 0; frame < 3; ++frame) {
+        const std::string n = std::to_string(frame);
+        write_image(dir / ("ref" + n + ".exr"), reference);
+        write_image(dir / ("test" + n + ".exr"), frame == 1 ? with_nan : reference);
+    }
+    const std::vector<std::string> compare = {"compare",
+                                              "--frames",
+                                              "0:2",
+                                              (dir / "test#.exr").string(),
+                                              (dir / "ref#.exr").string(),
+                                              "--json",
+                                              (dir / "e.json").string()};
+    const test::CommandResult refused = test::run_radcache(compare);
+    EXPECT_EQ(refused.exit_code, 1) << refused.output;
+    EXPECT_NE(refused.output.find("error: " + (dir / "test1.exr").string() +
+                                  ": 1 NaN or infinite pixels (0 in "),
+              std::string::npos)
+        << refused.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "e.json"));
+    std::vector<std::string> allowed = compare;
+    allowed.push_back("--allow-nan");
+    const test::CommandResult accepted = test::run_radcache(allowed);
+    ASSERT_EQ(accepted.exit_code, 0) << accepted.output;
+    const nlohmann::json j = nlohmann::json::parse(read_file(dir / "e.json"));
+    EXPECT_EQ(j["frames"][1]["nonfinite_pixels"]["test"], 1);
+    EXPECT_EQ(j["frames"][1]["pixels"], 7);
+    EXPECT_EQ(j["frames"][0]["pixels"], 8);
+    // Identical finite pixels: every figure is 0, not NaN.
+    for (const auto& frame : j["frames"]) {
+        EXPECT_EQ(frame["relmse"], 0.0) << frame;
+    }
+    EXPECT_EQ(j["frames"][1]["temporal_error"], 0.0);
+    EXPECT_EQ(j["frames"][2]["temporal_error"], 0.0);
+    EXPECT_EQ(j["frames"][2]["temporal_pixels"], 7);
+}
+
 // Silently wrong: -o with 40 '#' wrote every frame to one file (a 32-byte buffer).
 TEST(HostileInput, LongFramePatternsNameEveryFrame) {
     const std::string pattern = "f" + std::string(40, '#') + ".png";
@@ -319,6 +367,29 @@ TEST(HostileInput, OutOfRangeFramesAreABadCommandLine) {
                                  "[-2147483647, 2147483647]"),
               std::string::npos)
         << result.output;
+}
+
+// Messages: a bad numeric option was refused only after the scene had loaded, so the scene's own
+// notes ("dropped 192 degenerate triangles") came before the error line. Every value that does
+// not depend on the scene is now checked first: the error is the only line.
+TEST(HostileInput, BadOptionsAreTheOnlyLine) {
+    const auto dir = test::scratch_dir("hostile_bad_options");
+    const std::string scene = (test::source_dir() / "scenes/moving-sphere/scene.json").string();
+    const std::vector<std::vector<std::string>> bad = {
+        {"--spp", "99999999999"}, {"--width", "-1"},
+        {"--seed", "1e3"},        {"--exposure", "nan"},
+        {"--local-size", "0"},    {"--device-memory", "0"},
+        {"--method", "nope"},     {"--method", "pt", "--ic-rays", "16"}};
+    for (const std::vector<std::string>& options : bad) {
+        std::vector<std::string> args = {"render", scene, "-o", (dir / "out.png").string()};
+        args.insert(args.end(), options.begin(), options.end());
+        const test::CommandResult result = test::run_radcache(args);
+        SCOPED_TRACE(options[0] + " " + options[1]);
+        EXPECT_EQ(result.exit_code, 2) << result.output;
+        EXPECT_EQ(result.output.find("dropped"), std::string::npos) << result.output;
+        EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+        EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+    }
 }
 
 // Messages: "fov": 1e400 gave the library's raw exception without the file or the key.

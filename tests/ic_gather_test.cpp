@@ -56,8 +56,8 @@ struct Query {
 std::vector<glm::dvec4> device_gather(const std::vector<PaperRecord>& records,
                                       const std::vector<Query>& queries, float accuracy) {
     static const Scene scene = test::load_cornell_box();
-    static const Bvh bvh = build_bvh(scene.mesh);
     Context& context = test::shared_context();
+    static const Bvh bvh = build_bvh(scene.mesh, context.bvh_layout());
     static const DeviceBvh device_bvh(context, bvh);
     static const DeviceScene device_scene(context, scene);
     IrradianceCache cache({context, scene, device_bvh, device_scene});

@@ -26,7 +26,7 @@ namespace {
 struct CacheFixture {
     explicit CacheFixture(const Scene& s)
         : scene(s),
-          bvh(build_bvh(scene.mesh)),
+          bvh(build_bvh(scene.mesh, test::shared_context().bvh_layout())),
           device_bvh(test::shared_context(), bvh),
           device_scene(test::shared_context(), scene),
           cache({test::shared_context(), scene, device_bvh, device_scene}) {}

@@ -39,7 +39,7 @@ constexpr double kIcWithGridRelMse = 3e-4;
 struct GridScene {
     GridScene(const Scene& s, Context& context)
         : scene(s),
-          bvh(build_bvh(scene.mesh)),
+          bvh(build_bvh(scene.mesh, context.bvh_layout())),
           device_bvh(context, bvh),
           device_scene(context, scene),
           grid({context, scene, device_bvh, device_scene}) {}

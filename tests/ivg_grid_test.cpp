@@ -24,7 +24,7 @@ namespace {
 struct GridFixture {
     GridFixture()
         : scene(test::load_cornell_box()),
-          bvh(build_bvh(scene.mesh)),
+          bvh(build_bvh(scene.mesh, test::shared_context().bvh_layout())),
           device_bvh(test::shared_context(), bvh),
           device_scene(test::shared_context(), scene),
           grid({test::shared_context(), scene, device_bvh, device_scene}) {}

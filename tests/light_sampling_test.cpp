@@ -74,7 +74,7 @@ struct ProbeResult {
 ProbeResult probe(const Scene& scene, glm::vec3 p, size_t count, unsigned seed,
                   const std::string& options = "") {
     Context& context = test::shared_context();
-    const Bvh bvh = build_bvh(scene.mesh);
+    const Bvh bvh = build_bvh(scene.mesh, context.bvh_layout());
     const DeviceBvh device_bvh(context, bvh);
     const DeviceScene device_scene(context, scene);
     Kernel kernel = context.kernel("light_probe.cl", "light_sample_probe", options);

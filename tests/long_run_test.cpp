@@ -16,11 +16,12 @@ namespace rc {
 namespace {
 
 struct AnimatedRun {
+    std::string name;
     std::string method;
     std::vector<std::string> options;
 };
 
-void PrintTo(const AnimatedRun& run, std::ostream* out) { *out << run.method; }
+void PrintTo(const AnimatedRun& run, std::ostream* out) { *out << run.name; }
 
 class LongRun : public testing::TestWithParam<AnimatedRun> {};
 
@@ -30,7 +31,7 @@ uint64_t memory_of(const nlohmann::json& frame, const char* key) {
 
 TEST_P(LongRun, TwentyFourFramesKeepMemoryBounded) {
     const AnimatedRun& run = GetParam();
-    const auto dir = test::scratch_dir("long_run_" + run.method);
+    const auto dir = test::scratch_dir("long_run_" + run.name);
     std::vector<std::string> args = {
         "render",
         (test::source_dir() / "scenes/moving-sphere/scene.json").string(),
@@ -87,15 +88,16 @@ TEST_P(LongRun, TwentyFourFramesKeepMemoryBounded) {
 INSTANTIATE_TEST_SUITE_P(
     CachingMethods, LongRun,
     testing::Values(
-        AnimatedRun{"ic", {"--ic-rays", "16", "--ic-bounces", "2"}},
-        AnimatedRun{"sdrc", {"--ic-rays", "16", "--ic-bounces", "1", "--sdrc-samples", "16"}},
-        AnimatedRun{"ivg", {"--photons", "4000", "--grid", "4x4x4"}},
-        AnimatedRun{"ivg-gather", {"--photons", "4000", "--grid", "4x4x4", "--gather-rays", "4"}}),
-    [](const testing::TestParamInfo<AnimatedRun>& info) {
-        std::string name = info.param.method;
-        std::replace(name.begin(), name.end(), '-', '_');
-        return name;
-    });
+        AnimatedRun{"ic", "ic", {"--ic-rays", "16", "--ic-bounces", "2"}},
+        // Temporal caching keeps its records across the frames: bounded by their lifespans.
+        AnimatedRun{"ic_temporal", "ic", {"--temporal", "--ic-rays", "16"}},
+        AnimatedRun{
+            "sdrc", "sdrc", {"--ic-rays", "16", "--ic-bounces", "1", "--sdrc-samples", "16"}},
+        AnimatedRun{"ivg", "ivg", {"--photons", "4000", "--grid", "4x4x4"}},
+        AnimatedRun{"ivg_gather",
+                    "ivg-gather",
+                    {"--photons", "4000", "--grid", "4x4x4", "--gather-rays", "4"}}),
+    [](const testing::TestParamInfo<AnimatedRun>& info) { return info.param.name; });
 
 // A run that needs more device memory than it may have is refused when it asks for the buffer
 // that does not fit, with the figures, and writes nothing.

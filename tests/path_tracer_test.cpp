@@ -27,7 +27,7 @@ struct Render {
 };
 
 Render render(const Scene& scene, PathTracerOptions options, Context& context) {
-    const Bvh bvh = build_bvh(scene.mesh);
+    const Bvh bvh = build_bvh(scene.mesh, context.bvh_layout());
     const DeviceBvh device_bvh(context, bvh);
     const DeviceScene device_scene(context, scene);
     PathTracer tracer({context, scene, device_bvh, device_scene});

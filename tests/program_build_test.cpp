@@ -179,9 +179,12 @@ TEST(ProgramBuild, CorruptCacheEntryIsIgnoredAndRebuilt) {
     // An entry whose checksum is right but whose binary the driver refuses.
     {
         const DeviceInfo& device = test::shared_context().device();
-        const BinaryCacheKey key =
-            BinaryCacheKey::of(KernelSources().expand("rng_probe.cl"), "-cl-std=CL1.2", device.name,
-                               device.driver_version);
+        // The options every program of a default Context is built with: the language and the
+        // BVH layout.
+        const std::string built_with = "-cl-std=CL1.2 -DRC_BVH_LAYOUT=" +
+                                       std::to_string(static_cast<int>(default_bvh_layout()));
+        const BinaryCacheKey key = BinaryCacheKey::of(
+            KernelSources().expand("rng_probe.cl"), built_with, device.name, device.driver_version);
         const BinaryCache cache(options.cache_dir);
         ASSERT_EQ(cache.entry_path(key), entries[0]);
         cache.store(key, std::vector<unsigned char>(4096, 0x5a));
@@ -201,6 +204,7 @@ TEST(ProgramBuild, DumpKernelsWritesTheExpandedSource) {
     const std::string dumped = read_file(options.dump_kernels_dir / "trace.cl");
     EXPECT_NE(dumped.find("rc_trace_closest"), std::string::npos);
     EXPECT_NE(dumped.find("-cl-std=CL1.2"), std::string::npos);
+    EXPECT_NE(dumped.find("-DRC_BVH_LAYOUT="), std::string::npos);
     // Builds of one entry with other options go to files of their own.
     context.program("irradiance_cache/ic_record_cells.cl",
                     radiance_source_define(RC_RADIANCE_GRID));

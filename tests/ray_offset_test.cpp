@@ -52,7 +52,7 @@ struct SelfHits {
 };
 
 SelfHits count_self_hits(const Setup& setup) {
-    const Bvh bvh = build_bvh(setup.mesh);
+    const Bvh bvh = build_bvh(setup.mesh, test::shared_context().bvh_layout());
     const DeviceBvh device_bvh(test::shared_context(), bvh);
     DeviceTracer tracer(test::shared_context(), device_bvh);
     const std::vector<shared::Hit> hits = tracer.trace_closest(setup.primary);

@@ -39,6 +39,8 @@ class Layout(unittest.TestCase):
                                                              "scene.json")), (0, 0))
         self.assertEqual(references.frame_range(os.path.join(SCENES, "kettle", "scene.json")),
                          (0, 0))
+        self.assertEqual(references.frame_range(os.path.join(SCENES, "moving-light",
+                                                             "scene.json")), (0, 15))
 
     def test_every_named_reference_exists_with_its_record(self):
         named = []
@@ -47,7 +49,12 @@ class Layout(unittest.TestCase):
         for frame in range(24):
             named.append((references.reference_path(os.path.join(SCENES, "moving-sphere"),
                                                     frame), frame))
+        for frame in range(16):
+            named.append((references.reference_path(os.path.join(SCENES, "moving-light"),
+                                                    frame), frame))
         self.assertTrue(named[4][0].endswith(os.path.join("reference", "frame0000.exr")))
+        self.assertTrue(named[-1][0].endswith(os.path.join("moving-light", "reference",
+                                                           "frame0015.exr")))
         for path, frame in named:
             self.assertTrue(os.path.isfile(path), path)
             with open(os.path.splitext(path)[0] + ".json") as f:
@@ -62,19 +69,21 @@ class Layout(unittest.TestCase):
             references.reference_path(os.path.join(SCENES, "cornell-box"), 1)
 
     def test_shipped_frames_are_in_order(self):
-        # The ball rolls across the box: frame 0 is nearer to frame 1 than to frame 23 (relMSE
-        # of the direct layer), so the frames are distinct and in order.
-        folder = os.path.join(SCENES, "moving-sphere", "reference")
+        # The ball rolls across the box, the light moves across the ceiling: frame 0 is nearer
+        # to frame 1 than to the last frame (relMSE of the direct layer), so the frames are
+        # distinct and in order.
+        for scene, last in (("moving-sphere", 23), ("moving-light", 15)):
+            folder = os.path.join(SCENES, scene, "reference")
 
-        def relmse(a, b):
-            result = run([RADCACHE, "compare", os.path.join(folder, "frame%04d.exr" % a),
-                          os.path.join(folder, "frame%04d.exr" % b), "--aov", "direct"])
-            self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
-            return float(re.search(r"relmse (\S+)", result.stdout).group(1))
+            def relmse(a, b):
+                result = run([RADCACHE, "compare", os.path.join(folder, "frame%04d.exr" % a),
+                              os.path.join(folder, "frame%04d.exr" % b), "--aov", "direct"])
+                self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+                return float(re.search(r"relmse (\S+)", result.stdout).group(1))
 
-        near, far = relmse(0, 1), relmse(0, 23)
-        self.assertGreater(near, 0.0)
-        self.assertGreater(far, 2.0 * near)
+            near, far = relmse(0, 1), relmse(0, last)
+            self.assertGreater(near, 0.0, scene)
+            self.assertGreater(far, 2.0 * near, scene)
 
     def test_records_of_a_run_follow_the_layout(self):
         stats = {"method": "pt", "seed": 5, "resolution": [8, 8], "max_depth": 64,

@@ -1,11 +1,12 @@
 // Host and device agree on the layout of every shared struct: RC_SHARED_LAYOUTS
 // (kernels/shared/types.h) and radiance caching's RC_RADIANCE_CACHE_LAYOUTS
-// (kernels/shared/radiance_cache.h) and SDRC's RC_SDRC_LAYOUTS (kernels/shared/sdrc.h), each
-// reported by its probe kernel.
+// (kernels/shared/radiance_cache.h), SDRC's RC_SDRC_LAYOUTS (kernels/shared/sdrc.h) and temporal
+// caching's RC_TEMPORAL_LAYOUTS (kernels/shared/temporal.h), each reported by its probe kernel.
 #include <gtest/gtest.h>
 
 #include "shared/radiance_cache.h"
 #include "shared/sdrc.h"
+#include "shared/temporal.h"
 #include "shared/types.h"
 #include "test_support.h"
 
@@ -58,6 +59,11 @@ TEST(SharedLayout, RadianceCacheDeviceMatchesHost) {
 TEST(SharedLayout, SdrcDeviceMatchesHost) {
     expect_device_matches(RC_HOST_LAYOUTS(RC_SDRC_LAYOUTS), "sdrc/sdrc_probe.cl",
                           "sdrc_report_layouts");
+}
+
+TEST(SharedLayout, TemporalDeviceMatchesHost) {
+    expect_device_matches(RC_HOST_LAYOUTS(RC_TEMPORAL_LAYOUTS), "temporal/tc_probe.cl",
+                          "tc_report_layouts");
 }
 
 }  // namespace

@@ -186,7 +186,7 @@ Scene strip_scene() {
 struct StripProbe {
     StripProbe()
         : scene(strip_scene()),
-          bvh(build_bvh(scene.mesh)),
+          bvh(build_bvh(scene.mesh, test::shared_context().bvh_layout())),
           device_bvh(test::shared_context(), bvh),
           device_scene(test::shared_context(), scene) {}
 

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdio>
+#include <map>
 #include <memory>
 
 #include "image/image_io.h"
@@ -21,6 +22,17 @@ ContextOptions default_context_options() {
 Context& shared_context() {
     static Context context(default_context_options());
     return context;
+}
+
+Context& layout_context(BvhLayout layout) {
+    static std::map<BvhLayout, std::unique_ptr<Context>> contexts;
+    std::unique_ptr<Context>& context = contexts[layout];
+    if (!context) {
+        ContextOptions options = default_context_options();
+        options.bvh_layout = layout;
+        context = std::make_unique<Context>(options);
+    }
+    return *context;
 }
 
 std::filesystem::path source_dir() { return RADCACHE_SOURCE_DIR; }
@@ -77,7 +89,7 @@ Image cornell_reference(const std::string& layer, int size) {
 DeviceFrame::DeviceFrame(Scene loaded, Context& device)
     : context(device),
       scene(std::move(loaded)),
-      bvh(build_bvh(scene.mesh)),
+      bvh(build_bvh(scene.mesh, device.bvh_layout())),
       device_bvh(context, bvh),
       device_scene(context, scene) {}
 

@@ -22,6 +22,9 @@ Context& shared_context();
 // A fresh context with the given options on the same device.
 ContextOptions default_context_options();
 
+// A context whose programs traverse the BVH in `layout`, one per layout per test program.
+Context& layout_context(BvhLayout layout);
+
 std::filesystem::path source_dir();
 std::filesystem::path radcache_executable();
 Scene load_cornell_box();

@@ -10,6 +10,7 @@
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "bvh/device_tracer.h"
+#include "layout_params.h"
 #include "ray_sets.h"
 #include "scene/generated_meshes.h"
 #include "test_support.h"
@@ -42,10 +43,11 @@ std::vector<shared::Ray> rays_through_vertices_and_edges(const TriangleMesh& mes
     return rays;
 }
 
-size_t count_escapes(const TriangleMesh& mesh, const std::vector<shared::Ray>& rays) {
-    const Bvh bvh = build_bvh(mesh);
-    const DeviceBvh device_bvh(test::shared_context(), bvh);
-    DeviceTracer tracer(test::shared_context(), device_bvh);
+size_t count_escapes(const TriangleMesh& mesh, const std::vector<shared::Ray>& rays,
+                     BvhLayout layout) {
+    const Bvh bvh = build_bvh(mesh, layout);
+    const DeviceBvh device_bvh(test::layout_context(layout), bvh);
+    DeviceTracer tracer(test::layout_context(layout), device_bvh);
     const std::vector<shared::Hit> hits = tracer.trace_closest(rays);
     const std::vector<unsigned> occluded = tracer.trace_any(rays);
     size_t escapes = 0;
@@ -56,23 +58,25 @@ size_t count_escapes(const TriangleMesh& mesh, const std::vector<shared::Ray>& r
     return escapes;
 }
 
-TEST(Watertight, SphereFromItsCentre) {
+class Watertight : public ::testing::TestWithParam<BvhLayout> {};
+
+TEST_P(Watertight, SphereFromItsCentre) {
     const glm::vec3 centre(0.25f, -0.5f, 0.75f);
     const TriangleMesh mesh = make_icosphere(centre, 1.0f, 5);
     const auto rays = rays_through_vertices_and_edges(mesh, centre);
     EXPECT_GT(rays.size(), 100000u);
-    EXPECT_EQ(count_escapes(mesh, rays), 0u);
+    EXPECT_EQ(count_escapes(mesh, rays, GetParam()), 0u);
 }
 
-TEST(Watertight, BumpySphereFarFromTheOriginFromOffCentre) {
+TEST_P(Watertight, BumpySphereFarFromTheOriginFromOffCentre) {
     // Coordinates near 3000 leave few mantissa bits for the edge functions.
     const glm::vec3 centre(3000.0f, -2000.0f, 1500.0f);
     const TriangleMesh mesh = make_icosphere(centre, 5.0f, 5, 0.1f, 11.0f);
     const auto rays = rays_through_vertices_and_edges(mesh, centre + glm::vec3(0.7f, -1.1f, 0.3f));
-    EXPECT_EQ(count_escapes(mesh, rays), 0u);
+    EXPECT_EQ(count_escapes(mesh, rays, GetParam()), 0u);
 }
 
-TEST(Watertight, CornellBoxClosedByAFrontWall) {
+TEST_P(Watertight, CornellBoxClosedByAFrontWall) {
     // The box is open at the front: close it with a quad over the opening, then every ray from
     // inside must stay inside.
     TriangleMesh mesh = test::load_cornell_box().mesh;
@@ -87,8 +91,10 @@ TEST(Watertight, CornellBoxClosedByAFrontWall) {
     // From a point above the blocks, every vertex and edge of the closed room is a target; the
     // block vertices occlude some targets, which only moves the hit nearer.
     const auto rays = rays_through_vertices_and_edges(mesh, glm::vec3(278.0f, 450.0f, 280.0f));
-    EXPECT_EQ(count_escapes(mesh, rays), 0u);
+    EXPECT_EQ(count_escapes(mesh, rays, GetParam()), 0u);
 }
+
+INSTANTIATE_TEST_SUITE_P(Layouts, Watertight, test::kAllBvhLayouts, test::bvh_layout_test_name);
 
 }  // namespace
 }  // namespace rc

@@ -2,13 +2,16 @@
 # Renders the path-traced references of the shipped scenes with the settings of the shipped ones
 # (65 536 samples per pixel, seed 20261123; moving-sphere every frame 0-23 at 16 384 samples;
 # kettle, the glossy kettle of the SDRC paper, 256 x 256 at 4096 samples, rendered on a CPU;
+# moving-light, the moving light of the temporal radiance caching report, every frame 0-15 at
+# 128 x 96 and 4096 samples, rendered on a CPU;
 # half floats: beauty, direct, indirect and the per-sample standard deviation of the beauty) and
 # writes beside each EXR the record of how it was made (tools/references.py). Layout:
 # scenes/NAME/reference.exr + reference.json for a still scene, scenes/NAME/reference/frameFFFF.exr
 # + frameFFFF.json for every frame of an animated one (scenes/README.md).
 #
 # Usage: tools/render-references.sh [--device SPEC] [--out DIR] [--spp N] [scene ...]
-#   scene ...      cornell-box glossy-box two-rooms moving-sphere kettle (default: all)
+#   scene ...      cornell-box glossy-box two-rooms moving-sphere kettle moving-light
+#                  (default: all)
 #   --device SPEC  the OpenCL device (radcache render --device: P:D or part of its name;
 #                  default: radcache's, the first GPU, else the first CPU device)
 #   --out DIR      write DIR/NAME/... instead of scenes/NAME/... (the same layout)
@@ -17,7 +20,8 @@
 # The radcache executable is $RADCACHE, else build/radcache. Each scene renders into a temporary
 # folder and replaces its old reference only once its render and records are complete.
 # One scene takes about a minute on an NVIDIA H100 (scenes/*/reference.json: seconds), hours on
-# a CPU (the kettle's 4096 samples: about 25 minutes on 2 CPU cores with PoCL).
+# a CPU (the kettle's 4096 samples: about 25 minutes on 2 CPU cores with PoCL; the moving
+# light's 16 frames about as long).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 radcache=${RADCACHE:-$root/build/radcache}
@@ -27,11 +31,11 @@ fail() { echo "render-references: $*" >&2; exit 2; }
 # animated scene (every one).
 seed=20261123
 declare -A spp=([cornell-box]=65536 [glossy-box]=65536 [two-rooms]=65536 [moving-sphere]=16384
-                [kettle]=4096)
+                [kettle]=4096 [moving-light]=4096)
 declare -A size=([cornell-box]=512x512 [glossy-box]=512x512 [two-rooms]=512x384
-                 [moving-sphere]=256x256 [kettle]=256x256)
-declare -A frames=([moving-sphere]=0:23)
-all=(cornell-box glossy-box two-rooms moving-sphere kettle)
+                 [moving-sphere]=256x256 [kettle]=256x256 [moving-light]=128x96)
+declare -A frames=([moving-sphere]=0:23 [moving-light]=0:15)
+all=(cornell-box glossy-box two-rooms moving-sphere kettle moving-light)
 
 out=$root/scenes
 spp_override=""

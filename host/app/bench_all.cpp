@@ -73,7 +73,7 @@ std::map<std::string, KernelTime> render_glossy_box(
         make_cache,
     const Keep& keep) {
     const Scene scene = load_scene(shipped_scene("glossy-box"));
-    const Bvh bvh = build_bvh(scene.mesh);
+    const Bvh bvh = build_bvh(scene.mesh, context.bvh_layout());
     const DeviceBvh device_bvh(context, bvh);
     const DeviceScene device_scene(context, scene);
     const FrameScene frame{context, scene, device_bvh, device_scene};

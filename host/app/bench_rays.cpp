@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -49,6 +50,40 @@ std::vector<OptionSpec> bench_rays_specs() {
     return specs;
 }
 
+// One layout's figures on one scene: the BVH's size and the four cases.
+nlohmann::json layout_report(const Bvh& bvh, const std::vector<RayCaseResult>& results) {
+    nlohmann::json entry;
+    entry["nodes"] = bvh.node_count();
+    entry["leaves"] = bvh.leaf_count;
+    entry["depth"] = bvh.depth;
+    entry["node_bytes"] = bvh.node_bytes();
+    entry["leaf_bytes"] = bvh.leaf_bytes();
+    entry["build_seconds"] = bvh.build_seconds;
+    for (const RayCaseResult& r : results) {
+        entry[r.name] = {{"rays", r.rays},
+                         {"device_mrays", r.device_mrays},
+                         {"embree_mrays", r.embree_mrays},
+                         {"ratio", r.ratio_per_thread},
+                         {"agreement", r.agreement}};
+    }
+    return entry;
+}
+
+void print_layout(const std::string& layout, const Bvh& bvh) {
+    std::printf("%-6s %9zu nodes %8.2f MB, %9zu leaves %8.2f MB, depth %2u, built in %.2f s\n",
+                layout.c_str(), bvh.node_count(), static_cast<double>(bvh.node_bytes()) * 1e-6,
+                bvh.leaf_count, static_cast<double>(bvh.leaf_bytes()) * 1e-6, bvh.depth,
+                bvh.build_seconds);
+}
+
+// The layouts --bvh names, else both (one context each: a program is built for one layout).
+std::vector<BvhLayout> measured_layouts(const ContextOptions& options) {
+    if (options.bvh_layout) {
+        return {*options.bvh_layout};
+    }
+    return {std::begin(kBvhLayouts), std::end(kBvhLayouts)};
+}
+
 }  // namespace
 
 int run_bench_rays(const std::vector<std::string>& args) {
@@ -58,9 +93,10 @@ int run_bench_rays(const std::vector<std::string>& args) {
         std::cout << format_help(
             "radcache bench rays [options]",
             "Measures closest-hit and any-hit throughput (Mrays/s) of the device traversal on\n"
-            "coherent (camera) and incoherent (diffuse bounce) rays, and Embree's rtcIntersect1 /\n"
-            "rtcOccluded1 on the same rays; ratio = device / Embree per thread (device threads =\n"
-            "compute units). 'agree' is the fraction of rays with the same answer.",
+            "coherent (camera) and incoherent (diffuse bounce) rays, in each BVH layout (bvh4 and\n"
+            "wide; --bvh picks one), and Embree's rtcIntersect1 / rtcOccluded1 on the same rays\n"
+            "right after each; ratio = device / Embree per thread (device threads = compute\n"
+            "units). 'agree' is the fraction of rays with the same answer.",
             specs);
         return 0;
     }
@@ -76,10 +112,16 @@ int run_bench_rays(const std::vector<std::string>& args) {
     const int repeats = static_cast<int>(arguments.integer("--repeat", 3, 1, 1000));
     const uint64_t seed = static_cast<uint64_t>(arguments.integer("--seed", 1, 0, 1LL << 62));
 
-    Context context(context_options(arguments));
+    std::vector<std::unique_ptr<Context>> contexts;
+    for (BvhLayout layout : measured_layouts(context_options(arguments))) {
+        ContextOptions options = context_options(arguments);
+        options.bvh_layout = layout;
+        contexts.push_back(std::make_unique<Context>(options));
+    }
+    const DeviceInfo& device = contexts.front()->device();
     const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
     const unsigned threads = static_cast<unsigned>(arguments.integer(
-        "--threads", std::min(hardware, std::max(1u, context.device().compute_units)), 1, 4096));
+        "--threads", std::min(hardware, std::max(1u, device.compute_units)), 1, 4096));
 
     nlohmann::json report = nlohmann::json::array();
     for (const std::string& scene_name : scenes) {
@@ -90,32 +132,36 @@ int run_bench_rays(const std::vector<std::string>& args) {
             std::max(1, static_cast<int>(std::lround(static_cast<double>(width) *
                                                      scene.camera.height / scene.camera.width))),
             1, 1 << 14));
-        RayBench bench(context, scene, threads, repeats);
-        const std::vector<shared::Ray> coherent =
-            bench.tracer().camera_rays(camera_params(scene.camera, width, height));
-        const std::vector<shared::Ray> incoherent =
-            bench.tracer().diffuse_bounce_rays(coherent, seed);
-        const std::vector<RayCaseResult> results = bench.run(coherent, incoherent);
-
         std::printf("\nscene %s: %zu triangles, device %s (%u compute units), Embree %u threads\n",
-                    scene_name.c_str(), scene.mesh.triangle_count(), context.device().name.c_str(),
-                    context.device().compute_units, threads);
-        std::printf("%-20s %10s %14s %14s %12s %10s\n", "case", "rays", "device Mray/s",
-                    "Embree Mray/s", "ratio/thread", "agree");
+                    scene_name.c_str(), scene.mesh.triangle_count(), device.name.c_str(),
+                    device.compute_units, threads);
         nlohmann::json entry;
-        entry["device"] = context.device().name;
+        entry["device"] = device.name;
         entry["scene"] = scene_name;
         entry["triangles"] = scene.mesh.triangle_count();
         entry["threads"] = threads;
-        entry["device_compute_units"] = context.device().compute_units;
-        for (const RayCaseResult& r : results) {
-            std::printf("%-20s %10zu %14.2f %14.2f %12.3f %9.4f%%\n", r.name.c_str(), r.rays,
-                        r.device_mrays, r.embree_mrays, r.ratio_per_thread, 100.0 * r.agreement);
-            entry[r.name] = {{"rays", r.rays},
-                             {"device_mrays", r.device_mrays},
-                             {"embree_mrays", r.embree_mrays},
-                             {"ratio", r.ratio_per_thread},
-                             {"agreement", r.agreement}};
+        entry["device_compute_units"] = device.compute_units;
+        std::vector<std::pair<std::string, std::vector<RayCaseResult>>> measured;
+        for (const std::unique_ptr<Context>& context : contexts) {
+            RayBench bench(*context, scene, threads, repeats);
+            const std::vector<shared::Ray> coherent =
+                bench.tracer().camera_rays(camera_params(scene.camera, width, height));
+            const std::vector<shared::Ray> incoherent =
+                bench.tracer().diffuse_bounce_rays(coherent, seed);
+            const std::string layout = bvh_layout_name(context->bvh_layout());
+            print_layout(layout, bench.bvh());
+            measured.emplace_back(layout, bench.run(coherent, incoherent));
+            entry["layouts"][layout] = layout_report(bench.bvh(), measured.back().second);
+        }
+        std::printf("%-20s %-6s %10s %14s %14s %12s %10s\n", "case", "layout", "rays",
+                    "device Mray/s", "Embree Mray/s", "ratio/thread", "agree");
+        for (size_t c = 0; c < measured.front().second.size(); ++c) {
+            for (const auto& [layout, results] : measured) {
+                const RayCaseResult& r = results[c];
+                std::printf("%-20s %-6s %10zu %14.2f %14.2f %12.3f %9.4f%%\n", r.name.c_str(),
+                            layout.c_str(), r.rays, r.device_mrays, r.embree_mrays,
+                            r.ratio_per_thread, 100.0 * r.agreement);
+            }
         }
         report.push_back(entry);
     }

@@ -1,5 +1,7 @@
 #include "app/device_options.h"
 
+#include "util/error.h"
+
 namespace rc {
 
 std::vector<OptionSpec> device_option_specs() {
@@ -16,6 +18,9 @@ std::vector<OptionSpec> device_option_specs() {
         {"--device-memory", "", "MIB",
          "the most device memory a run may hold in buffers (default: the device's global "
          "memory); a run that needs more is refused with the figure"},
+        {"--bvh", "", "LAYOUT",
+         "BVH layout the traversal uses: wide (8-wide, compressed; the default) or bvh4 (4-wide, "
+         "float boxes); docs/bvh.md"},
     };
 }
 
@@ -32,6 +37,13 @@ ContextOptions context_options(const ParsedArguments& arguments) {
         static_cast<size_t>(arguments.integer("--max-chunk", 0, 1, 1LL << 31));
     options.memory_limit =
         static_cast<uint64_t>(arguments.integer("--device-memory", 0, 1, 1LL << 40)) << 20;
+    if (arguments.has("--bvh")) {
+        const std::string name = arguments.value("--bvh");
+        options.bvh_layout = parse_bvh_layout(name);
+        if (!options.bvh_layout) {
+            throw Error("--bvh: unknown BVH layout '" + name + "' (bvh4 or wide)", kExitUsage);
+        }
+    }
     return options;
 }
 

@@ -15,7 +15,7 @@ double median(std::vector<double> values) {
 
 RayBench::RayBench(Context& context, const Scene& scene, unsigned embree_threads, int repeats)
     : context_(context),
-      bvh_(build_bvh(scene.mesh)),
+      bvh_(build_bvh(scene.mesh, context.bvh_layout())),
       device_bvh_(context, bvh_),
       tracer_(context, device_bvh_),
       embree_(scene.mesh),

@@ -30,6 +30,7 @@ class RayBench {
     RayBench(Context& context, const Scene& scene, unsigned embree_threads, int repeats);
 
     DeviceTracer& tracer() { return tracer_; }
+    const Bvh& bvh() const { return bvh_; }
     const DeviceBvh& device_bvh() const { return device_bvh_; }
 
     // The four cases on camera rays (coherent) and their diffuse bounces (incoherent).

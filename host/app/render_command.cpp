@@ -28,7 +28,7 @@ void render_frame(const RenderJob& job, int frame, Context& context, Scene& scen
     }
     const std::filesystem::path output = frame_path(job.output_pattern, frame);
     auto start = SteadyClock::now();
-    bvh = build_bvh(scene.mesh);
+    bvh = build_bvh(scene.mesh, context.bvh_layout());
     totals.phase("bvh") += seconds_since(start);
     start = SteadyClock::now();
     const DeviceBvh device_bvh(context, bvh);
@@ -46,6 +46,14 @@ void render_frame(const RenderJob& job, int frame, Context& context, Scene& scen
     };
     hooks.intermediate = [&](int spp, const Image& image) {
         write_image(intermediate_path(output, spp), written(image), job.write_options);
+    };
+    hooks.visit_frame = [&](int other, const std::function<void(const FrameScene&)>& use) {
+        Scene posed = scene;
+        posed.set_frame(other);
+        const Bvh other_bvh = build_bvh(posed.mesh, context.bvh_layout());
+        const DeviceBvh other_device_bvh(context, other_bvh);
+        const DeviceScene other_device_scene(context, posed);
+        use({context, posed, other_device_bvh, other_device_scene, other});
     };
     const FrameResult result =
         method.render_frame({context, scene, device_bvh, device_scene, frame}, hooks);

@@ -68,6 +68,8 @@ int frame_number(const std::string& text, const std::string& frames) {
     return static_cast<int>(number);
 }
 
+}  // namespace
+
 FrameRange parse_frames(const std::string& text) {
     static const std::regex form(R"(^(-?\d+):(-?\d+)$)");
     std::smatch match;
@@ -83,6 +85,8 @@ FrameRange parse_frames(const std::string& text) {
     }
     return range;
 }
+
+namespace {
 
 std::vector<std::string> parse_layers(const std::string& text) {
     std::vector<std::string> layers;
@@ -129,6 +133,18 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
     for (const std::string& assignment : arguments.values("-D")) {
         overrides_only.apply_override(assignment);  // validates the keys before loading
     }
+    // Every value the command line gives that does not depend on the scene is range-checked
+    // before it loads, so that a bad one is the only line printed (issue 17).
+    const RenderSettings settings = render_settings(arguments, overrides_only);
+    const MethodSettings method = method_settings(arguments, settings, job, 0, 0);
+    context_options(arguments);
+    if (arguments.has("--method")) {
+        // A method made only to check its options (making one reads nothing and allocates no
+        // device memory); the render makes its own with the scene's settings.
+        const MethodEntry& entry = find_method(settings.method);
+        refuse_foreign_options(entry, arguments);
+        entry.create(arguments, method);
+    }
     job.write_options.half = arguments.has("--half");
     if (arguments.has("--aovs")) {
         job.layers = parse_layers(arguments.value("--aovs"));
@@ -161,6 +177,7 @@ MethodSettings method_settings(const ParsedArguments& arguments, const RenderSet
     method.rr_depth = settings.rr_depth;
     const long long frames = static_cast<long long>(last) - first + 1;
     method.frame_count = static_cast<int>(std::min<long long>(frames, 1 << 30));
+    method.first_frame = first;
     method.layers = job.layers;
     return method;
 }

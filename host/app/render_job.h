@@ -23,6 +23,9 @@ struct FrameRange {
     bool given = false;  // --frames A:B; otherwise the scene's first frame alone
 };
 
+// --frames A:B: Error (exit status 2) naming --frames for another form or when B < A.
+FrameRange parse_frames(const std::string& text);
+
 struct RenderJob {
     std::filesystem::path scene;
     std::string output_pattern;  // #### becomes the frame number
@@ -33,7 +36,8 @@ struct RenderJob {
 };
 
 // Checks everything that can be checked before loading the scene (output and stats paths,
-// --frames, --aovs, -D keys); Error (exit status 2) naming the option otherwise.
+// --frames, --aovs, -D keys, the ranges of the numeric options, --method and the options it
+// takes); Error (exit status 2) naming the option otherwise.
 RenderJob read_render_job(const ParsedArguments& arguments);
 
 // The scene's render defaults overridden by -D and then by --method, --spp, --seed, --exposure.

@@ -93,7 +93,8 @@ nlohmann::json RenderTotals::json(const RenderSettings& settings, const Scene& s
     stats["memory"] = {{"host_peak_resident_bytes", host_peak_},
                        {"device_peak_bytes", device_peak_},
                        {"device_global_bytes", context.device().global_memory}};
-    stats["bvh"] = {{"nodes", bvh.nodes.size()},
+    stats["bvh"] = {{"layout", bvh_layout_name(bvh.layout)},
+                    {"nodes", bvh.node_count()},
                     {"leaves", bvh.leaf_count},
                     {"depth", bvh.depth},
                     {"bytes", bvh.device_bytes()}};

@@ -10,9 +10,10 @@ namespace rc {
 class Context;
 
 struct DeviceBvh {
+    // The BVH must be in the layout the context's programs are built for (Context::bvh_layout).
     DeviceBvh(Context& context, const Bvh& bvh);
 
-    Buffer<shared::BvhNode> nodes;
+    DeviceBuffer nodes;  // BvhNode or WideBvhNode records, by the layout
     Buffer<shared::Triangle> triangles;
     Buffer<unsigned> triangle_of_primitive;
 };

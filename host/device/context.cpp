@@ -35,6 +35,7 @@ size_t round_up(size_t value, size_t multiple) {
 Context::Context(const ContextOptions& options)
     : options_(options),
       device_(select_device(list_devices(), options.device_spec)),
+      bvh_layout_(options.bvh_layout.value_or(default_bvh_layout())),
       sources_(kernel_dir_option(options)),
       cache_(options.cache_dir) {
     cl_int status = CL_SUCCESS;
@@ -74,7 +75,9 @@ const Program& Context::program(const std::string& entry, const std::string& opt
     const std::string key = entry + "\n" + options;
     auto found = programs_.find(key);
     if (found == programs_.end()) {
-        auto program = std::make_unique<Program>(context_, device_, sources_, cache_, entry,
+        const std::string layout =
+            "-DRC_BVH_LAYOUT=" + std::to_string(static_cast<int>(bvh_layout_));
+        auto program = std::make_unique<Program>(context_, device_, sources_, cache_, entry, layout,
                                                  options, options_.dump_kernels_dir);
         builds_.push_back(program->report());
         found = programs_.emplace(key, std::move(program)).first;

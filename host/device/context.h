@@ -12,6 +12,7 @@
 
 #include "device/binary_cache.h"
 #include "device/buffer.h"
+#include "device/bvh_layout.h"
 #include "device/device_list.h"
 #include "device/kernel.h"
 #include "device/kernel_sources.h"
@@ -31,6 +32,7 @@ struct ContextOptions {
     size_t max_chunk_items = 0;              // largest launch; 0: the default (2^20)
     double chunk_seconds = 0.1;              // launches aim at this duration
     uint64_t memory_limit = 0;  // most bytes held in buffers at once; 0: the global memory
+    std::optional<BvhLayout> bvh_layout;  // --bvh; none: default_bvh_layout()
 };
 
 // Device memory held in this context's buffers (DeviceBuffer), in bytes: now, and the most since
@@ -63,8 +65,11 @@ class Context {
 
     const DeviceInfo& device() const { return device_; }
     const ContextOptions& options() const { return options_; }
+    // The BVH layout every program's traversal is built for (device/bvh_layout.h).
+    BvhLayout bvh_layout() const { return bvh_layout_; }
 
-    // The program built from `entry` (relative to kernels/) with -D `options`, built once.
+    // The program built from `entry` (relative to kernels/) with -D `options` and the BVH
+    // layout's -DRC_BVH_LAYOUT, built once.
     const Program& program(const std::string& entry, const std::string& options = "");
     Kernel kernel(const std::string& entry, const std::string& name,
                   const std::string& options = "");
@@ -119,6 +124,7 @@ class Context {
 
     ContextOptions options_;
     DeviceInfo device_;
+    BvhLayout bvh_layout_;
     KernelSources sources_;
     BinaryCache cache_;
     _cl_context* context_ = nullptr;

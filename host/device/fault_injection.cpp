@@ -17,9 +17,12 @@ struct FaultState {
     std::map<std::string, long long, std::less<>> live;
 };
 
+// Never destroyed: OpenCL objects held by other statics (a test's shared contexts, made before the
+// first call here) are released during static destruction, after a function-local static made
+// later would already be gone.
 FaultState& state() {
-    static FaultState fault;
-    return fault;
+    static FaultState* const fault = new FaultState;
+    return *fault;
 }
 
 }  // namespace

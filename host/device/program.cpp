@@ -71,14 +71,15 @@ std::vector<unsigned char> program_binary(cl_program program, const std::string&
 }  // namespace
 
 Program::Program(_cl_context* context, const DeviceInfo& device, const KernelSources& sources,
-                 const BinaryCache& cache, const std::string& entry, const std::string& options,
+                 const BinaryCache& cache, const std::string& entry,
+                 const std::string& context_defines, const std::string& options,
                  const std::filesystem::path& dump_dir)
     : entry_(entry) {
     const auto start = std::chrono::steady_clock::now();
     report_.entry = entry;
     const std::string source = sources.expand(entry);
     const std::string all_options =
-        options.empty() ? std::string(kBaseOptions) : std::string(kBaseOptions) + " " + options;
+        std::string(kBaseOptions) + " " + context_defines + (options.empty() ? "" : " " + options);
     if (!dump_dir.empty()) {
         // One file per entry and options: "dir/entry.cl" built with "-DX=1" is dir_entry.DX_1.cl.
         std::string flat = entry;

@@ -25,13 +25,13 @@ struct ProgramBuildReport {
 
 class Program {
    public:
-    // Builds `entry` (a path relative to kernels/) with `options` (-D definitions) for the
-    // device. Uses the binary cache when it holds a valid entry; otherwise compiles and stores.
-    // A failed compilation throws Error with the full build log. When `dump_dir` is not empty the
-    // expanded source is written there.
+    // Builds `entry` (a path relative to kernels/) with `context_defines` (what every program of
+    // the Context gets) and `options` (-D definitions) for the device. Uses the binary cache when
+    // it holds a valid entry; otherwise compiles and stores. A failed compilation throws Error with
+    // the full build log. When `dump_dir` is not empty the expanded source is written there.
     Program(_cl_context* context, const DeviceInfo& device, const KernelSources& sources,
-            const BinaryCache& cache, const std::string& entry, const std::string& options,
-            const std::filesystem::path& dump_dir = {});
+            const BinaryCache& cache, const std::string& entry, const std::string& context_defines,
+            const std::string& options, const std::filesystem::path& dump_dir = {});
     ~Program();
     Program(const Program&) = delete;
     Program& operator=(const Program&) = delete;

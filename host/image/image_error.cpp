@@ -13,8 +13,6 @@ double relative_squared_error(double value, double reference) {
     return d * d / (reference * reference + 0.01);
 }
 
-namespace {
-
 void check_comparable(const Image& test, const Image& reference, const std::string& test_name) {
     if (test.width != reference.width || test.height != reference.height) {
         throw Error(test_name + ": " + std::to_string(test.width) + "x" +
@@ -38,6 +36,8 @@ void check_mask(const PixelMask& mask, const Image& reference, const std::string
                     kExitUsage);
     }
 }
+
+namespace {
 
 // sRGB transfer function, display value to linear.
 float srgb_to_linear(float v) {

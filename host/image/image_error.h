@@ -55,6 +55,13 @@ NonfinitePixels count_nonfinite_pixels(const Image& test, const Image& reference
 // A one-channel mask of the pixels `mask` selects that are finite in both images (1, else 0).
 Image finite_pixel_mask(const Image& test, const Image& reference, PixelMask mask = {});
 
+// Error naming `test_name` when `test` and `reference` differ in size or channel count.
+void check_comparable(const Image& test, const Image& reference, const std::string& test_name);
+
+// Error (exit status 2) naming `test_name` when `mask` is set and its size differs from
+// `reference`'s.
+void check_mask(const PixelMask& mask, const Image& reference, const std::string& test_name);
+
 // The relMSE term of one value: (v - r)^2 / (r^2 + 0.01).
 double relative_squared_error(double value, double reference);
 

@@ -29,6 +29,7 @@ struct MethodSettings {
     int max_depth = 64;
     int rr_depth = 3;
     int frame_count = 1;              // frames this render will ask for
+    int first_frame = 0;              // the first of them (they come in order, one apart)
     std::vector<std::string> layers;  // the AOV layers that will be written (empty: all)
 
     // Whether `layer` will be written.
@@ -55,6 +56,10 @@ struct FrameHooks {
     std::function<void(double fraction, const std::string& note)> progress;
     // Writes an intermediate image of the frame after `spp` samples per pixel (name.sppN.ext).
     std::function<void(int spp, const Image& image)> intermediate;
+    // Calls `use` with another frame of the render's scene posed, its BVH and scene buffers on the
+    // device (for methods that look ahead: temporal caching's two passes). The frame being
+    // rendered stays as it was.
+    std::function<void(int frame, const std::function<void(const FrameScene&)>& use)> visit_frame;
 };
 
 // A rendered frame: its image (every layer of the method), the counts the frame loop adds up,

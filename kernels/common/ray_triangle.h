@@ -11,6 +11,7 @@ typedef struct WatertightRay {
     float4 origin;  // xyz: ray origin
     uint4 permute;  // (kx, ky, kz, 3): kz is the dominant axis of the direction
     float shear_x, shear_y, shear_z;
+    float permuted_origin_x, permuted_origin_y, permuted_origin_z;  // origin (kx, ky, kz)
 } WatertightRay;
 
 RC_FUNC WatertightRay rc_watertight_ray(float3 origin, float3 direction) {
@@ -33,6 +34,10 @@ RC_FUNC WatertightRay rc_watertight_ray(float3 origin, float3 direction) {
     r.shear_y = dp.y / dp.z;
     r.shear_z = 1.0f / dp.z;
     r.origin = (float4)(origin, 0.0f);
+    const float4 o = rc_shuffle(r.origin, r.permute);
+    r.permuted_origin_x = o.x;
+    r.permuted_origin_y = o.y;
+    r.permuted_origin_z = o.z;
     return r;
 }
 
@@ -86,4 +91,56 @@ RC_FUNC bool rc_intersect_triangle(const WatertightRay* r, float4 v0, float4 v1,
     *u = e1 * inv_det;
     *v = e2 * inv_det;
     return true;
+}
+
+// The same test of the four triangles of a packet at once, lane by lane the very operations of
+// rc_intersect_triangle (so the same t, u and v, bit for bit); returns the lanes hit in
+// (tmin, tmax] as -1.
+RC_FUNC int4 rc_intersect_triangle_packet(const WatertightRay* r,
+                                          RC_GLOBAL const TrianglePacket* packet, float tmin,
+                                          float tmax, float4* t, float4* u, float4* v) {
+    RC_NO_FP_CONTRACT
+    const uint kx = r->permute.x;
+    const uint ky = r->permute.y;
+    const uint kz = r->permute.z;
+    // Vertices relative to the origin, permuted so that z is the dominant ray axis.
+    const float4 az = packet->v0[kz] - r->permuted_origin_z;
+    const float4 bz = packet->v1[kz] - r->permuted_origin_z;
+    const float4 cz = packet->v2[kz] - r->permuted_origin_z;
+    const float4 ax = (packet->v0[kx] - r->permuted_origin_x) - r->shear_x * az;
+    const float4 ay = (packet->v0[ky] - r->permuted_origin_y) - r->shear_y * az;
+    const float4 bx = (packet->v1[kx] - r->permuted_origin_x) - r->shear_x * bz;
+    const float4 by = (packet->v1[ky] - r->permuted_origin_y) - r->shear_y * bz;
+    const float4 cx = (packet->v2[kx] - r->permuted_origin_x) - r->shear_x * cz;
+    const float4 cy = (packet->v2[ky] - r->permuted_origin_y) - r->shear_y * cz;
+    float4 e0 = cx * by - cy * bx;
+    float4 e1 = ax * cy - ay * cx;
+    float4 e2 = bx * ay - by * ax;
+#ifdef RC_HAS_DOUBLE
+    const int4 zero = e0 == 0.0f || e1 == 0.0f || e2 == 0.0f;
+    if (any(zero)) {
+        const double4 dax = convert_double4(ax), day = convert_double4(ay);
+        const double4 dbx = convert_double4(bx), dby = convert_double4(by);
+        const double4 dcx = convert_double4(cx), dcy = convert_double4(cy);
+        e0 = select(e0, convert_float4(dcx * dby - dcy * dbx), zero);
+        e1 = select(e1, convert_float4(dax * dcy - day * dcx), zero);
+        e2 = select(e2, convert_float4(dbx * day - dby * dax), zero);
+    }
+#endif
+    const int4 mixed_signs =
+        (e0 < 0.0f || e1 < 0.0f || e2 < 0.0f) && (e0 > 0.0f || e1 > 0.0f || e2 > 0.0f);
+    const float4 det = e0 + e1 + e2;
+    const float4 scaled_t = r->shear_z * (e0 * az + e1 * bz + e2 * cz);
+    const float4 det_abs = fabs(det);
+    const float4 signed_t = select(scaled_t, -scaled_t, det < 0.0f);
+    const int4 hit =
+        !mixed_signs && det != 0.0f && signed_t > tmin * det_abs && signed_t <= tmax * det_abs;
+    if (!any(hit)) {
+        return hit;
+    }
+    const float4 inv_det = 1.0f / det;
+    *t = scaled_t * inv_det;
+    *u = e1 * inv_det;
+    *v = e2 * inv_det;
+    return hit;
 }

@@ -6,11 +6,12 @@
 #include "common/material.h"
 #include "common/math.h"
 #include "common/texture.h"
+#include "common/traversal_node.h"
 #include "common/triangle_geometry.h"
 #include "shared/types.h"
 
 typedef struct SceneData {
-    RC_GLOBAL const BvhNode* nodes;
+    RC_GLOBAL const TraversalNode* nodes;
     RC_GLOBAL const Triangle* triangles;
     RC_GLOBAL const uint* triangle_of_primitive;
     RC_GLOBAL const TriangleShading* shading;

@@ -183,6 +183,33 @@ __kernel void ic_splat(uint begin, uint end, IcParams params, SplatTileGrid tile
                                               payloads, i, g.position.xyz, g.normal.xyz);
 }
 
+// Item i: camera sample i; marks used[r] = 1 for every record r of its tile's list that weighs
+// it positively (the records that serve the image: temporal caching replaces only those when they
+// expire, the report's "Replacement/Deletion Method"). Only the value 1 is ever written, so the
+// result does not depend on the order.
+__kernel void ic_records_used(uint begin, uint end, IcParams params, SplatTileGrid tiles,
+                              __global const int* tile_start, __global const int* tile_records,
+                              __global const Record* records,
+                              __global const IrradiancePayload* payloads,
+                              __global const GBufferSample* gbuffer, __global uint* used) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const GBufferSample g = gbuffer[i];
+    if (g.served == 0) {
+        return;
+    }
+    const uint tile = rc_ic_sample_tile(&params, &tiles, i);
+    for (int k = tile_start[tile]; k < tile_start[tile + 1]; ++k) {
+        const int r = tile_records[k];
+        if (rc_ic_weight(records + r, payloads + r, g.position.xyz, g.normal.xyz, params.accuracy,
+                         params.max_weight) > 0.0f) {
+            atomic_or(&used[r], 1u);
+        }
+    }
+}
+
 // The render pass (course, "Radiance Cache Splatting", Algorithm 2 step 5): every camera sample
 // reads its entry of the splat buffer (ic_splat over every camera sample) for the diffuse lobe's
 // cached light. Item = pixel: shades its camera samples and writes the pixel's means to film

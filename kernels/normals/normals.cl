@@ -2,7 +2,8 @@
 #include "normals/normals.h"
 
 __kernel void render_normals(uint begin, uint end, CameraParams camera,
-                             __global const BvhNode* nodes, __global const Triangle* triangles,
+                             __global const TraversalNode* nodes,
+                             __global const Triangle* triangles,
                              __global const uint* triangle_of_primitive, uint samples, uint seed_lo,
                              uint seed_hi, __global float4* film) {
     const uint pixel = begin + (uint)get_global_id(0);

@@ -9,7 +9,7 @@
 
 // Colour of one camera sample: the normal facing the camera mapped to [0, 1]^3, darkened by the
 // cosine to the viewer; black where the ray escapes.
-RC_FUNC float3 rc_normals_sample(const CameraParams* camera, RC_GLOBAL const BvhNode* nodes,
+RC_FUNC float3 rc_normals_sample(const CameraParams* camera, RC_GLOBAL const TraversalNode* nodes,
                                  RC_GLOBAL const Triangle* triangles,
                                  RC_GLOBAL const uint* triangle_of_primitive, float x, float y) {
     const Ray ray = rc_camera_ray(camera, x, y);
@@ -26,7 +26,7 @@ RC_FUNC float3 rc_normals_sample(const CameraParams* camera, RC_GLOBAL const Bvh
 }
 
 // The pixel's value: the mean of `samples` jittered samples (one centred sample when 1).
-RC_FUNC float4 rc_normals_pixel(const CameraParams* camera, RC_GLOBAL const BvhNode* nodes,
+RC_FUNC float4 rc_normals_pixel(const CameraParams* camera, RC_GLOBAL const TraversalNode* nodes,
                                 RC_GLOBAL const Triangle* triangles,
                                 RC_GLOBAL const uint* triangle_of_primitive, uint pixel,
                                 uint samples, uint seed_lo, uint seed_hi) {

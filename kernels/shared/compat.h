@@ -49,6 +49,7 @@
 namespace rc::shared {
 
 using uint = unsigned int;
+using uchar = unsigned char;
 
 // OpenCL's 4-wide vectors are 16-byte aligned; these host twins have the same size and alignment.
 struct alignas(16) float4 {

@@ -1,6 +1,7 @@
-// Plain structs shared by the host (C++) and the kernels (OpenCL C). Only float, int, uint and
-// 4-wide vectors, explicitly padded: no float3, whose size differs between host and device.
-// tests/shared_layout_test.cpp compares every layout listed in RC_SHARED_LAYOUTS on the device.
+// Plain structs shared by the host (C++) and the kernels (OpenCL C). Only float, int, uint, uchar
+// arrays and 4-wide vectors, explicitly padded: no float3, whose size differs between host and
+// device. tests/shared_layout_test.cpp compares every layout listed in RC_SHARED_LAYOUTS on the
+// device.
 #pragma once
 
 #include "compat.h"
@@ -11,6 +12,16 @@
 // Depth bound given to Embree's builder; the traversal stack holds 3 entries per level.
 #define RC_BVH_MAX_DEPTH 32
 #define RC_BVH_STACK_SIZE (3 * RC_BVH_MAX_DEPTH + 1)
+// The compressed wide BVH (WideBvhNode): children per node, triangles per leaf (in packets of
+// four; a child's meta byte holds its packet count in 3 bits and its offset among the node's
+// packets in 5), and the stack of its traversals: 7 entries per level.
+#define RC_WIDE_BVH_WIDTH 8
+#define RC_WIDE_BVH_MAX_LEAF_SIZE 8
+#define RC_WIDE_BVH_STACK_SIZE ((RC_WIDE_BVH_WIDTH - 1) * RC_BVH_MAX_DEPTH + 1)
+// The BVH layouts a program's traversal can be built for: the host's Context passes one as
+// -DRC_BVH_LAYOUT to every program (host/device/bvh_layout.h, docs/bvh.md).
+#define RC_BVH_LAYOUT_BVH4 1
+#define RC_BVH_LAYOUT_WIDE 2
 // Hit.primitive of a ray that hit nothing.
 #define RC_NO_HIT 0xffffffffu
 
@@ -42,6 +53,40 @@ typedef struct BvhNode {
     int4 child;
     int4 count;
 } BvhNode;
+
+// A node of the compressed 8-wide BVH (docs/bvh.md; after Ylitie, Karras and Laine, "Efficient
+// Incoherent Ray Traversal on GPUs Through Compressed Wide BVHs", HPG 2017, §3.1). Child i's box
+// has the planes origin + q * 2^(exponent - 127) per axis, q the child's byte in lower_* and
+// upper_*, rounded outwards when built, so the box holds the child's exact bounds. Inner
+// children take the first slots, then leaves, then unused slots. Child i is
+//   an inner node when bit i of inner_mask is set: node child_base + i;
+//   a leaf when meta[i] is not 0: meta[i] >> 5 TrianglePackets from packet packet_base +
+//   (meta[i] & 31), packets counted from the start of the node buffer (they follow the nodes);
+//   unused otherwise (meta 0, an inverted box: lower 255, upper 0).
+typedef struct WideBvhNode {
+    float origin_x, origin_y, origin_z;
+    uint child_base;
+    uint packet_base;
+    uchar exponent_x, exponent_y, exponent_z;
+    uchar inner_mask;
+    uchar meta[RC_WIDE_BVH_WIDTH];
+    uchar lower_x[RC_WIDE_BVH_WIDTH];
+    uchar upper_x[RC_WIDE_BVH_WIDTH];
+    uchar lower_y[RC_WIDE_BVH_WIDTH];
+    uchar upper_y[RC_WIDE_BVH_WIDTH];
+    uchar lower_z[RC_WIDE_BVH_WIDTH];
+    uchar upper_z[RC_WIDE_BVH_WIDTH];
+} WideBvhNode;
+
+// Up to four triangles of a leaf of the compressed wide BVH, by axis for a float4 test of all
+// four at once (kernels/common/ray_triangle.h): v0[axis] holds that coordinate of the four
+// triangles' first vertices. A leaf of fewer than four repeats its first triangle.
+typedef struct TrianglePacket {
+    float4 v0[3];
+    float4 v1[3];
+    float4 v2[3];
+    uint4 primitive;  // the triangles' scene indices
+} TrianglePacket;
 
 // A triangle in BVH leaf order: its three vertices; v0.w holds the bits of its primitive index
 // in the scene (rc_as_uint).
@@ -231,6 +276,22 @@ RC_SHARED_END
     FIELD(BvhNode, upper_z)                \
     FIELD(BvhNode, child)                  \
     FIELD(BvhNode, count)                  \
+    STRUCT(WideBvhNode)                    \
+    FIELD(WideBvhNode, origin_x)           \
+    FIELD(WideBvhNode, origin_z)           \
+    FIELD(WideBvhNode, child_base)         \
+    FIELD(WideBvhNode, packet_base)        \
+    FIELD(WideBvhNode, exponent_x)         \
+    FIELD(WideBvhNode, exponent_z)         \
+    FIELD(WideBvhNode, inner_mask)         \
+    FIELD(WideBvhNode, meta)               \
+    FIELD(WideBvhNode, lower_x)            \
+    FIELD(WideBvhNode, upper_z)            \
+    STRUCT(TrianglePacket)                 \
+    FIELD(TrianglePacket, v0)              \
+    FIELD(TrianglePacket, v1)              \
+    FIELD(TrianglePacket, v2)              \
+    FIELD(TrianglePacket, primitive)       \
     STRUCT(Triangle)                       \
     FIELD(Triangle, v0)                    \
     FIELD(Triangle, v1)                    \
@@ -343,6 +404,9 @@ static_assert(sizeof(rc::shared::Ray) == 32);
 static_assert(sizeof(rc::shared::Hit) == 16);
 static_assert(sizeof(rc::shared::BvhNode) == 128);
 static_assert(offsetof(rc::shared::BvhNode, child) == 96);
+static_assert(sizeof(rc::shared::WideBvhNode) == 80);
+static_assert(offsetof(rc::shared::WideBvhNode, meta) == 24);
+static_assert(sizeof(rc::shared::TrianglePacket) == 160);
 static_assert(sizeof(rc::shared::Triangle) == 48);
 static_assert(sizeof(rc::shared::CameraParams) == 80);
 static_assert(sizeof(rc::shared::Material) == 64);

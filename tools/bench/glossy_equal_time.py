@@ -4,13 +4,17 @@ targets: on the kettle, `sdrc`'s relMSE of the image and of the glossy pixels' i
 below `rc`'s and `pt`'s at `sdrc`'s render time).
 
 On one scene (default scenes/kettle), all in this one invocation on one device with warm kernel
-binaries (one untimed small render of each method first); times are the render phase of
-`--stats` (scene loading, device start and image writing excluded):
+binaries (one untimed small render of each method first). The clock (--clock): `wall`, the render
+phase of `--stats` (scene loading, device start and image writing excluded), for an otherwise idle
+machine; or `cpu` (the default), the CPU seconds (user + system) of the whole radcache process,
+which other processes on a shared machine barely change (PoCL's threads are counted; the process's
+set-up, about 0.1 s, too):
 
   1. `sdrc` at its defaults (the scene's spp): its time T and errors.
   2. `rc` at its defaults, then at the camera-sample count its first time predicts for T: its
-     errors at T interpolated log-log in time between the two runs (extrapolated when both land
-     on one side of T, and then said so).
+     errors at T interpolated log-log in time between the run just below T and the run just
+     above; when no run brackets T, the nearest run's errors scaled by its time over T (the
+     Monte Carlo rate 1/time: generous to `rc` when its run was faster than T), and then said so.
   3. `pt` with --save-every-pow2 up to --pt-spp: its errors at T interpolated log-log between
      the powers of two that bracket T (a pass costs the same whatever its index, so the time of
      N samples is the run's time times N / total).
@@ -20,8 +24,9 @@ of the reference's noise), and relMSE of the indirect layer over the glossy pixe
 `sdrc`'s `sdrc-hits` layer is positive (the pixels whose camera samples have a specular lobe
 SDRC serves), through `compare --mask`.
 
-Usage: tools/bench/glossy_equal_time.py [--scene scenes/kettle] [--pt-spp 1024]
-           [--out build/bench/glossy] [-- extra radcache render options, e.g. --device 0:0]
+Usage: tools/bench/glossy_equal_time.py [--scene scenes/kettle] [--pt-spp 1024] [--clock cpu]
+           [--sdrc-options "--sdrc-interp 8"] [--out build/bench/glossy]
+           [-- extra radcache render options for every render, e.g. --device 0:0]
 Writes OUT/glossy_equal_time.json and prints a table. Python 3 standard library only.
 """
 
@@ -29,6 +34,8 @@ import argparse
 import json
 import math
 import os
+import resource
+import shlex
 import subprocess
 import sys
 
@@ -45,11 +52,21 @@ def run(args):
     return result.stdout
 
 
+def cpu_seconds():
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 def render(scene, output, options):
+    """The render's --stats, with "cpu_seconds": its process's CPU time."""
     stats = os.path.splitext(output)[0] + ".stats.json"
+    before = cpu_seconds()
     run(["render", scene, "-o", output, "--stats", stats, "--quiet"] + options)
+    cpu = cpu_seconds() - before
     with open(stats) as f:
-        return json.load(f)
+        result = json.load(f)
+    result["cpu_seconds"] = cpu
+    return result
 
 
 def errors(image, reference, mask, out):
@@ -83,8 +100,24 @@ def log_interpolate(t, a, b):
     return result
 
 
+CLOCK = "cpu"
+
+
 def seconds(stats):
-    return stats["seconds"]["render"]
+    return stats["cpu_seconds"] if CLOCK == "cpu" else stats["seconds"]["render"]
+
+
+def at_time(target, runs):
+    """Errors of `runs` (sorted by time) at `target`: interpolated between the runs that bracket
+    it, else the nearest run's scaled by its time over target (error ~ 1 / time). Returns the
+    errors and whether they were interpolated."""
+    below = [r for r in runs if r["seconds"] <= target]
+    above = [r for r in runs if r["seconds"] >= target]
+    if below and above:
+        return log_interpolate(target, below[-1], above[0]), True
+    nearest = below[-1] if below else above[0]
+    scale = nearest["seconds"] / target
+    return {k: (nearest[k] * scale if nearest[k] is not None else None) for k in KEYS}, False
 
 
 def main(argv):
@@ -93,6 +126,9 @@ def main(argv):
     parser.add_argument("--pt-spp", type=int, default=1024,
                         help="path tracer's samples per pixel (a power of two; its run must "
                              "outlast sdrc's)")
+    parser.add_argument("--clock", choices=["cpu", "wall"], default="cpu")
+    parser.add_argument("--sdrc-options", default="",
+                        help="options of the sdrc render (quoted), e.g. \"--sdrc-interp 8\"")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "glossy"))
     if "--" in argv:
         split = argv.index("--")
@@ -101,6 +137,9 @@ def main(argv):
     else:
         args = parser.parse_args(argv)
         extra = []
+    global CLOCK
+    CLOCK = args.clock
+    sdrc_options = shlex.split(args.sdrc_options)
     scene_dir = args.scene if os.path.isdir(args.scene) else os.path.dirname(args.scene)
     scene = os.path.join(scene_dir, "scene.json")
     reference = references.reference_path(scene_dir)
@@ -111,7 +150,7 @@ def main(argv):
         render(scene, out("warm-%s.exr" % method),
                ["--method", method, "--spp", "1", "--width", "32", "--height", "32"] + extra)
 
-    sdrc_stats = render(scene, out("sdrc.exr"), ["--method", "sdrc"] + extra)
+    sdrc_stats = render(scene, out("sdrc.exr"), ["--method", "sdrc"] + sdrc_options + extra)
     mask = out("sdrc.exr")
     target = seconds(sdrc_stats)
     spp = sdrc_stats["spp"]
@@ -129,12 +168,11 @@ def main(argv):
             break
         rc_spp = next_spp
     rc_runs.sort(key=lambda r: r["seconds"])
-    rc_at = log_interpolate(target, rc_runs[0], rc_runs[-1])
-    rc_brackets = rc_runs[0]["seconds"] <= target <= rc_runs[-1]["seconds"]
+    rc_at, rc_brackets = at_time(target, rc_runs)
 
     pt_stats = render(scene, out("pt.exr"),
                       ["--method", "pt", "--spp", str(args.pt_spp), "--save-every-pow2"] + extra)
-    pt_total = seconds(pt_stats)
+    pt_total = seconds(pt_stats)  # a pass costs the same whatever its index
     pt_points = []
     n = 1
     while n <= args.pt_spp:
@@ -146,11 +184,10 @@ def main(argv):
     if pt_points[-1]["seconds"] < target:
         sys.exit("glossy_equal_time: pt's %d spp (%.1f s) end before sdrc's %.1f s: raise "
                  "--pt-spp" % (args.pt_spp, pt_total, target))
-    below = [p for p in pt_points if p["seconds"] <= target]
-    above = [p for p in pt_points if p["seconds"] >= target]
-    pt_at = log_interpolate(target, below[-1] if below else above[0], above[0])
+    pt_at, _ = at_time(target, pt_points)
 
-    result = {"scene": scene, "reference": reference, "seconds": target, "sdrc": sdrc,
+    result = {"scene": scene, "reference": reference, "clock": CLOCK, "seconds": target,
+              "sdrc_options": sdrc_options, "sdrc": sdrc,
               "rc_runs": rc_runs, "rc_at_sdrc_time": rc_at, "rc_bracketed": rc_brackets,
               "pt_points": pt_points, "pt_at_sdrc_time": pt_at, "extra_options": extra}
     with open(out("glossy_equal_time.json"), "w") as f:
@@ -159,11 +196,12 @@ def main(argv):
     def ratio(a, b):
         return "%.2f×" % (a / b) if a and b else "–"
 
-    print("At sdrc's render time %.1f s (%s, %d spp; %d glossy pixels):"
-          % (target, os.path.relpath(scene, ROOT), spp, sdrc["glossy_pixels"]))
+    print("At sdrc's time, %.1f s (%s clock; %s, %d spp %s; %d glossy pixels):"
+          % (target, CLOCK, os.path.relpath(scene, ROOT), spp, " ".join(sdrc_options),
+             sdrc["glossy_pixels"]))
     print("| method | image relMSE | net of the reference | glossy-pixel indirect relMSE |")
     print("| --- | ---: | ---: | ---: |")
-    for name, e in [("sdrc", sdrc), ("rc" + ("" if rc_brackets else " (extrapolated)"), rc_at),
+    for name, e in [("sdrc", sdrc), ("rc" + ("" if rc_brackets else " (scaled, 1/time)"), rc_at),
                     ("pt", pt_at)]:
         print("| %s | %.3g | %s | %.3g |" % (
             name, e["relmse"], "%.3g" % e["relmse_net"] if e["relmse_net"] is not None else "–",

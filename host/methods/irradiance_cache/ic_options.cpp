@@ -2,6 +2,7 @@
 
 #include "methods/irradiance_vector_grid/ivg_options.h"
 #include "methods/light_samples.h"
+#include "methods/temporal/temporal_options.h"
 #include "util/error.h"
 #include "util/file_io.h"
 
@@ -29,6 +30,9 @@ std::vector<OptionSpec> irradiance_cache_option_specs() {
         kLightSamplesOption,
     };
     for (OptionSpec& spec : ivg_option_specs()) {
+        specs.push_back(std::move(spec));
+    }
+    for (OptionSpec& spec : temporal_option_specs()) {
         specs.push_back(std::move(spec));
     }
     return specs;

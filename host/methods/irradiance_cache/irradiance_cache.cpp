@@ -96,7 +96,9 @@ IrradianceCache::IrradianceCache(const FrameScene& frame)
           frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_uncovered")),
       select_kernel_(
           frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer_select")),
-      shade_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_shade")) {}
+      shade_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_shade")),
+      records_used_kernel_(
+          frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_records_used")) {}
 
 void IrradianceCache::reset(const RecordSampling& sampling) {
     if (sampling.levels < 1 || sampling.m < 1 || sampling.n < 1) {
@@ -105,6 +107,7 @@ void IrradianceCache::reset(const RecordSampling& sampling) {
     }
     sampling_ = sampling;
     stores_.assign(static_cast<size_t>(sampling.levels), irradiance_store(sampling.accuracy));
+    next_streams_.assign(stores_.size(), 0);
     stats_ = IrradianceCacheStats{};
     stats_.strata_m = sampling.m;
     stats_.strata_n = sampling.n;
@@ -145,9 +148,8 @@ std::vector<ComputedRecord> IrradianceCache::compute_records(const std::vector<R
                                                              const RecordSampling& sampling,
                                                              uint64_t* rays) {
     reset(sampling);
-    first_index_ = first_index;
+    next_streams_[0] = first_index;
     std::vector<ComputedRecord> computed = compute_level(0, sites);
-    first_index_ = 0;
     if (rays != nullptr) {
         *rays += stats_.record_rays;
     }
@@ -180,8 +182,8 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
         Buffer<shared::float4> cells(context_, count * per_record, "ic_cells");
         Buffer<shared::float4> distances(context_, count, "ic_distances");
         shared::IcParams params = level_params(level);
-        // Streams: records are numbered within their level.
-        const size_t first = (level == 0 ? first_index_ : 0) + stores_[level].size() + begin;
+        // Streams: numbered within the level.
+        const size_t first = next_streams_[static_cast<size_t>(level)] + begin;
         params.first_record = static_cast<int>(first);
         counters.fill_zero();
         if (cached) {
@@ -201,6 +203,10 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
         }
         context_.launch(reduce_kernel_, count, params, cells, record_buffer, payload_buffer,
                         distances);
+        if (observer_ != nullptr) {
+            observer_->observe(
+                {params, record_buffer, origin_buffer, cells, sites.data() + begin, count});
+        }
         const std::vector<shared::IrradiancePayload> payloads = payload_buffer.download();
         const std::vector<shared::float4> distance = distances.download();
         stats_.record_rays += counters.download()[0];
@@ -216,6 +222,7 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
             computed.push_back(r);
         }
     }
+    next_streams_[static_cast<size_t>(level)] += static_cast<uint32_t>(sites.size());
     return computed;
 }
 
@@ -329,18 +336,19 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
             site.origin = vec3_of(g.origin);
             site.r_min = spacing_bound(sampling_.min_spacing, g.footprint);
             site.r_max = std::max(site.r_min, spacing_bound(sampling_.max_spacing, g.footprint));
+            site.primitive = g.primitive;
             sites.push_back(site);
         }
         const std::vector<ComputedRecord> computed = compute_level(level, sites);
         if (timed) {
             stats_.record_seconds += seconds_since(start);
         }
-        start = SteadyClock::now();
-        for (const ComputedRecord& record : computed) {
-            insert_irradiance_record(stores_[level], record);
-        }
         if (timed) {
-            stats_.insertion_seconds += seconds_since(start);
+            insert_level0(computed);
+        } else {
+            for (const ComputedRecord& record : computed) {
+                insert_irradiance_record(stores_[level], record);
+            }
         }
         stats_.passes[entry].records = computed.size();
     }
@@ -421,36 +429,61 @@ RecordSampling sampling_of(const IrradianceCacheOptions& options) {
 
 }  // namespace
 
-void IrradianceCache::place_records(const IrradianceCacheOptions& options) {
-    if (!options.cache_in.empty()) {
-        std::vector<RecordStore> loaded =
-            read_cache_file(options.cache_in, irradiance_cache_key(scene_, options.accuracy));
-        for (size_t level = 0; level < loaded.size() && level < stores_.size(); ++level) {
-            stats_.loaded_records += loaded[level].size();
-            stores_[level] = std::move(loaded[level]);
-        }
+void IrradianceCache::insert_level0(const std::vector<ComputedRecord>& computed) {
+    const auto start = SteadyClock::now();
+    for (const ComputedRecord& record : computed) {
+        insert_irradiance_record(stores_[0], record);
     }
+    stats_.insertion_seconds += seconds_since(start);
+}
+
+std::vector<uint8_t> IrradianceCache::records_used(const RecordStore& store) {
+    std::vector<uint8_t> used(store.size(), 0);
+    if (store.size() == 0) {
+        return used;
+    }
+    const DeviceSplat splat(context_, store, camera_, &tile_depths_);
+    const DeviceRecords records(context_, store, false);
+    Buffer<unsigned> flags(context_, store.size(), "ic_records_used");
+    flags.fill_zero();
+    const shared::IcParams params = candidate_params(0, {1, camera_spp_, width_});
+    const size_t samples = static_cast<size_t>(width_) * height_ * camera_spp_;
+    context_.launch(records_used_kernel_, samples, params, splat.tiles, splat.tile_start,
+                    splat.tile_records, records.records, records.payloads, gbuffer_, flags);
+    const std::vector<unsigned> downloaded = flags.download();
+    for (size_t i = 0; i < used.size(); ++i) {
+        used[i] = downloaded[i] != 0 ? 1 : 0;
+    }
+    return used;
+}
+
+void IrradianceCache::set_records(int level, RecordStore store, uint32_t next_stream) {
+    stores_.at(static_cast<size_t>(level)) = std::move(store);
+    next_streams_[static_cast<size_t>(level)] = next_stream;
+}
+
+void IrradianceCache::add_records(const std::vector<RecordSite>& sites) {
+    auto start = SteadyClock::now();
+    const std::vector<ComputedRecord> computed = compute_level(0, sites);
+    stats_.record_seconds += seconds_since(start);
+    insert_level0(computed);
+}
+
+void IrradianceCache::place() {
     // Candidates: the first camera sample of every stride-th pixel of every stride-th row; at
     // stride 1 every camera sample. Coarser strides take one pass. At stride 1 passes repeat
     // until every sample is covered: neighbor clamping may shrink records placed earlier and
     // uncover samples that were covered, so every pass checks all candidates again. (Indirect
     // light needs two bounces; below that the cache is never read.)
-    if (options.max_depth >= 2) {
-        for (int stride : {16, 8, 4, 2, 1}) {
-            const int columns = (width_ + stride - 1) / stride;
-            const int rows = (height_ + stride - 1) / stride;
-            const int per_pixel = stride == 1 ? options.spp : 1;
-            cover(0, gbuffer_, {stride, per_pixel, columns},
-                  static_cast<size_t>(columns) * rows * per_pixel, stride == 1);
-        }
+    if (sampling_.max_depth < 2) {
+        return;
     }
-    for (const RecordStore& store : stores_) {
-        stats_.level_records.push_back(store.size());
-    }
-    stats_.records = stores_[0].size();
-    if (!options.cache_out.empty()) {
-        write_cache_file(options.cache_out, irradiance_cache_key(scene_, options.accuracy),
-                         stores_);
+    for (int stride : {16, 8, 4, 2, 1}) {
+        const int columns = (width_ + stride - 1) / stride;
+        const int rows = (height_ + stride - 1) / stride;
+        const int per_pixel = stride == 1 ? camera_spp_ : 1;
+        cover(0, gbuffer_, {stride, per_pixel, columns},
+              static_cast<size_t>(columns) * rows * per_pixel, stride == 1);
     }
 }
 
@@ -487,28 +520,40 @@ std::vector<shared::float4> IrradianceCache::shade(const shared::IcParams& param
     return sums;
 }
 
-Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceCacheStats* stats) {
+void IrradianceCache::begin(const IrradianceCacheOptions& options) {
     width_ = options.width > 0 ? options.width : scene_.camera.width;
     height_ = options.height > 0 ? options.height : scene_.camera.height;
     const size_t samples = static_cast<size_t>(width_) * height_ * std::max(options.spp, 0);
     check_options(options, samples);
     reset(sampling_of(options));
+    observer_ = options.observer;
     camera_spp_ = options.spp;
     camera_ = camera_params(scene_.camera, width_, height_);
-    shared::IcParams params = level_params(0);
-    params.draw_records = options.records_overlay ? 1 : 0;
-    params.light_samples = options.light_samples;
-
     // 1. G-buffer.
     const auto start = SteadyClock::now();
+    const shared::IcParams params = level_params(0);
     gbuffer_ = Buffer<shared::GBufferSample>(context_, samples, "ic_gbuffer");
     context_.launch(gbuffer_kernel_, samples, params, camera_, SceneArguments(bvh_, device_scene_),
                     gbuffer_);
     measure_tile_depths(gbuffer_, params, camera_);
     context_.finish();
     stats_.gbuffer_seconds = seconds_since(start);
-    // 2.-4. Placement, coarse to fine, with record computation and insertion.
-    place_records(options);
+}
+
+IrradianceCacheStats IrradianceCache::current_stats() const {
+    IrradianceCacheStats stats = stats_;
+    stats.level_records.clear();
+    for (const RecordStore& store : stores_) {
+        stats.level_records.push_back(store.size());
+    }
+    stats.records = stores_[0].size();
+    return stats;
+}
+
+Image IrradianceCache::finish(IrradianceCacheOptions options, IrradianceCacheStats* stats) {
+    shared::IcParams params = level_params(0);
+    params.draw_records = options.records_overlay ? 1 : 0;
+    params.light_samples = options.light_samples;
     // The glossy lobes' cache, when one serves them.
     Buffer<shared::RcGlossySample> glossy(context_, 1, "ic_no_glossy");
     glossy.fill_zero();
@@ -535,9 +580,32 @@ Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceC
     }
     Image image = unpack_film(sums, RC_CACHED_FILM_SLOTS, width_, height_, layers);
     if (stats != nullptr) {
-        *stats = stats_;
+        *stats = current_stats();
     }
     return image;
+}
+
+Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceCacheStats* stats) {
+    begin(options);
+    // 2.-4. Placement, coarse to fine, with record computation and insertion, from the records
+    // of a saved cache when one is given.
+    if (!options.cache_in.empty()) {
+        std::vector<RecordStore> loaded =
+            read_cache_file(options.cache_in, irradiance_cache_key(scene_, options.accuracy));
+        for (size_t level = 0; level < loaded.size() && level < stores_.size(); ++level) {
+            stats_.loaded_records += loaded[level].size();
+            stores_[level] = std::move(loaded[level]);
+        }
+        for (size_t level = 0; level < stores_.size(); ++level) {
+            next_streams_[level] = static_cast<uint32_t>(stores_[level].size());
+        }
+    }
+    place();
+    if (!options.cache_out.empty()) {
+        write_cache_file(options.cache_out, irradiance_cache_key(scene_, options.accuracy),
+                         stores_);
+    }
+    return finish(options, stats);
 }
 
 }  // namespace rc

@@ -32,6 +32,8 @@ Spacing parse_spacing(const std::string& text, const std::string& option);
 // R_max = 64 R_min) or in scene units.
 float spacing_bound(const Spacing& spacing, float footprint);
 
+class RecordBatchObserver;  // below
+
 struct IrradianceCacheOptions {
     int width = 0;  // 0: the scene camera's
     int height = 0;
@@ -57,6 +59,9 @@ struct IrradianceCacheOptions {
     // caching: --method rc) instead of path tracing them; its hemisphere rays read this cache's
     // first level. Adds the layer glossy-indirect and the cache's own layers.
     GlossyCache* glossy = nullptr;
+    // Shown every batch of records the kernels compute, before insertion (temporal caching
+    // reprojects their hemisphere samples).
+    RecordBatchObserver* observer = nullptr;
 };
 
 // One pass of placement: records created at one cache level (0: the camera's) from candidates
@@ -106,6 +111,27 @@ struct RecordSite {
     glm::vec3 origin{0.0f};  // the surface point offset for leaving rays
     float r_min = 0.0f;
     float r_max = 0.0f;
+    int primitive = -1;  // the triangle the site lies on (-1: unknown)
+};
+
+// A batch of records as the record kernels computed them, still on the device.
+struct RecordBatch {
+    const shared::IcParams& params;         // the kernels' parameters; level: the records'
+                                            // cache level; first_record: the batch's first
+                                            // random stream
+    const Buffer<shared::Record>& records;  // count records (position, normal; radius 0)
+    const Buffer<shared::float4>& origins;  // where their rays leave
+    const Buffer<shared::float4>& cells;    // count x M N cells: (L.rgb, hit distance)
+    const RecordSite* sites;                // count sites, in the batch's order
+    size_t count;
+};
+
+// Sees every batch of records the kernels compute at every cache level, in computation order
+// (which is, level by level, the order they are inserted in).
+class RecordBatchObserver {
+   public:
+    virtual ~RecordBatchObserver() = default;
+    virtual void observe(const RecordBatch& batch) = 0;
 };
 
 // How records sample their hemisphere and how deeper cache levels place their records.
@@ -132,7 +158,32 @@ class IrradianceCache : private FrameBound {
    public:
     explicit IrradianceCache(const FrameScene& frame);
 
+    // begin(), the placement (from options.cache_in's records when given; saved to
+    // options.cache_out), finish().
     Image render(const IrradianceCacheOptions& options, IrradianceCacheStats* stats = nullptr);
+
+    // render() in steps, for callers that keep first-level records across frames (temporal
+    // caching). begin(): the G-buffer of the camera samples, empty stores; first-level records
+    // take random streams from 0.
+    void begin(const IrradianceCacheOptions& options);
+    // Which records of `store` weigh at least one camera sample of begin()'s G-buffer that the
+    // cache serves positively (1) or none (0).
+    std::vector<uint8_t> records_used(const RecordStore& store);
+    // Cache level `level`'s records become `store` (its accuracy the cache's); the next record
+    // computed at that level takes random stream `next_stream` (the following ones the following
+    // streams).
+    void set_records(int level, RecordStore store, uint32_t next_stream);
+    // First-level records computed at `sites` (in order) and inserted.
+    void add_records(const std::vector<RecordSite>& sites);
+    // Coarse-to-fine placement over the G-buffer from the first level's records so far.
+    void place();
+    // The splat buffer, the render pass and the image; the statistics since begin().
+    Image finish(IrradianceCacheOptions options, IrradianceCacheStats* stats = nullptr);
+    // The statistics since begin(), with the stores' sizes now.
+    IrradianceCacheStats current_stats() const;
+    // The random stream the next record of `level` will take.
+    uint32_t next_stream(int level) const { return next_streams_.at(static_cast<size_t>(level)); }
+    int levels() const { return static_cast<int>(stores_.size()); }
 
     // First-level records at arbitrary sites, numbered from `first_index` (their random streams);
     // with sampling.levels > 1 the deeper levels start empty and get the records the hemisphere
@@ -189,9 +240,8 @@ class IrradianceCache : private FrameBound {
     // Records of `level` at `sites`, numbered from the level's current size.
     std::vector<ComputedRecord> compute_level(int level, const std::vector<RecordSite>& sites);
     void reset(const RecordSampling& sampling);
-    // Placement for the G-buffer of render(): loaded records, then coarse-to-fine passes (with
-    // record computation and insertion); saves the cache when asked.
-    void place_records(const IrradianceCacheOptions& options);
+    // Inserts computed first-level records; timed as insertion.
+    void insert_level0(const std::vector<ComputedRecord>& computed);
     // The splat buffer and the render pass over the first level; the film's sums.
     // `glossy`: the glossy buffer the pass reads when params.glossy_cache.
     std::vector<shared::float4> shade(const shared::IcParams& params, bool records_overlay,
@@ -209,6 +259,7 @@ class IrradianceCache : private FrameBound {
     Kernel uncovered_kernel_;
     Kernel select_kernel_;
     Kernel shade_kernel_;
+    Kernel records_used_kernel_;
     std::map<std::string, Kernel> cells_kernels_;  // by build options
     PathContinuation path_continuation_;
     RecordSampling sampling_;
@@ -218,7 +269,8 @@ class IrradianceCache : private FrameBound {
     shared::CameraParams camera_{};                // of the image render() makes (splatting)
     Buffer<shared::GBufferSample> gbuffer_;        // its camera samples
     std::vector<shared::TileDepths> tile_depths_;  // their depths per splat tile
-    uint32_t first_index_ = 0;  // stream offset of first-level records (compute_records)
+    std::vector<uint32_t> next_streams_;           // per level: random stream of its next record
+    RecordBatchObserver* observer_ = nullptr;
     std::vector<RecordStore> stores_;
     IrradianceCacheStats stats_;
 };

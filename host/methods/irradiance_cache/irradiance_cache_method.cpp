@@ -9,6 +9,9 @@
 #include "methods/irradiance_vector_grid/ivg_options.h"
 #include "methods/light_samples.h"
 #include "methods/method.h"
+#include "methods/temporal/temporal_cache.h"
+#include "methods/temporal/temporal_options.h"
+#include "util/error.h"
 #include "util/log.h"
 
 namespace rc {
@@ -19,6 +22,21 @@ class IrradianceCaching final : public Method {
     IrradianceCaching(const ParsedArguments& arguments, const MethodSettings& settings)
         : options_(parse_irradiance_cache_options(arguments, settings)),
           with_grid_(arguments.has("--ic-ivg")) {
+        const TemporalOptions temporal = parse_temporal_options(arguments);
+        if (temporal.enabled) {
+            if (with_grid_) {
+                throw Error("--temporal: the hemisphere rays cannot read the grid (--ic-ivg)",
+                            kExitUsage);
+            }
+            if (!options_.cache_in.empty() || !options_.cache_out.empty()) {
+                throw Error(
+                    "--temporal: the records live across frames, not in cache files "
+                    "(--cache-in/--cache-out)",
+                    kExitUsage);
+            }
+            temporal_ = std::make_unique<TemporalIrradianceCache>(
+                options_, temporal, settings.first_frame, settings.frame_count);
+        }
         if (with_grid_) {
             grid_options_ = ivg_options(arguments, settings);
         } else {
@@ -28,6 +46,14 @@ class IrradianceCaching final : public Method {
     }
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
+        if (temporal_) {
+            FrameResult result = temporal_->render_frame(frame, hooks);
+            const nlohmann::json& t = result.stats["temporal"];
+            log_note(t["records"].dump() + " irradiance records (" + t["created"].dump() +
+                     " new, " + t["recomputed"].dump() + " recomputed, " + t["reused"].dump() +
+                     " reused, " + t["dropped"].dump() + " dropped)");
+            return result;
+        }
         FrameResult result;
         std::unique_ptr<IrradianceVectorGrid> grid;
         if (with_grid_) {
@@ -50,6 +76,7 @@ class IrradianceCaching final : public Method {
    private:
     IrradianceCacheOptions options_;
     bool with_grid_;
+    std::unique_ptr<TemporalIrradianceCache> temporal_;
     IvgOptions grid_options_;
 };
 

@@ -1,0 +1,54 @@
+// Temporal caching's estimate of each new record's value at the next frame (the report's §4.3, §5
+// "Reprojection of Incoming Radiance"): shown every batch of first-level records irradiance
+// caching computes at any cache level (RecordBatchObserver), it carries their hemisphere samples to
+// the next frame on the device (kernels/temporal/temporal.cl: the hit points moved with their
+// triangles, the radiance with the change of the unshadowed light, a depth test and 3 x 3 hole
+// filling) and reduces the result as a record's cells are reduced: the record's irradiance and
+// gradients one frame later, from this frame's rays alone.
+#pragma once
+
+#include <map>
+#include <vector>
+
+#include "device/buffer.h"
+#include "methods/frame_scene.h"
+#include "methods/irradiance_cache/irradiance_cache.h"
+#include "shared/temporal.h"
+
+namespace rc {
+
+// A record's estimate at the next frame.
+struct CarriedRecord {
+    RecordSite site;                   // where it was computed
+    shared::IrradiancePayload next{};  // irradiance and gradients estimated one frame later
+    bool site_moves = false;           // the triangle the record lies on moves by then
+};
+
+class TemporalReprojection final : public RecordBatchObserver, private FrameBound {
+   public:
+    // This frame `frame`; `next`: the same scene posed at the next frame.
+    TemporalReprojection(const FrameScene& frame, const Scene& next, int hole_passes);
+
+    void observe(const RecordBatch& batch) override;
+
+    // Every record of cache level `level` observed so far, in observation order; clears the list.
+    std::vector<CarriedRecord> take(int level);
+
+    // Primitives that move between the two frames.
+    size_t moving_primitives() const { return moving_; }
+
+   private:
+    Kernel carry_kernel_;
+    Kernel assemble_kernel_;
+    Kernel reduce_kernel_;
+    shared::TcParams params_{};
+    std::vector<uint8_t> moves_;  // per primitive
+    size_t moving_ = 0;
+    Buffer<int> moved_slot_;
+    Buffer<shared::Triangle> moved_triangles_;
+    Buffer<shared::TcEmitter> emitters_now_;
+    Buffer<shared::TcEmitter> emitters_next_;
+    std::map<int, std::vector<CarriedRecord>> carried_;  // by level
+};
+
+}  // namespace rc

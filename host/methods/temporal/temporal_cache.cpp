@@ -1,0 +1,295 @@
+#include "methods/temporal/temporal_cache.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "methods/irradiance_cache/ic_stats.h"
+#include "util/error.h"
+#include "util/timing.h"
+
+namespace rc {
+namespace {
+
+// A store holding `ids` of `records` with the given shared parts and host data, payloads `payload`.
+template <class PayloadOf>
+RecordStore store_of(float accuracy, size_t count, const PayloadOf& payload_of,
+                     std::vector<shared::Record> shared_parts, std::vector<RecordHostData> host) {
+    RecordStore store = irradiance_store(accuracy);
+    std::vector<std::byte> payloads(count * sizeof(shared::IrradiancePayload));
+    for (size_t i = 0; i < count; ++i) {
+        const shared::IrradiancePayload p = payload_of(i);
+        std::memcpy(payloads.data() + i * sizeof p, &p, sizeof p);
+    }
+    store.restore(std::move(shared_parts), std::move(host), std::move(payloads));
+    return store;
+}
+
+}  // namespace
+
+TemporalIrradianceCache::TemporalIrradianceCache(IrradianceCacheOptions ic,
+                                                 TemporalOptions temporal, int first_frame,
+                                                 int frame_count)
+    : ic_(std::move(ic)),
+      temporal_(temporal),
+      first_frame_(first_frame),
+      last_frame_(first_frame + std::max(frame_count, 1) - 1),
+      placed_until_(first_frame - 1),
+      shaded_until_(first_frame - 1),
+      levels_(static_cast<size_t>(std::max(ic_.bounces, 1))) {}
+
+RecordStore TemporalIrradianceCache::serving_store(int level, int frame,
+                                                   std::vector<size_t>* serving,
+                                                   std::vector<size_t>* expired) const {
+    const std::vector<TemporalRecord>& records = levels_[static_cast<size_t>(level)].records;
+    std::vector<shared::Record> shared_parts;
+    std::vector<RecordHostData> host;
+    for (size_t id = 0; id < records.size(); ++id) {
+        const TemporalRecord& r = records[id];
+        const long long end = static_cast<long long>(r.created) + r.lifespan;
+        if (frame < end) {
+            serving->push_back(id);
+            shared_parts.push_back(r.computed.record);
+            host.push_back(r.computed.host);
+        } else if (frame == end) {
+            expired->push_back(id);
+        }
+    }
+    return store_of(
+        ic_.accuracy, serving->size(),
+        [&](size_t i) { return records[(*serving)[i]].computed.payload; }, std::move(shared_parts),
+        std::move(host));
+}
+
+std::vector<size_t> TemporalIrradianceCache::still_used(IrradianceCache& cache,
+                                                        const std::vector<size_t>& expired) {
+    const std::vector<TemporalRecord>& records = levels_[0].records;
+    std::vector<size_t> candidates;
+    std::vector<shared::Record> shared_parts;
+    std::vector<RecordHostData> host;
+    for (size_t id : expired) {
+        if (!records[id].site_moves) {  // its surface has left: nothing to replace
+            candidates.push_back(id);
+            shared_parts.push_back(records[id].computed.record);
+            host.push_back(records[id].computed.host);
+        }
+    }
+    const std::vector<uint8_t> used = cache.records_used(store_of(
+        ic_.accuracy, candidates.size(),
+        [&](size_t i) { return records[candidates[i]].computed.payload; }, std::move(shared_parts),
+        std::move(host)));
+    std::vector<size_t> kept;
+    for (size_t i = 0; i < candidates.size(); ++i) {
+        if (used[i] != 0) {
+            kept.push_back(candidates[i]);
+        }
+    }
+    return kept;
+}
+
+double TemporalIrradianceCache::adopt(int level, int frame, const RecordStore& placed,
+                                      const std::vector<size_t>& serving,
+                                      const std::vector<CarriedRecord>& carried,
+                                      const std::vector<size_t>& replaced) {
+    std::vector<TemporalRecord>& records = levels_[static_cast<size_t>(level)].records;
+    if (placed.size() != serving.size() + carried.size()) {
+        throw Error("temporal caching: level " + std::to_string(level) + " holds " +
+                    std::to_string(placed.size()) + " records, " +
+                    std::to_string(serving.size() + carried.size()) + " expected");
+    }
+    for (size_t i = 0; i < serving.size(); ++i) {
+        TemporalRecord& r = records[serving[i]];
+        r.computed.record = placed.records()[i];
+        r.computed.host = placed.host_data()[i];
+    }
+    double lifespans = 0.0;
+    for (size_t k = 0; k < carried.size(); ++k) {
+        const size_t i = serving.size() + k;
+        TemporalRecord r;
+        r.computed.record = placed.records()[i];
+        r.computed.host = placed.host_data()[i];
+        r.computed.payload = placed.payload<shared::IrradiancePayload>(i);
+        r.site = carried[k].site;
+        r.created = frame;
+        r.next = carried[k].next;
+        r.site_moves = carried[k].site_moves;
+        r.lifespan =
+            temporal_lifespan(temporal_change(r.computed.payload, r.next), temporal_, r.site_moves);
+        lifespans += r.lifespan;
+        if (k < replaced.size()) {
+            records[replaced[k]].successor = static_cast<int>(records.size());
+        }
+        records.push_back(r);
+    }
+    return carried.empty() ? 0.0 : lifespans / static_cast<double>(carried.size());
+}
+
+void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
+    const auto start = SteadyClock::now();
+    const int t = frame.frame;
+    TemporalFrameStats stats;
+    // The scene one frame later, for the reprojection.
+    if (!next_) {
+        next_.emplace(frame.scene);
+    }
+    next_->set_frame(static_cast<double>(t) + 1.0);
+    TemporalReprojection reprojection(frame, *next_, temporal_.hole_passes);
+    stats.moving_primitives = reprojection.moving_primitives();
+    IrradianceCache cache(frame);
+    IrradianceCacheOptions options = ic_;
+    options.observer = &reprojection;
+    options.records_overlay = false;
+    cache.begin(options);
+
+    // Every level's serving records stay. An expired first-level record is computed again in
+    // its place if it still serves the image (the report's §5), else dropped; expired deeper
+    // records are dropped.
+    const int levels = cache.levels();
+    std::vector<std::vector<size_t>> serving(static_cast<size_t>(levels));
+    std::vector<std::vector<size_t>> expired(static_cast<size_t>(levels));
+    for (int level = 0; level < levels; ++level) {
+        const size_t l = static_cast<size_t>(level);
+        RecordStore store = serving_store(level, t, &serving[l], &expired[l]);
+        cache.set_records(level, std::move(store), levels_[l].next_stream);
+    }
+    const std::vector<size_t> replaced = still_used(cache, expired[0]);
+    std::vector<RecordSite> sites;
+    for (size_t id : replaced) {
+        sites.push_back(levels_[0].records[id].site);
+    }
+    // Replacements, then new records where the image is not covered.
+    cache.add_records(sites);
+    cache.place();
+
+    for (int level = 0; level < levels; ++level) {
+        const size_t l = static_cast<size_t>(level);
+        levels_[l].next_stream = cache.next_stream(level);
+        const std::vector<CarriedRecord> carried = reprojection.take(level);
+        const double lifespan = adopt(level, t, cache.store(level), serving[l], carried,
+                                      level == 0 ? replaced : std::vector<size_t>{});
+        if (level == 0) {
+            stats.reused = serving[0].size();
+            stats.recomputed = replaced.size();
+            stats.dropped = expired[0].size() - replaced.size();
+            stats.created = carried.size() - replaced.size();
+            stats.mean_new_lifespan = lifespan;
+        } else {
+            stats.deeper.push_back({serving[l].size(), carried.size(), expired[l].size()});
+        }
+    }
+    // The first level as it serves this frame, for shading.
+    std::vector<Serving> now;
+    const RecordStore& placed = cache.store(0);
+    for (size_t i = 0; i < placed.size(); ++i) {
+        const size_t id =
+            i < serving[0].size() ? serving[0][i] : levels_[0].records.size() - placed.size() + i;
+        now.push_back({id, placed.records()[i], placed.host_data()[i]});
+    }
+    stats.records = now.size();
+    const IrradianceCacheStats placement = cache.current_stats();
+    stats.record_rays = placement.record_rays;
+    stats.placement = placement;
+    stats.placement_seconds = seconds_since(start);
+    serving_.push_back(std::move(now));
+    frame_stats_.push_back(stats);
+}
+
+void TemporalIrradianceCache::place_through(int last, const FrameScene& frame,
+                                            const FrameHooks& hooks) {
+    // long long: a range ending at the largest frame number stops (issue 17).
+    for (long long next = static_cast<long long>(placed_until_) + 1; next <= last; ++next) {
+        const int f = static_cast<int>(next);
+        if (f == frame.frame) {
+            place_frame(frame);
+        } else if (hooks.visit_frame) {
+            hooks.visit_frame(f, [&](const FrameScene& other) { place_frame(other); });
+        } else {
+            throw Error("temporal caching: frame " + std::to_string(f) +
+                        " must be placed before frame " + std::to_string(frame.frame) +
+                        " is shaded, and the caller offers no other frame");
+        }
+        placed_until_ = f;
+    }
+}
+
+FrameResult TemporalIrradianceCache::shade_frame(const FrameScene& frame) {
+    const int t = frame.frame;
+    const std::vector<Serving>& serving = serving_[static_cast<size_t>(t - first_frame_)];
+    const std::vector<TemporalRecord>& records = levels_[0].records;
+    std::vector<shared::Record> shared_parts;
+    std::vector<RecordHostData> host;
+    for (const Serving& s : serving) {
+        shared_parts.push_back(s.shared);
+        host.push_back(s.host);
+    }
+    const TemporalGradients gradients = temporal_.gradients;
+    RecordStore store = store_of(
+        ic_.accuracy, serving.size(),
+        [&](size_t i) {
+            const TemporalRecord& r = records[serving[i].record];
+            const TemporalRecord* successor =
+                r.successor >= 0 ? &records[static_cast<size_t>(r.successor)] : nullptr;
+            return temporal_payload(r, successor, t, gradients);
+        },
+        std::move(shared_parts), std::move(host));
+    IrradianceCache cache(frame);
+    cache.begin(ic_);
+    cache.set_records(0, std::move(store), 0);
+    IrradianceCacheStats stats;
+    FrameResult result;
+    result.image = cache.finish(ic_, &stats);
+    result.spp = ic_.spp;
+    const TemporalFrameStats& placed = frame_stats_[static_cast<size_t>(t - first_frame_)];
+    IrradianceCacheStats combined = placed.placement;
+    combined.gbuffer_seconds += stats.gbuffer_seconds;
+    combined.splatting_seconds = stats.splatting_seconds;
+    combined.shading_seconds = stats.shading_seconds;
+    combined.shading_rays = stats.shading_rays;
+    combined.cache_bytes = stats.cache_bytes;
+    combined.records = stats.records;
+    if (!combined.level_records.empty()) {
+        combined.level_records[0] = stats.records;
+    }
+    result.rays = placed.record_rays + stats.shading_rays;
+    result.nonfinite_samples = stats.nonfinite_samples;
+    result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
+    add_irradiance_cache_stats(combined, ic_, &result.stats);
+    result.stats["temporal"] = {{"gradients", temporal_gradients_name(temporal_.gradients)},
+                                {"records", placed.records},
+                                {"reused", placed.reused},
+                                {"recomputed", placed.recomputed},
+                                {"dropped", placed.dropped},
+                                {"created", placed.created},
+                                {"mean_new_lifespan", placed.mean_new_lifespan},
+                                {"moving_primitives", placed.moving_primitives},
+                                {"record_rays", placed.record_rays},
+                                {"seconds", {{"placement", placed.placement_seconds}}}};
+    nlohmann::json deeper = nlohmann::json::array();
+    for (size_t l = 0; l < placed.deeper.size(); ++l) {
+        deeper.push_back({{"level", l + 1},
+                          {"reused", placed.deeper[l].reused},
+                          {"created", placed.deeper[l].created},
+                          {"dropped", placed.deeper[l].dropped}});
+    }
+    result.stats["temporal"]["deeper_levels"] = deeper;
+    return result;
+}
+
+FrameResult TemporalIrradianceCache::render_frame(const FrameScene& frame,
+                                                  const FrameHooks& hooks) {
+    if (frame.frame != static_cast<long long>(shaded_until_) + 1) {
+        throw Error("temporal caching: frame " + std::to_string(frame.frame) + " asked for after " +
+                    std::to_string(shaded_until_) + "; frames come in order from " +
+                    std::to_string(first_frame_));
+    }
+    const int lookahead =
+        temporal_.gradients == TemporalGradients::kInterpolated
+            ? static_cast<int>(std::min<long long>(
+                  last_frame_, static_cast<long long>(frame.frame) + temporal_.max_frames))
+            : frame.frame;
+    place_through(std::max(lookahead, frame.frame), frame, hooks);
+    FrameResult result = shade_frame(frame);
+    shaded_until_ = frame.frame;
+    return result;
+}
+
+}  // namespace rc

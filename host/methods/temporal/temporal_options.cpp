@@ -1,0 +1,69 @@
+#include "methods/temporal/temporal_options.h"
+
+#include "util/error.h"
+
+namespace rc {
+
+std::vector<OptionSpec> temporal_option_specs() {
+    return {
+        {"--temporal", "", "",
+         "ic: temporal caching over --frames: records live across frames while their light "
+         "changes less than --temporal-accuracy allows, replaced in place when they expire "
+         "(docs/temporal-caching.md)"},
+        {"--temporal-gradients", "", "interpolated|extrapolated|none",
+         "ic --temporal: a record's value over its frames: interpolated towards its replacement "
+         "(two passes, default), extrapolated from its reprojected next frame (one pass), or held"},
+        {"--temporal-accuracy", "", "A",
+         "ic --temporal: a^t, the largest relative change of a record's irradiance over its "
+         "lifespan, estimated by reprojection (default 0.05)"},
+        {"--temporal-max-frames", "", "N",
+         "ic --temporal: the longest lifespan of a record, in frames (default 20)"},
+    };
+}
+
+TemporalOptions parse_temporal_options(const ParsedArguments& arguments) {
+    TemporalOptions t;
+    t.enabled = arguments.has("--temporal");
+    if (!t.enabled) {
+        for (const char* option :
+             {"--temporal-gradients", "--temporal-accuracy", "--temporal-max-frames"}) {
+            if (arguments.has(option)) {
+                throw Error(std::string(option) + " needs --temporal", kExitUsage);
+            }
+        }
+        return t;
+    }
+    if (arguments.has("--temporal-gradients")) {
+        const std::string value = arguments.value("--temporal-gradients");
+        if (value == "interpolated") {
+            t.gradients = TemporalGradients::kInterpolated;
+        } else if (value == "extrapolated") {
+            t.gradients = TemporalGradients::kExtrapolated;
+        } else if (value == "none") {
+            t.gradients = TemporalGradients::kNone;
+        } else {
+            throw Error("--temporal-gradients: expected interpolated, extrapolated or none, got '" +
+                            value + "'",
+                        kExitUsage);
+        }
+    }
+    t.accuracy =
+        static_cast<float>(arguments.number("--temporal-accuracy", t.accuracy, 1e-4, 10.0));
+    t.max_frames =
+        static_cast<int>(arguments.integer("--temporal-max-frames", t.max_frames, 1, 1 << 20));
+    return t;
+}
+
+std::string temporal_gradients_name(TemporalGradients gradients) {
+    switch (gradients) {
+        case TemporalGradients::kNone:
+            return "none";
+        case TemporalGradients::kExtrapolated:
+            return "extrapolated";
+        case TemporalGradients::kInterpolated:
+            return "interpolated";
+    }
+    return "?";
+}
+
+}  // namespace rc

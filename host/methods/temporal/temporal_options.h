@@ -1,0 +1,32 @@
+// Temporal caching's command-line options (`--method ic --temporal`; docs/temporal-caching.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "util/cli.h"
+
+namespace rc {
+
+// How a record's value changes over the frames it serves (the report's §4.4): held
+// (none), extrapolated from its own reprojected estimate of the next frame (eqs. 18-20, one
+// pass), or interpolated towards the record that replaces it (eqs. 21-23, two passes).
+enum class TemporalGradients { kNone, kExtrapolated, kInterpolated };
+
+struct TemporalOptions {
+    bool enabled = false;
+    TemporalGradients gradients = TemporalGradients::kInterpolated;
+    float accuracy = 0.05f;  // a^t of eq. 10 (the report's §6 uses 0.05)
+    int max_frames = 20;     // delta t_max of eq. 12 (the report's §6: 20 frames)
+    int hole_passes = 4;     // 3 x 3 hole-filling passes of the reprojection (§4.3)
+};
+
+std::vector<OptionSpec> temporal_option_specs();
+
+// Reads and validates them (Error with exit status 2 naming the option): the --temporal-* options
+// need --temporal.
+TemporalOptions parse_temporal_options(const ParsedArguments& arguments);
+
+std::string temporal_gradients_name(TemporalGradients gradients);
+
+}  // namespace rc
