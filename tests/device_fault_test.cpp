@@ -323,6 +323,12 @@ INSTANTIATE_TEST_SUITE_P(
                     "cornell-box/scene.json",
                     {"--ic-rays", "16", "--ic-bounces", "1", "--cache-out", "DIR/cache.rcc"},
                     {"cache.rcc"}},
+        // Temporal caching: the reprojection's kernels and buffers, placed on the moving sphere.
+        SmallRender{"ic-temporal",
+                    "ic",
+                    "moving-sphere/scene.json",
+                    {"--ic-rays", "16", "--ic-bounces", "1", "--temporal", "--frames", "0:0"},
+                    {}},
         only_first_calls(kRadianceCache), only_last_calls(kRadianceCache),
         SmallRender{"sdrc",
                     "sdrc",
