@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <sstream>
 
 #include "util/error.h"
 #include "util/file_io.h"
@@ -158,6 +159,30 @@ void write_image(const std::filesystem::path& path, const Image& image,
 
 namespace {
 
+// The reader's message and the codec's stderr chatter as one short line: lines joined with "; ",
+// and chatter left out when it only repeats the message (libpng's "libpng error: X" after
+// OpenImageIO's "PNG read error: X").
+std::string read_failure(const std::string& message, const std::string& chatter) {
+    auto lines_of = [](const std::string& text) {
+        std::string joined;
+        std::istringstream lines(text);
+        for (std::string line; std::getline(lines, line);) {
+            if (!line.empty()) {
+                joined += (joined.empty() ? "" : "; ") + line;
+            }
+        }
+        return joined;
+    };
+    std::string reason = lines_of(message);
+    const std::string extra = lines_of(chatter);
+    const size_t colon = extra.find(": ");
+    const std::string said = colon == std::string::npos ? extra : extra.substr(colon + 2);
+    if (!extra.empty() && reason.find(said) == std::string::npos) {
+        reason += (reason.empty() ? "" : "; ") + extra;
+    }
+    return excerpt(reason, 2 * kQuoteLimit);
+}
+
 // Reads the opened image's first subimage after checking its size against the limits; the
 // codec's stderr chatter joins the error line.
 DecodedImage read_opened(OIIO::ImageInput& in, const std::string& name, StderrCapture& capture) {
@@ -189,17 +214,15 @@ DecodedImage read_opened(OIIO::ImageInput& in, const std::string& name, StderrCa
     in.close();
     const std::string chatter = capture.finish();
     if (!read) {
-        message += chatter.empty() ? "" : (message.empty() ? "" : "; ") + chatter;
-        throw Error(name + ": cannot read image: " + excerpt(message, 2 * kQuoteLimit));
+        throw Error(name + ": cannot read image: " + read_failure(message, chatter));
     }
     return decoded;
 }
 
 [[noreturn]] void throw_open_error(const std::string& name, StderrCapture& capture) {
-    std::string message = OIIO::geterror();
+    const std::string message = OIIO::geterror();
     const std::string chatter = capture.finish();
-    message += chatter.empty() ? "" : (message.empty() ? "" : "; ") + chatter;
-    throw Error(name + ": cannot read image: " + excerpt(message, 2 * kQuoteLimit));
+    throw Error(name + ": cannot read image: " + read_failure(message, chatter));
 }
 
 }  // namespace
