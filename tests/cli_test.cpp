@@ -573,6 +573,23 @@ TEST(Cli, FramesEndingAtTheLargestFrameNumberStop) {
     EXPECT_TRUE(std::filesystem::exists(dir / "f2147483647.png"));
 }
 
+// Temporal caching places frames ahead of the one it shades (hooks.visit_frame): its own frame
+// loop must stop at the largest frame number too (issue 17's overflow, in the merged code).
+TEST(Cli, TemporalFramesEndingAtTheLargestFrameNumberStop) {
+    const auto dir = test::scratch_dir("cli_temporal_frames_max");
+    const test::CommandResult result =
+        test::run_radcache({"render", cornell_box(), "-o", (dir / "f####.png").string(), "--frames",
+                            "2147483646:2147483647", "--method", "ic", "--temporal", "--ic-rays",
+                            "16", "--spp", "1", "--width", "8", "--height", "8", "-q"});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    size_t files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        files += entry.is_regular_file() ? 1 : 0;
+    }
+    EXPECT_EQ(files, 2u);
+    EXPECT_TRUE(std::filesystem::exists(dir / "f2147483647.png"));
+}
+
 TEST(Cli, SaveEveryPowerOfTwoWritesIntermediateImages) {
     const auto dir = test::scratch_dir("cli_pow2");
     const test::CommandResult result =

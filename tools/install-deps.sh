@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages radcache needs, skipping those already present, and the Python
-# packages of its measurement tools (tools/requirements.txt).
+# packages of its measurement tools (tools/requirements.txt). clang and its runtime libraries
+# (libFuzzer, the sanitizers) build the fuzz targets (tools/fuzz.sh), which CI runs.
 # Idempotent: runs `apt-get update` at most once, and only when something is missing.
 set -euo pipefail
 
@@ -9,6 +10,7 @@ packages=(
     ocl-icd-opencl-dev opencl-headers pocl-opencl-icd clinfo
     libembree-dev libopenimageio-dev openimageio-tools libglm-dev nlohmann-json3-dev
     libtinyobjloader-dev libgtest-dev googletest
+    clang libclang-rt-dev
 )
 
 missing=()

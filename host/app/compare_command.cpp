@@ -43,7 +43,8 @@ void print_figures(const ImageError& e, const ReferenceNoiseSource& source) {
     std::cout << line;
 }
 
-// TEST against REF, one image each.
+// TEST against REF, one image each. The JSON and the error image are written together at the
+// end, or neither.
 int compare_one(const ParsedArguments& arguments) {
     const std::string test_path = arguments.positionals()[0];
     const std::string reference_path = arguments.positionals()[1];
@@ -56,16 +57,20 @@ int compare_one(const ParsedArguments& arguments) {
     if (!error_image_path.empty()) {
         check_output_path(error_image_path);
     }
+    OutputBatch outputs;
     ReferenceNoiseSource source = find_reference_spp(arguments, reference_path);
     const Image test_file = read_image(test_path);
     const Image reference_file = read_image(reference_path);
     const Image mask_image =
         arguments.has("--mask") ? read_mask(arguments.value("--mask"), arguments) : Image();
-    const PixelMask mask{arguments.has("--mask") ? &mask_image : nullptr};
+    PixelMask mask{arguments.has("--mask") ? &mask_image : nullptr};
     const Image test = select_layers(test_file, {layer});
     int factor = 1;
     const ReferenceLayer reference =
         matched_to(reference_layer(reference_file, layer, reference_path, source), test, &factor);
+    Image finite_mask;
+    const NonfinitePixels nonfinite =
+        exclude_nonfinite_pixels(test, reference.values, test_path, mask, finite_mask);
     const ImageError e = compare_layer(test, reference, test_path, mask);
     print_figures(e, source);
     if (factor > 1) {
@@ -73,7 +78,15 @@ int compare_one(const ParsedArguments& arguments) {
                   << " to the test's resolution\n";
     }
     if (mask.mask != nullptr) {
-        std::cout << "over the " << e.pixels << " pixels of the mask\n";
+        std::cout << "over the " << e.pixels << " pixels of the mask"
+                  << (nonfinite.any() ? " that are finite in both images" : "") << "\n";
+    }
+    if (nonfinite.any()) {
+        std::cout << "nonfinite pixels (NaN or infinite): " << nonfinite.test << " in TEST, "
+                  << nonfinite.reference << " in REF\n";
+        if (!arguments.has("--allow-nan")) {
+            refuse_nonfinite_pixels(nonfinite, test_path, reference_path);
+        }
     }
     char line[256];
     if (!error_image_path.empty()) {
@@ -90,7 +103,8 @@ int compare_one(const ParsedArguments& arguments) {
         j["aov"] = layer;
         j["pixels"] = e.pixels;
         j["reference_box_filter"] = factor;
-        if (mask.mask != nullptr) {
+        j["nonfinite_pixels"] = {{"test", nonfinite.test}, {"reference", nonfinite.reference}};
+        if (arguments.has("--mask")) {
             j["mask"] = arguments.value("--mask");
         }
         if (!error_image_path.empty()) {
@@ -98,6 +112,7 @@ int compare_one(const ParsedArguments& arguments) {
         }
         write_file_atomically(json_path, j.dump(2) + "\n");
     }
+    outputs.commit();
     return 0;
 }
 
@@ -115,6 +130,9 @@ int run_compare_command(const std::vector<std::string>& args) {
         {"--mask-aov", "", "NAME",
          "the layer of --mask whose first channel is the mask (default: "
          "its first layer)"},
+        {"--allow-nan", "", "",
+         "accept NaN or infinite pixels: the figures are over the pixels finite in both images "
+         "(without it such pixels are counted and the command fails)"},
         {"--reference-spp", "", "N",
          "samples per pixel of REF, for the relMSE net of its noise (default: `spp` of "
          "REF's .stats.json or .json beside it)"},

@@ -39,6 +39,7 @@ struct LoadedFrame {
     ReferenceNoiseSource source;
     int reference_factor = 1;  // the reference box-filtered factor x factor to the test's size
     Image mask;                // 0 x 0: none
+    NonfinitePixels nonfinite;
 };
 
 // The figures of one frame: its error, and the temporal error of the pair it closes.
@@ -49,6 +50,7 @@ struct FrameRow {
     ImageError error;
     ReferenceNoiseSource source;
     int reference_factor = 1;
+    NonfinitePixels nonfinite;
     std::optional<TemporalError> temporal;  // absent for the first frame
 };
 
@@ -118,6 +120,22 @@ LoadedFrame load_frame(const SequenceJob& job, const ParsedArguments& arguments,
     return loaded;
 }
 
+// Issue 17: a frame's NaN or infinite pixels are an error without --allow-nan. With it, every
+// frame's mask becomes its pixels that are finite in both images (and selected by --mask), so
+// that each frame's figures and each pair's temporal error are taken over finite pixels only.
+void exclude_nonfinite_frame_pixels(LoadedFrame& frame, bool allow_nan) {
+    PixelMask mask{frame.mask.width > 0 ? &frame.mask : nullptr};
+    Image finite;
+    frame.nonfinite =
+        exclude_nonfinite_pixels(frame.test, frame.reference.values, frame.test_path, mask, finite);
+    if (frame.nonfinite.any() && !allow_nan) {
+        refuse_nonfinite_pixels(frame.nonfinite, frame.test_path, frame.reference_path);
+    }
+    if (allow_nan) {
+        frame.mask = finite_pixel_mask(frame.test, frame.reference.values, mask);
+    }
+}
+
 // The pixels both frames' masks select (1) or not (0); the masks are the size of the frames.
 Image both_masks(const Image& a, const Image& b, const std::string& name) {
     check_comparable(a, b, name + " (the mask of the previous frame)");
@@ -158,12 +176,14 @@ std::vector<FrameRow> compare_sequence(const SequenceJob& job, const ParsedArgum
     // long long: a range ending at the largest int stops.
     for (long long frame = job.frames.first; frame <= job.frames.last; ++frame) {
         LoadedFrame current = load_frame(job, arguments, static_cast<int>(frame), shared_mask);
+        exclude_nonfinite_frame_pixels(current, arguments.has("--allow-nan"));
         FrameRow row;
         row.frame = static_cast<int>(frame);
         row.test_path = current.test_path;
         row.reference_path = current.reference_path;
         row.source = current.source;
         row.reference_factor = current.reference_factor;
+        row.nonfinite = current.nonfinite;
         const PixelMask mask{current.mask.width > 0 ? &current.mask : nullptr};
         row.error = compare_layer(current.test, current.reference, current.test_path, mask);
         if (previous) {
@@ -292,6 +312,8 @@ nlohmann::json sequence_json(const SequenceJob& job, const std::vector<FrameRow>
         f["reference"] = row.reference_path;
         f["pixels"] = row.error.pixels;
         f["reference_box_filter"] = row.reference_factor;
+        f["nonfinite_pixels"] = {{"test", row.nonfinite.test},
+                                 {"reference", row.nonfinite.reference}};
         // The pair (frame - 1, frame); null for the first frame.
         const std::optional<TemporalError>& t = row.temporal;
         f["temporal_error"] = t ? nlohmann::json(t->temporal_error) : nlohmann::json(nullptr);

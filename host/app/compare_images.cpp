@@ -142,6 +142,30 @@ ImageError compare_layer(const Image& test, const ReferenceLayer& reference,
     return image_error(test, reference.values, test_path, mask);
 }
 
+NonfinitePixels exclude_nonfinite_pixels(const Image& test, const Image& reference,
+                                         const std::string& test_path, PixelMask& mask,
+                                         Image& finite) {
+    check_comparable(test, reference, test_path);
+    check_mask(mask, reference, test_path);
+    const NonfinitePixels nonfinite = count_nonfinite_pixels(test, reference, mask);
+    if (!nonfinite.any()) {
+        return nonfinite;
+    }
+    if (nonfinite.finite == 0) {
+        throw Error(test_path + ": no pixel is finite in both images");
+    }
+    finite = finite_pixel_mask(test, reference, mask);
+    mask.mask = &finite;
+    return nonfinite;
+}
+
+void refuse_nonfinite_pixels(const NonfinitePixels& nonfinite, const std::string& test_path,
+                             const std::string& reference_path) {
+    throw Error(test_path + ": " + std::to_string(nonfinite.test) + " NaN or infinite pixels (" +
+                std::to_string(nonfinite.reference) + " in " + reference_path +
+                "); --allow-nan takes the figures over the finite ones");
+}
+
 nlohmann::json error_json(const ImageError& e, const ReferenceNoiseSource& source) {
     nlohmann::json j;
     j["rmse"] = e.rmse;

@@ -52,6 +52,18 @@ ReferenceLayer matched_to(const ReferenceLayer& reference, const Image& test, in
 ImageError compare_layer(const Image& test, const ReferenceLayer& reference,
                          const std::string& test_path, PixelMask mask);
 
+// Issue 17: pixels with a NaN or infinite channel in either image are counted, never folded into
+// the figures. When there are any, `finite` becomes the pixels `mask` selects that are finite in
+// both and `mask` points at it; Error naming `test_path` when no pixel is left.
+NonfinitePixels exclude_nonfinite_pixels(const Image& test, const Image& reference,
+                                         const std::string& test_path, PixelMask& mask,
+                                         Image& finite);
+
+// The error (exit status 1) for such pixels without --allow-nan: their counts in both images.
+[[noreturn]] void refuse_nonfinite_pixels(const NonfinitePixels& nonfinite,
+                                          const std::string& test_path,
+                                          const std::string& reference_path);
+
 // The figures of one comparison as JSON (null where a figure is unknown); `source` gives
 // reference_spp.
 nlohmann::json error_json(const ImageError& e, const ReferenceNoiseSource& source);

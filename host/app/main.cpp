@@ -1,6 +1,7 @@
 // radcache: global illumination with illumination caching on OpenCL devices.
 #include <exception>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,9 @@ int main(int argc, char** argv) {
     } catch (const rc::Error& error) {
         std::cerr << "radcache: error: " << error.what() << "\n";
         return error.exit_code();
+    } catch (const std::bad_alloc&) {
+        std::cerr << "radcache: error: out of host memory\n";
+        return rc::kExitFailure;
     } catch (const std::exception& error) {
         std::cerr << "radcache: error: " << error.what() << "\n";
         return rc::kExitFailure;

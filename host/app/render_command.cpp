@@ -65,7 +65,7 @@ void render_frame(const RenderJob& job, int frame, Context& context, Scene& scen
     totals.phase("write") += seconds_since(start);
     log_note("wrote " + output.string() + " (" + std::to_string(result.image.width) + "x" +
              std::to_string(result.image.height) + ", " + std::to_string(result.spp) + " spp)");
-    totals.add_frame(frame, output, result);
+    totals.add_frame(frame, output, result, context);
 }
 
 }  // namespace
@@ -81,6 +81,8 @@ int run_render_command(const std::vector<std::string>& args) {
     const auto total_start = SteadyClock::now();
     RenderJob job = read_render_job(arguments);
     set_quiet(arguments.has("--quiet"));
+    set_strict(arguments.has("--strict"));
+    OutputBatch outputs;  // every file is written at the end, or none (issue 17)
     RenderTotals totals;
 
     auto start = SteadyClock::now();
@@ -115,6 +117,7 @@ int run_render_command(const std::vector<std::string>& args) {
             totals.json(settings, scene, context, bvh, seconds_since(total_start));
         write_file_atomically(job.stats, stats.dump(2) + "\n");
     }
+    outputs.commit();
     return 0;
 }
 

@@ -1,14 +1,17 @@
 #include "app/render_job.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
 #include <regex>
 #include <sstream>
-#include <stdexcept>
 
 #include "app/device_options.h"
 #include "methods/registry.h"
+#include "scene/animation.h"
 #include "util/error.h"
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace rc {
 
@@ -31,6 +34,7 @@ std::vector<OptionSpec> render_option_specs() {
         {"--aovs", "", "LIST", ".exr: the layers to write, comma-separated (default all)"},
         {"--stats", "", "FILE", "write timings and counts as JSON"},
         {"--quiet", "-q", "", "print nothing but errors"},
+        {"--strict", "", "", "treat every warning (no emitter, dropped samples, ...) as an error"},
     };
     for (const MethodEntry& method : method_registry()) {
         std::string layers;
@@ -49,19 +53,32 @@ std::vector<OptionSpec> render_option_specs() {
     return specs;
 }
 
+namespace {
+
+// A frame number of --frames, in [-kMaxFrameNumber, kMaxFrameNumber].
+int frame_number(const std::string& text, const std::string& frames) {
+    errno = 0;
+    const long long number = std::strtoll(text.c_str(), nullptr, 10);
+    if (errno != 0 || number < -kMaxFrameNumber || number > kMaxFrameNumber) {
+        throw Error("--frames " + excerpt(frames) + ": frame " + excerpt(text) + " outside [" +
+                        std::to_string(-kMaxFrameNumber) + ", " + std::to_string(kMaxFrameNumber) +
+                        "]",
+                    kExitUsage);
+    }
+    return static_cast<int>(number);
+}
+
+}  // namespace
+
 FrameRange parse_frames(const std::string& text) {
     static const std::regex form(R"(^(-?\d+):(-?\d+)$)");
     std::smatch match;
-    if (!std::regex_match(text, match, form)) {
-        throw Error("--frames: expected A:B, got '" + text + "'", kExitUsage);
+    if (text.size() > 64 || !std::regex_match(text, match, form)) {
+        throw Error("--frames: expected A:B, got '" + excerpt(text) + "'", kExitUsage);
     }
     FrameRange range;
-    try {
-        range.first = std::stoi(match[1].str());
-        range.last = std::stoi(match[2].str());
-    } catch (const std::out_of_range&) {
-        throw Error("--frames: " + text + " holds a frame number out of range", kExitUsage);
-    }
+    range.first = frame_number(match[1].str(), text);
+    range.last = frame_number(match[2].str(), text);
     range.given = true;
     if (range.last < range.first) {
         throw Error("--frames: " + text + " ends before it starts", kExitUsage);
@@ -105,6 +122,9 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
             kExitUsage);
     }
     check_output_path(frame_path(job.output_pattern, job.frames.first));
+    if (job.frames.given) {
+        check_output_path(frame_path(job.output_pattern, job.frames.last));
+    }
     job.stats = arguments.value("--stats");
     if (!job.stats.empty()) {
         check_writable_parent(job.stats, "--stats");
@@ -112,6 +132,18 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
     RenderSettings overrides_only;
     for (const std::string& assignment : arguments.values("-D")) {
         overrides_only.apply_override(assignment);  // validates the keys before loading
+    }
+    // Every value the command line gives that does not depend on the scene is range-checked
+    // before it loads, so that a bad one is the only line printed (issue 17).
+    const RenderSettings settings = render_settings(arguments, overrides_only);
+    const MethodSettings method = method_settings(arguments, settings, job, 0, 0);
+    context_options(arguments);
+    if (arguments.has("--method")) {
+        // A method made only to check its options (making one reads nothing and allocates no
+        // device memory); the render makes its own with the scene's settings.
+        const MethodEntry& entry = find_method(settings.method);
+        refuse_foreign_options(entry, arguments);
+        entry.create(arguments, method);
     }
     job.write_options.half = arguments.has("--half");
     if (arguments.has("--aovs")) {
@@ -157,8 +189,12 @@ std::filesystem::path frame_path(const std::string& pattern, int frame) {
     }
     const size_t last = pattern.find_first_not_of('#', first);
     const size_t width = (last == std::string::npos ? pattern.size() : last) - first;
-    char number[32];
-    std::snprintf(number, sizeof number, "%0*d", static_cast<int>(width), frame);
+    // The frame number zero-padded to the run's width (any width: the issue's 40 '#').
+    const std::string digits = std::to_string(frame < 0 ? -static_cast<long long>(frame) : frame);
+    const size_t sign = frame < 0 ? 1 : 0;
+    const std::string number =
+        (frame < 0 ? "-" : "") +
+        std::string(width > digits.size() + sign ? width - digits.size() - sign : 0, '0') + digits;
     return pattern.substr(0, first) + number + pattern.substr(first + width);
 }
 

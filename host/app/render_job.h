@@ -36,7 +36,8 @@ struct RenderJob {
 };
 
 // Checks everything that can be checked before loading the scene (output and stats paths,
-// --frames, --aovs, -D keys); Error (exit status 2) naming the option otherwise.
+// --frames, --aovs, -D keys, the ranges of the numeric options, --method and the options it
+// takes); Error (exit status 2) naming the option otherwise.
 RenderJob read_render_job(const ParsedArguments& arguments);
 
 // The scene's render defaults overridden by -D and then by --method, --spp, --seed, --exposure.

@@ -1,14 +1,28 @@
 #include "app/render_stats.h"
 
+#include <algorithm>
+
+#include "util/host_memory.h"
 #include "util/log.h"
 
 namespace rc {
 
 void RenderTotals::add_frame(int frame, const std::filesystem::path& output,
-                             const FrameResult& result) {
+                             const FrameResult& result, Context& context) {
     nlohmann::json entry = result.stats;
     entry["frame"] = frame;
     entry["output"] = output.string();
+    // Memory of the frame (issue 17): now, and the most since the previous frame.
+    const HostMemory host = host_memory();
+    const DeviceMemory& device = context.device_memory();
+    entry["memory"] = {{"host_resident_bytes", host.resident},
+                       {"host_peak_resident_bytes", host.peak_resident},
+                       {"device_bytes", device.in_use},
+                       {"device_peak_bytes", device.peak}};
+    host_peak_ = std::max(host_peak_, host.peak_resident);
+    device_peak_ = std::max(device_peak_, device.peak);
+    reset_host_memory_peak();
+    context.reset_peak_memory();
     frames_.push_back(entry);
     rays_ += result.rays;
     nonfinite_ += result.nonfinite_samples;
@@ -76,6 +90,9 @@ nlohmann::json RenderTotals::json(const RenderSettings& settings, const Scene& s
     stats["nonfinite_samples"] = nonfinite_;
     stats["first_nonfinite_pixel"] = first_nonfinite_pixel_;
     stats["program_builds"] = program_builds_json(context);
+    stats["memory"] = {{"host_peak_resident_bytes", host_peak_},
+                       {"device_peak_bytes", device_peak_},
+                       {"device_global_bytes", context.device().global_memory}};
     stats["bvh"] = {{"layout", bvh_layout_name(bvh.layout)},
                     {"nodes", bvh.node_count()},
                     {"leaves", bvh.leaf_count},

@@ -20,8 +20,10 @@ class RenderTotals {
     // Seconds of the phases every render has: load, device, bvh, upload, render, write.
     double& phase(const std::string& name) { return seconds_[name]; }
 
-    // Adds a frame (its output, counts and the method's figures); warns about dropped samples.
-    void add_frame(int frame, const std::filesystem::path& output, const FrameResult& result);
+    // Adds a frame (its output, counts, the method's figures, and the host and device memory of
+    // the frame: now, and the peak since the previous frame); warns about dropped samples.
+    void add_frame(int frame, const std::filesystem::path& output, const FrameResult& result,
+                   Context& context);
 
     // The stats file's JSON.
     nlohmann::json json(const RenderSettings& settings, const Scene& scene, const Context& context,
@@ -36,6 +38,8 @@ class RenderTotals {
     int spp_ = 0;
     int width_ = 0;
     int height_ = 0;
+    uint64_t host_peak_ = 0;
+    size_t device_peak_ = 0;
 };
 
 }  // namespace rc

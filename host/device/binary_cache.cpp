@@ -14,6 +14,8 @@ namespace rc {
 namespace {
 
 constexpr char kMagic[8] = {'R', 'C', 'K', 'B', 'I', 'N', '0', '1'};
+// The largest entry read (a program binary is some megabytes).
+constexpr uint64_t kMaxEntryBytes = uint64_t{1} << 30;
 
 struct EntryHeader {
     char magic[8];
@@ -80,10 +82,16 @@ CacheLookup BinaryCache::load(const BinaryCacheKey& key, std::vector<unsigned ch
     }
     std::string bytes;
     try {
-        bytes = read_file(path);
+        bytes = read_file(path, kMaxEntryBytes, "kernel cache entry");
     } catch (const Error&) {
         return CacheLookup::kCorrupt;
     }
+    return parse_entry(bytes, key, binary);
+}
+
+CacheLookup BinaryCache::parse_entry(const std::string& bytes, const BinaryCacheKey& key,
+                                     std::vector<unsigned char>& binary) {
+    binary.clear();
     EntryHeader header;
     if (bytes.size() < sizeof header) {
         return CacheLookup::kCorrupt;
@@ -121,7 +129,7 @@ void BinaryCache::store(const BinaryCacheKey& key, const std::vector<unsigned ch
         if (error) {
             throw Error(directory_.string() + ": " + error.message());
         }
-        write_file_atomically(entry_path(key), bytes);
+        write_file_atomically(entry_path(key), bytes, WriteTiming::kNow);
     } catch (const Error& failure) {
         log_warning(std::string("kernel binary cache not written: ") + failure.what());
     }

@@ -35,6 +35,10 @@ class BinaryCache {
     // truncated or fails its key or checksum test.
     CacheLookup load(const BinaryCacheKey& key, std::vector<unsigned char>& binary) const;
 
+    // The same for an entry's bytes: the fuzz target's entry.
+    static CacheLookup parse_entry(const std::string& bytes, const BinaryCacheKey& key,
+                                   std::vector<unsigned char>& binary);
+
     // Stores the binary (atomically). Failures to write are reported as warnings only: the
     // cache is an optimisation.
     void store(const BinaryCacheKey& key, const std::vector<unsigned char>& binary) const;

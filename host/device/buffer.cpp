@@ -1,10 +1,9 @@
 #include "device/buffer.h"
 
-#include <CL/cl.h>
-
 #include <cstdio>
 #include <utility>
 
+#include "device/cl_calls.h"
 #include "device/cl_error.h"
 #include "device/context.h"
 #include "util/error.h"
@@ -28,22 +27,38 @@ DeviceBuffer::DeviceBuffer(Context& context, size_t bytes, std::string name)
                     ", more than the largest allocation " + format_bytes(device.max_allocation) +
                     " of " + device.name);
     }
+    // The device's memory (or --device-memory) bounds what a run holds at once: refused here,
+    // with the figures, rather than by the driver mid-launch.
+    const size_t held = context.device_memory().in_use;
+    const uint64_t limit =
+        context.options().memory_limit != 0 ? context.options().memory_limit : device.global_memory;
+    if (limit > 0 && held + bytes_ > limit) {
+        throw Error(
+            "buffer '" + name_ + "' needs " + format_bytes(bytes_) + ": with the " +
+            format_bytes(held) + " this run holds, more than the " + format_bytes(limit) +
+            (context.options().memory_limit != 0 ? " of --device-memory" : " of " + device.name));
+    }
     cl_int status = CL_SUCCESS;
-    handle_ = clCreateBuffer(context.cl_context(), CL_MEM_READ_WRITE, bytes_, nullptr, &status);
+    handle_ = RC_CL_CREATE("buffer", clCreateBuffer, &status, context.cl_context(),
+                           CL_MEM_READ_WRITE, bytes_, nullptr);
     check_cl(status, "clCreateBuffer", name_ + ", " + format_bytes(bytes_));
+    memory_ = context.memory_counter();
+    memory_->allocate(bytes_);
 }
 
 DeviceBuffer::~DeviceBuffer() { release(); }
 
 void DeviceBuffer::release() {
     if (handle_ != nullptr) {
-        clReleaseMemObject(handle_);
+        RC_CL_RELEASE("buffer", clReleaseMemObject, handle_);
         handle_ = nullptr;
+        memory_->release(bytes_);
     }
 }
 
 DeviceBuffer::DeviceBuffer(DeviceBuffer&& other) noexcept
     : context_(other.context_),
+      memory_(std::move(other.memory_)),
       handle_(std::exchange(other.handle_, nullptr)),
       bytes_(std::exchange(other.bytes_, 0)),
       name_(std::move(other.name_)) {}
@@ -52,6 +67,7 @@ DeviceBuffer& DeviceBuffer::operator=(DeviceBuffer&& other) noexcept {
     if (this != &other) {
         release();
         context_ = other.context_;
+        memory_ = std::move(other.memory_);
         handle_ = std::exchange(other.handle_, nullptr);
         bytes_ = std::exchange(other.bytes_, 0);
         name_ = std::move(other.name_);
@@ -67,8 +83,8 @@ void DeviceBuffer::write(const void* data, size_t bytes, size_t offset) {
         throw Error("write of " + std::to_string(bytes) + " bytes past the end of buffer '" +
                     name_ + "'");
     }
-    check_cl(clEnqueueWriteBuffer(context_->cl_queue(), handle_, CL_TRUE, offset, bytes, data, 0,
-                                  nullptr, nullptr),
+    check_cl(RC_CL(clEnqueueWriteBuffer, context_->cl_queue(), handle_, CL_TRUE, offset, bytes,
+                   data, 0, nullptr, nullptr),
              "clEnqueueWriteBuffer", name_);
 }
 
@@ -80,17 +96,17 @@ void DeviceBuffer::read(void* data, size_t bytes, size_t offset) const {
         throw Error("read of " + std::to_string(bytes) + " bytes past the end of buffer '" + name_ +
                     "'");
     }
-    check_cl(clEnqueueReadBuffer(context_->cl_queue(), handle_, CL_TRUE, offset, bytes, data, 0,
-                                 nullptr, nullptr),
+    check_cl(RC_CL(clEnqueueReadBuffer, context_->cl_queue(), handle_, CL_TRUE, offset, bytes, data,
+                   0, nullptr, nullptr),
              "clEnqueueReadBuffer", name_);
 }
 
 void DeviceBuffer::fill_zero() {
     const unsigned char zero = 0;
-    check_cl(clEnqueueFillBuffer(context_->cl_queue(), handle_, &zero, 1, 0, bytes_, 0, nullptr,
-                                 nullptr),
+    check_cl(RC_CL(clEnqueueFillBuffer, context_->cl_queue(), handle_, &zero, 1, 0, bytes_, 0,
+                   nullptr, nullptr),
              "clEnqueueFillBuffer", name_);
-    check_cl(clFinish(context_->cl_queue()), "clFinish", name_);
+    check_cl(RC_CL(clFinish, context_->cl_queue()), "clFinish", name_);
 }
 
 }  // namespace rc

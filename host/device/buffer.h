@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@ struct _cl_mem;
 namespace rc {
 
 class Context;
+struct DeviceMemory;
 
 class DeviceBuffer {
    public:
@@ -36,6 +38,7 @@ class DeviceBuffer {
     void release();
 
     Context* context_ = nullptr;
+    std::shared_ptr<DeviceMemory> memory_;  // the context's bookkeeping, which this may outlive
     _cl_mem* handle_ = nullptr;
     size_t bytes_ = 0;
     std::string name_;

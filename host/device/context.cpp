@@ -1,12 +1,11 @@
 #include "device/context.h"
 
-#include <CL/cl.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 
+#include "device/cl_calls.h"
 #include "device/cl_error.h"
 #include "util/error.h"
 
@@ -42,18 +41,20 @@ Context::Context(const ContextOptions& options)
     cl_int status = CL_SUCCESS;
     const cl_context_properties properties[] = {
         CL_CONTEXT_PLATFORM, reinterpret_cast<cl_context_properties>(device_.platform), 0};
-    context_ = clCreateContext(properties, 1, &device_.device, nullptr, nullptr, &status);
+    context_ = RC_CL_CREATE("context", clCreateContext, &status, properties, 1, &device_.device,
+                            nullptr, nullptr);
     check_cl(status, "clCreateContext", device_.name);
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wdeprecated-declarations"
 #endif
-    queue_ = clCreateCommandQueue(context_, device_.device, CL_QUEUE_PROFILING_ENABLE, &status);
+    queue_ = RC_CL_CREATE("queue", clCreateCommandQueue, &status, context_, device_.device,
+                          CL_QUEUE_PROFILING_ENABLE);
 #if defined(__GNUC__)
 #pragma GCC diagnostic pop
 #endif
     if (status != CL_SUCCESS) {
-        clReleaseContext(context_);
+        RC_CL_RELEASE("context", clReleaseContext, context_);
         check_cl(status, "clCreateCommandQueue", device_.name);
     }
 }
@@ -61,11 +62,12 @@ Context::Context(const ContextOptions& options)
 Context::~Context() {
     programs_.clear();
     if (queue_ != nullptr) {
-        clFinish(queue_);
-        clReleaseCommandQueue(queue_);
+        // No clFinish: every launch and transfer has been waited for, and releasing the queue
+        // flushes it (a failure here could only be ignored).
+        RC_CL_RELEASE("queue", clReleaseCommandQueue, queue_);
     }
     if (context_ != nullptr) {
-        clReleaseContext(context_);
+        RC_CL_RELEASE("context", clReleaseContext, context_);
     }
 }
 
@@ -127,19 +129,20 @@ void Context::run_chunked(Kernel& kernel, size_t count) {
         kernel.set_arg(1, sizeof range[1], &range[1]);
         const size_t global = round_up(items, local);
         cl_event event = nullptr;
-        check_cl(clEnqueueNDRangeKernel(queue_, kernel.handle(), 1, nullptr, &global, &local, 0,
-                                        nullptr, &event),
+        check_cl(RC_CL(clEnqueueNDRangeKernel, queue_, kernel.handle(), 1, nullptr, &global, &local,
+                       0, nullptr, &event),
                  "clEnqueueNDRangeKernel", kernel.name());
-        const cl_int waited = clWaitForEvents(1, &event);
+        note_device_object("event", +1);
+        const cl_int waited = RC_CL(clWaitForEvents, 1, &event);
         cl_ulong started = 0;
         cl_ulong ended = 0;
-        cl_int profiled = clGetEventProfilingInfo(event, CL_PROFILING_COMMAND_START, sizeof started,
-                                                  &started, nullptr);
+        cl_int profiled = RC_CL(clGetEventProfilingInfo, event, CL_PROFILING_COMMAND_START,
+                                sizeof started, &started, nullptr);
         if (profiled == CL_SUCCESS) {
-            profiled = clGetEventProfilingInfo(event, CL_PROFILING_COMMAND_END, sizeof ended,
-                                               &ended, nullptr);
+            profiled = RC_CL(clGetEventProfilingInfo, event, CL_PROFILING_COMMAND_END, sizeof ended,
+                             &ended, nullptr);
         }
-        clReleaseEvent(event);
+        RC_CL_RELEASE("event", clReleaseEvent, event);
         check_cl(waited, "clWaitForEvents", kernel.name());
         check_cl(profiled, "clGetEventProfilingInfo", kernel.name());
         const double seconds = static_cast<double>(ended - started) * 1e-9;
@@ -157,6 +160,6 @@ void Context::run_chunked(Kernel& kernel, size_t count) {
     }
 }
 
-void Context::finish() { check_cl(clFinish(queue_), "clFinish", device_.name); }
+void Context::finish() { check_cl(RC_CL(clFinish, queue_), "clFinish", device_.name); }
 
 }  // namespace rc

@@ -2,6 +2,7 @@
 // one kernel-launch function (DESIGN.md §3) with per-kernel timing and chunking.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -30,7 +31,22 @@ struct ContextOptions {
     size_t local_size = 0;                   // work-group size; 0: chosen per kernel
     size_t max_chunk_items = 0;              // largest launch; 0: the default (2^20)
     double chunk_seconds = 0.1;              // launches aim at this duration
-    std::optional<BvhLayout> bvh_layout;     // --bvh; none: default_bvh_layout()
+    uint64_t memory_limit = 0;  // most bytes held in buffers at once; 0: the global memory
+    std::optional<BvhLayout> bvh_layout;  // --bvh; none: default_bvh_layout()
+};
+
+// Device memory held in this context's buffers (DeviceBuffer), in bytes: now, and the most since
+// the last reset_peak_memory(). Buffers share it with their context, so that one outliving the
+// context (a method's, destroyed after it) still gives back its bytes.
+struct DeviceMemory {
+    size_t in_use = 0;
+    size_t peak = 0;
+
+    void allocate(size_t bytes) {
+        in_use += bytes;
+        peak = in_use > peak ? in_use : peak;
+    }
+    void release(size_t bytes) { in_use -= bytes < in_use ? bytes : in_use; }
 };
 
 // Accumulated device time of one kernel (from profiling events).
@@ -72,6 +88,11 @@ class Context {
     }
 
     const std::map<std::string, KernelTime>& kernel_times() const { return kernel_times_; }
+
+    // The buffers' bookkeeping (DeviceBuffer keeps a share) and its figures for --stats.
+    const std::shared_ptr<DeviceMemory>& memory_counter() const { return memory_; }
+    const DeviceMemory& device_memory() const { return *memory_; }
+    void reset_peak_memory() { memory_->peak = memory_->in_use; }
     void reset_kernel_times() { kernel_times_.clear(); }
 
     // The work-group size launches of `kernel` use.
@@ -111,6 +132,7 @@ class Context {
     std::map<std::string, std::unique_ptr<Program>> programs_;
     std::vector<ProgramBuildReport> builds_;
     std::map<std::string, KernelTime> kernel_times_;
+    std::shared_ptr<DeviceMemory> memory_ = std::make_shared<DeviceMemory>();
 };
 
 }  // namespace rc

@@ -1,13 +1,12 @@
 #include "device/device_list.h"
 
-#include <CL/cl.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <regex>
 
+#include "device/cl_calls.h"
 #include "device/cl_error.h"
 #include "util/error.h"
 
@@ -18,18 +17,19 @@ constexpr cl_int kPlatformNotFoundKhr = -1001;
 
 std::string platform_string(cl_platform_id platform, cl_platform_info what) {
     size_t size = 0;
-    check_cl(clGetPlatformInfo(platform, what, 0, nullptr, &size), "clGetPlatformInfo");
+    check_cl(RC_CL(clGetPlatformInfo, platform, what, 0, nullptr, &size), "clGetPlatformInfo");
     std::string value(size, '\0');
-    check_cl(clGetPlatformInfo(platform, what, size, value.data(), nullptr), "clGetPlatformInfo");
+    check_cl(RC_CL(clGetPlatformInfo, platform, what, size, value.data(), nullptr),
+             "clGetPlatformInfo");
     value.resize(value.find('\0') == std::string::npos ? value.size() : value.find('\0'));
     return value;
 }
 
 std::string device_string(cl_device_id device, cl_device_info what) {
     size_t size = 0;
-    check_cl(clGetDeviceInfo(device, what, 0, nullptr, &size), "clGetDeviceInfo");
+    check_cl(RC_CL(clGetDeviceInfo, device, what, 0, nullptr, &size), "clGetDeviceInfo");
     std::string value(size, '\0');
-    check_cl(clGetDeviceInfo(device, what, size, value.data(), nullptr), "clGetDeviceInfo");
+    check_cl(RC_CL(clGetDeviceInfo, device, what, size, value.data(), nullptr), "clGetDeviceInfo");
     value.resize(value.find('\0') == std::string::npos ? value.size() : value.find('\0'));
     return value;
 }
@@ -37,7 +37,8 @@ std::string device_string(cl_device_id device, cl_device_info what) {
 template <class T>
 T device_value(cl_device_id device, cl_device_info what) {
     T value{};
-    check_cl(clGetDeviceInfo(device, what, sizeof value, &value, nullptr), "clGetDeviceInfo");
+    check_cl(RC_CL(clGetDeviceInfo, device, what, sizeof value, &value, nullptr),
+             "clGetDeviceInfo");
     return value;
 }
 
@@ -60,27 +61,28 @@ std::string DeviceInfo::spec() const {
 
 std::vector<DeviceInfo> list_devices() {
     cl_uint platform_count = 0;
-    const cl_int status = clGetPlatformIDs(0, nullptr, &platform_count);
+    const cl_int status = RC_CL(clGetPlatformIDs, 0, nullptr, &platform_count);
     if (status == kPlatformNotFoundKhr || (status == CL_SUCCESS && platform_count == 0)) {
         throw Error(no_platform_message(), kExitUsage);
     }
     check_cl(status, "clGetPlatformIDs");
     std::vector<cl_platform_id> platforms(platform_count);
-    check_cl(clGetPlatformIDs(platform_count, platforms.data(), nullptr), "clGetPlatformIDs");
+    check_cl(RC_CL(clGetPlatformIDs, platform_count, platforms.data(), nullptr),
+             "clGetPlatformIDs");
 
     std::vector<DeviceInfo> devices;
     for (cl_uint p = 0; p < platform_count; ++p) {
         cl_uint device_count = 0;
         const cl_int found =
-            clGetDeviceIDs(platforms[p], CL_DEVICE_TYPE_ALL, 0, nullptr, &device_count);
+            RC_CL(clGetDeviceIDs, platforms[p], CL_DEVICE_TYPE_ALL, 0, nullptr, &device_count);
         if (found == CL_DEVICE_NOT_FOUND) {
             continue;
         }
         check_cl(found, "clGetDeviceIDs");
         std::vector<cl_device_id> ids(device_count);
-        check_cl(
-            clGetDeviceIDs(platforms[p], CL_DEVICE_TYPE_ALL, device_count, ids.data(), nullptr),
-            "clGetDeviceIDs");
+        check_cl(RC_CL(clGetDeviceIDs, platforms[p], CL_DEVICE_TYPE_ALL, device_count, ids.data(),
+                       nullptr),
+                 "clGetDeviceIDs");
         for (cl_uint d = 0; d < device_count; ++d) {
             DeviceInfo info;
             info.platform_index = static_cast<int>(p);

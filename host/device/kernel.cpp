@@ -1,9 +1,8 @@
 #include "device/kernel.h"
 
-#include <CL/cl.h>
-
 #include <utility>
 
+#include "device/cl_calls.h"
 #include "device/cl_error.h"
 
 namespace rc {
@@ -12,7 +11,7 @@ Kernel::Kernel(_cl_kernel* handle, std::string name) : handle_(handle), name_(st
 
 Kernel::~Kernel() {
     if (handle_ != nullptr) {
-        clReleaseKernel(handle_);
+        RC_CL_RELEASE("kernel", clReleaseKernel, handle_);
     }
 }
 
@@ -22,7 +21,7 @@ Kernel::Kernel(Kernel&& other) noexcept
 Kernel& Kernel::operator=(Kernel&& other) noexcept {
     if (this != &other) {
         if (handle_ != nullptr) {
-            clReleaseKernel(handle_);
+            RC_CL_RELEASE("kernel", clReleaseKernel, handle_);
         }
         handle_ = std::exchange(other.handle_, nullptr);
         name_ = std::move(other.name_);
@@ -31,14 +30,14 @@ Kernel& Kernel::operator=(Kernel&& other) noexcept {
 }
 
 void Kernel::set_arg(unsigned index, size_t size, const void* value) {
-    check_cl(clSetKernelArg(handle_, index, size, value), "clSetKernelArg",
+    check_cl(RC_CL(clSetKernelArg, handle_, index, size, value), "clSetKernelArg",
              name_ + " argument " + std::to_string(index));
 }
 
 size_t Kernel::max_work_group_size(_cl_device_id* device) const {
     size_t size = 0;
-    check_cl(clGetKernelWorkGroupInfo(handle_, device, CL_KERNEL_WORK_GROUP_SIZE, sizeof size,
-                                      &size, nullptr),
+    check_cl(RC_CL(clGetKernelWorkGroupInfo, handle_, device, CL_KERNEL_WORK_GROUP_SIZE,
+                   sizeof size, &size, nullptr),
              "clGetKernelWorkGroupInfo", name_);
     return size;
 }

@@ -1,10 +1,9 @@
 #include "device/program.h"
 
-#include <CL/cl.h>
-
 #include <cctype>
 #include <chrono>
 
+#include "device/cl_calls.h"
 #include "device/cl_error.h"
 #include "device/device_list.h"
 #include "util/error.h"
@@ -19,14 +18,14 @@ constexpr const char* kBaseOptions = "-cl-std=CL1.2";
 
 std::string build_log(cl_program program, cl_device_id device) {
     size_t size = 0;
-    if (clGetProgramBuildInfo(program, device, CL_PROGRAM_BUILD_LOG, 0, nullptr, &size) !=
+    if (RC_CL(clGetProgramBuildInfo, program, device, CL_PROGRAM_BUILD_LOG, 0, nullptr, &size) !=
         CL_SUCCESS) {
-        return "(no build log available)";
+        return "";  // no log: the error line says only what failed
     }
     std::string log(size, '\0');
-    if (clGetProgramBuildInfo(program, device, CL_PROGRAM_BUILD_LOG, size, log.data(), nullptr) !=
-        CL_SUCCESS) {
-        return "(no build log available)";
+    if (RC_CL(clGetProgramBuildInfo, program, device, CL_PROGRAM_BUILD_LOG, size, log.data(),
+              nullptr) != CL_SUCCESS) {
+        return "";  // no log: the error line says only what failed
     }
     while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) {
         log.pop_back();
@@ -42,16 +41,17 @@ cl_program try_build_from_binary(cl_context context, cl_device_id device,
     const unsigned char* data = binary.data();
     cl_int binary_status = CL_SUCCESS;
     cl_int status = CL_SUCCESS;
-    cl_program program =
-        clCreateProgramWithBinary(context, 1, &device, &size, &data, &binary_status, &status);
+    cl_program program = RC_CL_CREATE("program", clCreateProgramWithBinary, &status, context, 1,
+                                      &device, &size, &data, &binary_status);
     if (status != CL_SUCCESS || binary_status != CL_SUCCESS) {
         if (program != nullptr) {
-            clReleaseProgram(program);
+            RC_CL_RELEASE("program", clReleaseProgram, program);
         }
         return nullptr;
     }
-    if (clBuildProgram(program, 1, &device, options.c_str(), nullptr, nullptr) != CL_SUCCESS) {
-        clReleaseProgram(program);
+    if (RC_CL(clBuildProgram, program, 1, &device, options.c_str(), nullptr, nullptr) !=
+        CL_SUCCESS) {
+        RC_CL_RELEASE("program", clReleaseProgram, program);
         return nullptr;
     }
     return program;
@@ -59,11 +59,11 @@ cl_program try_build_from_binary(cl_context context, cl_device_id device,
 
 std::vector<unsigned char> program_binary(cl_program program, const std::string& entry) {
     size_t size = 0;
-    check_cl(clGetProgramInfo(program, CL_PROGRAM_BINARY_SIZES, sizeof size, &size, nullptr),
+    check_cl(RC_CL(clGetProgramInfo, program, CL_PROGRAM_BINARY_SIZES, sizeof size, &size, nullptr),
              "clGetProgramInfo", entry);
     std::vector<unsigned char> binary(size);
     unsigned char* data = binary.data();
-    check_cl(clGetProgramInfo(program, CL_PROGRAM_BINARIES, sizeof data, &data, nullptr),
+    check_cl(RC_CL(clGetProgramInfo, program, CL_PROGRAM_BINARIES, sizeof data, &data, nullptr),
              "clGetProgramInfo", entry);
     return binary;
 }
@@ -95,7 +95,8 @@ Program::Program(_cl_context* context, const DeviceInfo& device, const KernelSou
             flat.insert(dot == std::string::npos ? flat.size() : dot, tag);
         }
         std::filesystem::create_directories(dump_dir);
-        write_file_atomically(dump_dir / flat, "// build options: " + all_options + "\n" + source);
+        write_file_atomically(dump_dir / flat, "// build options: " + all_options + "\n" + source,
+                              WriteTiming::kNow);
     }
 
     const BinaryCacheKey key =
@@ -118,17 +119,25 @@ Program::Program(_cl_context* context, const DeviceInfo& device, const KernelSou
         const char* text = source.c_str();
         const size_t length = source.size();
         cl_int status = CL_SUCCESS;
-        handle_ = clCreateProgramWithSource(context, 1, &text, &length, &status);
+        handle_ =
+            RC_CL_CREATE("program", clCreateProgramWithSource, &status, context, 1, &text, &length);
         check_cl(status, "clCreateProgramWithSource", entry);
-        status = clBuildProgram(handle_, 1, &device.device, all_options.c_str(), nullptr, nullptr);
+        status = RC_CL(clBuildProgram, handle_, 1, &device.device, all_options.c_str(), nullptr,
+                       nullptr);
         if (status != CL_SUCCESS) {
             const std::string log = build_log(handle_, device.device);
-            clReleaseProgram(handle_);
+            RC_CL_RELEASE("program", clReleaseProgram, handle_);
             handle_ = nullptr;
             throw Error("clBuildProgram(" + entry + ") failed: " + cl_error_name(status) + " on " +
-                        device.name + "; build log:\n" + log);
+                        device.name + (log.empty() ? "" : "; build log:\n" + log));
         }
-        cache.store(key, program_binary(handle_, entry));
+        try {
+            cache.store(key, program_binary(handle_, entry));
+        } catch (...) {
+            RC_CL_RELEASE("program", clReleaseProgram, handle_);  // the destructor will not run
+            handle_ = nullptr;
+            throw;
+        }
     }
     report_.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -136,13 +145,13 @@ Program::Program(_cl_context* context, const DeviceInfo& device, const KernelSou
 
 Program::~Program() {
     if (handle_ != nullptr) {
-        clReleaseProgram(handle_);
+        RC_CL_RELEASE("program", clReleaseProgram, handle_);
     }
 }
 
 Kernel Program::kernel(const std::string& name) const {
     cl_int status = CL_SUCCESS;
-    cl_kernel handle = clCreateKernel(handle_, name.c_str(), &status);
+    cl_kernel handle = RC_CL_CREATE("kernel", clCreateKernel, &status, handle_, name.c_str());
     check_cl(status, "clCreateKernel", name + " in " + entry_);
     return Kernel(handle, name);
 }

@@ -46,6 +46,52 @@ float srgb_to_linear(float v) {
 
 }  // namespace
 
+namespace {
+
+bool pixel_finite(const Image& image, int x, int y) {
+    for (int c = 0; c < image.channels; ++c) {
+        if (!std::isfinite(image.at(x, y, c))) {
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+NonfinitePixels count_nonfinite_pixels(const Image& test, const Image& reference, PixelMask mask) {
+    check_comparable(test, reference, "image");
+    check_mask(mask, reference, "image");
+    NonfinitePixels counts;
+    for (int y = 0; y < test.height; ++y) {
+        for (int x = 0; x < test.width; ++x) {
+            if (!mask.selects(x, y)) {
+                continue;
+            }
+            const bool test_finite = pixel_finite(test, x, y);
+            const bool reference_finite = pixel_finite(reference, x, y);
+            counts.test += test_finite ? 0 : 1;
+            counts.reference += reference_finite ? 0 : 1;
+            counts.finite += test_finite && reference_finite ? 1 : 0;
+        }
+    }
+    return counts;
+}
+
+Image finite_pixel_mask(const Image& test, const Image& reference, PixelMask mask) {
+    Image finite(reference.width, reference.height, 1);
+    finite.channel_names = {"Y"};
+    for (int y = 0; y < reference.height; ++y) {
+        for (int x = 0; x < reference.width; ++x) {
+            finite.at(x, y, 0) =
+                mask.selects(x, y) && pixel_finite(test, x, y) && pixel_finite(reference, x, y)
+                    ? 1.0f
+                    : 0.0f;
+        }
+    }
+    return finite;
+}
+
 ImageError image_error(const Image& test, const Image& reference, const std::string& test_name,
                        PixelMask mask) {
     check_comparable(test, reference, test_name);

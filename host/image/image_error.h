@@ -41,6 +41,20 @@ struct PixelMask {
     bool selects(int x, int y) const { return mask == nullptr || mask->at(x, y, 0) > 0.0f; }
 };
 
+// Pixels with a NaN or infinite channel (issue 17: compare counts them instead of reporting
+// "psnr inf"), among those a mask selects.
+struct NonfinitePixels {
+    size_t test = 0;       // pixels of the test image with a NaN or infinite channel
+    size_t reference = 0;  // the same in the reference
+    size_t finite = 0;     // pixels finite in both
+    bool any() const { return test > 0 || reference > 0; }
+};
+NonfinitePixels count_nonfinite_pixels(const Image& test, const Image& reference,
+                                       PixelMask mask = {});
+
+// A one-channel mask of the pixels `mask` selects that are finite in both images (1, else 0).
+Image finite_pixel_mask(const Image& test, const Image& reference, PixelMask mask = {});
+
 // Error naming `test_name` when `test` and `reference` differ in size or channel count.
 void check_comparable(const Image& test, const Image& reference, const std::string& test_name);
 

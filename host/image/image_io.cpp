@@ -1,5 +1,6 @@
 #include "image/image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -7,9 +8,12 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <sstream>
 
 #include "util/error.h"
 #include "util/file_io.h"
+#include "util/stderr_capture.h"
+#include "util/text.h"
 
 namespace rc {
 namespace {
@@ -91,8 +95,13 @@ void check_output_path(const std::filesystem::path& path) {
     }
     std::error_code ignored;
     std::filesystem::remove(probe, ignored);
-    if (std::filesystem::is_directory(path)) {
+    std::error_code error;
+    const std::filesystem::file_status status = std::filesystem::status(path, error);
+    if (std::filesystem::is_directory(status)) {
         throw Error(path.string() + ": output path is a directory", kExitUsage);
+    }
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+        throw Error(path.string() + ": output path exists and is not a regular file", kExitUsage);
     }
 }
 
@@ -148,19 +157,111 @@ void write_image(const std::filesystem::path& path, const Image& image,
     });
 }
 
-Image read_image(const std::filesystem::path& path) {
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path.string());
-    if (!in) {
-        throw Error(path.string() + ": cannot read image: " + OIIO::geterror());
+namespace {
+
+// The reader's message and the codec's stderr chatter as one short line: lines joined with "; ",
+// and chatter left out when it only repeats the message (libpng's "libpng error: X" after
+// OpenImageIO's "PNG read error: X").
+std::string read_failure(const std::string& message, const std::string& chatter) {
+    auto lines_of = [](const std::string& text) {
+        std::string joined;
+        std::istringstream lines(text);
+        for (std::string line; std::getline(lines, line);) {
+            if (!line.empty()) {
+                joined += (joined.empty() ? "" : "; ") + line;
+            }
+        }
+        return joined;
+    };
+    std::string reason = lines_of(message);
+    const std::string extra = lines_of(chatter);
+    const size_t colon = extra.find(": ");
+    const std::string said = colon == std::string::npos ? extra : extra.substr(colon + 2);
+    if (!extra.empty() && reason.find(said) == std::string::npos) {
+        reason += (reason.empty() ? "" : "; ") + extra;
     }
-    const OIIO::ImageSpec& spec = in->spec();
-    Image image(spec.width, spec.height, spec.nchannels);
+    return excerpt(reason, 2 * kQuoteLimit);
+}
+
+// Reads the opened image's first subimage after checking its size against the limits; the
+// codec's stderr chatter joins the error line.
+DecodedImage read_opened(OIIO::ImageInput& in, const std::string& name, StderrCapture& capture) {
+    const OIIO::ImageSpec& spec = in.spec();
+    const uint64_t pixels = static_cast<uint64_t>(std::max(spec.width, 0)) *
+                            static_cast<uint64_t>(std::max(spec.height, 0));
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1) {
+        throw Error(name + ": not a 2-D image with pixels (" + std::to_string(spec.width) + "x" +
+                    std::to_string(spec.height) + ", " + std::to_string(spec.nchannels) +
+                    " channels)");
+    }
+    if (pixels > kMaxImagePixels ||
+        pixels * static_cast<uint64_t>(spec.nchannels) > kMaxImageValues) {
+        throw Error(name + ": image of " + std::to_string(spec.width) + "x" +
+                    std::to_string(spec.height) + " pixels and " + std::to_string(spec.nchannels) +
+                    " channels, more than the limit of " + std::to_string(kMaxImagePixels) +
+                    " pixels and " + std::to_string(kMaxImageValues) + " values");
+    }
+    DecodedImage decoded;
+    decoded.integer_encoded = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
+                              spec.format.basetype == OIIO::TypeDesc::UINT16;
+    Image& image = decoded.image;
+    image = Image(spec.width, spec.height, spec.nchannels);
     image.channel_names.assign(spec.channelnames.begin(), spec.channelnames.end());
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
-        throw Error(path.string() + ": cannot read image: " + in->geterror());
+    image.channel_names.resize(static_cast<size_t>(spec.nchannels));
+    const bool read =
+        in.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data());
+    std::string message = read ? "" : in.geterror();
+    in.close();
+    const std::string chatter = capture.finish();
+    if (!read) {
+        throw Error(name + ": cannot read image: " + read_failure(message, chatter));
     }
-    in->close();
-    return image;
+    return decoded;
+}
+
+[[noreturn]] void throw_open_error(const std::string& name, StderrCapture& capture) {
+    const std::string message = OIIO::geterror();
+    const std::string chatter = capture.finish();
+    throw Error(name + ": cannot read image: " + read_failure(message, chatter));
+}
+
+}  // namespace
+
+DecodedImage decode_image(const std::string& bytes, const std::string& name) {
+    OIIO::Filesystem::IOMemReader proxy(bytes.data(), bytes.size());
+    StderrCapture capture;
+    {
+        const std::unique_ptr<OIIO::ImageInput> probe = OIIO::ImageInput::create(name);
+        if (probe && !probe->supports("ioproxy")) {
+            capture.finish();
+            throw Error(name + ": the " + probe->format_name() +
+                        " format cannot be read from memory");
+        }
+    }
+    OIIO::ImageSpec config;
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(name, &config, &proxy);
+    if (!in) {
+        throw_open_error(name, capture);
+    }
+    return read_opened(*in, name, capture);
+}
+
+Image read_image(const std::filesystem::path& path) {
+    const std::string name = path.string();
+    const std::string bytes = read_file(path, kMaxImageFileBytes, "image");
+    {
+        const std::unique_ptr<OIIO::ImageInput> probe = OIIO::ImageInput::create(name);
+        if (!probe || probe->supports("ioproxy")) {
+            return decode_image(bytes, name).image;
+        }
+    }
+    // A format without in-memory reading: from the (checked) regular file itself.
+    StderrCapture capture;
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(name);
+    if (!in) {
+        throw_open_error(name, capture);
+    }
+    return read_opened(*in, name, capture).image;
 }
 
 }  // namespace rc

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "util/error.h"
+#include "util/text.h"
 
 // One line per method: X(entry function), defined in the method's folder as
 // `MethodEntry <entry>_entry();`. The order is --help's.
@@ -44,8 +45,9 @@ const MethodEntry& find_method(const std::string& name) {
             return method;
         }
     }
-    throw Error("--method: unknown method '" + name + "' (implemented: " + method_names() + ")",
-                kExitUsage);
+    throw Error(
+        "--method: unknown method '" + excerpt(name) + "' (implemented: " + method_names() + ")",
+        kExitUsage);
 }
 
 std::vector<OptionSpec> method_option_specs() {

@@ -6,10 +6,15 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace rc {
+
+// Frame numbers lie in [-kMaxFrameNumber, kMaxFrameNumber] (scene files and --frames): ints, read
+// with a range check; frame loops count in 64 bits.
+inline constexpr int kMaxFrameNumber = std::numeric_limits<int>::max();
 
 struct Keyframe {
     double frame = 0.0;

@@ -7,6 +7,9 @@
 
 namespace rc {
 
+// The largest image width or height (scene files and --width/--height).
+inline constexpr int kMaxImageSide = 1 << 16;
+
 // Which image extent `fov` spans, as in Mitsuba's fov_axis.
 enum class FovAxis { kX, kY, kDiagonal, kSmaller, kLarger };
 

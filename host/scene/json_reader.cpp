@@ -4,16 +4,33 @@
 #include <cmath>
 
 #include "util/error.h"
+#include "util/text.h"
 
 namespace rc {
 namespace {
 
-std::string describe(const nlohmann::json& value) {
-    std::string text = value.dump();
-    if (text.size() > 40) {
-        text = text.substr(0, 37) + "...";
+// The longest string a scene's key may hold (names, types, file paths).
+constexpr size_t kMaxStringBytes = 4096;
+
+std::string describe(const nlohmann::json& value) { return describe_json(value); }
+
+// The integer `value` holds when it lies in [min, max].
+std::optional<long long> integer_in(const nlohmann::json& value, long long min, long long max) {
+    if (value.is_number_unsigned()) {
+        const auto v = value.get<uint64_t>();
+        if (v > static_cast<uint64_t>(std::numeric_limits<long long>::max())) {
+            return std::nullopt;
+        }
+        const auto signed_value = static_cast<long long>(v);
+        return signed_value >= min && signed_value <= max ? std::optional<long long>(signed_value)
+                                                          : std::nullopt;
     }
-    return text;
+    const auto v = value.get<int64_t>();
+    return v >= min && v <= max ? std::optional<long long>(v) : std::nullopt;
+}
+
+std::string range_text(int min, int max) {
+    return "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
 }
 
 }  // namespace
@@ -34,7 +51,7 @@ void JsonReader::fail(const std::string& key, const std::string& message) const 
 }
 
 std::string JsonReader::child_path(const std::string& key) const {
-    return path_.empty() ? key : path_ + "." + key;
+    return path_.empty() ? excerpt(key) : path_ + "." + excerpt(key);
 }
 
 bool JsonReader::has(const std::string& key) const { return value_->contains(key); }
@@ -74,7 +91,8 @@ float JsonReader::number(const std::string& key, std::optional<float> fallback) 
     return static_cast<float>(number);
 }
 
-int JsonReader::integer(const std::string& key, std::optional<int> fallback) const {
+int JsonReader::integer(const std::string& key, std::optional<int> fallback, int min,
+                        int max) const {
     if (!has(key) && fallback) {
         return *fallback;
     }
@@ -82,7 +100,11 @@ int JsonReader::integer(const std::string& key, std::optional<int> fallback) con
     if (!value.is_number_integer()) {
         fail(key, "expected an integer, got " + describe(value));
     }
-    return value.get<int>();
+    const std::optional<long long> result = integer_in(value, min, max);
+    if (!result) {
+        fail(key, "expected an integer in " + range_text(min, max) + ", got " + describe(value));
+    }
+    return static_cast<int>(*result);
 }
 
 std::string JsonReader::string(const std::string& key, std::optional<std::string> fallback) const {
@@ -93,7 +115,12 @@ std::string JsonReader::string(const std::string& key, std::optional<std::string
     if (!value.is_string()) {
         fail(key, "expected a string, got " + describe(value));
     }
-    return value.get<std::string>();
+    const std::string& text = value.get_ref<const std::string&>();
+    if (text.size() > kMaxStringBytes) {
+        fail(key, "a string of " + std::to_string(text.size()) + " bytes, more than the limit of " +
+                      std::to_string(kMaxStringBytes) + ": " + describe(value));
+    }
+    return text;
 }
 
 glm::vec3 JsonReader::vec3(const std::string& key, std::optional<glm::vec3> fallback) const {
@@ -115,7 +142,8 @@ glm::vec3 JsonReader::vec3(const std::string& key, std::optional<glm::vec3> fall
     return result;
 }
 
-glm::ivec2 JsonReader::ivec2(const std::string& key, std::optional<glm::ivec2> fallback) const {
+glm::ivec2 JsonReader::ivec2(const std::string& key, std::optional<glm::ivec2> fallback, int min,
+                             int max) const {
     if (!has(key) && fallback) {
         return *fallback;
     }
@@ -125,7 +153,16 @@ glm::ivec2 JsonReader::ivec2(const std::string& key, std::optional<glm::ivec2> f
                      [](const auto& v) { return v.is_number_integer(); })) {
         fail(key, "expected an array of two integers, got " + describe(value));
     }
-    return {value[0].get<int>(), value[1].get<int>()};
+    glm::ivec2 result;
+    for (int i = 0; i < 2; ++i) {
+        const std::optional<long long> v = integer_in(value[i], min, max);
+        if (!v) {
+            fail(key,
+                 "expected two integers in " + range_text(min, max) + ", got " + describe(value));
+        }
+        result[i] = static_cast<int>(*v);
+    }
+    return result;
 }
 
 JsonReader JsonReader::object(const std::string& key) const {
@@ -151,20 +188,6 @@ std::vector<JsonReader> JsonReader::array(const std::string& key) const {
         items.emplace_back(value[i], file_, item_path);
     }
     return items;
-}
-
-nlohmann::json parse_json(const std::string& text, const std::string& file) {
-    try {
-        return nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
-    } catch (const nlohmann::json::parse_error& error) {
-        // nlohmann's message reads "[json.exception.parse_error.101] parse error at line L,
-        // column C: ..."; keep the part after the bracketed id.
-        std::string message = error.what();
-        if (const size_t close = message.find("] "); close != std::string::npos) {
-            message = message.substr(close + 2);
-        }
-        throw Error(file + ": malformed JSON: " + message);
-    }
 }
 
 }  // namespace rc

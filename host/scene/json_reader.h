@@ -5,10 +5,13 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <initializer_list>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "scene/json_parse.h"
 
 namespace rc {
 
@@ -26,12 +29,16 @@ class JsonReader {
 
     // Required when no fallback is given.
     float number(const std::string& key, std::optional<float> fallback = std::nullopt) const;
-    int integer(const std::string& key, std::optional<int> fallback = std::nullopt) const;
+    // An integer in [min, max] (a value outside is an error naming the range, never wrapped).
+    int integer(const std::string& key, std::optional<int> fallback = std::nullopt,
+                int min = std::numeric_limits<int>::min(),
+                int max = std::numeric_limits<int>::max()) const;
     std::string string(const std::string& key,
                        std::optional<std::string> fallback = std::nullopt) const;
     glm::vec3 vec3(const std::string& key, std::optional<glm::vec3> fallback = std::nullopt) const;
-    glm::ivec2 ivec2(const std::string& key,
-                     std::optional<glm::ivec2> fallback = std::nullopt) const;
+    // Two integers, each in [min, max].
+    glm::ivec2 ivec2(const std::string& key, std::optional<glm::ivec2> fallback, int min,
+                     int max) const;
     JsonReader object(const std::string& key) const;
     std::vector<JsonReader> array(const std::string& key) const;
 
@@ -46,8 +53,5 @@ class JsonReader {
     std::string file_;
     std::string path_;
 };
-
-// Parses JSON text (comments allowed); a syntax error throws Error with the file, line and column.
-nlohmann::json parse_json(const std::string& text, const std::string& file);
 
 }  // namespace rc

@@ -1,5 +1,6 @@
 // Wavefront OBJ meshes through tinyobjloader, validated first: every vertex must be finite and
-// every face index must name an existing vertex, else an error names the file and line.
+// every face index must name an existing vertex, and the MTL values radcache reads must be finite
+// and in range, else an error names the file and line. Polygons are triangulated in linear time.
 #pragma once
 
 #include <filesystem>
@@ -7,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/scene_files.h"
 #include "scene/triangle_mesh.h"
 
 namespace rc {
@@ -31,6 +33,8 @@ struct ObjData {
     std::vector<std::string> warnings;
 };
 
-ObjData load_obj(const std::filesystem::path& path);
+// Reads the OBJ file and its MTL libraries through `files`; Error naming the file and line for a
+// bad vertex, face index or MTL value.
+ObjData load_obj(const std::filesystem::path& path, const SceneFiles& files = disk_files());
 
 }  // namespace rc

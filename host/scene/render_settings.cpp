@@ -2,7 +2,9 @@
 
 #include <cmath>
 
+#include "scene/json_parse.h"
 #include "util/error.h"
+#include "util/text.h"
 
 namespace rc {
 namespace {
@@ -14,7 +16,7 @@ long long integer_in(const nlohmann::json& value, const std::string& what, long 
     if (!value.is_number_integer() || value.get<long long>() < min ||
         value.get<long long>() > max) {
         throw Error(what + ": expected an integer in [" + std::to_string(min) + ", " +
-                    std::to_string(max) + "], got " + value.dump());
+                    std::to_string(max) + "], got " + describe_json(value));
     }
     return value.get<long long>();
 }
@@ -23,7 +25,7 @@ double number_in(const nlohmann::json& value, const std::string& what, double mi
     if (!value.is_number() || !std::isfinite(value.get<double>()) || value.get<double>() < min ||
         value.get<double>() > max) {
         throw Error(what + ": expected a number in [" + std::to_string(min) + ", " +
-                    std::to_string(max) + "], got " + value.dump());
+                    std::to_string(max) + "], got " + describe_json(value));
     }
     return value.get<double>();
 }
@@ -32,10 +34,10 @@ double number_in(const nlohmann::json& value, const std::string& what, double mi
 
 void RenderSettings::set(const std::string& key, const nlohmann::json& value,
                          const std::string& where) {
-    const std::string what = where + ": " + key;
+    const std::string what = where + ": " + excerpt(key);
     if (key == "method") {
         if (!value.is_string()) {
-            throw Error(what + ": expected a string, got " + value.dump());
+            throw Error(what + ": expected a string, got " + describe_json(value));
         }
         method = value.get<std::string>();
     } else if (key == "spp") {
@@ -51,14 +53,15 @@ void RenderSettings::set(const std::string& key, const nlohmann::json& value,
     } else if (key == "exposure") {
         exposure = static_cast<float>(number_in(value, what, -64.0, 64.0));
     } else {
-        throw Error(where + ": unknown render setting '" + key + "' (known: " + kKeys + ")");
+        throw Error(where + ": unknown render setting '" + excerpt(key) + "' (known: " + kKeys +
+                    ")");
     }
 }
 
 void RenderSettings::apply_override(const std::string& assignment) {
     const size_t equals = assignment.find('=');
     if (equals == std::string::npos || equals == 0) {
-        throw Error("-D " + assignment + ": expected key=value", 2);
+        throw Error("-D " + excerpt(assignment) + ": expected key=value", 2);
     }
     const std::string key = assignment.substr(0, equals);
     const std::string text = assignment.substr(equals + 1);

@@ -20,6 +20,11 @@
 
 namespace rc {
 
+// Every world-space position (vertices, emitters, after transforms and animation) lies within
+// [-kMaxWorldCoordinate, kMaxWorldCoordinate] on each axis (docs/scene-format.md): beyond it,
+// squared distances in the kernels and bounds in Embree's BVH build overflow single precision.
+inline constexpr float kMaxWorldCoordinate = 1e12f;
+
 struct Shape {
     std::string name;
     std::string type;  // "obj", "rectangle", "cube", "sphere" or "generated"

@@ -3,6 +3,7 @@
 // light-selection distribution by power.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -13,11 +14,42 @@
 #include "scene/transform.h"
 #include "util/error.h"
 #include "util/glm_helpers.h"
+#include "util/log.h"
+#include "util/text.h"
 
 namespace rc {
 namespace {
 
 constexpr float kPi = 3.14159265f;
+
+bool within_world(glm::vec3 p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) &&
+           std::fabs(p.x) <= kMaxWorldCoordinate && std::fabs(p.y) <= kMaxWorldCoordinate &&
+           std::fabs(p.z) <= kMaxWorldCoordinate;
+}
+
+std::string format_point(glm::vec3 p) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%g, %g, %g)", p.x, p.y, p.z);
+    return text;
+}
+
+std::string frame_text(double frame) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", frame);
+    return text;
+}
+
+// Error unless every world position lies within the world range (issue 17: Embree's build and
+// the kernels' squared distances overflow beyond it).
+void check_world_point(glm::vec3 p, const std::string& what, double frame) {
+    if (!within_world(p)) {
+        throw Error(what + " lies at " + format_point(p) + " in world space at frame " +
+                    frame_text(frame) +
+                    ", outside the world range of +-1e12 (check its size, "
+                    "transform and animation)");
+    }
+}
 
 // The material slot of a shape's triangle t (slot 0 for a bad or missing index).
 size_t material_slot(const Shape& shape, size_t t) {
@@ -75,11 +107,18 @@ void add_shape_triangles(Scene& scene, size_t s, ShapeLights& shape_lights) {
     const int normal_base =
         shape.mesh.normals.empty() ? -1 : static_cast<int>(scene.normals.size());
     const int uv_base = shape.mesh.uvs.empty() ? -1 : static_cast<int>(scene.uvs.size());
-    for (const glm::vec3& p : shape.mesh.positions) {
-        mesh.positions.push_back(transform_point(to_world, p));
+    const std::string shape_name = "shape '" + excerpt(shape.name) + "'";
+    for (size_t v = 0; v < shape.mesh.positions.size(); ++v) {
+        const glm::vec3 world = transform_point(to_world, shape.mesh.positions[v]);
+        check_world_point(world, shape_name + ": vertex " + std::to_string(v), scene.frame);
+        mesh.positions.push_back(world);
     }
     for (const glm::vec3& n : shape.mesh.normals) {
         const glm::vec3 world = transform_normal(to_world, n);
+        if (!std::isfinite(world.x) || !std::isfinite(world.y) || !std::isfinite(world.z)) {
+            throw Error(shape_name + ": a vertex normal is not finite in world space at frame " +
+                        frame_text(scene.frame) + " (a near-singular transform)");
+        }
         scene.normals.push_back(shape.flip_normals ? -world : world);
     }
     scene.uvs.insert(scene.uvs.end(), shape.mesh.uvs.begin(), shape.mesh.uvs.end());
@@ -169,7 +208,7 @@ float scene_radius(const TriangleMesh& mesh) {
 
 // The device light of a point, spot or environment emitter at the frame, and its power.
 shared::Light emitter_light(const Emitter& emitter, const glm::mat4& motion, float radius,
-                            float* power) {
+                            double frame, float* power) {
     shared::Light light{};
     if (emitter.kind == EmitterKind::kConstant) {
         light.kind = RC_LIGHT_CONSTANT;
@@ -178,6 +217,7 @@ shared::Light emitter_light(const Emitter& emitter, const glm::mat4& motion, flo
         return light;
     }
     const glm::vec3 position = transform_point(motion, emitter.position);
+    check_world_point(position, "emitter '" + excerpt(emitter.name) + "'", frame);
     light.position = float4_of(position);
     if (emitter.kind == EmitterKind::kPoint) {
         light.kind = RC_LIGHT_POINT;
@@ -185,7 +225,9 @@ shared::Light emitter_light(const Emitter& emitter, const glm::mat4& motion, flo
         *power = 4.0f * kPi * luminance(emitter.intensity);
         return light;
     }
-    const glm::vec3 axis = glm::normalize(transform_point(motion, emitter.look_at) - position);
+    const glm::vec3 target = transform_point(motion, emitter.look_at);
+    check_world_point(target, "emitter '" + excerpt(emitter.name) + "': look_at", frame);
+    const glm::vec3 axis = glm::normalize(target - position);
     const float cutoff = glm::radians(emitter.cutoff_angle);
     const float beam = glm::radians(emitter.beam_width);
     light.kind = RC_LIGHT_SPOT;
@@ -215,6 +257,22 @@ std::vector<float> selection_cdf(const std::vector<float>& power) {
     return cdf;
 }
 
+// A camera far outside the world range, or posed so that its view direction overflows, sees
+// nothing: the issue's "renders black with no word". Warned (an error under --strict).
+void warn_unless_camera_view_finite(const Camera& camera, double frame) {
+    const glm::vec3 forward = camera.look_at - camera.position;
+    const glm::vec3 right = glm::cross(forward, camera.up);
+    const bool finite = within_world(camera.position) && within_world(camera.look_at) &&
+                        within_world(forward) && std::isfinite(glm::length(right)) &&
+                        glm::length(right) > 0.0f;
+    if (!finite) {
+        log_warning("camera at frame " + frame_text(frame) + ": position " +
+                    format_point(camera.position) + " looking at " + format_point(camera.look_at) +
+                    " overflows the view (outside the world range "
+                    "or a degenerate up): the image will be black");
+    }
+}
+
 }  // namespace
 
 void Scene::set_frame(double new_frame) {
@@ -231,6 +289,7 @@ void Scene::set_frame(double new_frame) {
     camera.position = transform_point(camera_motion, base_camera.position);
     camera.look_at = transform_point(camera_motion, base_camera.look_at);
     camera.up = transform_direction(camera_motion, base_camera.up);
+    warn_unless_camera_view_finite(camera, frame);
 
     std::vector<float> power;
     for (size_t s = 0; s < shapes.size(); ++s) {
@@ -245,7 +304,7 @@ void Scene::set_frame(double new_frame) {
         if (emitter.kind == EmitterKind::kConstant) {
             lights.environment = static_cast<int>(lights.lights.size());
         }
-        lights.lights.push_back(emitter_light(emitter, motion, radius, &light_power));
+        lights.lights.push_back(emitter_light(emitter, motion, radius, frame, &light_power));
         power.push_back(light_power);
     }
     lights.cdf = selection_cdf(power);

@@ -14,6 +14,7 @@
 #include "util/error.h"
 #include "util/file_io.h"
 #include "util/log.h"
+#include "util/text.h"
 
 namespace rc {
 namespace {
@@ -43,8 +44,8 @@ glm::vec3 parse_colour(const JsonReader& reader, const std::string& key, glm::ve
 
 class SceneParser {
    public:
-    SceneParser(const std::filesystem::path& path, Scene& scene)
-        : file_(path.string()), dir_(path.parent_path()), scene_(scene) {}
+    SceneParser(const std::filesystem::path& path, const SceneFiles& files, Scene& scene)
+        : file_(path.string()), dir_(path.parent_path()), files_(files), scene_(scene) {}
 
     void parse(const JsonReader& root) {
         root.allow_only({"camera", "materials", "shapes", "emitters", "animation", "render"});
@@ -84,7 +85,8 @@ class SceneParser {
         if (axis == "diagonal") return FovAxis::kDiagonal;
         if (axis == "smaller") return FovAxis::kSmaller;
         if (axis == "larger") return FovAxis::kLarger;
-        reader.fail("fov_axis", "unknown value '" + axis + "' (x, y, diagonal, smaller, larger)");
+        reader.fail("fov_axis",
+                    "unknown value '" + excerpt(axis) + "' (x, y, diagonal, smaller, larger)");
     }
 
     Camera parse_camera(const JsonReader& reader) {
@@ -95,12 +97,8 @@ class SceneParser {
         camera.up = reader.vec3("up", glm::vec3(0.0f, 1.0f, 0.0f));
         camera.fov_degrees = reader.number("fov");
         camera.fov_axis = parse_fov_axis(reader);
-        const glm::ivec2 resolution = reader.ivec2("resolution", glm::ivec2(512, 512));
-        if (resolution.x <= 0 || resolution.y <= 0) {
-            reader.fail("resolution", "width and height must be positive, got " +
-                                          std::to_string(resolution.x) + "x" +
-                                          std::to_string(resolution.y));
-        }
+        const glm::ivec2 resolution =
+            reader.ivec2("resolution", glm::ivec2(512, 512), 1, kMaxImageSide);
         camera.width = resolution.x;
         camera.height = resolution.y;
         if (!(camera.fov_degrees > 0.0f && camera.fov_degrees < 180.0f)) {
@@ -123,7 +121,7 @@ class SceneParser {
         if (found != texture_index_.end()) {
             return found->second;
         }
-        scene_.textures.push_back(load_texture(path));
+        scene_.textures.push_back(load_texture(path, files_));
         texture_index_[key] = static_cast<int>(scene_.textures.size() - 1);
         return texture_index_[key];
     }
@@ -135,12 +133,12 @@ class SceneParser {
             const JsonReader bitmap = reader.object(key);
             bitmap.allow_only({"type", "filename"});
             if (bitmap.string("type") != "bitmap") {
-                bitmap.fail("type",
-                            "unknown texture type '" + bitmap.string("type") + "' (known: bitmap)");
+                bitmap.fail("type", "unknown texture type '" + excerpt(bitmap.string("type")) +
+                                        "' (known: bitmap)");
             }
             const std::filesystem::path image = dir_ / bitmap.string("filename");
-            if (!std::filesystem::is_regular_file(image)) {
-                bitmap.fail("filename", "texture file '" + image.string() + "' not found");
+            if (!files_.exists(image)) {
+                bitmap.fail("filename", "texture file '" + excerpt(image.string()) + "' not found");
             }
             *texture_index = texture(image);
             const Texture& t = scene_.textures[*texture_index];
@@ -184,7 +182,8 @@ class SceneParser {
                 }
             }
         } else {
-            reader.fail("type", "unknown material type '" + type + "' (diffuse, phong, ward)");
+            reader.fail("type",
+                        "unknown material type '" + excerpt(type) + "' (diffuse, phong, ward)");
         }
         material.diffuse =
             parse_reflectance(reader, "diffuse", glm::vec3(0.5f), &material.diffuse_texture);
@@ -201,7 +200,7 @@ class SceneParser {
         const std::string name = reader.string(key);
         const auto found = material_index_.find(name);
         if (found == material_index_.end()) {
-            reader.fail(key, "unknown material '" + name + "'");
+            reader.fail(key, "unknown material '" + excerpt(name) + "'");
         }
         return found->second;
     }
@@ -224,8 +223,8 @@ class SceneParser {
         if (glm::any(glm::lessThan(material.diffuse, glm::vec3(0.0f))) ||
             glm::any(glm::lessThan(material.specular, glm::vec3(0.0f))) || total.r > 1.0f ||
             total.g > 1.0f || total.b > 1.0f) {
-            reader.fail("file", "MTL material '" + m.name + "': Kd + Ks = " + format_vec3(total) +
-                                    " is negative or exceeds 1");
+            reader.fail("file", "MTL material '" + excerpt(m.name) + "': Kd + Ks = " +
+                                    format_vec3(total) + " is negative or exceeds 1");
         }
         scene_.materials.push_back(material);
         return static_cast<int>(scene_.materials.size() - 1);
@@ -235,8 +234,8 @@ class SceneParser {
         const JsonReader emitter = reader.object("emitter");
         emitter.allow_only({"type", "radiance"});
         if (emitter.string("type") != "area") {
-            emitter.fail("type",
-                         "unknown shape emitter '" + emitter.string("type") + "' (known: area)");
+            emitter.fail("type", "unknown shape emitter '" + excerpt(emitter.string("type")) +
+                                     "' (known: area)");
         }
         return parse_colour(emitter, "radiance", glm::vec3(1.0f), 0.0f, 1e9f);
     }
@@ -252,7 +251,8 @@ class SceneParser {
         } else if (type == "sphere") {
             keys.insert(keys.end(), {"center", "radius"});
         } else if (type != "rectangle" && type != "cube") {
-            reader.fail("type", "unknown shape type '" + type + "' (obj, rectangle, cube, sphere)");
+            reader.fail("type", "unknown shape type '" + excerpt(type) +
+                                    "' (obj, rectangle, cube, sphere)");
         }
         for (const auto& item : reader.value().items()) {
             if (std::find(keys.begin(), keys.end(), item.key()) == keys.end()) {
@@ -270,10 +270,10 @@ class SceneParser {
                                   : std::nullopt;
         if (type == "obj") {
             shape.file = dir_ / reader.string("file");
-            if (!std::filesystem::is_regular_file(shape.file)) {
-                reader.fail("file", "mesh file '" + shape.file.string() + "' not found");
+            if (!files_.exists(shape.file)) {
+                reader.fail("file", "mesh file '" + excerpt(shape.file.string()) + "' not found");
             }
-            ObjData obj = load_obj(shape.file);
+            ObjData obj = load_obj(shape.file, files_);
             for (const std::string& warning : obj.warnings) {
                 log_warning(warning);
             }
@@ -291,8 +291,8 @@ class SceneParser {
             shape.emission.push_back(emission ? *emission : glm::vec3(0.0f));
             for (const ObjMaterial& m : obj.materials) {
                 if (glm::any(glm::lessThan(m.ke, glm::vec3(0.0f)))) {
-                    reader.fail("file", "MTL material '" + m.name + "': Ke " + format_vec3(m.ke) +
-                                            " is negative");
+                    reader.fail("file", "MTL material '" + excerpt(m.name) + "': Ke " +
+                                            format_vec3(m.ke) + " is negative");
                 }
             }
         } else {
@@ -316,7 +316,7 @@ class SceneParser {
                                                ? shape.file.stem().string()
                                                : type + "_" + std::to_string(scene_.shapes.size()));
         if (!shape_names_.insert(shape.name).second) {
-            reader.fail("name", "a shape named '" + shape.name + "' already exists");
+            reader.fail("name", "a shape named '" + excerpt(shape.name) + "' already exists");
         }
         shape.transform = parse_transform(reader, "transform");
         if (reader.has("flip_normals")) {
@@ -371,11 +371,12 @@ class SceneParser {
                 }
             }
         } else {
-            reader.fail("type", "unknown emitter type '" + type + "' (point, spot, constant)");
+            reader.fail("type",
+                        "unknown emitter type '" + excerpt(type) + "' (point, spot, constant)");
         }
         emitter.name = reader.string("name", type + "_" + std::to_string(scene_.emitters.size()));
         if (!emitter_names_.insert(emitter.name).second) {
-            reader.fail("name", "an emitter named '" + emitter.name + "' already exists");
+            reader.fail("name", "an emitter named '" + excerpt(emitter.name) + "' already exists");
         }
         scene_.emitters.push_back(emitter);
     }
@@ -383,8 +384,9 @@ class SceneParser {
     void parse_animation(const JsonReader& reader) {
         reader.allow_only({"frame_start", "frame_end", "fps", "tracks"});
         Animation& animation = scene_.animation;
-        animation.frame_start = reader.integer("frame_start", 0);
-        animation.frame_end = reader.integer("frame_end", static_cast<int>(animation.frame_start));
+        animation.frame_start = reader.integer("frame_start", 0, -kMaxFrameNumber, kMaxFrameNumber);
+        animation.frame_end = reader.integer("frame_end", static_cast<int>(animation.frame_start),
+                                             -kMaxFrameNumber, kMaxFrameNumber);
         animation.fps = reader.number("fps", 24.0f);
         if (animation.frame_end < animation.frame_start) {
             reader.fail("frame_end", "is before frame_start");
@@ -402,19 +404,19 @@ class SceneParser {
                 track.target = TrackTarget::kShape;
                 track.name = target.substr(6);
                 if (shape_names_.count(track.name) == 0) {
-                    track_reader.fail("target", "no shape named '" + track.name + "'");
+                    track_reader.fail("target", "no shape named '" + excerpt(track.name) + "'");
                 }
             } else if (target.rfind("emitter:", 0) == 0) {
                 track.target = TrackTarget::kEmitter;
                 track.name = target.substr(8);
                 if (emitter_names_.count(track.name) == 0) {
-                    track_reader.fail("target", "no emitter named '" + track.name + "'");
+                    track_reader.fail("target", "no emitter named '" + excerpt(track.name) + "'");
                 }
             } else {
                 track_reader.fail("target",
                                   "expected \"camera\", \"shape:NAME\" or "
                                   "\"emitter:NAME\", got '" +
-                                      target + "'");
+                                      excerpt(target) + "'");
             }
             for (const JsonReader& key_reader : track_reader.array("keyframes")) {
                 key_reader.allow_only({"frame", "translate", "rotate"});
@@ -445,6 +447,7 @@ class SceneParser {
 
     std::string file_;
     std::filesystem::path dir_;
+    const SceneFiles& files_;
     Scene& scene_;
     std::map<std::string, int> material_index_;
     std::map<std::string, int> texture_index_;
@@ -452,18 +455,31 @@ class SceneParser {
     std::set<std::string> emitter_names_;
 };
 
+// A scene that renders black without a word (issue 17): warned, an error under --strict.
+void warn_unless_lit(const Scene& scene) {
+    const bool lit = std::any_of(
+        scene.lights.lights.begin(), scene.lights.lights.end(), [](const shared::Light& light) {
+            return light.radiance.x > 0.0f || light.radiance.y > 0.0f || light.radiance.z > 0.0f;
+        });
+    if (!lit) {
+        log_warning(scene.path.string() +
+                    ": the scene has no emitter that gives light: the image will be black");
+    }
+}
+
 }  // namespace
 
-Scene load_scene(const std::filesystem::path& path) {
-    if (!std::filesystem::is_regular_file(path)) {
+Scene load_scene(const std::filesystem::path& path, const SceneFiles& files) {
+    if (!files.exists(path)) {
         throw Error(path.string() + ": scene file not found");
     }
     const std::string file = path.string();
-    const nlohmann::json document = parse_json(read_file(path), file);
+    const nlohmann::json document =
+        parse_json(files.read(path, kMaxSceneFileBytes, "scene file"), file);
     const JsonReader root(document, file);
     Scene scene;
     scene.path = path;
-    SceneParser(path, scene).parse(root);
+    SceneParser(path, files, scene).parse(root);
     if (scene.shapes.empty()) {
         throw Error(file + ": the scene has no triangles");
     }
@@ -475,6 +491,7 @@ Scene load_scene(const std::filesystem::path& path) {
     if (scene.mesh.triangle_count() == 0) {
         throw Error(file + ": the scene has no triangles");
     }
+    warn_unless_lit(scene);
     return scene;
 }
 

@@ -4,10 +4,12 @@
 #include <filesystem>
 
 #include "scene/scene.h"
+#include "scene/scene_files.h"
 
 namespace rc {
 
-// Loads the scene; any problem throws Error naming the file and the key or line.
-Scene load_scene(const std::filesystem::path& path);
+// Loads the scene, reading it and its meshes and textures through `files`; any problem throws
+// Error naming the file and the key or line. A scene without light is warned about (log_warning).
+Scene load_scene(const std::filesystem::path& path, const SceneFiles& files = disk_files());
 
 }  // namespace rc

@@ -1,10 +1,9 @@
 #include "scene/texture.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
 
+#include "image/image_io.h"
 #include "util/error.h"
 
 namespace rc {
@@ -16,35 +15,24 @@ float srgb_decode(float encoded) {
 
 }  // namespace
 
-Texture load_texture(const std::filesystem::path& file) {
-    if (!std::filesystem::is_regular_file(file)) {
+Texture load_texture(const std::filesystem::path& file, const SceneFiles& files) {
+    if (!files.exists(file)) {
         throw Error(file.string() + ": texture file not found");
     }
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(file.string());
-    if (!in) {
-        throw Error(file.string() + ": cannot read texture: " + OIIO::geterror());
-    }
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
-        throw Error(file.string() + ": texture has no pixels");
-    }
-    std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) {
-        throw Error(file.string() + ": cannot read texture: " + in->geterror());
-    }
-    const bool encoded = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
-                         spec.format.basetype == OIIO::TypeDesc::UINT16;
+    const DecodedImage decoded =
+        decode_image(files.read(file, kMaxTextureFileBytes, "texture"), file.string());
+    const Image& image = decoded.image;
     Texture texture;
     texture.file = file;
-    texture.width = spec.width;
-    texture.height = spec.height;
-    texture.texels.resize(static_cast<size_t>(spec.width) * spec.height);
-    const int channels = spec.nchannels;
+    texture.width = image.width;
+    texture.height = image.height;
+    texture.texels.resize(static_cast<size_t>(image.width) * image.height);
+    const int channels = image.channels;
     for (size_t i = 0; i < texture.texels.size(); ++i) {
         glm::vec4 texel(0.0f, 0.0f, 0.0f, 1.0f);
         for (int c = 0; c < 3; ++c) {
-            float value = pixels[i * channels + std::min(c, channels < 3 ? 0 : c)];
-            if (encoded) {
+            float value = image.pixels[i * channels + std::min(c, channels < 3 ? 0 : c)];
+            if (decoded.integer_encoded) {
                 value = srgb_decode(value);
             }
             if (!std::isfinite(value) || value < 0.0f) {

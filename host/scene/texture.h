@@ -5,6 +5,8 @@
 #include <glm/vec4.hpp>
 #include <vector>
 
+#include "scene/scene_files.h"
+
 namespace rc {
 
 struct Texture {
@@ -15,8 +17,9 @@ struct Texture {
     float max_value = 0.0f;         // largest RGB component
 };
 
-// Reads the image; 8- and 16-bit integer images are taken as sRGB-encoded and decoded to
-// linear, float images as linear. Grey images are expanded to RGB. Throws Error naming the file.
-Texture load_texture(const std::filesystem::path& file);
+// Reads the image through `files` (within image/image_io.h's limits); 8- and 16-bit integer images
+// are taken as sRGB-encoded and decoded to linear, float images as linear. Grey images are
+// expanded to RGB. Throws Error naming the file.
+Texture load_texture(const std::filesystem::path& file, const SceneFiles& files = disk_files());
 
 }  // namespace rc

@@ -50,9 +50,9 @@ glm::mat4 parse_transform(const JsonReader& reader, const std::string& key) {
             for (int row = 0; row < 4; ++row) {
                 for (int column = 0; column < 4; ++column) {
                     const nlohmann::json& entry = value[row * 4 + column];
-                    if (!entry.is_number() || !std::isfinite(entry.get<double>())) {
+                    if (!entry.is_number() || !std::isfinite(entry.get<float>())) {
                         step.fail("matrix", "entry " + std::to_string(row * 4 + column) +
-                                                " is not a finite number");
+                                                " is not a finite single-precision number");
                     }
                     m[column][row] = entry.get<float>();  // glm is column-major
                 }

@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "util/error.h"
+#include "util/text.h"
 
 namespace rc {
 
@@ -30,7 +31,7 @@ long long ParsedArguments::integer(const std::string& name, long long fallback, 
     const long long parsed = std::strtoll(text.c_str(), &end, 10);
     if (text.empty() || *end != '\0' || errno != 0 || parsed < min || parsed > max) {
         throw Error(name + ": expected an integer in [" + std::to_string(min) + ", " +
-                        std::to_string(max) + "], got '" + text + "'",
+                        std::to_string(max) + "], got '" + excerpt(text) + "'",
                     kExitUsage);
     }
     return parsed;
@@ -46,7 +47,7 @@ double ParsedArguments::number(const std::string& name, double fallback, double 
     const double parsed = std::strtod(text.c_str(), &end);
     if (text.empty() || *end != '\0' || !std::isfinite(parsed) || parsed < min || parsed > max) {
         throw Error(name + ": expected a number in [" + std::to_string(min) + ", " +
-                        std::to_string(max) + "], got '" + text + "'",
+                        std::to_string(max) + "], got '" + excerpt(text) + "'",
                     kExitUsage);
     }
     return parsed;
@@ -94,9 +95,9 @@ ParsedArguments parse_arguments(const std::string& command, const std::vector<st
             }
         }
         if (spec == nullptr) {
-            throw Error(
-                "unknown option '" + word + "' for '" + command + "' (see " + command + " --help)",
-                kExitUsage);
+            throw Error("unknown option '" + excerpt(word) + "' for '" + command + "' (see " +
+                            command + " --help)",
+                        kExitUsage);
         }
         if (!spec->repeatable && parsed.has(spec->name)) {
             throw Error("option " + spec->name + " given twice", kExitUsage);

@@ -1,28 +1,120 @@
 #include "util/file_io.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-#include <sstream>
+#include <mutex>
+#include <vector>
 
 #include "util/error.h"
 
 namespace rc {
+namespace {
 
-std::string read_file(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw Error(path.string() + ": cannot open file: " + std::strerror(errno));
+// Closes a file descriptor on every path out of read_file.
+struct FileDescriptor {
+    int fd = -1;
+    ~FileDescriptor() {
+        if (fd >= 0) {
+            ::close(fd);
+        }
     }
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    if (in.bad()) {
-        throw Error(path.string() + ": read error");
+};
+
+std::string described(const std::filesystem::path& path, const std::string& what) {
+    return what.empty() ? path.string() : path.string() + " (" + what + ")";
+}
+
+// The staged files of the open OutputBatch: (temporary, final path) in the order written.
+struct StagedFiles {
+    std::mutex mutex;
+    bool open = false;
+    std::vector<std::pair<std::filesystem::path, std::filesystem::path>> files;
+};
+
+StagedFiles& staged() {
+    static StagedFiles files;
+    return files;
+}
+
+void remove_quietly(const std::filesystem::path& path) {
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+}
+
+void rename_or_throw(const std::filesystem::path& temporary, const std::filesystem::path& path) {
+    std::error_code error;
+    std::filesystem::rename(temporary, path, error);
+    if (error) {
+        throw Error(path.string() + ": cannot write file: " + error.message());
     }
-    return bytes.str();
+}
+
+// Keeps `temporary` for the open batch's commit; false when no batch is open.
+bool stage(const std::filesystem::path& temporary, const std::filesystem::path& path) {
+    StagedFiles& batch = staged();
+    std::lock_guard<std::mutex> lock(batch.mutex);
+    if (!batch.open) {
+        return false;
+    }
+    for (auto& [old_temporary, old_path] : batch.files) {
+        if (old_path == path) {
+            remove_quietly(old_temporary);
+            old_temporary = temporary;
+            return true;
+        }
+    }
+    batch.files.emplace_back(temporary, path);
+    return true;
+}
+
+}  // namespace
+
+std::string read_file(const std::filesystem::path& path, uint64_t max_bytes,
+                      const std::string& what) {
+    // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below.
+    FileDescriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
+    if (file.fd < 0) {
+        throw Error(described(path, what) + ": cannot open file: " + std::strerror(errno));
+    }
+    struct stat info {};
+    if (::fstat(file.fd, &info) != 0) {
+        throw Error(described(path, what) + ": cannot open file: " + std::strerror(errno));
+    }
+    if (!S_ISREG(info.st_mode)) {
+        throw Error(described(path, what) + ": not a regular file");
+    }
+    if (static_cast<uint64_t>(info.st_size) > max_bytes) {
+        throw Error(described(path, what) + ": " + std::to_string(info.st_size) +
+                    " bytes, more than the limit of " + std::to_string(max_bytes));
+    }
+    // Read to the end, never past the limit (a file may grow, or report size 0 as /proc does).
+    std::string bytes;
+    bytes.reserve(static_cast<size_t>(info.st_size));
+    char chunk[1 << 16];
+    for (;;) {
+        const ssize_t got = ::read(file.fd, chunk, sizeof chunk);
+        if (got < 0 && errno == EINTR) {
+            continue;
+        }
+        if (got < 0) {
+            throw Error(described(path, what) + ": read error: " + std::strerror(errno));
+        }
+        if (got == 0) {
+            break;
+        }
+        if (bytes.size() + static_cast<size_t>(got) > max_bytes) {
+            throw Error(described(path, what) + ": more than the limit of " +
+                        std::to_string(max_bytes) + " bytes");
+        }
+        bytes.append(chunk, static_cast<size_t>(got));
+    }
+    return bytes;
 }
 
 std::filesystem::path temporary_sibling(const std::filesystem::path& path) {
@@ -35,34 +127,74 @@ std::filesystem::path temporary_sibling(const std::filesystem::path& path) {
 }
 
 void replace_file_atomically(const std::filesystem::path& path,
-                             const std::function<void(const std::filesystem::path&)>& write) {
+                             const std::function<void(const std::filesystem::path&)>& write,
+                             WriteTiming timing) {
     const std::filesystem::path temporary = temporary_sibling(path);
     try {
         write(temporary);
-        std::error_code error;
-        std::filesystem::rename(temporary, path, error);
-        if (error) {
-            throw Error(path.string() + ": cannot write file: " + error.message());
+        if (timing == WriteTiming::kWithBatch && stage(temporary, path)) {
+            return;
         }
+        rename_or_throw(temporary, path);
     } catch (...) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
+        remove_quietly(temporary);
         throw;
     }
 }
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
-    replace_file_atomically(path, [&](const std::filesystem::path& temporary) {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) {
-            throw Error(path.string() + ": cannot write file: " + std::strerror(errno));
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes,
+                           WriteTiming timing) {
+    replace_file_atomically(
+        path,
+        [&](const std::filesystem::path& temporary) {
+            std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+            if (!out) {
+                throw Error(path.string() + ": cannot write file: " + std::strerror(errno));
+            }
+            out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+            out.close();
+            if (!out) {
+                throw Error(path.string() + ": write error");
+            }
+        },
+        timing);
+}
+
+OutputBatch::OutputBatch() {
+    StagedFiles& batch = staged();
+    std::lock_guard<std::mutex> lock(batch.mutex);
+    if (batch.open) {
+        throw Error("internal error: an output batch is already open");
+    }
+    batch.open = true;
+    batch.files.clear();
+}
+
+OutputBatch::~OutputBatch() {
+    StagedFiles& batch = staged();
+    std::lock_guard<std::mutex> lock(batch.mutex);
+    for (const auto& file : batch.files) {
+        remove_quietly(file.first);
+    }
+    batch.files.clear();
+    batch.open = false;
+}
+
+void OutputBatch::commit() {
+    StagedFiles& batch = staged();
+    std::lock_guard<std::mutex> lock(batch.mutex);
+    auto files = std::move(batch.files);
+    batch.files.clear();
+    for (size_t i = 0; i < files.size(); ++i) {
+        try {
+            rename_or_throw(files[i].first, files[i].second);
+        } catch (...) {
+            for (size_t j = i; j < files.size(); ++j) {
+                remove_quietly(files[j].first);
+            }
+            throw;
         }
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        out.close();
-        if (!out) {
-            throw Error(path.string() + ": write error");
-        }
-    });
+    }
 }
 
 void check_writable_parent(const std::filesystem::path& file, const std::string& option) {
@@ -70,6 +202,15 @@ void check_writable_parent(const std::filesystem::path& file, const std::string&
     if (!std::filesystem::is_directory(dir) || ::access(dir.c_str(), W_OK) != 0) {
         throw Error(option + " " + file.string() + ": directory '" + dir.string() +
                         "' does not exist or is not writable",
+                    kExitUsage);
+    }
+    std::error_code error;
+    const std::filesystem::file_status status = std::filesystem::status(file, error);
+    if (std::filesystem::is_directory(status)) {
+        throw Error(option + " " + file.string() + ": is a directory", kExitUsage);
+    }
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+        throw Error(option + " " + file.string() + ": exists and is not a regular file",
                     kExitUsage);
     }
 }

@@ -1,4 +1,4 @@
-// Messages on stderr: warnings always, progress and notes unless quiet.
+// Messages on stderr: warnings always (errors under --strict), progress and notes unless quiet.
 #pragma once
 
 #include <string>
@@ -7,6 +7,10 @@ namespace rc {
 
 void set_quiet(bool quiet);
 bool quiet();
+// Under strict mode (render --strict) every warning is an error: log_warning throws Error
+// "<message> (a warning; --strict makes it an error)" instead of printing.
+void set_strict(bool strict);
+bool strict();
 void log_note(const std::string& message);     // "radcache: <message>" unless quiet
 void log_warning(const std::string& message);  // "radcache: warning: <message>"
 

@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/hash.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
@@ -71,7 +72,12 @@ GridFile read_grid_file(const std::filesystem::path& path, const Scene& scene) {
     if (!std::filesystem::is_regular_file(path)) {
         throw Error(name + ": irradiance vector grid file not found");
     }
-    const std::string bytes = read_file(path);
+    return parse_grid_file(read_file(path, kDefaultMaxFileBytes, "irradiance vector grid"), name,
+                           scene_fingerprint(scene), scene.path.string());
+}
+
+GridFile parse_grid_file(const std::string& bytes, const std::string& name, uint64_t scene,
+                         const std::string& scene_name) {
     Header header;
     if (bytes.size() < sizeof header + sizeof(uint64_t) ||
         std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) {
@@ -86,7 +92,7 @@ GridFile read_grid_file(const std::filesystem::path& path, const Scene& scene) {
     uint64_t vertices = 1;
     for (int axis = 0; axis < 3; ++axis) {
         sizes_fit = sizes_fit && header.cells[axis] >= 1 && header.cells[axis] <= 1024;
-        vertices *= static_cast<uint64_t>(std::max(header.cells[axis], 0) + 1);
+        vertices *= static_cast<uint64_t>(std::max(header.cells[axis], 0)) + 1;
     }
     sizes_fit =
         sizes_fit && bytes.size() == sizeof header +
@@ -101,11 +107,11 @@ GridFile read_grid_file(const std::filesystem::path& path, const Scene& scene) {
     if (checksum(bytes.data(), bytes.size() - sizeof stored_sum) != stored_sum) {
         throw Error(name + ": corrupt irradiance vector grid (checksum mismatch)");
     }
-    if (header.scene != scene_fingerprint(scene)) {
+    if (header.scene != scene) {
         throw Error(name +
                     ": irradiance vector grid was made for another scene (or another frame of "
                     "it) than " +
-                    scene.path.string());
+                    scene_name);
     }
     GridFile grid;
     for (int axis = 0; axis < 3; ++axis) {
@@ -119,6 +125,20 @@ GridFile read_grid_file(const std::filesystem::path& path, const Scene& scene) {
     grid.values.resize(vertices * RC_IVG_VALUES_PER_VERTEX);
     std::memcpy(grid.values.data(), bytes.data() + sizeof header,
                 grid.values.size() * sizeof(float));
+    // The values where they must lie (issue 17: the checksum guards against accidents only).
+    bool sound = grid.max_depth >= 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const float far =
+            grid.origin[axis] + static_cast<float>(grid.cells[axis]) * grid.cell[axis];
+        sound = sound && std::fabs(grid.origin[axis]) <= kMaxWorldCoordinate &&
+                std::fabs(far) <= kMaxWorldCoordinate && grid.cell[axis] > 0.0f;
+    }
+    for (size_t i = 0; sound && i < grid.values.size(); ++i) {
+        sound = std::isfinite(grid.values[i]);
+    }
+    if (!sound) {
+        throw Error(name + ": corrupt irradiance vector grid (values out of range)");
+    }
     return grid;
 }
 

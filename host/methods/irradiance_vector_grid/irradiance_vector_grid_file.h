@@ -38,6 +38,11 @@ void write_grid_file(const std::filesystem::path& path, const Scene& scene, cons
 // The grid stored in the file; Error unless it is an intact grid file of this scene.
 GridFile read_grid_file(const std::filesystem::path& path, const Scene& scene);
 
+// The same from the file's bytes (`name` names it in errors), for the scene whose fingerprint is
+// `scene` (named `scene_name` in errors): the fuzz target's entry.
+GridFile parse_grid_file(const std::string& bytes, const std::string& name, uint64_t scene,
+                         const std::string& scene_name);
+
 // Error naming `name` when the grid does not fit the options: another resolution than --grid
 // asks for, direct light recorded or not unlike --ivg-include-direct, another depth limit.
 void check_grid_file(const GridFile& grid, const IvgOptions& options, const std::string& name);

@@ -3,8 +3,10 @@
 #include <OpenImageIO/hash.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
+#include "scene/scene.h"
 #include "util/error.h"
 #include "util/file_io.h"
 
@@ -58,8 +60,10 @@ Header checked_header(const std::string& name, const std::string& bytes, const C
     }
     const size_t fixed = sizeof header + sizeof(uint64_t);
     const size_t per_record = kRecordBytes + header.payload_bytes;
+    // The accuracy a is in (0, 1] (--accuracy): influence radii a R stay within the world.
     const bool sizes_fit =
         header.record_bytes == kRecordBytes && header.levels <= kMaxLevels &&
+        header.accuracy > 0.0f && header.accuracy <= 1.0f &&
         header.count <= (bytes.size() - fixed) / per_record &&
         bytes.size() == fixed + header.levels * sizeof(uint64_t) + header.count * per_record;
     if (!sizes_fit) {
@@ -93,6 +97,40 @@ void check_key(const std::string& name, const Header& header, const CacheFileKey
     if (header.accuracy != key.accuracy) {
         throw Error(name + ": " + what + " was made with accuracy " +
                     std::to_string(header.accuracy) + ", not " + std::to_string(key.accuracy));
+    }
+}
+
+bool finite_in(float value, float min, float max) {
+    return std::isfinite(value) && value >= min && value <= max;
+}
+
+// A record's values where they must lie (issue 17: a file is untrusted input; its checksum
+// guards against accidents only). Record positions lie in the scene's world range, normals are
+// unit, radii positive; distances may be infinite (no hit); payloads are floats, all finite.
+void check_record(const std::string& name, const CacheFileKey& key, uint64_t index,
+                  const shared::Record& record, const RecordHostData& host,
+                  const std::byte* payload) {
+    const glm::vec3 p = record_position(record);
+    const glm::vec3 n = record_normal(record);
+    const float length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    const bool distances = host.harmonic_distance >= 0.0f && host.min_distance >= 0.0f &&
+                           host.radius > 0.0f;  // NaN fails each comparison
+    bool sound = finite_in(p.x, -kMaxWorldCoordinate, kMaxWorldCoordinate) &&
+                 finite_in(p.y, -kMaxWorldCoordinate, kMaxWorldCoordinate) &&
+                 finite_in(p.z, -kMaxWorldCoordinate, kMaxWorldCoordinate) &&
+                 finite_in(length, 0.99f, 1.01f) &&
+                 finite_in(record.radius, 1e-30f, kMaxWorldCoordinate) &&
+                 finite_in(host.r_min, 0.0f, kMaxWorldCoordinate) &&
+                 finite_in(host.r_max, host.r_min, kMaxWorldCoordinate) && distances;
+    for (size_t offset = 0; sound && offset + sizeof(float) <= key.payload_bytes;
+         offset += sizeof(float)) {
+        float value;
+        std::memcpy(&value, payload + offset, sizeof value);
+        sound = std::isfinite(value);
+    }
+    if (!sound) {
+        throw Error(name + ": corrupt " + key.method + " cache (record " + std::to_string(index) +
+                    " holds values out of range)");
     }
 }
 
@@ -142,10 +180,17 @@ std::vector<RecordStore> read_cache_file(const std::filesystem::path& path,
     if (!std::filesystem::is_regular_file(path)) {
         throw Error(name + ": " + key.method + " cache file not found");
     }
-    const std::string bytes = read_file(path);
+    return parse_cache_file(read_file(path, kDefaultMaxFileBytes, key.method + " cache"), name,
+                            key);
+}
+
+std::vector<RecordStore> parse_cache_file(const std::string& bytes, const std::string& name,
+                                          const CacheFileKey& key) {
     const Header header = checked_header(name, bytes, key);
     std::vector<uint64_t> counts(header.levels);
-    std::memcpy(counts.data(), bytes.data() + sizeof header, counts.size() * sizeof(uint64_t));
+    if (!counts.empty()) {  // (memcpy to an empty vector's null data is undefined)
+        std::memcpy(counts.data(), bytes.data() + sizeof header, counts.size() * sizeof(uint64_t));
+    }
     uint64_t total = 0;
     for (uint64_t c : counts) {
         total += std::min<uint64_t>(c, header.count + 1);
@@ -157,17 +202,22 @@ std::vector<RecordStore> read_cache_file(const std::filesystem::path& path,
 
     const char* in = bytes.data() + sizeof header + counts.size() * sizeof(uint64_t);
     std::vector<RecordStore> levels;
+    uint64_t index = 0;
     for (uint64_t count : counts) {
         std::vector<shared::Record> records(count);
         std::vector<RecordHostData> host(count);
         std::vector<std::byte> payloads(count * key.payload_bytes);
-        for (size_t i = 0; i < count; ++i) {
+        for (size_t i = 0; i < count; ++i, ++index) {
             std::memcpy(&records[i], in, sizeof(shared::Record));
             in += sizeof(shared::Record);
             std::memcpy(&host[i], in, sizeof(RecordHostData));
             in += sizeof(RecordHostData);
-            std::memcpy(payloads.data() + i * key.payload_bytes, in, key.payload_bytes);
+            if (key.payload_bytes > 0) {
+                std::memcpy(payloads.data() + i * key.payload_bytes, in, key.payload_bytes);
+            }
             in += key.payload_bytes;
+            check_record(name, key, index, records[i], host[i],
+                         payloads.data() + i * key.payload_bytes);
         }
         levels.emplace_back(key.accuracy, key.payload_bytes);
         levels.back().restore(std::move(records), std::move(host), std::move(payloads));

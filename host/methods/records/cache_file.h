@@ -39,4 +39,10 @@ void write_cache_file(const std::filesystem::path& path, const CacheFileKey& key
 std::vector<RecordStore> read_cache_file(const std::filesystem::path& path,
                                          const CacheFileKey& key);
 
+// The same from the file's bytes (`name` names it in errors): the fuzz target's entry. Every
+// size is checked against the bytes there are before anything is allocated, and every record's
+// values against their ranges.
+std::vector<RecordStore> parse_cache_file(const std::string& bytes, const std::string& name,
+                                          const CacheFileKey& key);
+
 }  // namespace rc

@@ -45,7 +45,7 @@ RecordStore TemporalIrradianceCache::serving_store(int level, int frame,
     std::vector<RecordHostData> host;
     for (size_t id = 0; id < records.size(); ++id) {
         const TemporalRecord& r = records[id];
-        const int end = r.created + r.lifespan;
+        const long long end = static_cast<long long>(r.created) + r.lifespan;
         if (frame < end) {
             serving->push_back(id);
             shared_parts.push_back(r.computed.record);
@@ -131,7 +131,7 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
     if (!next_) {
         next_.emplace(frame.scene);
     }
-    next_->set_frame(t + 1);
+    next_->set_frame(static_cast<double>(t) + 1.0);
     TemporalReprojection reprojection(frame, *next_, temporal_.hole_passes);
     stats.moving_primitives = reprojection.moving_primitives();
     IrradianceCache cache(frame);
@@ -210,7 +210,9 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
 
 void TemporalIrradianceCache::place_through(int last, const FrameScene& frame,
                                             const FrameHooks& hooks) {
-    for (int f = placed_until_ + 1; f <= last; ++f) {
+    // long long: a range ending at the largest frame number stops (issue 17).
+    for (long long next = static_cast<long long>(placed_until_) + 1; next <= last; ++next) {
+        const int f = static_cast<int>(next);
         if (f == frame.frame) {
             place_frame(frame);
         } else if (hooks.visit_frame) {
@@ -291,14 +293,16 @@ FrameResult TemporalIrradianceCache::shade_frame(const FrameScene& frame) {
 
 FrameResult TemporalIrradianceCache::render_frame(const FrameScene& frame,
                                                   const FrameHooks& hooks) {
-    if (frame.frame != shaded_until_ + 1) {
+    if (frame.frame != static_cast<long long>(shaded_until_) + 1) {
         throw Error("temporal caching: frame " + std::to_string(frame.frame) + " asked for after " +
                     std::to_string(shaded_until_) + "; frames come in order from " +
                     std::to_string(first_frame_));
     }
-    const int lookahead = temporal_.gradients == TemporalGradients::kInterpolated
-                              ? std::min(last_frame_, frame.frame + temporal_.max_frames)
-                              : frame.frame;
+    const int lookahead =
+        temporal_.gradients == TemporalGradients::kInterpolated
+            ? static_cast<int>(std::min<long long>(
+                  last_frame_, static_cast<long long>(frame.frame) + temporal_.max_frames))
+            : frame.frame;
     place_through(std::max(lookahead, frame.frame), frame, hooks);
     FrameResult result = shade_frame(frame);
     shaded_until_ = frame.frame;

@@ -1,0 +1,25 @@
+// Captures what libraries print on stderr (libpng's "libpng error: ..." lines) while an object of
+// this type lives, so that it can go into radcache's one error line instead of before it.
+#pragma once
+
+#include <string>
+
+namespace rc {
+
+class StderrCapture {
+   public:
+    StderrCapture();   // from here on, stderr goes to a temporary file
+    ~StderrCapture();  // stderr restored; what was captured and not taken is dropped
+    StderrCapture(const StderrCapture&) = delete;
+    StderrCapture& operator=(const StderrCapture&) = delete;
+
+    // Restores stderr and returns what was printed meanwhile, its lines joined by "; " (empty
+    // when nothing was, or when stderr could not be redirected).
+    std::string finish();
+
+   private:
+    int saved_fd_ = -1;
+    int capture_fd_ = -1;
+};
+
+}  // namespace rc

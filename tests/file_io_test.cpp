@@ -1,0 +1,132 @@
+// host/util's defences against hostile files (issue 17): reads of regular files only, within a
+// size limit; the output batch that commits a run's files together or not at all; values quoted
+// short in error lines; a library's stderr captured into the error line.
+#include "util/file_io.h"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include "test_support.h"
+#include "util/error.h"
+#include "util/stderr_capture.h"
+#include "util/text.h"
+
+namespace rc {
+namespace {
+
+std::string error_of(const std::function<void()>& action) {
+    try {
+        action();
+    } catch (const Error& error) {
+        return error.what();
+    }
+    return "";
+}
+
+std::vector<std::string> names_in(const std::filesystem::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+TEST(FileIo, ReadsOnlyRegularFilesWithinTheLimit) {
+    const auto dir = test::scratch_dir("file_io_read");
+    std::ofstream(dir / "ten.txt") << "0123456789";
+    EXPECT_EQ(read_file(dir / "ten.txt", 10), "0123456789");
+    EXPECT_NE(error_of([&] {
+                  read_file(dir / "ten.txt", 9, "mesh file");
+              }).find("ten.txt (mesh file): 10 bytes, more than the limit of 9"),
+              std::string::npos);
+    EXPECT_NE(error_of([&] { read_file(dir); }).find("not a regular file"), std::string::npos);
+    EXPECT_NE(error_of([] { read_file("/dev/zero"); }).find("/dev/zero: not a regular file"),
+              std::string::npos);
+    // A FIFO with no writer: refused at once, never waited on.
+    ASSERT_EQ(::mkfifo((dir / "fifo").c_str(), 0600), 0);
+    EXPECT_NE(error_of([&] { read_file(dir / "fifo"); }).find("not a regular file"),
+              std::string::npos);
+    EXPECT_NE(error_of([&] { read_file(dir / "absent"); }).find("cannot open file"),
+              std::string::npos);
+}
+
+TEST(FileIo, AnOutputBatchCommitsEveryFileAtTheEndOrNone) {
+    const auto dir = test::scratch_dir("file_io_batch");
+    std::ofstream(dir / "old.txt") << "old";
+    {
+        OutputBatch batch;
+        write_file_atomically(dir / "old.txt", "new");
+        write_file_atomically(dir / "fresh.txt", "first");
+        write_file_atomically(dir / "fresh.txt", "second");  // a path written twice: the last
+        write_file_atomically(dir / "cache.bin", "now", WriteTiming::kNow);
+        // Nothing has reached its path but what was written at once; the rest is staged.
+        EXPECT_EQ(read_file(dir / "old.txt"), "old");
+        EXPECT_FALSE(std::filesystem::exists(dir / "fresh.txt"));
+        EXPECT_EQ(read_file(dir / "cache.bin"), "now");
+        EXPECT_EQ(names_in(dir).size(), 4u);  // old, cache and two staged temporaries
+        batch.commit();
+    }
+    EXPECT_EQ(read_file(dir / "old.txt"), "new");
+    EXPECT_EQ(read_file(dir / "fresh.txt"), "second");
+    EXPECT_EQ(names_in(dir), (std::vector<std::string>{"cache.bin", "fresh.txt", "old.txt"}));
+
+    // A batch that ends without its commit (a failed run) removes what it staged.
+    {
+        OutputBatch batch;
+        write_file_atomically(dir / "old.txt", "lost");
+        write_file_atomically(dir / "other.txt", "lost");
+    }
+    EXPECT_EQ(read_file(dir / "old.txt"), "new");
+    EXPECT_EQ(names_in(dir), (std::vector<std::string>{"cache.bin", "fresh.txt", "old.txt"}));
+    // Without a batch a write reaches its path at once.
+    write_file_atomically(dir / "other.txt", "at once");
+    EXPECT_EQ(read_file(dir / "other.txt"), "at once");
+}
+
+TEST(FileIo, OutputsThatCannotBeFilesAreRefusedBeforeTheWork) {
+    const auto dir = test::scratch_dir("file_io_outputs");
+    std::filesystem::create_directories(dir / "stats.json");
+    const std::string directory =
+        error_of([&] { check_writable_parent(dir / "stats.json", "--stats"); });
+    EXPECT_NE(directory.find("--stats"), std::string::npos) << directory;
+    EXPECT_NE(directory.find("is a directory"), std::string::npos) << directory;
+    EXPECT_NE(error_of([] {
+                  check_writable_parent("/dev/null", "--stats");
+              }).find("exists and is not a regular file"),
+              std::string::npos);
+    EXPECT_NE(error_of([&] {
+                  check_writable_parent(dir / "missing/x.json", "--json");
+              }).find("does not exist or is not writable"),
+              std::string::npos);
+    EXPECT_EQ(error_of([&] { check_writable_parent(dir / "new.json", "--json"); }), "");
+    try {
+        check_writable_parent(dir / "stats.json", "--stats");
+    } catch (const Error& error) {
+        EXPECT_EQ(error.exit_code(), kExitUsage);
+    }
+}
+
+TEST(Text, ExcerptsAreShortAndOnOneLine) {
+    EXPECT_EQ(excerpt("short"), "short");
+    EXPECT_EQ(excerpt("a\nb\tc\x1b[31m"), "a\\nb\\tc\\x1b[31m");
+    const std::string long_text(5000000, 'x');
+    const std::string cut = excerpt(long_text);
+    EXPECT_EQ(cut, std::string(80, 'x') + "... (5000000 bytes)");
+    EXPECT_EQ(excerpt(std::string(80, 'y')), std::string(80, 'y'));
+}
+
+TEST(StderrCapture, CapturesWhatALibraryPrints) {
+    StderrCapture capture;
+    std::fprintf(stderr, "libpng error: IDAT: CRC error\n");
+    std::fprintf(stderr, "second line\n");
+    EXPECT_EQ(capture.finish(), "libpng error: IDAT: CRC error; second line");
+    EXPECT_EQ(capture.finish(), "");  // already restored
+}
+
+}  // namespace
+}  // namespace rc
