@@ -167,8 +167,20 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
     const size_t batch_limit = std::max<size_t>(1, cells_limit / per_record);
     const SceneArguments scene(bvh_, device_scene_);
     Buffer<unsigned> counters(context_, 1, "ic_record_counters");
-    for (size_t begin = 0; begin < sites.size(); begin += batch_limit) {
-        const size_t count = std::min(batch_limit, sites.size() - begin);
+    // Sites with their own streams go in runs of consecutive streams (a launch numbers its
+    // records' streams from params.first_record).
+    const bool own_streams = !sites.empty() && sites.front().stream >= 0;
+    const auto batch_size = [&](size_t begin) {
+        size_t count = std::min(batch_limit, sites.size() - begin);
+        for (size_t b = 1; own_streams && b < count; ++b) {
+            if (sites[begin + b].stream != sites[begin].stream + static_cast<int64_t>(b)) {
+                count = b;
+            }
+        }
+        return count;
+    };
+    for (size_t begin = 0, count = 0; begin < sites.size(); begin += count) {
+        count = batch_size(begin);
         std::vector<shared::Record> records(count);
         std::vector<shared::float4> origins(count);
         for (size_t b = 0; b < count; ++b) {
@@ -183,7 +195,8 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
         Buffer<shared::float4> distances(context_, count, "ic_distances");
         shared::IcParams params = level_params(level);
         // Streams: numbered within the level.
-        const size_t first = next_streams_[static_cast<size_t>(level)] + begin;
+        const size_t first = own_streams ? static_cast<size_t>(sites[begin].stream)
+                                         : next_streams_[static_cast<size_t>(level)] + begin;
         params.first_record = static_cast<int>(first);
         counters.fill_zero();
         if (cached) {
@@ -222,7 +235,9 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
             computed.push_back(r);
         }
     }
-    next_streams_[static_cast<size_t>(level)] += static_cast<uint32_t>(sites.size());
+    if (!own_streams) {
+        next_streams_[static_cast<size_t>(level)] += static_cast<uint32_t>(sites.size());
+    }
     return computed;
 }
 

@@ -116,6 +116,10 @@ struct RecordSite {
     float r_min = 0.0f;
     float r_max = 0.0f;
     int primitive = -1;  // the triangle the site lies on (-1: unknown)
+    // The random stream (within its level) of the record computed here: -1 takes the level's
+    // next; a record computed again in its predecessor's place may take the predecessor's, so
+    // that the two draw the same directions (temporal caching).
+    int64_t stream = -1;
 };
 
 // A batch of records as the record kernels computed them, still on the device.

@@ -103,6 +103,7 @@ void TemporalReprojection::observe(const RecordBatch& batch) {
     for (size_t b = 0; b < batch.count; ++b) {
         CarriedRecord r;
         r.site = batch.sites[b];
+        r.site.stream = static_cast<int64_t>(batch.params.first_record) + static_cast<int64_t>(b);
         r.next = next[b];
         const int primitive = batch.sites[b].primitive;
         r.site_moves = primitive >= 0 && static_cast<size_t>(primitive) < moves_.size() &&
