@@ -35,27 +35,13 @@ import argparse
 import json
 import math
 import os
-import resource
 import shlex
-import subprocess
 import sys
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import references  # noqa: E402
-RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
-
-
-def run(args):
-    result = subprocess.run([RADCACHE] + args, capture_output=True, text=True)
-    if result.returncode != 0:
-        sys.exit("radcache %s failed:\n%s%s" % (" ".join(args), result.stdout, result.stderr))
-    return result.stdout
-
-
-def cpu_seconds():
-    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return usage.ru_utime + usage.ru_stime
+from radcache_process import cpu_seconds, run  # noqa: E402
 
 
 def render(scene, output, options):
