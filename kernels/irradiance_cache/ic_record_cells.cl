@@ -6,13 +6,15 @@
 // The source after the method's own headers (see common/radiance_source.h).
 #include "common/radiance_source.h"
 
-// The ray of item i of a record batch: cell i % (M N) of batch record i / (M N).
+// The ray of item i of a record batch: cell i % (M N) of batch record i / (M N), whose random
+// stream is streams[i / (M N)].
 RC_FUNC Ray rc_ic_batch_cell_ray(const IcParams* params, __global const Record* records,
-                                 __global const float4* origins, uint i, RngStream* rng) {
+                                 __global const float4* origins, __global const uint* streams,
+                                 uint i, RngStream* rng) {
     const uint per_record = (uint)(params->strata_m * params->strata_n);
     const uint b = i / per_record;
-    return rc_ic_cell_ray(params, (uint)params->first_record + b, i % per_record,
-                          records[b].normal.xyz, origins[b].xyz, rng);
+    return rc_ic_cell_ray(params, streams[b], i % per_record, records[b].normal.xyz,
+                          origins[b].xyz, rng);
 }
 
 // Stores a cell's (L.rgb, distance) (a NaN or infinite radiance as black) and counts its rays.
@@ -28,7 +30,7 @@ RC_FUNC void rc_ic_store_cell(__global float4* cells, __global uint* counters, u
 // the shading point) unless the tests ask for it. counters[0] counts the rays traced.
 __kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
                               __global const Record* records, __global const float4* origins,
-                              RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
+                              __global const uint* streams, RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
                               __global uint* counters) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {
@@ -37,7 +39,7 @@ __kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PA
     const SceneData scene = RC_SCENE_DATA();
     const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
     RngStream rng;
-    const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, i, &rng);
+    const Ray ray = rc_ic_batch_cell_ray(&params, records, origins, streams, i, &rng);
     const SourceSample s =
         rc_source_radiance(&scene, &source, ray, &rng, params.count_emission != 0, params.level + 1,
                            params.max_depth, params.rr_depth);

@@ -48,11 +48,12 @@ __kernel void ic_gbuffer(uint begin, uint end, IcParams params, CameraParams cam
     gbuffer[i] = g;
 }
 
-// Item i: cell i % (M N) of batch record i / (M N): the first hit of its ray, where the next cache
-// level must cover it (footprint: rc_ic_deeper_pixel_width at the hit distance).
+// Item i: cell i % (M N) of batch record i / (M N) (random stream streams[i / (M N)]): the first
+// hit of its ray, where the next cache level must cover it (footprint: rc_ic_deeper_pixel_width
+// at the hit distance).
 __kernel void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
                              __global const Record* records, __global const float4* origins,
-                             __global GBufferSample* hits) {
+                             __global const uint* streams, __global GBufferSample* hits) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {
         return;
@@ -62,25 +63,25 @@ __kernel void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PAR
     const uint b = i / per_record;
     const uint cell = i % per_record;
     RngStream rng;
-    const Ray ray = rc_ic_cell_ray(&params, (uint)params.first_record + b, cell,
-                                   records[b].normal.xyz, origins[b].xyz, &rng);
+    const Ray ray =
+        rc_ic_cell_ray(&params, streams[b], cell, records[b].normal.xyz, origins[b].xyz, &rng);
     GBufferSample g = rc_ic_gbuffer_sample(&scene, ray);
     g.footprint *= rc_ic_deeper_pixel_width(&params);
     hits[i] = g;
 }
 
 // Item b: irradiance and gradients (into payloads[b]) and (harmonic mean, minimum) hit distance
-// (into distances[b]) of batch record b.
+// (into distances[b]) of batch record b (random stream streams[b]).
 __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global const float4* cells,
-                               __global const Record* records, __global IrradiancePayload* payloads,
-                               __global float4* distances) {
+                               __global const Record* records, __global const uint* streams,
+                               __global IrradiancePayload* payloads, __global float4* distances) {
     const uint b = begin + (uint)get_global_id(0);
     if (b >= end) {
         return;
     }
     const uint per_record = (uint)(params.strata_m * params.strata_n);
-    const RecordEstimate e = rc_ic_reduce(&params, (uint)params.first_record + b,
-                                          records[b].normal.xyz, cells + (size_t)b * per_record);
+    const RecordEstimate e = rc_ic_reduce(&params, streams[b], records[b].normal.xyz,
+                                          cells + (size_t)b * per_record);
     __global IrradiancePayload* r = payloads + b;
     r->irradiance = (float4)(e.irradiance, 0.0f);
     r->rotation_r = (float4)(e.rotation[0], 0.0f);

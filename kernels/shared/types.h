@@ -200,7 +200,6 @@ typedef struct IcParams {
     int draw_records;    // 1 to draw the records overlay (ic_shade)
     int strata_m;        // M: polar strata of a record's hemisphere
     int strata_n;        // N: azimuthal strata
-    int first_record;    // stream index of the launch's first record (within its level)
     int count_emission;  // 1 to count emission seen by hemisphere rays (tests)
     int max_depth;       // bounces of a path
     int rr_depth;        // the depth where Russian roulette starts
@@ -360,7 +359,6 @@ RC_SHARED_END
     FIELD(IcParams, draw_records)          \
     FIELD(IcParams, strata_m)              \
     FIELD(IcParams, strata_n)              \
-    FIELD(IcParams, first_record)          \
     FIELD(IcParams, count_emission)        \
     FIELD(IcParams, max_depth)             \
     FIELD(IcParams, rr_depth)              \
@@ -417,7 +415,7 @@ static_assert(sizeof(rc::shared::Light) == 80);
 static_assert(offsetof(rc::shared::Light, area) == 48);
 static_assert(sizeof(rc::shared::PathTracerParams) == 32);
 static_assert(sizeof(rc::shared::GBufferSample) == 64);
-static_assert(sizeof(rc::shared::IcParams) == 80);
+static_assert(sizeof(rc::shared::IcParams) == 76);
 static_assert(sizeof(rc::shared::IvgParams) == 128);
 static_assert(offsetof(rc::shared::IvgParams, sphere_radius) == 64);
 #endif

@@ -5,12 +5,13 @@
 #include "scene_arguments.h"
 #include "temporal/tc_reprojection.h"
 
-// Item i: cell i % (M N) of batch record i / (M N) (stream params.first_record + i / (M N)),
+// Item i: cell i % (M N) of batch record i / (M N) (random stream streams[i / (M N)]),
 // whose ray saw cells[i] = (L.rgb, distance) at this frame: carried[i], the sample carried to the
 // next frame (rc_tc_carry_sample).
 __kernel void tc_carry_cells(uint begin, uint end, IcParams params, TcParams tc,
                              RC_SCENE_PARAMETERS, __global const Record* records,
-                             __global const float4* origins, __global const float4* cells,
+                             __global const float4* origins, __global const uint* streams,
+                             __global const float4* cells,
                              __global const int* moved_slot,
                              __global const Triangle* moved_triangles,
                              __global const TcEmitter* emitters_now,
@@ -27,16 +28,17 @@ __kernel void tc_carry_cells(uint begin, uint end, IcParams params, TcParams tc,
     const float3 normal = records[b].normal.xyz;
     RngStream rng;
     const Ray ray =
-        rc_ic_cell_ray(&params, (uint)params.first_record + b, cell, normal, origins[b].xyz, &rng);
+        rc_ic_cell_ray(&params, streams[b], cell, normal, origins[b].xyz, &rng);
     const MovedTriangles moved = {moved_slot, moved_triangles};
     carried[i] =
         rc_tc_carry_sample(&scene, moved, emitters_now, emitters_next, &tc, &params,
                            rc_ic_record_frame(normal), origins[b].xyz, (int)cell, ray, cells[i]);
 }
 
-// Item b: batch record b's hemisphere at the next frame into next_cells (rc_tc_assemble; marks:
-// scratch, one per cell).
+// Item b: batch record b's hemisphere at the next frame into next_cells (rc_tc_assemble; random
+// stream streams[b]; marks: scratch, one per cell).
 __kernel void tc_assemble_cells(uint begin, uint end, IcParams params, TcParams tc,
+                                __global const uint* streams,
                                 __global const TcCarriedSample* carried,
                                 __global const float4* cells, __global float4* next_cells,
                                 __global uint* marks) {
@@ -45,6 +47,6 @@ __kernel void tc_assemble_cells(uint begin, uint end, IcParams params, TcParams 
         return;
     }
     const size_t first = (size_t)b * (size_t)(params.strata_m * params.strata_n);
-    rc_tc_assemble(&params, (uint)params.first_record + b, tc.hole_passes, carried + first,
+    rc_tc_assemble(&params, streams[b], tc.hole_passes, carried + first,
                    cells + first, next_cells + first, marks + first);
 }

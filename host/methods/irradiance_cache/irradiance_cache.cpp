@@ -167,58 +167,49 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
     const size_t batch_limit = std::max<size_t>(1, cells_limit / per_record);
     const SceneArguments scene(bvh_, device_scene_);
     Buffer<unsigned> counters(context_, 1, "ic_record_counters");
-    // Sites with their own streams go in runs of consecutive streams (a launch numbers its
-    // records' streams from params.first_record).
+    // Random streams: a site's own (all sites have one or none do), else the level's next ones.
     const bool own_streams = !sites.empty() && sites.front().stream >= 0;
-    const auto batch_size = [&](size_t begin) {
-        size_t count = std::min(batch_limit, sites.size() - begin);
-        for (size_t b = 1; own_streams && b < count; ++b) {
-            if (sites[begin + b].stream != sites[begin].stream + static_cast<int64_t>(b)) {
-                count = b;
-            }
-        }
-        return count;
-    };
     for (size_t begin = 0, count = 0; begin < sites.size(); begin += count) {
-        count = batch_size(begin);
+        count = std::min(batch_limit, sites.size() - begin);
         std::vector<shared::Record> records(count);
         std::vector<shared::float4> origins(count);
+        std::vector<unsigned> streams(count);
         for (size_t b = 0; b < count; ++b) {
             const RecordSite& site = sites[begin + b];
             records[b] = make_record(site.position, site.normal);
             origins[b] = float4_of(site.origin);
+            streams[b] = own_streams ? static_cast<unsigned>(site.stream)
+                                     : next_streams_[static_cast<size_t>(level)] +
+                                           static_cast<unsigned>(begin + b);
         }
         const Buffer<shared::Record> record_buffer(context_, records, "ic_batch_records");
         const Buffer<shared::float4> origin_buffer(context_, origins, "ic_batch_origins");
+        const Buffer<unsigned> stream_buffer(context_, streams, "ic_batch_streams");
         Buffer<shared::IrradiancePayload> payload_buffer(context_, count, "ic_batch_payloads");
         Buffer<shared::float4> cells(context_, count * per_record, "ic_cells");
         Buffer<shared::float4> distances(context_, count, "ic_distances");
-        shared::IcParams params = level_params(level);
-        // Streams: numbered within the level.
-        const size_t first = own_streams ? static_cast<size_t>(sites[begin].stream)
-                                         : next_streams_[static_cast<size_t>(level)] + begin;
-        params.first_record = static_cast<int>(first);
+        const shared::IcParams params = level_params(level);
         counters.fill_zero();
         if (cached) {
             // The next level must cover every hit of these rays before they read it.
             Buffer<shared::GBufferSample> hits(context_, count * per_record, "ic_record_hits");
             context_.launch(hits_kernel_, count * per_record, params, scene, record_buffer,
-                            origin_buffer, hits);
+                            origin_buffer, stream_buffer, hits);
             cover(level + 1, hits, {0, 1, 1}, count * per_record, true);
             const RecordLevelSource next(context_, stores_[level + 1], kIrradianceCacheMaxWeight);
             context_.launch(cells_kernel(next), count * per_record, params, scene, record_buffer,
-                            origin_buffer, next, cells, counters);
+                            origin_buffer, stream_buffer, next, cells, counters);
         } else {
             const RadianceSource& source =
                 sampling_.source != nullptr ? *sampling_.source : path_continuation_;
             context_.launch(cells_kernel(source), count * per_record, params, scene, record_buffer,
-                            origin_buffer, source, cells, counters);
+                            origin_buffer, stream_buffer, source, cells, counters);
         }
-        context_.launch(reduce_kernel_, count, params, cells, record_buffer, payload_buffer,
-                        distances);
+        context_.launch(reduce_kernel_, count, params, cells, record_buffer, stream_buffer,
+                        payload_buffer, distances);
         if (observer_ != nullptr) {
-            observer_->observe(
-                {params, record_buffer, origin_buffer, cells, sites.data() + begin, count});
+            observer_->observe({params, record_buffer, origin_buffer, stream_buffer, streams.data(),
+                                cells, sites.data() + begin, count});
         }
         const std::vector<shared::IrradiancePayload> payloads = payload_buffer.download();
         const std::vector<shared::float4> distance = distances.download();

@@ -125,10 +125,11 @@ struct RecordSite {
 // A batch of records as the record kernels computed them, still on the device.
 struct RecordBatch {
     const shared::IcParams& params;         // the kernels' parameters; level: the records'
-                                            // cache level; first_record: the batch's first
-                                            // random stream
+                                            // cache level
     const Buffer<shared::Record>& records;  // count records (position, normal; radius 0)
     const Buffer<shared::float4>& origins;  // where their rays leave
+    const Buffer<unsigned>& streams;        // their random streams (within the level)
+    const unsigned* stream_values;          // the same, count of them
     const Buffer<shared::float4>& cells;    // count x M N cells: (L.rgb, hit distance)
     const RecordSite* sites;                // count sites, in the batch's order
     size_t count;

@@ -89,21 +89,22 @@ void TemporalReprojection::observe(const RecordBatch& batch) {
     const size_t cells = batch.count * per_record;
     Buffer<shared::TcCarriedSample> carried(context_, cells, "tc_carried");
     context_.launch(carry_kernel_, cells, batch.params, params_,
-                    SceneArguments(bvh_, device_scene_), batch.records, batch.origins, batch.cells,
-                    moved_slot_, moved_triangles_, emitters_now_, emitters_next_, carried);
+                    SceneArguments(bvh_, device_scene_), batch.records, batch.origins,
+                    batch.streams, batch.cells, moved_slot_, moved_triangles_, emitters_now_,
+                    emitters_next_, carried);
     Buffer<shared::float4> next_cells(context_, cells, "tc_next_cells");
     Buffer<unsigned> marks(context_, cells, "tc_marks");
-    context_.launch(assemble_kernel_, batch.count, batch.params, params_, carried, batch.cells,
-                    next_cells, marks);
+    context_.launch(assemble_kernel_, batch.count, batch.params, params_, batch.streams, carried,
+                    batch.cells, next_cells, marks);
     Buffer<shared::IrradiancePayload> payloads(context_, batch.count, "tc_next_payloads");
     Buffer<shared::float4> distances(context_, batch.count, "tc_next_distances");
-    context_.launch(reduce_kernel_, batch.count, batch.params, next_cells, batch.records, payloads,
-                    distances);
+    context_.launch(reduce_kernel_, batch.count, batch.params, next_cells, batch.records,
+                    batch.streams, payloads, distances);
     const std::vector<shared::IrradiancePayload> next = payloads.download();
     for (size_t b = 0; b < batch.count; ++b) {
         CarriedRecord r;
         r.site = batch.sites[b];
-        r.site.stream = static_cast<int64_t>(batch.params.first_record) + static_cast<int64_t>(b);
+        r.site.stream = static_cast<int64_t>(batch.stream_values[b]);
         r.next = next[b];
         const int primitive = batch.sites[b].primitive;
         r.site_moves = primitive >= 0 && static_cast<size_t>(primitive) < moves_.size() &&

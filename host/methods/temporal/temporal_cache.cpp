@@ -164,11 +164,7 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
         RecordStore store = serving_store(level, t, &serving[l], &expired[l]);
         cache.set_records(level, std::move(store), levels_[l].next_stream);
     }
-    // In the order of their streams (which they keep), for the longest launches.
-    std::vector<size_t> replaced = still_used(cache, expired[0]);
-    std::stable_sort(replaced.begin(), replaced.end(), [&](size_t a, size_t b) {
-        return levels_[0].records[a].site.stream < levels_[0].records[b].site.stream;
-    });
+    const std::vector<size_t> replaced = still_used(cache, expired[0]);
     std::vector<RecordSite> sites;
     for (size_t id : replaced) {
         sites.push_back(levels_[0].records[id].site);
