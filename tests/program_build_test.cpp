@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <sstream>
 
 #include "device/binary_cache.h"
+#include "device/build_log.h"
 #include "device/kernel_sources.h"
 #include "methods/radiance_source.h"
 #include "shared/rng.h"
@@ -106,6 +108,64 @@ TEST(ProgramBuild, BrokenKernelReportsTheBuildLogWithFileAndLine) {
         EXPECT_NE(message.find("normals/normals.h:"), std::string::npos) << message;
         EXPECT_NE(message.find("this_is_not_opencl_c"), std::string::npos) << message;
     }
+}
+
+// The expanded line (1-based) of normals.cl holding `needle`, and the line of normals/normals.h
+// that holds it, found by searching the texts (not through the #line markers).
+struct FoundLine {
+    long expanded = 0;
+    long original = 0;
+};
+FoundLine find_line(const std::string& needle) {
+    FoundLine found;
+    const std::string expanded = KernelSources().expand("normals/normals.cl");
+    std::istringstream lines(expanded);
+    std::string line;
+    for (long n = 1; std::getline(lines, line); ++n) {
+        if (line.find(needle) != std::string::npos) {
+            found.expanded = n;
+        }
+    }
+    std::ifstream header(test::source_dir() / "kernels" / "normals" / "normals.h");
+    for (long n = 1; std::getline(header, line); ++n) {
+        if (line.find(needle) != std::string::npos) {
+            found.original = n;
+        }
+    }
+    return found;
+}
+
+TEST(ProgramBuild, VendorLogsWithoutFileNamesAreMappedToOurFileAndLine) {
+    // The last line of normals.h that opens a function: unique enough to find by text.
+    std::ifstream header(test::source_dir() / "kernels" / "normals" / "normals.h");
+    std::string line;
+    std::string needle;
+    while (std::getline(header, line)) {
+        if (line.rfind("RC_FUNC ", 0) == 0) {
+            needle = line;
+        }
+    }
+    ASSERT_FALSE(needle.empty());
+    const FoundLine at = find_line(needle);
+    ASSERT_GT(at.expanded, 0);
+    ASSERT_GT(at.original, 0);
+    const std::string source = KernelSources().expand("normals/normals.cl");
+    const std::string ours = "normals/normals.h:" + std::to_string(at.original);
+    // NVIDIA: <kernel>:LINE:COL; Intel: a number as the name; AMD: "FILE", line LINE.
+    EXPECT_EQ(map_build_log("<kernel>:" + std::to_string(at.expanded) + ":5: error: bad", source),
+              ours + ":5: error: bad");
+    EXPECT_EQ(map_build_log("1:" + std::to_string(at.expanded) + ":9: warning: w", source),
+              ours + ":9: warning: w");
+    EXPECT_EQ(map_build_log("\"/tmp/OCL77.cl\", line " + std::to_string(at.expanded) +
+                                ": error: identifier is undefined",
+                            source),
+              ours + ": error: identifier is undefined");
+    // A log that already names our files (the compiler honoured #line) and its other lines stay.
+    const std::string honoured =
+        ours + ":3: error: x\n    int x = y;\n        ^\n1 error generated.";
+    EXPECT_EQ(map_build_log(honoured, source), honoured);
+    // A line beyond the source stays a plain number.
+    EXPECT_EQ(map_build_log("<kernel>:99999999:1: error: e", source), "99999999:1: error: e");
 }
 
 TEST(ProgramBuild, BrokenKernelThroughTheCommandLineExitsNonZeroWithTheLog) {

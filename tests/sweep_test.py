@@ -154,6 +154,27 @@ class SweepTest(unittest.TestCase):
         self.assertNotEqual(outside.returncode, 0)
         self.assertIn("--frame 24", outside.stderr)
 
+    def test_runs_without_flip_evaluator_with_one_warning(self):
+        # A flip_evaluator module that cannot be imported, first on the path.
+        hidden = os.path.join(SCRATCH, "no_flip")
+        os.makedirs(hidden, exist_ok=True)
+        with open(os.path.join(hidden, "flip_evaluator.py"), "w") as f:
+            f.write("raise ImportError('flip_evaluator hidden by the test')\n")
+        out = os.path.join(SCRATCH, "no_flip_out")
+        env = dict(os.environ, RADCACHE=RADCACHE,
+                   PYTHONPATH=hidden + os.pathsep + os.environ.get("PYTHONPATH", ""))
+        result = subprocess.run([sys.executable, SWEEP, os.path.join(ROOT, "scenes", "cornell-box"),
+                                 "--reference", self.reference, "--width", "24", "--height", "24",
+                                 "--methods", "pt", "--pt-spp", "1", "--out", out],
+                                capture_output=True, text=True, env=env)
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        self.assertEqual(result.stderr.count("flip-evaluator is not installed"), 1, result.stderr)
+        with open(os.path.join(out, "sweep.csv")) as f:
+            rows = list(csv.DictReader(f))
+        self.assertEqual(len(rows), 1)
+        self.assertEqual(rows[0]["flip"], "")
+        self.assertGreater(float(rows[0]["relmse"]), 0.0)
+
     def test_refuses_bad_input(self):
         missing = run([sys.executable, SWEEP, os.path.join(SCRATCH, "no-such-scene"),
                        "--out", os.path.join(SCRATCH, "bad")])

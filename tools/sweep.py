@@ -3,7 +3,8 @@
 
 Runs every method over its quality knobs, each point --repeats times, measures each image
 against the scene's reference (RMSE and relMSE through `radcache compare`, HDR-FLIP through the
-flip-evaluator package) and writes
+flip-evaluator package when it is installed: without it the flip column stays empty, with one
+warning) and writes
 
   OUT/sweep.csv, OUT/sweep.json   one row per point, the columns below
   OUT/error-vs-time.png           log-log relMSE of the image against the median render time,
@@ -135,8 +136,20 @@ def has_layer(image, layer):
     return result.returncode == 0
 
 
+def flip_available():
+    """Whether the flip-evaluator package can be imported (the flip column needs it)."""
+    try:
+        import flip_evaluator  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
 def flip_error(image, reference):
-    """Mean HDR-FLIP of the beauty channels (flip-evaluator reads R, G, B of an EXR)."""
+    """Mean HDR-FLIP of the beauty channels (flip-evaluator reads R, G, B of an EXR); "" when
+    flip-evaluator is not installed."""
+    if not flip_available():
+        return ""
     import flip_evaluator
     _, mean, _ = flip_evaluator.evaluate(reference, image, "HDR", applyMagma=False)
     return float(mean)
@@ -561,8 +574,10 @@ def parse_arguments(argv):
 def check_tools(repeats):
     if not os.access(RADCACHE, os.X_OK):
         fail("build radcache first (see README): %s is missing" % RADCACHE)
+    if not flip_available():
+        print("sweep: warning: flip-evaluator is not installed (python3 -m pip install -r "
+              "tools/requirements.txt): the flip column stays empty", file=sys.stderr)
     try:
-        import flip_evaluator  # noqa: F401
         import matplotlib  # noqa: F401
         import numpy  # noqa: F401
     except ImportError as e:
@@ -635,9 +650,10 @@ def main(argv):
     print("%-34s %-36s %9s %15s %11s %8s" % ("curve", "setting", "median s", "min-max s",
                                              "relMSE", "FLIP"))
     for r in rows:
-        print("%-34s %-36s %9.3f %7.3f-%-7.3f %11.4g %8.4f" % (
+        flip = "%8.4f" % r["flip"] if r["flip"] != "" else "%8s" % "-"
+        print("%-34s %-36s %9.3f %7.3f-%-7.3f %11.4g %s" % (
             r["curve"], r["setting"], r["render_seconds"], r["render_seconds_min"],
-            r["render_seconds_max"], r["relmse"], r["flip"]))
+            r["render_seconds_max"], r["relmse"], flip))
     print("written to %s (sweep.csv, sweep.json, index.html)" % out)
 
 

@@ -87,10 +87,19 @@ def draw_chart(rows, key, title, path):
     return True
 
 
+def exr_reader():
+    """flip-evaluator's EXR reader, None when the package is not installed."""
+    try:
+        import flip_evaluator
+    except ImportError:
+        return None
+    return flip_evaluator.load
+
+
 def tonemapped(path):
-    import flip_evaluator
+    load = exr_reader()
     import numpy
-    image = numpy.clip(flip_evaluator.load(path), 0.0, 1.0)
+    image = numpy.clip(load(path), 0.0, 1.0)
     return numpy.where(image <= 0.0031308, 12.92 * image,
                        1.055 * numpy.power(image, 1.0 / 2.4) - 0.055)
 
@@ -124,9 +133,12 @@ def cell(value):
     return html.escape(("%.4g" % value) if isinstance(value, float) else str(value))
 
 
-def write_html(report, out, crop):
+def equal_time_crops(report, out, crop):
+    """The equal-time section: crops of the reference and of each curve's run nearest in time."""
+    if exr_reader() is None:
+        return ("<h2>Equal time</h2><p>No crops: reading the EXR images needs flip-evaluator "
+                "(tools/requirements.txt), which is not installed.</p>")
     rows = report["rows"]
-    columns = report["columns"]
     reference = tonemapped(report["reference"])
     height, width = reference.shape[:2]
     box = crop_box(width, height, crop)
@@ -144,6 +156,16 @@ def write_html(report, out, crop):
             "<img src='%s'><br><img src='%s'></td>" %
             (html.escape(r["curve"]), html.escape(r["setting"]), r["render_seconds"], r["relmse"],
              r["flip"], html.escape(name + ".crop.png"), html.escape(name + ".error.crop.png")))
+    return """<h2>Equal time (about {target:.3g} s)</h2>
+<p>Crop x={x} y={y} {w}x{h} of each curve's run nearest in time; below each, its relMSE per pixel
+(log10 from -5, black, to 0, white).</p>
+<table><tr><td><b>reference</b><br><img src="reference.crop.png"></td>{cells}</tr></table>
+""".format(target=target, x=box[0], y=box[1], w=box[2], h=box[3], cells="".join(cells))
+
+
+def write_html(report, out, crop):
+    rows = report["rows"]
+    columns = report["columns"]
     charts = "".join("<img src='%s'>" % c for c in report["charts"])
     table = "".join("<tr>%s</tr>" % "".join("<td>%s</td>" % cell(r[c]) for c in columns)
                     for r in rows)
@@ -152,16 +174,11 @@ def write_html(report, out, crop):
 img{{image-rendering:pixelated;max-width:100%}}</style>
 <h1>{scene}</h1><p>{when}, {device}, git {git}. Reference: {reference}. Time axis: {timing}</p>
 <p>Command: <code>{command}</code></p>{charts}
-<h2>Equal time (about {target:.3g} s)</h2>
-<p>Crop x={x} y={y} {w}x{h} of each curve's run nearest in time; below each, its relMSE per pixel
-(log10 from -5, black, to 0, white).</p>
-<table><tr><td><b>reference</b><br><img src="reference.crop.png"></td>{cells}</tr></table>
-<h2>All runs</h2><table border=1 cellspacing=0><tr>{header}</tr>{table}</table>
+{crops}<h2>All runs</h2><table border=1 cellspacing=0><tr>{header}</tr>{table}</table>
 """.format(scene=html.escape(report["scene"]), when=report["date"],
            device=html.escape(report["device"]), git=report["git"],
            reference=html.escape(report["reference"]), timing=html.escape(report["timing"]),
-           command=html.escape(report["command"]), charts=charts, target=target, x=box[0],
-           y=box[1], w=box[2], h=box[3], cells="".join(cells),
-           header="".join("<th>%s</th>" % c for c in columns), table=table)
+           command=html.escape(report["command"]), charts=charts,
+           crops=equal_time_crops(report, out, crop), header="".join("<th>%s</th>" % c for c in columns), table=table)
     with open(os.path.join(out, "index.html"), "w") as f:
         f.write(page)

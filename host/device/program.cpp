@@ -3,6 +3,7 @@
 #include <cctype>
 #include <chrono>
 
+#include "device/build_log.h"
 #include "device/cl_calls.h"
 #include "device/cl_error.h"
 #include "device/device_list.h"
@@ -125,7 +126,7 @@ Program::Program(_cl_context* context, const DeviceInfo& device, const KernelSou
         status = RC_CL(clBuildProgram, handle_, 1, &device.device, all_options.c_str(), nullptr,
                        nullptr);
         if (status != CL_SUCCESS) {
-            const std::string log = build_log(handle_, device.device);
+            const std::string log = map_build_log(build_log(handle_, device.device), source);
             RC_CL_RELEASE("program", clReleaseProgram, handle_);
             handle_ = nullptr;
             throw Error("clBuildProgram(" + entry + ") failed: " + cl_error_name(status) + " on " +
