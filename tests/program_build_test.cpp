@@ -7,6 +7,7 @@
 
 #include "device/binary_cache.h"
 #include "device/build_log.h"
+#include "device/context.h"
 #include "device/kernel_sources.h"
 #include "methods/radiance_source.h"
 #include "shared/rng.h"
@@ -166,6 +167,32 @@ TEST(ProgramBuild, VendorLogsWithoutFileNamesAreMappedToOurFileAndLine) {
     EXPECT_EQ(map_build_log(honoured, source), honoured);
     // A line beyond the source stays a plain number.
     EXPECT_EQ(map_build_log("<kernel>:99999999:1: error: e", source), "99999999:1: error: e");
+}
+
+TEST(ProgramBuild, ABackgroundBuildFailureIsReportedWhenTheProgramIsUsed) {
+    const std::filesystem::path dir = copy_of_kernels("broken_prebuild");
+    append(dir / "normals" / "normals.h", "\nthis_is_not_opencl_c broken;\n");
+    ContextOptions options = test::default_context_options();
+    options.kernel_dir = dir;
+    options.cache_dir.clear();
+    {
+        Context context(options);
+        context.prebuild({{"normals/normals.cl", ""}, {"rng_probe.cl", ""}});
+        EXPECT_EQ(context.program("rng_probe.cl").kernel("rng_stream_words").name(),
+                  "rng_stream_words");
+        try {
+            context.program("normals/normals.cl");
+            FAIL() << "no error";
+        } catch (const Error& error) {
+            const std::string message = error.what();
+            EXPECT_NE(message.find("clBuildProgram(normals/normals.cl) failed"), std::string::npos)
+                << message;
+            EXPECT_NE(message.find("this_is_not_opencl_c"), std::string::npos) << message;
+        }
+    }
+    // A failed background build nobody asks for ends with the context, silently.
+    Context unused(options);
+    unused.prebuild({{"normals/normals.cl", ""}});
 }
 
 TEST(ProgramBuild, BrokenKernelThroughTheCommandLineExitsNonZeroWithTheLog) {

@@ -17,6 +17,7 @@ const char* kUsage =
     "  devices          list the OpenCL platforms and devices\n"
     "  render SCENE     render a scene to an image\n"
     "  compare TEST REF an image's error against a reference\n"
+    "  warmup           build the kernel programs a render needs into the binary cache\n"
     "  bench all        every kernel family on every device, side by side\n"
     "  bench rays       traversal throughput against Embree\n"
     "  bench pt         path-tracing throughput\n"
@@ -43,6 +44,9 @@ int main(int argc, char** argv) {
         }
         if (words[0] == "compare") {
             return rc::run_compare_command(args);
+        }
+        if (words[0] == "warmup") {
+            return rc::run_warmup_command(args);
         }
         if (words[0] == "bench") {
             return rc::run_bench_command(args);

@@ -104,6 +104,7 @@ int run_render_command(const std::vector<std::string>& args) {
 
     start = SteadyClock::now();
     Context context(context_options(arguments));
+    context.prebuild(method->programs());  // all at once, in the background
     totals.phase("device") = seconds_since(start);
     log_note("device " + context.device().name + "; " +
              std::to_string(scene.mesh.triangle_count()) + " triangles, " +

@@ -55,10 +55,19 @@ nlohmann::json program_builds_json(const Context& context) {
     nlohmann::json builds = nlohmann::json::array();
     for (const ProgramBuildReport& build : context.program_builds()) {
         builds.push_back({{"program", build.entry},
+                          {"options", build.options},
                           {"seconds", build.seconds},
                           {"from_cache", build.from_cache}});
     }
     return builds;
+}
+
+nlohmann::json prebuild_requests_json(const Context& context) {
+    nlohmann::json requests = nlohmann::json::array();
+    for (const ProgramRequest& request : context.prebuild_requests()) {
+        requests.push_back({{"program", request.entry}, {"options", request.options}});
+    }
+    return requests;
 }
 
 }  // namespace
@@ -90,6 +99,7 @@ nlohmann::json RenderTotals::json(const RenderSettings& settings, const Scene& s
     stats["nonfinite_samples"] = nonfinite_;
     stats["first_nonfinite_pixel"] = first_nonfinite_pixel_;
     stats["program_builds"] = program_builds_json(context);
+    stats["prebuilt_programs"] = prebuild_requests_json(context);
     stats["memory"] = {{"host_peak_resident_bytes", host_peak_},
                        {"device_peak_bytes", device_peak_},
                        {"device_global_bytes", context.device().global_memory}};

@@ -60,6 +60,14 @@ Context::Context(const ContextOptions& options)
 }
 
 Context::~Context() {
+    // Background builds nobody asked for: waited for, their programs (or errors) dropped.
+    for (auto& [key, build] : pending_) {
+        try {
+            build.get();
+        } catch (const std::exception&) {
+            // Unused: its error concerns no kernel the work needed.
+        }
+    }
     programs_.clear();
     if (queue_ != nullptr) {
         // No clFinish: every launch and transfer has been waited for, and releasing the queue
@@ -71,14 +79,37 @@ Context::~Context() {
     }
 }
 
+std::unique_ptr<Program> Context::build(const std::string& entry,
+                                        const std::string& options) const {
+    const std::string layout = "-DRC_BVH_LAYOUT=" + std::to_string(static_cast<int>(bvh_layout_));
+    return std::make_unique<Program>(context_, device_, sources_, cache_, entry, layout, options,
+                                     options_.dump_kernels_dir);
+}
+
+void Context::prebuild(const std::vector<ProgramRequest>& requests) {
+    for (const ProgramRequest& request : requests) {
+        prebuild_requests_.push_back(request);
+        const std::string key = request.entry + "\n" + request.options;
+        if (programs_.count(key) == 0 && pending_.count(key) == 0) {
+            pending_.emplace(key, std::async(std::launch::async, [this, request] {
+                                 return build(request.entry, request.options);
+                             }));
+        }
+    }
+}
+
 const Program& Context::program(const std::string& entry, const std::string& options) {
     const std::string key = entry + "\n" + options;
     auto found = programs_.find(key);
     if (found == programs_.end()) {
-        const std::string layout =
-            "-DRC_BVH_LAYOUT=" + std::to_string(static_cast<int>(bvh_layout_));
-        auto program = std::make_unique<Program>(context_, device_, sources_, cache_, entry, layout,
-                                                 options, options_.dump_kernels_dir);
+        std::unique_ptr<Program> program;
+        if (auto started = pending_.find(key); started != pending_.end()) {
+            std::future<std::unique_ptr<Program>> background = std::move(started->second);
+            pending_.erase(started);
+            program = background.get();
+        } else {
+            program = build(entry, options);
+        }
         builds_.push_back(program->report());
         found = programs_.emplace(key, std::move(program)).first;
     }

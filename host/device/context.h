@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <future>
 #include <map>
 #include <memory>
 #include <string>
@@ -69,11 +70,18 @@ class Context {
     BvhLayout bvh_layout() const { return bvh_layout_; }
 
     // The program built from `entry` (relative to kernels/) with -D `options` and the BVH
-    // layout's -DRC_BVH_LAYOUT, built once.
+    // layout's -DRC_BVH_LAYOUT, built once (waiting for its background build when prebuild()
+    // started one; a failed build throws here).
     const Program& program(const std::string& entry, const std::string& options = "");
+    // Starts building every requested program not built or started yet, each on its own thread,
+    // all at once (issue 14: a cold render does not build its programs one after another; a
+    // driver's compiler runs them side by side). program() collects them.
+    void prebuild(const std::vector<ProgramRequest>& requests);
     Kernel kernel(const std::string& entry, const std::string& name,
                   const std::string& options = "");
     const std::vector<ProgramBuildReport>& program_builds() const { return builds_; }
+    // Every program prebuild() was asked for, in the order asked.
+    const std::vector<ProgramRequest>& prebuild_requests() const { return prebuild_requests_; }
 
     // Runs `kernel` over items [0, count). The kernel's first two parameters are
     // (uint begin, uint end) and it handles item begin + get_global_id(0) when below end; the
@@ -103,6 +111,8 @@ class Context {
     _cl_command_queue* cl_queue() const { return queue_; }
 
    private:
+    // Builds (or loads from the binary cache) one program; safe on any thread.
+    std::unique_ptr<Program> build(const std::string& entry, const std::string& options) const;
     static void set_kernel_arg(Kernel& kernel, unsigned& index, const DeviceBuffer& buffer) {
         _cl_mem* handle = buffer.handle();
         kernel.set_arg(index++, sizeof handle, &handle);
@@ -130,6 +140,8 @@ class Context {
     _cl_context* context_ = nullptr;
     _cl_command_queue* queue_ = nullptr;
     std::map<std::string, std::unique_ptr<Program>> programs_;
+    std::map<std::string, std::future<std::unique_ptr<Program>>> pending_;  // prebuild()'s
+    std::vector<ProgramRequest> prebuild_requests_;
     std::vector<ProgramBuildReport> builds_;
     std::map<std::string, KernelTime> kernel_times_;
     std::shared_ptr<DeviceMemory> memory_ = std::make_shared<DeviceMemory>();

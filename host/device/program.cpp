@@ -78,6 +78,7 @@ Program::Program(_cl_context* context, const DeviceInfo& device, const KernelSou
     : entry_(entry) {
     const auto start = std::chrono::steady_clock::now();
     report_.entry = entry;
+    report_.options = options;
     const std::string source = sources.expand(entry);
     const std::string all_options =
         std::string(kBaseOptions) + " " + context_defines + (options.empty() ? "" : " " + options);

@@ -14,10 +14,18 @@ namespace rc {
 
 struct DeviceInfo;
 
+// A program to build: its entry (relative to kernels/) and -D options, as Context::program takes
+// them.
+struct ProgramRequest {
+    std::string entry;
+    std::string options;
+};
+
 // How a program came to be: compiled from source, or loaded from the binary cache (and whether
 // a corrupt cache entry was met and replaced on the way).
 struct ProgramBuildReport {
     std::string entry;
+    std::string options;  // its -D options (the BVH layout's left out)
     double seconds = 0.0;
     bool from_cache = false;
     bool replaced_corrupt_entry = false;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "device/program.h"
 #include "image/image.h"
 #include "methods/frame_scene.h"
 #include "util/cli.h"
@@ -78,6 +79,10 @@ class Method {
     virtual ~Method() = default;
     // Renders one frame. Called for the frames in order; a method may keep state between calls.
     virtual FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) = 0;
+    // Every program its frames will build (Context::program's entry and options), for the
+    // render to start them all at once in the background (issue 14). Exactly those: a test
+    // renders every method and compares (tests/prebuild_test.cpp).
+    virtual std::vector<ProgramRequest> programs() const = 0;
 };
 
 // A method as the registry lists it.

@@ -162,6 +162,16 @@ class Decomposition final : public Method {
         return result;
     }
 
+    std::vector<ProgramRequest> programs() const override {
+        std::vector<ProgramRequest> programs = {
+            {"decomposition/decomposition.cl",
+             radiance_source_define(with_grid_ ? RC_RADIANCE_GRID : RC_RADIANCE_PATH)}};
+        if (with_grid_) {
+            programs.push_back({"irradiance_vector_grid/irradiance_vector_grid.cl", ""});
+        }
+        return programs;
+    }
+
    private:
     SceneLength alpha_;
     SceneLength min_cluster_;

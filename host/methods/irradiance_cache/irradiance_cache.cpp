@@ -434,6 +434,22 @@ void check_options(const IrradianceCacheOptions& options, size_t samples) {
     }
 }
 
+}  // namespace
+
+std::vector<ProgramRequest> irradiance_cache_programs(const IrradianceCacheOptions& options,
+                                                      int last_source) {
+    std::vector<ProgramRequest> programs = {{"irradiance_cache/irradiance_cache.cl", ""}};
+    if (options.bounces > 1) {
+        programs.push_back(
+            {"irradiance_cache/ic_record_cells.cl", radiance_source_define(RC_RADIANCE_RECORDS)});
+    }
+    programs.push_back(
+        {"irradiance_cache/ic_record_cells.cl", radiance_source_define(last_source)});
+    return programs;
+}
+
+namespace {
+
 RecordSampling sampling_of(const IrradianceCacheOptions& options) {
     RecordSampling sampling = strata_for(options.rays);
     sampling.max_depth = options.max_depth;

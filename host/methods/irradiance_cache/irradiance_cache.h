@@ -158,6 +158,12 @@ struct RecordSampling {
     const RadianceSource* source = nullptr;  // read at the last level's hemisphere hits
 };
 
+// The programs irradiance caching builds with `options`: its kernels, and the hemisphere
+// sampling's for each level's source (the next level's records; at the last level `last_source`,
+// RC_RADIANCE_PATH, or RC_RADIANCE_GRID with --ic-ivg).
+std::vector<ProgramRequest> irradiance_cache_programs(const IrradianceCacheOptions& options,
+                                                      int last_source);
+
 // M x N strata with N ~ pi M and M N close to `rays`.
 RecordSampling strata_for(int rays);
 

@@ -73,6 +73,18 @@ class IrradianceCaching final : public Method {
         return result;
     }
 
+    std::vector<ProgramRequest> programs() const override {
+        std::vector<ProgramRequest> programs =
+            irradiance_cache_programs(options_, with_grid_ ? RC_RADIANCE_GRID : RC_RADIANCE_PATH);
+        if (with_grid_) {
+            programs.push_back({"irradiance_vector_grid/irradiance_vector_grid.cl", ""});
+        }
+        if (temporal_) {
+            programs.push_back({"temporal/temporal.cl", ""});
+        }
+        return programs;
+    }
+
    private:
     IrradianceCacheOptions options_;
     bool with_grid_;

@@ -46,6 +46,10 @@ class GridRendering final : public Method {
         return result;
     }
 
+    std::vector<ProgramRequest> programs() const override {
+        return {{"irradiance_vector_grid/irradiance_vector_grid.cl", ""}};
+    }
+
    private:
     MethodSettings settings_;
     IvgOptions grid_options_;

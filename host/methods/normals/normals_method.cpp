@@ -24,6 +24,8 @@ class NormalsPreview final : public Method {
         return result;
     }
 
+    std::vector<ProgramRequest> programs() const override { return {{"normals/normals.cl", ""}}; }
+
    private:
     MethodSettings settings_;
 };

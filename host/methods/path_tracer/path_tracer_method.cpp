@@ -43,6 +43,10 @@ class PathTracerMethod final : public Method {
         return result;
     }
 
+    std::vector<ProgramRequest> programs() const override {
+        return {{"path_tracer/path_tracer.cl", ""}};
+    }
+
    private:
     MethodSettings settings_;
     bool save_every_pow2_;

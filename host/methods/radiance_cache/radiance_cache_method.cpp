@@ -88,6 +88,16 @@ class RadianceCaching final : public Method {
         return result;
     }
 
+    std::vector<ProgramRequest> programs() const override {
+        std::vector<ProgramRequest> programs = irradiance_cache_programs(ic_, RC_RADIANCE_PATH);
+        programs.push_back({"radiance_cache/radiance_cache.cl", ""});
+        programs.push_back({"radiance_cache/rc_cache.cl", ""});
+        programs.push_back(
+            {"radiance_cache/rc_record_cells.cl", radiance_source_define(RC_RADIANCE_RECORDS)});
+        programs.push_back({"glossy/glossy_placement.cl", ""});
+        return programs;
+    }
+
    private:
     static nlohmann::json radiance_stats(const RadianceCacheStats& rc) {
         nlohmann::json materials = nlohmann::json::array();
