@@ -20,6 +20,20 @@
 namespace rc {
 namespace {
 
+// What the frame will hold on the device (device/memory_need.h): what earlier frames left (a
+// method's state), the scene's and the BVH's buffers and the method's at their peak.
+DeviceMemoryNeed frame_need(const Context& context, const Scene& scene, const Bvh& bvh,
+                            const Method& method) {
+    DeviceMemoryNeed need;
+    if (context.device_memory().in_use > 0) {
+        need.add("held from earlier frames", context.device_memory().in_use);
+    }
+    need.add("scene", DeviceScene::bytes_for(scene));
+    need.add("BVH", DeviceBvh::bytes_for(bvh));
+    need.add_all(method.device_memory_need(scene));
+    return need;
+}
+
 // Poses the scene at `frame`, renders it with `method` and writes its image.
 void render_frame(const RenderJob& job, int frame, Context& context, Scene& scene, Bvh& bvh,
                   Method& method, RenderTotals& totals) {
@@ -30,6 +44,10 @@ void render_frame(const RenderJob& job, int frame, Context& context, Scene& scen
     auto start = SteadyClock::now();
     bvh = build_bvh(scene.mesh, context.bvh_layout());
     totals.phase("bvh") += seconds_since(start);
+    // The whole frame is refused before its first buffer when it cannot fit (issue 17).
+    const DeviceMemoryNeed need = frame_need(context, scene, bvh, method);
+    check_device_memory_need(context, need);
+    totals.set_frame_need(need);
     start = SteadyClock::now();
     const DeviceBvh device_bvh(context, bvh);
     const DeviceScene device_scene(context, scene);

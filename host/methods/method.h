@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "device/memory_need.h"
 #include "image/image.h"
 #include "methods/frame_scene.h"
 #include "util/cli.h"
@@ -50,6 +51,9 @@ struct MethodSettings {
     }
 };
 
+// Width x height of a frame's image: the scene camera's where `width` or `height` is 0.
+size_t image_pixels(int width, int height, const Scene& scene);
+
 // What the frame loop offers a method while it renders.
 struct FrameHooks {
     // Progress of the frame in [0, 1], with a short note ("12 spp", "photons").
@@ -78,6 +82,10 @@ class Method {
     virtual ~Method() = default;
     // Renders one frame. Called for the frames in order; a method may keep state between calls.
     virtual FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) = 0;
+    // The device memory its buffers hold together at their peak while it renders a frame of
+    // `scene`, beside the scene's and the BVH's (device/memory_need.h), from its options before
+    // any is made. What grows with what the method finds (cache records) it names in `excludes`.
+    virtual DeviceMemoryNeed device_memory_need(const Scene& scene) const = 0;
 };
 
 // A method as the registry lists it.

@@ -24,6 +24,13 @@ class NormalsPreview final : public Method {
         return result;
     }
 
+    DeviceMemoryNeed device_memory_need(const Scene& scene) const override {
+        DeviceMemoryNeed need;
+        need.add("film", buffer_bytes(image_pixels(settings_.width, settings_.height, scene),
+                                      sizeof(shared::float4)));
+        return need;
+    }
+
    private:
     MethodSettings settings_;
 };

@@ -3,6 +3,7 @@
 
 #include "methods/method.h"
 #include "methods/path_tracer/path_tracer.h"
+#include "shared/film.h"
 
 namespace rc {
 namespace {
@@ -41,6 +42,14 @@ class PathTracerMethod final : public Method {
         result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
         result.stats = {{"spp", stats.spp}, {"rays", stats.rays}, {"seconds", stats.seconds}};
         return result;
+    }
+
+    DeviceMemoryNeed device_memory_need(const Scene& scene) const override {
+        DeviceMemoryNeed need;
+        const size_t pixels = image_pixels(settings_.width, settings_.height, scene);
+        need.add("film", buffer_bytes(pixels * RC_PT_FILM_SLOTS, sizeof(shared::float4)));
+        need.add("counters", buffer_bytes(3, sizeof(unsigned)));
+        return need;
     }
 
    private:

@@ -5,9 +5,11 @@
 #include <memory>
 
 #include "methods/glossy_method.h"
+#include "methods/irradiance_cache/ic_memory.h"
 #include "methods/irradiance_cache/ic_options.h"
 #include "methods/method.h"
 #include "methods/sdrc/sdrc_cache.h"
+#include "shared/radiance_cache.h"
 #include "util/error.h"
 #include "util/log.h"
 
@@ -109,6 +111,15 @@ class SpatialDirectionalRadianceCaching final : public Method {
                      (s.directions > 0 ? static_cast<double>(s.answered) / s.directions : 0.0))) +
                  "% of directions from the cache");
         return result;
+    }
+
+    DeviceMemoryNeed device_memory_need(const Scene& scene) const override {
+        // SdrcCache::glossy_samples: the queries and glossy samples.
+        const GlossySampleBytes glossy = {sizeof(shared::RcQuery), sizeof(shared::RcGlossySample),
+                                          0};
+        DeviceMemoryNeed need = irradiance_cache_device_need(ic_, scene, glossy);
+        need.excludes += ", the SDRC records, their batches and their L-trees";
+        return need;
     }
 
    private:
