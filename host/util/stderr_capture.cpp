@@ -31,7 +31,7 @@ StderrCapture::StderrCapture() {
 
 StderrCapture::~StderrCapture() { finish(); }
 
-std::string StderrCapture::finish() {
+std::string StderrCapture::finish_text(size_t limit) {
     if (capture_fd_ < 0) {
         return "";
     }
@@ -42,11 +42,17 @@ std::string StderrCapture::finish() {
     std::string text;
     char chunk[4096];
     ::lseek(capture_fd_, 0, SEEK_SET);
-    for (ssize_t got; (got = ::read(capture_fd_, chunk, sizeof chunk)) > 0 && text.size() < 4096;) {
+    for (ssize_t got;
+         text.size() < limit && (got = ::read(capture_fd_, chunk, sizeof chunk)) > 0;) {
         text.append(chunk, static_cast<size_t>(got));
     }
     ::close(capture_fd_);
     capture_fd_ = -1;
+    return text.substr(0, limit);
+}
+
+std::string StderrCapture::finish() {
+    const std::string text = finish_text(4096);
     std::string joined;
     size_t start = 0;
     while (start < text.size()) {

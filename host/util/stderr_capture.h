@@ -16,6 +16,9 @@ class StderrCapture {
     // Restores stderr and returns what was printed meanwhile, its lines joined by "; " (empty
     // when nothing was, or when stderr could not be redirected).
     std::string finish();
+    // Restores stderr and returns what was printed meanwhile as it was printed (its first
+    // `limit` bytes).
+    std::string finish_text(size_t limit = 65536);
 
    private:
     int saved_fd_ = -1;
