@@ -509,3 +509,76 @@ TEST(HostileInput, LibraryChatterJoinsTheOneErrorLine) {
 
 }  // namespace
 }  // namespace rc
+
+namespace rc {
+namespace {
+
+size_t files_in(const std::filesystem::path& dir) {
+    size_t files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        files += entry.is_regular_file() ? 1 : 0;
+    }
+    return files;
+}
+
+test::CommandResult render_frames(const std::string& scene, const std::string& frames,
+                                  const std::filesystem::path& dir, bool strict = false) {
+    std::vector<std::string> args = {
+        "render",   (test::source_dir() / "scenes" / scene / "scene.json").string(),
+        "--frames", frames,
+        "-o",       (dir / "f####.png").string(),
+        "--method", "normals",
+        "--width",  "4",
+        "--height", "4",
+        "-q"};
+    if (strict) {
+        args.push_back("--strict");
+    }
+    return test::run_radcache(args);
+}
+
+// Silently accepted: --frames outside the scene's animation range rendered frames that hold the
+// poses of its nearest end (or, without animation, the same picture each time) without a word.
+// Warned now, naming the frames and what they show; --strict makes it an error, before any image.
+TEST(HostileInput, FramesOutsideTheSceneRangeAreWarned) {
+    const auto inside = test::scratch_dir("hostile_frames_inside");
+    const test::CommandResult whole = render_frames("moving-sphere", "0:23", inside);
+    EXPECT_EQ(whole.exit_code, 0) << whole.output;
+    EXPECT_EQ(whole.output, "");
+    EXPECT_EQ(files_in(inside), 24u);
+
+    const auto past = test::scratch_dir("hostile_frames_past");
+    const test::CommandResult both = render_frames("moving-sphere", "-2:25", past);
+    EXPECT_EQ(both.exit_code, 0) << both.output;
+    EXPECT_EQ(both.output,
+              "radcache: warning: --frames -2:25 reaches outside the scene's frame range 0:23: "
+              "frames -2 to -1 hold the poses of frame 0, frames 24 to 25 hold the poses of "
+              "frame 23\n");
+    EXPECT_EQ(files_in(past), 28u);
+
+    const auto after = test::scratch_dir("hostile_frames_after");
+    const test::CommandResult late = render_frames("moving-sphere", "30:31", after, true);
+    EXPECT_EQ(late.exit_code, 1) << late.output;
+    EXPECT_NE(late.output.find("error: --frames 30:31 reaches outside the scene's frame range "
+                               "0:23: frames 30 to 31 hold the poses of frame 23 (a warning; "
+                               "--strict makes it an error)"),
+              std::string::npos)
+        << late.output;
+    EXPECT_EQ(files_in(after), 0u);
+
+    const auto still = test::scratch_dir("hostile_frames_still");
+    const test::CommandResult static_scene = render_frames("cornell-box", "0:1", still);
+    EXPECT_EQ(static_scene.exit_code, 0) << static_scene.output;
+    EXPECT_EQ(static_scene.output,
+              "radcache: warning: --frames 0:1: the scene has no animation (its frame range is "
+              "0:0): every frame is the same picture\n");
+    const test::CommandResult strict_static = render_frames("cornell-box", "3:3", still, true);
+    EXPECT_EQ(strict_static.exit_code, 1) << strict_static.output;
+    EXPECT_NE(strict_static.output.find("--frames 3:3: the scene has no animation"),
+              std::string::npos)
+        << strict_static.output;
+    EXPECT_FALSE(std::filesystem::exists(still / "f0003.png"));
+}
+
+}  // namespace
+}  // namespace rc

@@ -85,7 +85,9 @@ class Method {
     // The device memory its buffers hold together at their peak while it renders a frame of
     // `scene`, beside the scene's and the BVH's (device/memory_need.h), from its options before
     // any is made. What grows with what the method finds (cache records) it names in `excludes`.
-    virtual DeviceMemoryNeed device_memory_need(const Scene& scene) const = 0;
+    // Settings that cannot work on `device` (an image larger than its largest allocation) are
+    // refused here (Error, exit status 2), before any device memory is used.
+    virtual DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo& device) const = 0;
 };
 
 // A method as the registry lists it.

@@ -164,7 +164,7 @@ class Decomposition final : public Method {
         return result;
     }
 
-    DeviceMemoryNeed device_memory_need(const Scene& scene) const override {
+    DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
         // IrradianceDecomposition::render: the G-buffer, both terms at every camera sample, the
         // film and its counters, held together in the render pass.
         const size_t pixels = image_pixels(options_.width, options_.height, scene);

@@ -74,7 +74,7 @@ class IrradianceCaching final : public Method {
         return result;
     }
 
-    DeviceMemoryNeed device_memory_need(const Scene& scene) const override {
+    DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
         DeviceMemoryNeed cache = irradiance_cache_device_need(options_, scene);
         if (temporal_) {
             cache.excludes += ", their reprojection and the look-ahead frames' scenes and BVHs";

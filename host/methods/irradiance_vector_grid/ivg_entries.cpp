@@ -47,7 +47,7 @@ class GridRendering final : public Method {
         return result;
     }
 
-    DeviceMemoryNeed device_memory_need(const Scene& scene) const override {
+    DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
         const IvgDeviceNeed grid = ivg_device_need(grid_options_, scene);
         DeviceMemoryNeed shading = grid.built;
         const size_t pixels = image_pixels(settings_.width, settings_.height, scene);

@@ -24,7 +24,7 @@ class NormalsPreview final : public Method {
         return result;
     }
 
-    DeviceMemoryNeed device_memory_need(const Scene& scene) const override {
+    DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
         DeviceMemoryNeed need;
         need.add("film", buffer_bytes(image_pixels(settings_.width, settings_.height, scene),
                                       sizeof(shared::float4)));

@@ -44,9 +44,13 @@ class PathTracerMethod final : public Method {
         return result;
     }
 
-    DeviceMemoryNeed device_memory_need(const Scene& scene) const override {
+    DeviceMemoryNeed device_memory_need(const Scene& scene,
+                                        const DeviceInfo& device) const override {
         DeviceMemoryNeed need;
-        const size_t pixels = image_pixels(settings_.width, settings_.height, scene);
+        const int width = settings_.width > 0 ? settings_.width : scene.camera.width;
+        const int height = settings_.height > 0 ? settings_.height : scene.camera.height;
+        check_film_size(width, height, device);
+        const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
         need.add("film", buffer_bytes(pixels * RC_PT_FILM_SLOTS, sizeof(shared::float4)));
         need.add("counters", buffer_bytes(3, sizeof(unsigned)));
         return need;

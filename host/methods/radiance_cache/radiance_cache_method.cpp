@@ -91,7 +91,7 @@ class RadianceCaching final : public Method {
         return result;
     }
 
-    DeviceMemoryNeed device_memory_need(const Scene& scene) const override {
+    DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
         // RadianceCache::glossy_samples: the queries and glossy samples, with the splat's x90
         // table and counter.
         const GlossySampleBytes glossy = {

@@ -113,7 +113,7 @@ class SpatialDirectionalRadianceCaching final : public Method {
         return result;
     }
 
-    DeviceMemoryNeed device_memory_need(const Scene& scene) const override {
+    DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
         // SdrcCache::glossy_samples: the queries and glossy samples.
         const GlossySampleBytes glossy = {sizeof(shared::RcQuery), sizeof(shared::RcGlossySample),
                                           0};
