@@ -91,6 +91,8 @@ int run_render_command(const std::vector<std::string>& args) {
     if (scene.dropped_degenerate > 0) {
         log_note("dropped " + std::to_string(scene.dropped_degenerate) + " degenerate triangles");
     }
+    scene.base_camera.filter = pixel_filter(arguments, scene.base_camera.filter);
+    scene.camera.filter = scene.base_camera.filter;
     const RenderSettings settings = render_settings(arguments, scene.render);
     job.write_options.exposure = settings.exposure;
     const MethodEntry& entry = find_method(settings.method);

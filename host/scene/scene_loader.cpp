@@ -89,8 +89,27 @@ class SceneParser {
                     "unknown value '" + excerpt(axis) + "' (x, y, diagonal, smaller, larger)");
     }
 
+    // camera.filter: {"type": "box"|"tent"|"gaussian", "radius": pixels (default: the type's)}.
+    PixelFilter parse_filter(const JsonReader& reader) {
+        reader.allow_only({"type", "radius"});
+        PixelFilter filter;
+        const std::string name = reader.string("type");
+        filter.type = pixel_filter_type(name);
+        if (filter.type < 0) {
+            reader.fail("type", "expected \"box\", \"tent\" or \"gaussian\", got \"" +
+                                    excerpt(name) + "\"");
+        }
+        filter.radius = reader.number("radius", default_filter_radius(filter.type));
+        if (!(filter.radius >= kMinFilterRadius && filter.radius <= kMaxFilterRadius)) {
+            reader.fail("radius", "must lie in [" + std::to_string(kMinFilterRadius) + ", " +
+                                      std::to_string(kMaxFilterRadius) + "] pixels, got " +
+                                      std::to_string(filter.radius));
+        }
+        return filter;
+    }
+
     Camera parse_camera(const JsonReader& reader) {
-        reader.allow_only({"position", "look_at", "up", "fov", "fov_axis", "resolution"});
+        reader.allow_only({"position", "look_at", "up", "fov", "fov_axis", "resolution", "filter"});
         Camera camera;
         camera.position = reader.vec3("position");
         camera.look_at = reader.vec3("look_at");
@@ -101,6 +120,9 @@ class SceneParser {
             reader.ivec2("resolution", glm::ivec2(512, 512), 1, kMaxImageSide);
         camera.width = resolution.x;
         camera.height = resolution.y;
+        if (reader.has("filter")) {
+            camera.filter = parse_filter(reader.object("filter"));
+        }
         if (!(camera.fov_degrees > 0.0f && camera.fov_degrees < 180.0f)) {
             reader.fail("fov", "must lie strictly between 0 and 180 degrees, got " +
                                    std::to_string(camera.fov_degrees));
