@@ -26,6 +26,8 @@ std::vector<OptionSpec> render_option_specs() {
         {"--seed", "", "N", "random seed (default: the scene's render.seed, else 0)"},
         {"--width", "", "N", "image width in pixels (default: the scene camera's)"},
         {"--height", "", "N", "image height in pixels (default: the scene camera's)"},
+        {"--camera", "", "NAME",
+         "glTF scenes: the camera of that name (or its node's name; default: the first)"},
         {"--filter", "", "NAME",
          "pixel reconstruction filter: box, tent or gaussian (default: the scene camera's, else "
          "box)"},

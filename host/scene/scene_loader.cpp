@@ -8,6 +8,7 @@
 #include <set>
 
 #include "scene/generated_meshes.h"
+#include "scene/gltf_loader.h"
 #include "scene/json_reader.h"
 #include "scene/obj_loader.h"
 #include "scene/transform.h"
@@ -153,7 +154,7 @@ class SceneParser {
                                 glm::vec3 fallback, int* texture_index) {
         if (reader.has(key) && reader.value().at(key).is_object()) {
             const JsonReader bitmap = reader.object(key);
-            bitmap.allow_only({"type", "filename"});
+            bitmap.allow_only({"type", "filename", "scale"});
             if (bitmap.string("type") != "bitmap") {
                 bitmap.fail("type", "unknown texture type '" + excerpt(bitmap.string("type")) +
                                         "' (known: bitmap)");
@@ -164,11 +165,11 @@ class SceneParser {
             }
             *texture_index = texture(image);
             const Texture& t = scene_.textures[*texture_index];
-            if (t.max_value > 1.0f) {
+            if (t.max_value > 1.0f) {  // times a scale in [0, 1]
                 bitmap.fail("filename", "texture values reach " + std::to_string(t.max_value) +
                                             " (albedo > 1)");
             }
-            return glm::vec3(1.0f);
+            return parse_colour(bitmap, "scale", glm::vec3(1.0f), 0.0f, 1.0f);
         }
         return parse_colour(reader, key, fallback, 0.0f, 1.0f);
     }
@@ -491,7 +492,16 @@ void warn_unless_lit(const Scene& scene) {
 
 }  // namespace
 
-Scene load_scene(const std::filesystem::path& path, const SceneFiles& files) {
+Scene load_scene(const std::filesystem::path& path, const SceneFiles& files,
+                 const std::string& camera) {
+    if (is_gltf_path(path)) {
+        Scene scene = load_gltf_scene(path, files, camera);
+        warn_unless_lit(scene);
+        return scene;
+    }
+    if (!camera.empty()) {
+        throw Error("--camera " + excerpt(camera) + ": applies to glTF scenes only", kExitUsage);
+    }
     if (!files.exists(path)) {
         throw Error(path.string() + ": scene file not found");
     }
