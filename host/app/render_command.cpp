@@ -124,8 +124,9 @@ int run_render_command(const std::vector<std::string>& args) {
     const std::vector<OptionSpec> specs = render_option_specs();
     const ParsedArguments arguments = parse_arguments("radcache render", args, specs);
     if (arguments.has("--help")) {
-        std::cout << format_help("radcache render SCENE [options]",
-                                 "Renders SCENE (a scene.json file) to an image.", specs);
+        std::cout << format_help(
+            "radcache render SCENE [options]",
+            "Renders SCENE (a scene.json file, or a glTF 2.0 .gltf/.glb file) to an image.", specs);
         return 0;
     }
     const auto total_start = SteadyClock::now();
@@ -136,11 +137,13 @@ int run_render_command(const std::vector<std::string>& args) {
     RenderTotals totals;
 
     auto start = SteadyClock::now();
-    Scene scene = load_scene(job.scene);
+    Scene scene = load_scene(job.scene, disk_files(), arguments.value("--camera"));
     totals.phase("load") = seconds_since(start);
     if (scene.dropped_degenerate > 0) {
         log_note("dropped " + std::to_string(scene.dropped_degenerate) + " degenerate triangles");
     }
+    scene.base_camera.filter = pixel_filter(arguments, scene.base_camera.filter);
+    scene.camera.filter = scene.base_camera.filter;
     const RenderSettings settings = render_settings(arguments, scene.render);
     job.write_options.exposure = settings.exposure;
     const MethodEntry& entry = find_method(settings.method);

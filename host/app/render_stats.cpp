@@ -96,6 +96,8 @@ nlohmann::json RenderTotals::json(const RenderSettings& settings, const Scene& s
     stats["dropped_degenerate_triangles"] = scene.dropped_degenerate;
     stats["resolution"] = {width_, height_};
     stats["spp"] = spp_;
+    stats["filter"] = {{"type", pixel_filter_name(scene.camera.filter.type)},
+                       {"radius", scene.camera.filter.radius}};
     stats["seed"] = settings.seed;
     stats["max_depth"] = settings.max_depth;
     stats["frames"] = frames_;
