@@ -288,6 +288,7 @@ TEST(DeviceFault, ABuildLogThatCannotBeReadLeavesTheBuildError) {
                                       "CL_BUILD_PROGRAM_FAILURE on "),
                   std::string::npos)
             << failed.message;
+        // No log: one line (with what the compiler printed on stderr, where it did).
         EXPECT_EQ(failed.message.find('\n'), std::string::npos) << "no log: " << failed.message;
         EXPECT_EQ(files_in(out), std::vector<std::string>{});
         EXPECT_EQ(live_objects(), (std::map<std::string, long long>{}));

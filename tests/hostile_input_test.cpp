@@ -67,18 +67,36 @@ std::string load_error(const std::string& name, const std::string& text) {
 // on the upper 3x3 only). World positions are now checked after the transform and the divide by
 // w, against the documented range.
 TEST(HostileInput, WorldSpaceOverflowIsRefusedBeforeTheBvh) {
-    expect_line(load_error("huge_sphere", scene_of(R"([{"type": "sphere", "radius": 1e38}])")),
-                {"scene.json", "shape 'sphere_0'", "outside the world range"});
-    expect_line(load_error("translate_twice",
-                           scene_of(R"([{"type": "cube", "transform": [{"translate": [3e38, 0, 0]},
-                                        {"translate": [3e38, 0, 0]}]}])")),
-                {"shape 'cube_0'", "outside the world range"});
-    expect_line(load_error("zero_w", scene_of(R"([{"type": "cube", "transform": [{"matrix":
+    // Each error names the shape (or emitter) by name and index, the vertex in object space and
+    // the offending value: never the NaN of a divide by w = 0 (issue 17's follow-up: the error
+    // printed "(-nan, -nan, -nan)").
+    const auto expect_world_error = [](const std::string& message,
+                                       std::initializer_list<std::string> parts) {
+        expect_line(message, parts);
+        EXPECT_EQ(message.find("nan"), std::string::npos) << message;
+    };
+    expect_world_error(
+        load_error("huge_sphere", scene_of(R"([{"type": "sphere", "radius": 1e38}])")),
+        {"scene.json", "shape 'sphere_0' (index 0): vertex 0 at (",
+         "in object space, at frame 0: world z = -1e+38", "outside the world range"});
+    expect_world_error(
+        load_error("translate_twice", scene_of(R"([{"type": "cube"}, {"type": "cube", "transform": [
+                                {"translate": [3e38, 0, 0]}, {"translate": [3e38, 0, 0]}]}])")),
+        {"shape 'cube_1' (index 1): its transform at frame 0 overflows float (row 1, column 4 is "
+         "infinite"});
+    expect_world_error(
+        load_error("zero_w", scene_of(R"([{"type": "cube", "transform": [{"matrix":
                     [1, 0, 0, 0,  0, 1, 0, 0,  0, 0, 1, 0,  0, 0, 0, 0]}]}])")),
-                {"shape 'cube_0'", "outside the world range"});
-    expect_line(load_error("large_translate", scene_of(R"([{"type": "cube", "transform":
-                    [{"translate": [2e12, 0, 0]}]}])")),
-                {"outside the world range of +-1e12"});
+        {"shape 'cube_0' (index 0): vertex 0 at (",
+         "its transform gives w = 0, no point in world space", "an affine one is 0 0 0 1"});
+    expect_world_error(load_error("large_translate", scene_of(R"([{"type": "cube", "transform":
+                    [{"translate": [0, 0, 2e12]}]}])")),
+                       {"world z = 2e+12, outside the world range of +-1e12"});
+    expect_world_error(
+        load_error("far_emitter", "{" + kCamera + R"(, "shapes": [{"type": "cube"}], "emitters":
+                   [{"type": "point", "position": [0, 5e12, -4]}]})"),
+        {"emitter 'point_0' (index 0) at (0, 5e+12, -4) in object space",
+         "world y = 5e+12, outside the world range"});
     // Just inside the range loads.
     EXPECT_EQ(load_error("inside", scene_of(R"([{"type": "cube", "transform":
                     [{"scale": 1e11}]}])")),
@@ -487,6 +505,79 @@ TEST(HostileInput, LibraryChatterJoinsTheOneErrorLine) {
         EXPECT_EQ(result.output.find(said), chatter + 14) << result.output;
     }
     EXPECT_EQ(result.output.find("\\n"), std::string::npos) << result.output;
+}
+
+}  // namespace
+}  // namespace rc
+
+namespace rc {
+namespace {
+
+size_t files_in(const std::filesystem::path& dir) {
+    size_t files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        files += entry.is_regular_file() ? 1 : 0;
+    }
+    return files;
+}
+
+test::CommandResult render_frames(const std::string& scene, const std::string& frames,
+                                  const std::filesystem::path& dir, bool strict = false) {
+    std::vector<std::string> args = {
+        "render",   (test::source_dir() / "scenes" / scene / "scene.json").string(),
+        "--frames", frames,
+        "-o",       (dir / "f####.png").string(),
+        "--method", "normals",
+        "--width",  "4",
+        "--height", "4",
+        "-q"};
+    if (strict) {
+        args.push_back("--strict");
+    }
+    return test::run_radcache(args);
+}
+
+// Silently accepted: --frames outside the scene's animation range rendered frames that hold the
+// poses of its nearest end (or, without animation, the same picture each time) without a word.
+// Warned now, naming the frames and what they show; --strict makes it an error, before any image.
+TEST(HostileInput, FramesOutsideTheSceneRangeAreWarned) {
+    const auto inside = test::scratch_dir("hostile_frames_inside");
+    const test::CommandResult whole = render_frames("moving-sphere", "0:23", inside);
+    EXPECT_EQ(whole.exit_code, 0) << whole.output;
+    EXPECT_EQ(whole.output, "");
+    EXPECT_EQ(files_in(inside), 24u);
+
+    const auto past = test::scratch_dir("hostile_frames_past");
+    const test::CommandResult both = render_frames("moving-sphere", "-2:25", past);
+    EXPECT_EQ(both.exit_code, 0) << both.output;
+    EXPECT_EQ(both.output,
+              "radcache: warning: --frames -2:25 reaches outside the scene's frame range 0:23: "
+              "frames -2 to -1 hold the poses of frame 0, frames 24 to 25 hold the poses of "
+              "frame 23\n");
+    EXPECT_EQ(files_in(past), 28u);
+
+    const auto after = test::scratch_dir("hostile_frames_after");
+    const test::CommandResult late = render_frames("moving-sphere", "30:31", after, true);
+    EXPECT_EQ(late.exit_code, 1) << late.output;
+    EXPECT_NE(late.output.find("error: --frames 30:31 reaches outside the scene's frame range "
+                               "0:23: frames 30 to 31 hold the poses of frame 23 (a warning; "
+                               "--strict makes it an error)"),
+              std::string::npos)
+        << late.output;
+    EXPECT_EQ(files_in(after), 0u);
+
+    const auto still = test::scratch_dir("hostile_frames_still");
+    const test::CommandResult static_scene = render_frames("cornell-box", "0:1", still);
+    EXPECT_EQ(static_scene.exit_code, 0) << static_scene.output;
+    EXPECT_EQ(static_scene.output,
+              "radcache: warning: --frames 0:1: the scene has no animation (its frame range is "
+              "0:0): every frame is the same picture\n");
+    const test::CommandResult strict_static = render_frames("cornell-box", "3:3", still, true);
+    EXPECT_EQ(strict_static.exit_code, 1) << strict_static.output;
+    EXPECT_NE(strict_static.output.find("--frames 3:3: the scene has no animation"),
+              std::string::npos)
+        << strict_static.output;
+    EXPECT_FALSE(std::filesystem::exists(still / "f0003.png"));
 }
 
 }  // namespace

@@ -2,8 +2,8 @@
 // --stats file reports each frame's host and device memory; device memory held at the end of a
 // frame must not grow over the frames, nor the peak within a frame, nor the host's resident
 // memory beyond allocator noise. (Radiance caching rebuilds its BRDF tables each frame, about
-// three seconds on PoCL: its 24-frame run is documented in docs/reliability.md instead.) Also the
-// device-memory cap: a run that needs more than --device-memory is refused with the figures.
+// three seconds on PoCL: its 24-frame run is documented in docs/reliability.md instead.) The
+// device-memory cap is device_memory_need_test's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -98,21 +98,6 @@ INSTANTIATE_TEST_SUITE_P(
                     "ivg-gather",
                     {"--photons", "4000", "--grid", "4x4x4", "--gather-rays", "4"}}),
     [](const testing::TestParamInfo<AnimatedRun>& info) { return info.param.name; });
-
-// A run that needs more device memory than it may have is refused when it asks for the buffer
-// that does not fit, with the figures, and writes nothing.
-TEST(LongRun, ARunNeedingMoreDeviceMemoryThanAllowedIsRefusedWithTheFigure) {
-    const auto dir = test::scratch_dir("long_run_memory_cap");
-    const test::CommandResult result = test::run_radcache(
-        {"render", (test::source_dir() / "scenes/moving-sphere/scene.json").string(), "-o",
-         (dir / "out.png").string(), "--device-memory", "1", "--method", "pt", "--spp", "1"});
-    EXPECT_EQ(result.exit_code, 1) << result.output;
-    EXPECT_NE(result.output.find("error: buffer '"), std::string::npos) << result.output;
-    EXPECT_NE(result.output.find("MiB this run holds, more than the 1.00 MiB of --device-memory"),
-              std::string::npos)
-        << result.output;
-    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
-}
 
 }  // namespace
 }  // namespace rc

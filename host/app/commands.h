@@ -11,6 +11,7 @@ int run_devices_command(const std::vector<std::string>& args);
 int run_render_command(const std::vector<std::string>& args);
 int run_compare_command(const std::vector<std::string>& args);
 int run_warmup_command(const std::vector<std::string>& args);
+int run_convert_command(const std::vector<std::string>& args);
 int run_bench_command(const std::vector<std::string>& args);
 int run_bench_all(const std::vector<std::string>& args);
 int run_bench_rays(const std::vector<std::string>& args);

@@ -17,6 +17,7 @@ const char* kUsage =
     "  devices          list the OpenCL platforms and devices\n"
     "  render SCENE     render a scene to an image\n"
     "  compare TEST REF an image's error against a reference\n"
+    "  convert IN OUT.json  a glTF scene in radcache's scene format\n"
     "  warmup           build the kernel programs a render needs into the binary cache\n"
     "  bench all        every kernel family on every device, side by side\n"
     "  bench rays       traversal throughput against Embree\n"
@@ -41,6 +42,9 @@ int main(int argc, char** argv) {
         }
         if (words[0] == "render") {
             return rc::run_render_command(args);
+        }
+        if (words[0] == "convert") {
+            return rc::run_convert_command(args);
         }
         if (words[0] == "compare") {
             return rc::run_compare_command(args);

@@ -1,6 +1,7 @@
 // `radcache render SCENE [options]`: loads the scene, creates the method the registry names
 // (methods/registry.cpp), and renders frame after frame with it, writing one image per frame
 // and, when asked, the stats file.
+#include <algorithm>
 #include <iostream>
 
 #include "app/commands.h"
@@ -20,6 +21,51 @@
 namespace rc {
 namespace {
 
+// What the frame will hold on the device (device/memory_need.h): what earlier frames left (a
+// method's state), the scene's and the BVH's buffers and the method's at their peak.
+DeviceMemoryNeed frame_need(const Context& context, const Scene& scene, const Bvh& bvh,
+                            const Method& method) {
+    DeviceMemoryNeed need;
+    if (context.device_memory().in_use > 0) {
+        need.add("held from earlier frames", context.device_memory().in_use);
+    }
+    need.add("scene", DeviceScene::bytes_for(scene));
+    need.add("BVH", DeviceBvh::bytes_for(bvh));
+    need.add_all(method.device_memory_need(scene, context.device()));
+    return need;
+}
+
+// Warns (an error under --strict) when --frames reaches outside the scene's frame range: the
+// frames there hold the poses of its nearest end, or, in a scene without animation tracks, are
+// all the same picture (issue 17).
+void warn_unless_frames_in_range(const FrameRange& frames, const Animation& animation) {
+    const auto start = static_cast<long long>(animation.frame_start);
+    const auto end = static_cast<long long>(animation.frame_end);
+    if (!frames.given || (frames.first >= start && frames.last <= end)) {
+        return;
+    }
+    const std::string asked =
+        "--frames " + std::to_string(frames.first) + ":" + std::to_string(frames.last);
+    const std::string range = std::to_string(start) + ":" + std::to_string(end);
+    if (animation.empty()) {
+        log_warning(asked + ": the scene has no animation (its frame range is " + range +
+                    "): every frame is the same picture");
+        return;
+    }
+    std::string held;
+    if (frames.first < start) {
+        held = "frames " + std::to_string(frames.first) + " to " +
+               std::to_string(std::min<long long>(frames.last, start - 1)) +
+               " hold the poses of frame " + std::to_string(start);
+    }
+    if (frames.last > end) {
+        held += (held.empty() ? "" : ", ") + std::string("frames ") +
+                std::to_string(std::max<long long>(frames.first, end + 1)) + " to " +
+                std::to_string(frames.last) + " hold the poses of frame " + std::to_string(end);
+    }
+    log_warning(asked + " reaches outside the scene's frame range " + range + ": " + held);
+}
+
 // Poses the scene at `frame`, renders it with `method` and writes its image.
 void render_frame(const RenderJob& job, int frame, Context& context, Scene& scene, Bvh& bvh,
                   Method& method, RenderTotals& totals) {
@@ -30,6 +76,10 @@ void render_frame(const RenderJob& job, int frame, Context& context, Scene& scen
     auto start = SteadyClock::now();
     bvh = build_bvh(scene.mesh, context.bvh_layout());
     totals.phase("bvh") += seconds_since(start);
+    // The whole frame is refused before its first buffer when it cannot fit (issue 17).
+    const DeviceMemoryNeed need = frame_need(context, scene, bvh, method);
+    check_device_memory_need(context, need);
+    totals.set_frame_need(need);
     start = SteadyClock::now();
     const DeviceBvh device_bvh(context, bvh);
     const DeviceScene device_scene(context, scene);
@@ -74,8 +124,9 @@ int run_render_command(const std::vector<std::string>& args) {
     const std::vector<OptionSpec> specs = render_option_specs();
     const ParsedArguments arguments = parse_arguments("radcache render", args, specs);
     if (arguments.has("--help")) {
-        std::cout << format_help("radcache render SCENE [options]",
-                                 "Renders SCENE (a scene.json file) to an image.", specs);
+        std::cout << format_help(
+            "radcache render SCENE [options]",
+            "Renders SCENE (a scene.json file, or a glTF 2.0 .gltf/.glb file) to an image.", specs);
         return 0;
     }
     const auto total_start = SteadyClock::now();
@@ -86,16 +137,19 @@ int run_render_command(const std::vector<std::string>& args) {
     RenderTotals totals;
 
     auto start = SteadyClock::now();
-    Scene scene = load_scene(job.scene);
+    Scene scene = load_scene(job.scene, disk_files(), arguments.value("--camera"));
     totals.phase("load") = seconds_since(start);
     if (scene.dropped_degenerate > 0) {
         log_note("dropped " + std::to_string(scene.dropped_degenerate) + " degenerate triangles");
     }
+    scene.base_camera.filter = pixel_filter(arguments, scene.base_camera.filter);
+    scene.camera.filter = scene.base_camera.filter;
     const RenderSettings settings = render_settings(arguments, scene.render);
     job.write_options.exposure = settings.exposure;
     const MethodEntry& entry = find_method(settings.method);
     refuse_foreign_options(entry, arguments);
     check_layers(entry, job.layers);
+    warn_unless_frames_in_range(job.frames, scene.animation);
     const int first =
         job.frames.given ? job.frames.first : static_cast<int>(scene.animation.frame_start);
     const int last = job.frames.given ? job.frames.last : first;

@@ -26,6 +26,13 @@ std::vector<OptionSpec> render_option_specs() {
         {"--seed", "", "N", "random seed (default: the scene's render.seed, else 0)"},
         {"--width", "", "N", "image width in pixels (default: the scene camera's)"},
         {"--height", "", "N", "image height in pixels (default: the scene camera's)"},
+        {"--camera", "", "NAME",
+         "glTF scenes: the camera of that name (or its node's name; default: the first)"},
+        {"--filter", "", "NAME",
+         "pixel reconstruction filter: box, tent or gaussian (default: the scene camera's, else "
+         "box)"},
+        {"--filter-radius", "", "R",
+         "the filter's radius in pixels, in (0, 16] (default: box 0.5, tent 1, gaussian 1.5)"},
         {"--frames", "", "A:B", "render frames A to B of an animated scene, one image each"},
         {"-D", "", "KEY=VALUE",
          "override a render default: method, spp, time, max_depth, rr_depth, seed, exposure", true},
@@ -145,6 +152,7 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
         refuse_foreign_options(entry, arguments);
         entry.create(arguments, method);
     }
+    pixel_filter(arguments, PixelFilter{});
     job.write_options.half = arguments.has("--half");
     if (arguments.has("--aovs")) {
         job.layers = parse_layers(arguments.value("--aovs"));
@@ -163,6 +171,21 @@ RenderSettings render_settings(const ParsedArguments& arguments, RenderSettings 
     settings.exposure =
         static_cast<float>(arguments.number("--exposure", settings.exposure, -64.0, 64.0));
     return settings;
+}
+
+PixelFilter pixel_filter(const ParsedArguments& arguments, PixelFilter filter) {
+    if (arguments.has("--filter")) {
+        const std::string name = arguments.value("--filter");
+        filter.type = pixel_filter_type(name);
+        if (filter.type < 0) {
+            throw Error("--filter: expected box, tent or gaussian, got '" + excerpt(name) + "'",
+                        kExitUsage);
+        }
+        filter.radius = default_filter_radius(filter.type);
+    }
+    filter.radius = static_cast<float>(
+        arguments.number("--filter-radius", filter.radius, kMinFilterRadius, kMaxFilterRadius));
+    return filter;
 }
 
 MethodSettings method_settings(const ParsedArguments& arguments, const RenderSettings& settings,

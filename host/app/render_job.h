@@ -8,6 +8,7 @@
 
 #include "image/image_io.h"
 #include "methods/method.h"
+#include "scene/camera.h"
 #include "scene/render_settings.h"
 #include "util/cli.h"
 
@@ -42,6 +43,11 @@ RenderJob read_render_job(const ParsedArguments& arguments);
 
 // The scene's render defaults overridden by -D and then by --method, --spp, --seed, --exposure.
 RenderSettings render_settings(const ParsedArguments& arguments, RenderSettings scene_defaults);
+
+// The scene camera's pixel filter overridden by --filter (with its default radius) and then
+// --filter-radius; Error (exit status 2) naming the option for an unknown name or a radius
+// outside [kMinFilterRadius, kMaxFilterRadius].
+PixelFilter pixel_filter(const ParsedArguments& arguments, PixelFilter scene_filter);
 
 // What every method reads, for frames first..last.
 MethodSettings method_settings(const ParsedArguments& arguments, const RenderSettings& settings,

@@ -15,12 +15,20 @@ void RenderTotals::add_frame(int frame, const std::filesystem::path& output,
     // Memory of the frame (issue 17): now, and the most since the previous frame.
     const HostMemory host = host_memory();
     const DeviceMemory& device = context.device_memory();
+    nlohmann::json need_parts = nlohmann::json::object();
+    for (const DeviceMemoryNeed::Part& part : frame_need_.parts) {
+        need_parts[part.name] = part.bytes;
+    }
     entry["memory"] = {{"host_resident_bytes", host.resident},
                        {"host_peak_resident_bytes", host.peak_resident},
                        {"device_bytes", device.in_use},
-                       {"device_peak_bytes", device.peak}};
+                       {"device_peak_bytes", device.peak},
+                       {"device_need_bytes", frame_need_.total()},
+                       {"device_need_parts", need_parts},
+                       {"device_need_excludes", frame_need_.excludes}};
     host_peak_ = std::max(host_peak_, host.peak_resident);
     device_peak_ = std::max(device_peak_, device.peak);
+    device_need_ = std::max(device_need_, frame_need_.total());
     reset_host_memory_peak();
     context.reset_peak_memory();
     frames_.push_back(entry);
@@ -88,6 +96,8 @@ nlohmann::json RenderTotals::json(const RenderSettings& settings, const Scene& s
     stats["dropped_degenerate_triangles"] = scene.dropped_degenerate;
     stats["resolution"] = {width_, height_};
     stats["spp"] = spp_;
+    stats["filter"] = {{"type", pixel_filter_name(scene.camera.filter.type)},
+                       {"radius", scene.camera.filter.radius}};
     stats["seed"] = settings.seed;
     stats["max_depth"] = settings.max_depth;
     stats["frames"] = frames_;
@@ -102,6 +112,7 @@ nlohmann::json RenderTotals::json(const RenderSettings& settings, const Scene& s
     stats["prebuilt_programs"] = prebuild_requests_json(context);
     stats["memory"] = {{"host_peak_resident_bytes", host_peak_},
                        {"device_peak_bytes", device_peak_},
+                       {"device_need_bytes", device_need_},
                        {"device_global_bytes", context.device().global_memory}};
     stats["bvh"] = {{"layout", bvh_layout_name(bvh.layout)},
                     {"nodes", bvh.node_count()},

@@ -9,6 +9,7 @@
 
 #include "bvh/bvh.h"
 #include "device/context.h"
+#include "device/memory_need.h"
 #include "methods/method.h"
 #include "scene/render_settings.h"
 #include "scene/scene.h"
@@ -25,6 +26,10 @@ class RenderTotals {
     void add_frame(int frame, const std::filesystem::path& output, const FrameResult& result,
                    Context& context);
 
+    // The device memory the next frame was checked to need before its buffers were made
+    // (device/memory_need.h), reported with the frame's measured peak.
+    void set_frame_need(const DeviceMemoryNeed& need) { frame_need_ = need; }
+
     // The stats file's JSON.
     nlohmann::json json(const RenderSettings& settings, const Scene& scene, const Context& context,
                         const Bvh& bvh, double total_seconds) const;
@@ -40,6 +45,8 @@ class RenderTotals {
     int height_ = 0;
     uint64_t host_peak_ = 0;
     size_t device_peak_ = 0;
+    DeviceMemoryNeed frame_need_;
+    uint64_t device_need_ = 0;
 };
 
 }  // namespace rc

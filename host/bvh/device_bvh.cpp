@@ -1,6 +1,9 @@
 #include "bvh/device_bvh.h"
 
+#include <algorithm>
+
 #include "device/context.h"
+#include "device/memory_need.h"
 #include "util/error.h"
 
 namespace rc {
@@ -31,5 +34,15 @@ DeviceBvh::DeviceBvh(Context& context, const Bvh& bvh)
     : nodes(upload_nodes(context, bvh)),
       triangles(context, bvh.triangles, "bvh_triangles"),
       triangle_of_primitive(context, bvh.triangle_of_primitive, "triangle_of_primitive") {}
+
+uint64_t DeviceBvh::bytes_for(const Bvh& bvh) {
+    const uint64_t nodes =
+        bvh.layout != BvhLayout::kWide
+            ? bvh.node_bytes()
+            : bvh.wide_packet_offset() * sizeof(shared::TrianglePacket) + bvh.leaf_bytes();
+    return std::max<uint64_t>(nodes, 1) +
+           buffer_bytes(bvh.triangles.size(), sizeof(shared::Triangle)) +
+           buffer_bytes(bvh.triangle_of_primitive.size(), sizeof(unsigned));
+}
 
 }  // namespace rc

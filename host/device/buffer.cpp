@@ -1,47 +1,37 @@
 #include "device/buffer.h"
 
-#include <cstdio>
 #include <utility>
 
 #include "device/cl_calls.h"
 #include "device/cl_error.h"
 #include "device/context.h"
+#include "device/memory_need.h"
 #include "util/error.h"
 
 namespace rc {
-namespace {
-
-std::string format_bytes(uint64_t bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.2f MiB", static_cast<double>(bytes) / (1024.0 * 1024.0));
-    return text;
-}
-
-}  // namespace
 
 DeviceBuffer::DeviceBuffer(Context& context, size_t bytes, std::string name)
     : context_(&context), bytes_(std::max<size_t>(bytes, 1)), name_(std::move(name)) {
     const DeviceInfo& device = context.device();
     if (bytes_ > device.max_allocation) {
-        throw Error("buffer '" + name_ + "' needs " + format_bytes(bytes_) +
-                    ", more than the largest allocation " + format_bytes(device.max_allocation) +
-                    " of " + device.name);
+        throw Error("buffer '" + name_ + "' needs " + format_mebibytes(bytes_) +
+                    ", more than the largest allocation " +
+                    format_mebibytes(device.max_allocation) + " of " + device.name);
     }
-    // The device's memory (or --device-memory) bounds what a run holds at once: refused here,
-    // with the figures, rather than by the driver mid-launch.
+    // The device's memory (or --device-memory) bounds what a run holds at once: a render is
+    // refused up front with its whole need (device/memory_need.h); what grows past it (caches)
+    // is refused here, with the figures, rather than by the driver mid-launch.
     const size_t held = context.device_memory().in_use;
-    const uint64_t limit =
-        context.options().memory_limit != 0 ? context.options().memory_limit : device.global_memory;
+    const uint64_t limit = context.memory_limit();
     if (limit > 0 && held + bytes_ > limit) {
-        throw Error(
-            "buffer '" + name_ + "' needs " + format_bytes(bytes_) + ": with the " +
-            format_bytes(held) + " this run holds, more than the " + format_bytes(limit) +
-            (context.options().memory_limit != 0 ? " of --device-memory" : " of " + device.name));
+        throw Error("buffer '" + name_ + "' needs " + format_mebibytes(bytes_) + ": with the " +
+                    format_mebibytes(held) + " this run holds, more than the " +
+                    format_mebibytes(limit) + " of " + context.memory_limit_source());
     }
     cl_int status = CL_SUCCESS;
     handle_ = RC_CL_CREATE("buffer", clCreateBuffer, &status, context.cl_context(),
                            CL_MEM_READ_WRITE, bytes_, nullptr);
-    check_cl(status, "clCreateBuffer", name_ + ", " + format_bytes(bytes_));
+    check_cl(status, "clCreateBuffer", name_ + ", " + format_mebibytes(bytes_));
     memory_ = context.memory_counter();
     memory_->allocate(bytes_);
 }

@@ -66,6 +66,14 @@ class Context {
 
     const DeviceInfo& device() const { return device_; }
     const ContextOptions& options() const { return options_; }
+    // The most bytes this run may hold in buffers: --device-memory, else the device's global
+    // memory (0: unknown, no limit); and what sets it ("--device-memory" or the device's name).
+    uint64_t memory_limit() const {
+        return options_.memory_limit != 0 ? options_.memory_limit : device_.global_memory;
+    }
+    std::string memory_limit_source() const {
+        return options_.memory_limit != 0 ? "--device-memory" : device_.name;
+    }
     // The BVH layout every program's traversal is built for (device/bvh_layout.h).
     BvhLayout bvh_layout() const { return bvh_layout_; }
 

@@ -1,7 +1,10 @@
 #include "device/program.h"
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cstdio>
+#include <optional>
 
 #include "device/build_log.h"
 #include "device/cl_calls.h"
@@ -10,6 +13,7 @@
 #include "util/error.h"
 #include "util/file_io.h"
 #include "util/log.h"
+#include "util/stderr_capture.h"
 
 namespace rc {
 namespace {
@@ -32,6 +36,27 @@ std::string build_log(cl_program program, cl_device_id device) {
         log.pop_back();
     }
     return log;
+}
+
+// What follows a failed build's error: the driver's build log, then what its compiler printed on
+// stderr meanwhile; without a log (it could not be read), the compiler's lines on the error's
+// own line.
+std::string build_failure_details(const std::string& log, const std::string& compiler) {
+    std::vector<std::string> lines;
+    size_t start = 0;
+    while (start < compiler.size()) {
+        const size_t end = std::min(compiler.find('\n', start), compiler.size());
+        if (end > start) {
+            lines.push_back(compiler.substr(start, end - start));
+        }
+        start = end + 1;
+    }
+    std::string details = log.empty() ? "" : "; build log:\n" + log;
+    for (size_t i = 0; i < lines.size(); ++i) {
+        details +=
+            log.empty() ? (i == 0 ? "; compiler output: " : "; ") + lines[i] : "\n" + lines[i];
+    }
+    return details;
 }
 
 // Builds from a binary; nullptr when the driver refuses it (treated like a corrupt entry).
@@ -124,14 +149,26 @@ Program::Program(_cl_context* context, const DeviceInfo& device, const KernelSou
         handle_ =
             RC_CL_CREATE("program", clCreateProgramWithSource, &status, context, 1, &text, &length);
         check_cl(status, "clCreateProgramWithSource", entry);
+        // PoCL's compiler prints its own summary ("2 errors generated.") on stderr: taken into
+        // the error's build log, so that the error is all the user sees. (Only on PoCL: the
+        // capture holds the process's stderr, so builds on several threads take turns there.)
+        std::optional<StderrCapture> compiler_output;
+        if (device.platform_name.find("Portable Computing Language") != std::string::npos) {
+            compiler_output.emplace();
+        }
         status = RC_CL(clBuildProgram, handle_, 1, &device.device, all_options.c_str(), nullptr,
                        nullptr);
+        const std::string chatter = compiler_output ? compiler_output->finish_text() : "";
+        if (status == CL_SUCCESS && !chatter.empty()) {
+            std::fputs(chatter.c_str(), stderr);  // a successful build's warnings, as they were
+        }
         if (status != CL_SUCCESS) {
-            const std::string log = map_build_log(build_log(handle_, device.device), source);
+            const std::string details = build_failure_details(
+                map_build_log(build_log(handle_, device.device), source), chatter);
             RC_CL_RELEASE("program", clReleaseProgram, handle_);
             handle_ = nullptr;
             throw Error("clBuildProgram(" + entry + ") failed: " + cl_error_name(status) + " on " +
-                        device.name + (log.empty() ? "" : "; build log:\n" + log));
+                        device.name + details);
         }
         try {
             cache.store(key, program_binary(handle_, entry));

@@ -239,6 +239,10 @@ DecodedImage decode_image(const std::string& bytes, const std::string& name) {
         }
     }
     OIIO::ImageSpec config;
+    // The proxy named in the configuration too: some readers (PNG in OpenImageIO 2.4) look for it
+    // there and otherwise open `name` on disk.
+    OIIO::Filesystem::IOProxy* pointer = &proxy;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &pointer);
     std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(name, &config, &proxy);
     if (!in) {
         throw_open_error(name, capture);

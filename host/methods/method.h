@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "device/memory_need.h"
 #include "device/program.h"
 #include "image/image.h"
 #include "methods/frame_scene.h"
@@ -51,6 +52,9 @@ struct MethodSettings {
     }
 };
 
+// Width x height of a frame's image: the scene camera's where `width` or `height` is 0.
+size_t image_pixels(int width, int height, const Scene& scene);
+
 // What the frame loop offers a method while it renders.
 struct FrameHooks {
     // Progress of the frame in [0, 1], with a short note ("12 spp", "photons").
@@ -83,6 +87,13 @@ class Method {
     // render to start them all at once in the background (issue 14). Exactly those: a test
     // renders every method and compares (tests/prebuild_test.cpp).
     virtual std::vector<ProgramRequest> programs() const = 0;
+    // The device memory its buffers hold together at their peak while it renders a frame of
+    // `scene`, beside the scene's and the BVH's (device/memory_need.h), from its options before
+    // any is made. What grows with what the method finds (cache records) it names in `excludes`.
+    // Settings that cannot work on `device` (an image larger than its largest allocation) are
+    // refused here (Error, exit status 2), before any device memory is used.
+    virtual DeviceMemoryNeed device_memory_need(const Scene& scene,
+                                                const DeviceInfo& device) const = 0;
 };
 
 // A method as the registry lists it.

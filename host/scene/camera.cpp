@@ -6,6 +6,41 @@
 
 namespace rc {
 
+int pixel_filter_type(const std::string& name) {
+    if (name == "box") {
+        return RC_FILTER_BOX;
+    }
+    if (name == "tent") {
+        return RC_FILTER_TENT;
+    }
+    if (name == "gaussian") {
+        return RC_FILTER_GAUSSIAN;
+    }
+    return -1;
+}
+
+std::string pixel_filter_name(int type) {
+    switch (type) {
+        case RC_FILTER_TENT:
+            return "tent";
+        case RC_FILTER_GAUSSIAN:
+            return "gaussian";
+        default:
+            return "box";
+    }
+}
+
+float default_filter_radius(int type) {
+    switch (type) {
+        case RC_FILTER_TENT:
+            return 1.0f;
+        case RC_FILTER_GAUSSIAN:
+            return 1.5f;
+        default:
+            return 0.5f;
+    }
+}
+
 shared::CameraParams camera_params(const Camera& camera, int width, int height) {
     const glm::vec3 forward = glm::normalize(camera.look_at - camera.position);
     const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
@@ -44,6 +79,8 @@ shared::CameraParams camera_params(const Camera& camera, int width, int height) 
     params.right = {across.x, across.y, across.z, 0.0f};
     params.down = {down.x, down.y, down.z, 0.0f};
     params.resolution = {width, height, 0, 0};
+    params.filter = camera.filter.type;
+    params.filter_radius = camera.filter.radius;
     return params;
 }
 

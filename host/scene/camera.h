@@ -2,6 +2,7 @@
 #pragma once
 
 #include <glm/vec3.hpp>
+#include <string>
 
 #include "shared/types.h"
 
@@ -13,6 +14,27 @@ inline constexpr int kMaxImageSide = 1 << 16;
 // Which image extent `fov` spans, as in Mitsuba's fov_axis.
 enum class FovAxis { kX, kY, kDiagonal, kSmaller, kLarger };
 
+// The pixel reconstruction filter camera samples are drawn from (kernels/common/pixel_filter.h,
+// docs/pixel-filters.md): box (the default, radius 0.5: uniform over the pixel), tent or Gaussian.
+struct PixelFilter {
+    int type = RC_FILTER_BOX;  // RC_FILTER_*
+    float radius = 0.5f;       // pixels
+
+    bool operator==(const PixelFilter&) const = default;
+};
+
+// The range of filter radii (pixels) a scene or --filter-radius may give.
+inline constexpr float kMinFilterRadius = 1e-3f;
+inline constexpr float kMaxFilterRadius = 16.0f;
+
+// "box", "tent" or "gaussian" as RC_FILTER_*; -1 for any other name.
+int pixel_filter_type(const std::string& name);
+// RC_FILTER_* by name.
+std::string pixel_filter_name(int type);
+// The radius a filter has when none is given: box 0.5, tent 1 (pbrt-v4's 1-pixel tent of the
+// common references), Gaussian 1.5 (pbrt-v4's).
+float default_filter_radius(int type);
+
 struct Camera {
     glm::vec3 position{0.0f, 0.0f, 0.0f};
     glm::vec3 look_at{0.0f, 0.0f, 1.0f};
@@ -21,10 +43,11 @@ struct Camera {
     FovAxis fov_axis = FovAxis::kX;
     int width = 512;
     int height = 512;
+    PixelFilter filter;
 };
 
-// The device camera for an image of width x height pixels. Image x grows along
-// cross(forward, up) and image y downwards along -up.
+// The device camera (with its pixel filter) for an image of width x height pixels. Image x grows
+// along cross(forward, up) and image y downwards along -up.
 shared::CameraParams camera_params(const Camera& camera, int width, int height);
 
 }  // namespace rc

@@ -1,6 +1,7 @@
 #include "scene/device_scene.h"
 
 #include "device/context.h"
+#include "device/memory_need.h"
 
 namespace rc {
 namespace {
@@ -66,6 +67,27 @@ size_t DeviceScene::bytes() const {
     return shading.bytes() + normals.bytes() + uvs.bytes() + materials.bytes() + textures.bytes() +
            texels.bytes() + lights.bytes() + light_cdf.bytes() + light_triangles.bytes() +
            light_triangle_cdf.bytes();
+}
+
+}  // namespace rc
+
+namespace rc {
+
+uint64_t DeviceScene::bytes_for(const Scene& scene) {
+    size_t texels = 0;
+    for (const Texture& t : scene.textures) {
+        texels += t.texels.size();
+    }
+    return buffer_bytes(scene.shading.size(), sizeof(shared::TriangleShading)) +
+           buffer_bytes(scene.normals.size(), sizeof(shared::float4)) +
+           buffer_bytes(scene.uvs.size(), sizeof(glm::vec2)) +
+           buffer_bytes(scene.materials.size(), sizeof(shared::Material)) +
+           buffer_bytes(scene.textures.size(), sizeof(shared::TextureInfo)) +
+           buffer_bytes(texels, sizeof(shared::float4)) +
+           buffer_bytes(scene.lights.lights.size(), sizeof(shared::Light)) +
+           buffer_bytes(scene.lights.cdf.size(), sizeof(float)) +
+           buffer_bytes(scene.lights.triangles.size(), sizeof(unsigned)) +
+           buffer_bytes(scene.lights.triangle_cdf.size(), sizeof(float));
 }
 
 }  // namespace rc

@@ -30,6 +30,8 @@ struct DeviceScene {
     int environment = -1;
 
     size_t bytes() const;
+    // What the constructor allocates for `scene`, before it does.
+    static uint64_t bytes_for(const Scene& scene);
 };
 
 }  // namespace rc

@@ -40,15 +40,60 @@ std::string frame_text(double frame) {
     return text;
 }
 
-// Error unless every world position lies within the world range (issue 17: Embree's build and
-// the kernels' squared distances overflow beyond it).
-void check_world_point(glm::vec3 p, const std::string& what, double frame) {
-    if (!within_world(p)) {
-        throw Error(what + " lies at " + format_point(p) + " in world space at frame " +
-                    frame_text(frame) +
-                    ", outside the world range of +-1e12 (check its size, "
-                    "transform and animation)");
+// What is wrong with the world coordinate `value` of `axis`: "x overflows float", "x = 2e+12".
+std::string offending_coordinate(char axis, float value) {
+    const std::string name(1, axis);
+    if (std::isnan(value)) {
+        return name + " is not a number (the transform adds infinities of opposite signs)";
     }
+    if (std::isinf(value)) {
+        return name + " overflows float";
+    }
+    char text[48];
+    std::snprintf(text, sizeof text, " = %g", value);
+    return name + text;
+}
+
+// Error unless every element of the object-to-world transform `m` is finite (translations or
+// scales whose product overflows float), naming `what` and the first element that is not.
+void check_transform(const glm::mat4& m, const std::string& what, double frame) {
+    for (int row = 0; row < 4; ++row) {
+        for (int column = 0; column < 4; ++column) {
+            const float value = m[column][row];
+            if (!std::isfinite(value)) {
+                throw Error(what + ": its transform at frame " + frame_text(frame) +
+                            " overflows float (row " + std::to_string(row + 1) + ", column " +
+                            std::to_string(column + 1) + " is " +
+                            (std::isnan(value) ? "not a number" : "infinite") +
+                            "; check its translations, scales and animation)");
+            }
+        }
+    }
+}
+
+// `object` (in object space) taken to world space by `to_world`, divided by w; Error unless it
+// lies within the world range (issue 17: Embree's build and the kernels' squared distances
+// overflow beyond it), naming `what`, its object-space position and the offending value.
+glm::vec3 world_point(const glm::mat4& to_world, glm::vec3 object, const std::string& what,
+                      double frame) {
+    const glm::vec4 h = to_world * glm::vec4(object, 1.0f);
+    const std::string where =
+        what + " at " + format_point(object) + " in object space, at frame " + frame_text(frame);
+    if (h.w == 0.0f || !std::isfinite(h.w)) {
+        char w[32];
+        std::snprintf(w, sizeof w, "%g", h.w);
+        throw Error(where + ": its transform gives w = " + w +
+                    ", no point in world space (a matrix's bottom row must not take it to w = 0; "
+                    "an affine one is 0 0 0 1)");
+    }
+    const glm::vec3 p = glm::vec3(h) / h.w;
+    if (!within_world(p)) {
+        const int axis = !within_world({p.x, 0, 0}) ? 0 : !within_world({0, p.y, 0}) ? 1 : 2;
+        throw Error(where + ": world " + offending_coordinate("xyz"[axis], p[axis]) +
+                    ", outside the world range of +-1e12 (check its size, transform and "
+                    "animation)");
+    }
+    return p;
 }
 
 // The material slot of a shape's triangle t (slot 0 for a bad or missing index).
@@ -107,11 +152,13 @@ void add_shape_triangles(Scene& scene, size_t s, ShapeLights& shape_lights) {
     const int normal_base =
         shape.mesh.normals.empty() ? -1 : static_cast<int>(scene.normals.size());
     const int uv_base = shape.mesh.uvs.empty() ? -1 : static_cast<int>(scene.uvs.size());
-    const std::string shape_name = "shape '" + excerpt(shape.name) + "'";
+    const std::string shape_name =
+        "shape '" + excerpt(shape.name) + "' (index " + std::to_string(s) + ")";
+    check_transform(to_world, shape_name, scene.frame);
     for (size_t v = 0; v < shape.mesh.positions.size(); ++v) {
-        const glm::vec3 world = transform_point(to_world, shape.mesh.positions[v]);
-        check_world_point(world, shape_name + ": vertex " + std::to_string(v), scene.frame);
-        mesh.positions.push_back(world);
+        mesh.positions.push_back(world_point(to_world, shape.mesh.positions[v],
+                                             shape_name + ": vertex " + std::to_string(v),
+                                             scene.frame));
     }
     for (const glm::vec3& n : shape.mesh.normals) {
         const glm::vec3 world = transform_normal(to_world, n);
@@ -207,8 +254,8 @@ float scene_radius(const TriangleMesh& mesh) {
 }
 
 // The device light of a point, spot or environment emitter at the frame, and its power.
-shared::Light emitter_light(const Emitter& emitter, const glm::mat4& motion, float radius,
-                            double frame, float* power) {
+shared::Light emitter_light(const Emitter& emitter, const std::string& emitter_name,
+                            const glm::mat4& motion, float radius, double frame, float* power) {
     shared::Light light{};
     if (emitter.kind == EmitterKind::kConstant) {
         light.kind = RC_LIGHT_CONSTANT;
@@ -216,8 +263,8 @@ shared::Light emitter_light(const Emitter& emitter, const glm::mat4& motion, flo
         *power = kPi * kPi * radius * radius * luminance(emitter.radiance);
         return light;
     }
-    const glm::vec3 position = transform_point(motion, emitter.position);
-    check_world_point(position, "emitter '" + excerpt(emitter.name) + "'", frame);
+    check_transform(motion, emitter_name, frame);
+    const glm::vec3 position = world_point(motion, emitter.position, emitter_name, frame);
     light.position = float4_of(position);
     if (emitter.kind == EmitterKind::kPoint) {
         light.kind = RC_LIGHT_POINT;
@@ -225,8 +272,8 @@ shared::Light emitter_light(const Emitter& emitter, const glm::mat4& motion, flo
         *power = 4.0f * kPi * luminance(emitter.intensity);
         return light;
     }
-    const glm::vec3 target = transform_point(motion, emitter.look_at);
-    check_world_point(target, "emitter '" + excerpt(emitter.name) + "': look_at", frame);
+    const glm::vec3 target =
+        world_point(motion, emitter.look_at, emitter_name + ": look_at", frame);
     const glm::vec3 axis = glm::normalize(target - position);
     const float cutoff = glm::radians(emitter.cutoff_angle);
     const float beam = glm::radians(emitter.beam_width);
@@ -298,13 +345,16 @@ void Scene::set_frame(double new_frame) {
         close_area_lights(shapes[s], shape_lights, lights, power);
     }
     const float radius = scene_radius(mesh);
-    for (const Emitter& emitter : emitters) {
+    for (size_t e = 0; e < emitters.size(); ++e) {
+        const Emitter& emitter = emitters[e];
         const glm::mat4 motion = animation.motion(TrackTarget::kEmitter, emitter.name, frame);
         float light_power = 0.0f;
         if (emitter.kind == EmitterKind::kConstant) {
             lights.environment = static_cast<int>(lights.lights.size());
         }
-        lights.lights.push_back(emitter_light(emitter, motion, radius, frame, &light_power));
+        const std::string name =
+            "emitter '" + excerpt(emitter.name) + "' (index " + std::to_string(e) + ")";
+        lights.lights.push_back(emitter_light(emitter, name, motion, radius, frame, &light_power));
         power.push_back(light_power);
     }
     lights.cdf = selection_cdf(power);

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "scene/generated_meshes.h"
+#include "scene/gltf_loader.h"
 #include "scene/json_reader.h"
 #include "scene/obj_loader.h"
 #include "scene/transform.h"
@@ -89,8 +90,27 @@ class SceneParser {
                     "unknown value '" + excerpt(axis) + "' (x, y, diagonal, smaller, larger)");
     }
 
+    // camera.filter: {"type": "box"|"tent"|"gaussian", "radius": pixels (default: the type's)}.
+    PixelFilter parse_filter(const JsonReader& reader) {
+        reader.allow_only({"type", "radius"});
+        PixelFilter filter;
+        const std::string name = reader.string("type");
+        filter.type = pixel_filter_type(name);
+        if (filter.type < 0) {
+            reader.fail("type", "expected \"box\", \"tent\" or \"gaussian\", got \"" +
+                                    excerpt(name) + "\"");
+        }
+        filter.radius = reader.number("radius", default_filter_radius(filter.type));
+        if (!(filter.radius >= kMinFilterRadius && filter.radius <= kMaxFilterRadius)) {
+            reader.fail("radius", "must lie in [" + std::to_string(kMinFilterRadius) + ", " +
+                                      std::to_string(kMaxFilterRadius) + "] pixels, got " +
+                                      std::to_string(filter.radius));
+        }
+        return filter;
+    }
+
     Camera parse_camera(const JsonReader& reader) {
-        reader.allow_only({"position", "look_at", "up", "fov", "fov_axis", "resolution"});
+        reader.allow_only({"position", "look_at", "up", "fov", "fov_axis", "resolution", "filter"});
         Camera camera;
         camera.position = reader.vec3("position");
         camera.look_at = reader.vec3("look_at");
@@ -101,6 +121,9 @@ class SceneParser {
             reader.ivec2("resolution", glm::ivec2(512, 512), 1, kMaxImageSide);
         camera.width = resolution.x;
         camera.height = resolution.y;
+        if (reader.has("filter")) {
+            camera.filter = parse_filter(reader.object("filter"));
+        }
         if (!(camera.fov_degrees > 0.0f && camera.fov_degrees < 180.0f)) {
             reader.fail("fov", "must lie strictly between 0 and 180 degrees, got " +
                                    std::to_string(camera.fov_degrees));
@@ -131,7 +154,7 @@ class SceneParser {
                                 glm::vec3 fallback, int* texture_index) {
         if (reader.has(key) && reader.value().at(key).is_object()) {
             const JsonReader bitmap = reader.object(key);
-            bitmap.allow_only({"type", "filename"});
+            bitmap.allow_only({"type", "filename", "scale"});
             if (bitmap.string("type") != "bitmap") {
                 bitmap.fail("type", "unknown texture type '" + excerpt(bitmap.string("type")) +
                                         "' (known: bitmap)");
@@ -142,11 +165,11 @@ class SceneParser {
             }
             *texture_index = texture(image);
             const Texture& t = scene_.textures[*texture_index];
-            if (t.max_value > 1.0f) {
+            if (t.max_value > 1.0f) {  // times a scale in [0, 1]
                 bitmap.fail("filename", "texture values reach " + std::to_string(t.max_value) +
                                             " (albedo > 1)");
             }
-            return glm::vec3(1.0f);
+            return parse_colour(bitmap, "scale", glm::vec3(1.0f), 0.0f, 1.0f);
         }
         return parse_colour(reader, key, fallback, 0.0f, 1.0f);
     }
@@ -469,7 +492,16 @@ void warn_unless_lit(const Scene& scene) {
 
 }  // namespace
 
-Scene load_scene(const std::filesystem::path& path, const SceneFiles& files) {
+Scene load_scene(const std::filesystem::path& path, const SceneFiles& files,
+                 const std::string& camera) {
+    if (is_gltf_path(path)) {
+        Scene scene = load_gltf_scene(path, files, camera);
+        warn_unless_lit(scene);
+        return scene;
+    }
+    if (!camera.empty()) {
+        throw Error("--camera " + excerpt(camera) + ": applies to glTF scenes only", kExitUsage);
+    }
     if (!files.exists(path)) {
         throw Error(path.string() + ": scene file not found");
     }

@@ -10,6 +10,9 @@ namespace rc {
 
 // Loads the scene, reading it and its meshes and textures through `files`; any problem throws
 // Error naming the file and the key or line. A scene without light is warned about (log_warning).
-Scene load_scene(const std::filesystem::path& path, const SceneFiles& files = disk_files());
+// A .gltf or .glb file is imported (scene/gltf_loader.h), `camera` naming its camera (empty: the
+// first); a JSON scene takes no camera name.
+Scene load_scene(const std::filesystem::path& path, const SceneFiles& files = disk_files(),
+                 const std::string& camera = "");
 
 }  // namespace rc

@@ -19,8 +19,11 @@ Texture load_texture(const std::filesystem::path& file, const SceneFiles& files)
     if (!files.exists(file)) {
         throw Error(file.string() + ": texture file not found");
     }
-    const DecodedImage decoded =
-        decode_image(files.read(file, kMaxTextureFileBytes, "texture"), file.string());
+    return decode_texture(files.read(file, kMaxTextureFileBytes, "texture"), file);
+}
+
+Texture decode_texture(const std::string& bytes, const std::filesystem::path& file) {
+    const DecodedImage decoded = decode_image(bytes, file.string());
     const Image& image = decoded.image;
     Texture texture;
     texture.file = file;

@@ -10,7 +10,16 @@
 
 namespace rc {
 
-StderrCapture::StderrCapture() {
+namespace {
+
+std::mutex& capture_turns() {
+    static std::mutex turns;
+    return turns;
+}
+
+}  // namespace
+
+StderrCapture::StderrCapture() : turn_(capture_turns()) {
     std::fflush(stderr);
     char name[] = "/tmp/radcache-stderr-XXXXXX";
     capture_fd_ = ::mkstemp(name);
@@ -31,8 +40,11 @@ StderrCapture::StderrCapture() {
 
 StderrCapture::~StderrCapture() { finish(); }
 
-std::string StderrCapture::finish() {
+std::string StderrCapture::finish_text(size_t limit) {
     if (capture_fd_ < 0) {
+        if (turn_.owns_lock()) {
+            turn_.unlock();
+        }
         return "";
     }
     std::fflush(stderr);
@@ -42,11 +54,18 @@ std::string StderrCapture::finish() {
     std::string text;
     char chunk[4096];
     ::lseek(capture_fd_, 0, SEEK_SET);
-    for (ssize_t got; (got = ::read(capture_fd_, chunk, sizeof chunk)) > 0 && text.size() < 4096;) {
+    for (ssize_t got;
+         text.size() < limit && (got = ::read(capture_fd_, chunk, sizeof chunk)) > 0;) {
         text.append(chunk, static_cast<size_t>(got));
     }
     ::close(capture_fd_);
     capture_fd_ = -1;
+    turn_.unlock();
+    return text.substr(0, limit);
+}
+
+std::string StderrCapture::finish() {
+    const std::string text = finish_text(4096);
     std::string joined;
     size_t start = 0;
     while (start < text.size()) {

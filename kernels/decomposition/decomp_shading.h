@@ -6,6 +6,7 @@
 
 #include "common/cached_radiance.h"
 #include "common/camera.h"
+#include "common/pixel_filter.h"
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_near.h"
 
@@ -13,8 +14,11 @@
 RC_FUNC Ray rc_decomp_camera_ray(const DecompParams* params, const CameraParams* camera, uint pixel,
                                  uint s, RngStream* rng, float* x, float* y) {
     *rng = rc_rng_stream(params->seed_lo, params->seed_hi, pixel, s);
-    *x = (float)(pixel % (uint)params->width) + rc_rng_next_float(rng);
-    *y = (float)(pixel / (uint)params->width) + rc_rng_next_float(rng);
+    const float u = rc_rng_next_float(rng);
+    const float v = rc_rng_next_float(rng);
+    const float2 position = rc_filter_sample_position(camera, pixel, u, v);
+    *x = position.x;
+    *y = position.y;
     return rc_camera_ray(camera, *x, *y);
 }
 

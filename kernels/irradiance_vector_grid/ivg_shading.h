@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/camera.h"
+#include "common/pixel_filter.h"
 #include "common/camera_film.h"
 #include "common/sampling.h"
 #include "irradiance_vector_grid/ivg_radiance.h"
@@ -11,9 +12,10 @@
 RC_FUNC Ray rc_ivg_camera_ray(const IvgParams* p, const CameraParams* camera, uint pixel, uint s,
                               RngStream* rng) {
     *rng = rc_rng_stream(p->seed_lo, p->seed_hi, pixel, s);
-    const float x = (float)(pixel % (uint)camera->resolution.x) + rc_rng_next_float(rng);
-    const float y = (float)(pixel / (uint)camera->resolution.x) + rc_rng_next_float(rng);
-    return rc_camera_ray(camera, x, y);
+    const float u = rc_rng_next_float(rng);
+    const float v = rc_rng_next_float(rng);
+    const float2 position = rc_filter_sample_position(camera, pixel, u, v);
+    return rc_camera_ray(camera, position.x, position.y);
 }
 
 // Camera sample s of a pixel with final gathering (params.gather_rays gather rays): exact direct

@@ -3,6 +3,7 @@
 
 #include "common/bvh_traversal.h"
 #include "common/camera.h"
+#include "common/pixel_filter.h"
 #include "common/triangle_geometry.h"
 #include "shared/rng.h"
 #include "shared/types.h"
@@ -30,19 +31,18 @@ RC_FUNC float4 rc_normals_pixel(const CameraParams* camera, RC_GLOBAL const Trav
                                 RC_GLOBAL const Triangle* triangles,
                                 RC_GLOBAL const uint* triangle_of_primitive, uint pixel,
                                 uint samples, uint seed_lo, uint seed_hi) {
-    const uint px = pixel % (uint)camera->resolution.x;
-    const uint py = pixel / (uint)camera->resolution.x;
     float3 sum = (float3)(0.0f);
     for (uint s = 0; s < samples; ++s) {
-        float jx = 0.5f;
-        float jy = 0.5f;
+        float2 position = (float2)((float)(pixel % (uint)camera->resolution.x) + 0.5f,
+                                   (float)(pixel / (uint)camera->resolution.x) + 0.5f);
         if (samples > 1u) {
             RngStream rng = rc_rng_stream(seed_lo, seed_hi, pixel, s);
-            jx = rc_rng_next_float(&rng);
-            jy = rc_rng_next_float(&rng);
+            const float u = rc_rng_next_float(&rng);
+            const float v = rc_rng_next_float(&rng);
+            position = rc_filter_sample_position(camera, pixel, u, v);
         }
-        sum += rc_normals_sample(camera, nodes, triangles, triangle_of_primitive, (float)px + jx,
-                                 (float)py + jy);
+        sum += rc_normals_sample(camera, nodes, triangles, triangle_of_primitive, position.x,
+                                 position.y);
     }
     return (float4)(sum / (float)samples, 1.0f);
 }

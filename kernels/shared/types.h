@@ -94,14 +94,24 @@ typedef struct Triangle {
     float4 v0, v1, v2;
 } Triangle;
 
+// Pixel reconstruction filters (CameraParams.filter; kernels/common/pixel_filter.h,
+// docs/pixel-filters.md).
+#define RC_FILTER_BOX 0
+#define RC_FILTER_TENT 1
+#define RC_FILTER_GAUSSIAN 2
+
 // A pinhole camera. The ray through image position (x, y) in pixels, (0, 0) the top-left corner,
 // has direction top_left + right * x / width + down * y / height.
 typedef struct CameraParams {
-    float4 origin;    // xyz: eye
-    float4 top_left;  // xyz: from the eye to the top-left image corner
-    float4 right;     // xyz: the image's full width
-    float4 down;      // xyz: the image's full height, top to bottom
-    int4 resolution;  // x: width, y: height, in pixels
+    float4 origin;        // xyz: eye
+    float4 top_left;      // xyz: from the eye to the top-left image corner
+    float4 right;         // xyz: the image's full width
+    float4 down;          // xyz: the image's full height, top to bottom
+    int4 resolution;      // x: width, y: height, in pixels
+    int filter;           // RC_FILTER_*: the pixel filter camera samples are drawn from
+    float filter_radius;  // its radius in pixels (along x and along y)
+    int pad0;
+    int pad1;
 } CameraParams;
 
 // Material models (Material.model).
@@ -301,6 +311,8 @@ RC_SHARED_END
     FIELD(CameraParams, right)             \
     FIELD(CameraParams, down)              \
     FIELD(CameraParams, resolution)        \
+    FIELD(CameraParams, filter)            \
+    FIELD(CameraParams, filter_radius)     \
     STRUCT(Material)                       \
     FIELD(Material, diffuse)               \
     FIELD(Material, specular)              \
@@ -406,7 +418,7 @@ static_assert(sizeof(rc::shared::WideBvhNode) == 80);
 static_assert(offsetof(rc::shared::WideBvhNode, meta) == 24);
 static_assert(sizeof(rc::shared::TrianglePacket) == 160);
 static_assert(sizeof(rc::shared::Triangle) == 48);
-static_assert(sizeof(rc::shared::CameraParams) == 80);
+static_assert(sizeof(rc::shared::CameraParams) == 96);
 static_assert(sizeof(rc::shared::Material) == 64);
 static_assert(offsetof(rc::shared::Material, exponent) == 32);
 static_assert(sizeof(rc::shared::TextureInfo) == 16);

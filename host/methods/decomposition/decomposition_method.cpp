@@ -1,6 +1,7 @@
 // `--method decomposition`: irradiance decomposition (DESIGN.md §6.6b; Arikan, Forsyth and
 // O'Brien 2005) as a registered method: its options, the irradiance vector grid as its coarse
 // solution, and its statistics per frame (docs/decomposition.md).
+#include <algorithm>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -12,6 +13,7 @@
 #include "methods/irradiance_vector_grid/ivg_options.h"
 #include "methods/light_samples.h"
 #include "methods/method.h"
+#include "shared/decomposition.h"
 #include "util/error.h"
 #include "util/log.h"
 
@@ -170,6 +172,25 @@ class Decomposition final : public Method {
             programs.push_back({"irradiance_vector_grid/irradiance_vector_grid.cl", ""});
         }
         return programs;
+    }
+
+    DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
+        // IrradianceDecomposition::render: the G-buffer, both terms at every camera sample, the
+        // film and its counters, held together in the render pass.
+        const size_t pixels = image_pixels(options_.width, options_.height, scene);
+        const size_t samples = pixels * static_cast<size_t>(std::max(options_.spp, 1));
+        DeviceMemoryNeed shading;
+        shading.add("gbuffer", buffer_bytes(samples, sizeof(shared::GBufferSample)));
+        shading.add("irradiance terms", buffer_bytes(samples, sizeof(shared::DecompIrradiance)));
+        shading.add("film", buffer_bytes(pixels * RC_DECOMP_FILM_SLOTS, sizeof(shared::float4)));
+        shading.add("counters", buffer_bytes(3, sizeof(unsigned)));
+        shading.excludes = "the near field's triangles and the far field's records";
+        if (!with_grid_) {
+            return shading;
+        }
+        const IvgDeviceNeed grid = ivg_device_need(grid_options_, scene);
+        shading.add_all(grid.built);
+        return peak_of(grid.building, shading);
     }
 
    private:

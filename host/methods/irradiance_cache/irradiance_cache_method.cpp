@@ -3,6 +3,7 @@
 // hemisphere rays read beyond their hits.
 #include <memory>
 
+#include "methods/irradiance_cache/ic_memory.h"
 #include "methods/irradiance_cache/ic_options.h"
 #include "methods/irradiance_cache/ic_stats.h"
 #include "methods/irradiance_cache/irradiance_cache.h"
@@ -83,6 +84,20 @@ class IrradianceCaching final : public Method {
             programs.push_back({"temporal/temporal.cl", ""});
         }
         return programs;
+    }
+
+    DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
+        DeviceMemoryNeed cache = irradiance_cache_device_need(options_, scene);
+        if (temporal_) {
+            cache.excludes += ", their reprojection and the look-ahead frames' scenes and BVHs";
+        }
+        if (!with_grid_) {
+            return cache;
+        }
+        // The grid is built first and read until the frame ends.
+        const IvgDeviceNeed grid = ivg_device_need(grid_options_, scene);
+        cache.add_all(grid.built);
+        return peak_of(grid.building, cache);
     }
 
    private:

@@ -53,15 +53,17 @@ PixelRect project_sphere(const shared::CameraParams& camera, glm::vec3 centre, f
     if (behind > 0) {
         return whole;  // straddles the eye's plane
     }
-    // One pixel of margin against rounding; clipped to the image.
+    // One pixel of margin against rounding, and as many as a camera sample may lie beyond its
+    // pixel (its pixel filter's radius past the pixel's half width); clipped to the image.
+    const float margin = 1.0f + std::ceil(std::max(0.0f, camera.filter_radius - 0.5f));
     const auto clip = [](float value, int size) {
         return static_cast<int>(std::clamp(value, -1.0f, static_cast<float>(size)));
     };
     PixelRect rect;
-    rect.x0 = std::max(0, clip(std::floor(x_min) - 1.0f, width));
-    rect.x1 = std::min(width - 1, clip(std::floor(x_max) + 1.0f, width));
-    rect.y0 = std::max(0, clip(std::floor(y_min) - 1.0f, height));
-    rect.y1 = std::min(height - 1, clip(std::floor(y_max) + 1.0f, height));
+    rect.x0 = std::max(0, clip(std::floor(x_min) - margin, width));
+    rect.x1 = std::min(width - 1, clip(std::floor(x_max) + margin, width));
+    rect.y0 = std::max(0, clip(std::floor(y_min) - margin, height));
+    rect.y1 = std::min(height - 1, clip(std::floor(y_max) + margin, height));
     return rect;
 }
 

@@ -118,18 +118,59 @@ IrradianceVectorGrid::IrradianceVectorGrid(const FrameScene& frame)
       values_(frame.context, 1, "ivg_values"),
       packed_(frame.context, 1, "ivg_packed") {}
 
-shared::IvgParams IrradianceVectorGrid::layout(const IvgOptions& options) const {
-    glm::vec3 lower(0.0f);
-    glm::vec3 upper(0.0f);
-    if (!scene_.mesh.positions.empty()) {
-        lower = upper = scene_.mesh.positions[0];
-        for (const glm::vec3& p : scene_.mesh.positions) {
-            lower = glm::min(lower, p);
-            upper = glm::max(upper, p);
+namespace {
+
+// The scene's bounding box at its frame (the origin alone when it has no vertex).
+void scene_bounds(const Scene& scene, glm::vec3* lower, glm::vec3* upper) {
+    *lower = *upper = glm::vec3(0.0f);
+    if (!scene.mesh.positions.empty()) {
+        *lower = *upper = scene.mesh.positions[0];
+        for (const glm::vec3& p : scene.mesh.positions) {
+            *lower = glm::min(*lower, p);
+            *upper = glm::max(*upper, p);
         }
     }
+}
+
+// The voxels per axis of the grid: the options', else auto's for the scene's box.
+std::array<int, 3> grid_cells(const IvgOptions& options, glm::vec3 extent) {
+    return options.cells[0] > 0 ? options.cells : auto_grid_cells(extent);
+}
+
+}  // namespace
+
+IvgDeviceNeed ivg_device_need(const IvgOptions& options, const Scene& scene) {
+    IvgDeviceNeed need;
+    if (!options.grid_in.empty()) {
+        need.built.excludes = "the grid of --grid-in";
+        return need;
+    }
+    glm::vec3 lower;
+    glm::vec3 upper;
+    scene_bounds(scene, &lower, &upper);
+    const size_t values =
+        vertex_count(grid_cells(options, upper - lower)) * RC_IVG_VALUES_PER_VERTEX;
+    // IrradianceVectorGrid's placeholders, then build(): accum, counters and the normalised
+    // values together; then upload_values(): the values and the compressed copy.
+    need.building.add("grid placeholders", sizeof(float) + sizeof(uint16_t));
+    need.building.add("grid sums", buffer_bytes(values, sizeof(int64_t)));
+    need.building.add("grid counters", buffer_bytes(2, sizeof(unsigned)));
+    need.building.add("grid values", buffer_bytes(values, sizeof(float)));
+    need.built.add("grid values", buffer_bytes(values, sizeof(float)));
+    need.built.add("grid compressed",
+                   options.compressed
+                       ? buffer_bytes(values / RC_IVG_VALUES_PER_VERTEX * RC_IVG_PACKED_PER_VERTEX,
+                                      sizeof(uint16_t))
+                       : sizeof(uint16_t));
+    return need;
+}
+
+shared::IvgParams IrradianceVectorGrid::layout(const IvgOptions& options) const {
+    glm::vec3 lower;
+    glm::vec3 upper;
+    scene_bounds(scene_, &lower, &upper);
     const glm::vec3 extent = upper - lower;
-    const std::array<int, 3> cells = options.cells[0] > 0 ? options.cells : auto_grid_cells(extent);
+    const std::array<int, 3> cells = grid_cells(options, extent);
     shared::IvgParams p{};
     // The grid's faces lie on the scene's bounding box, so walls there lie on grid planes and
     // their vertices get the photons that reach them (rc_ivg_deposit_segment).

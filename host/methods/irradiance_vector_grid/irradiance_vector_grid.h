@@ -14,6 +14,7 @@
 
 #include "device/buffer.h"
 #include "device/kernel.h"
+#include "device/memory_need.h"
 #include "methods/frame_scene.h"
 #include "methods/radiance_source.h"
 #include "shared/types.h"
@@ -58,6 +59,15 @@ struct PhotonSegment {
 // kAutoGridVertices vertices, at least 2 voxels per axis.
 std::array<int, 3> auto_grid_cells(glm::vec3 extent);
 constexpr int kAutoGridVertices = 32768;
+
+// The device memory a frame's grid holds (device/memory_need.h), for `scene` posed at the frame:
+// while it is built (the fixed-point sums beside the normalised values) and once built (the
+// values and their compressed copy). A grid read from --grid-in is only known when read.
+struct IvgDeviceNeed {
+    DeviceMemoryNeed building;
+    DeviceMemoryNeed built;
+};
+IvgDeviceNeed ivg_device_need(const IvgOptions& options, const Scene& scene);
 // Photons `auto` traces per grid vertex.
 constexpr uint64_t kAutoPhotonsPerVertex = 8;
 

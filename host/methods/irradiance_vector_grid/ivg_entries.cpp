@@ -6,6 +6,7 @@
 #include "methods/irradiance_vector_grid/ivg_options.h"
 #include "methods/light_samples.h"
 #include "methods/method.h"
+#include "shared/film.h"
 
 namespace rc {
 namespace {
@@ -48,6 +49,15 @@ class GridRendering final : public Method {
 
     std::vector<ProgramRequest> programs() const override {
         return {{"irradiance_vector_grid/irradiance_vector_grid.cl", ""}};
+    }
+
+    DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
+        const IvgDeviceNeed grid = ivg_device_need(grid_options_, scene);
+        DeviceMemoryNeed shading = grid.built;
+        const size_t pixels = image_pixels(settings_.width, settings_.height, scene);
+        shading.add("film", buffer_bytes(pixels * RC_CACHED_FILM_SLOTS, sizeof(shared::float4)));
+        shading.add("counters", buffer_bytes(3, sizeof(unsigned)));
+        return peak_of(grid.building, shading);
     }
 
    private:

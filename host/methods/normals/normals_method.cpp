@@ -26,6 +26,13 @@ class NormalsPreview final : public Method {
 
     std::vector<ProgramRequest> programs() const override { return {{"normals/normals.cl", ""}}; }
 
+    DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
+        DeviceMemoryNeed need;
+        need.add("film", buffer_bytes(image_pixels(settings_.width, settings_.height, scene),
+                                      sizeof(shared::float4)));
+        return need;
+    }
+
    private:
     MethodSettings settings_;
 };

@@ -26,6 +26,19 @@ std::string gibibytes(double bytes) {
 
 }  // namespace
 
+void check_film_size(int width, int height, const DeviceInfo& device) {
+    const double pixels = static_cast<double>(width) * static_cast<double>(height);
+    const double film_bytes = pixels * RC_PT_FILM_SLOTS * sizeof(shared::float4);
+    if (pixels >= 4294967296.0 || film_bytes > static_cast<double>(device.max_allocation)) {
+        throw Error("resolution " + std::to_string(width) + "x" + std::to_string(height) +
+                        " needs a film of " + gibibytes(film_bytes) +
+                        ", more than the largest allocation (" +
+                        gibibytes(static_cast<double>(device.max_allocation)) + ") of " +
+                        device.name,
+                    kExitUsage);
+    }
+}
+
 PathTracer::PathTracer(const FrameScene& frame)
     : FrameBound(frame),
       kernel_(frame.context.kernel("path_tracer/path_tracer.cl", "path_trace_pass")) {}
@@ -63,17 +76,8 @@ Image PathTracer::resolve(const Buffer<shared::float4>& film, int width, int hei
 Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stats) {
     const int width = options.width > 0 ? options.width : scene_.camera.width;
     const int height = options.height > 0 ? options.height : scene_.camera.height;
+    check_film_size(width, height, context_.device());
     const double pixels = static_cast<double>(width) * static_cast<double>(height);
-    const double film_bytes = pixels * RC_PT_FILM_SLOTS * sizeof(shared::float4);
-    if (pixels >= 4294967296.0 ||
-        film_bytes > static_cast<double>(context_.device().max_allocation)) {
-        throw Error("resolution " + std::to_string(width) + "x" + std::to_string(height) +
-                        " needs a film of " + gibibytes(film_bytes) +
-                        ", more than the largest allocation (" +
-                        gibibytes(static_cast<double>(context_.device().max_allocation)) + ") of " +
-                        context_.device().name,
-                    kExitUsage);
-    }
     if (options.spp < 1 && options.time_limit <= 0.0) {
         throw Error("samples per pixel must be at least 1", kExitUsage);
     }

@@ -37,6 +37,9 @@ struct PathTracerStats {
 // of the pixel, the unbiased sample estimate; the mean's is stddev / sqrt(spp)).
 extern const char* const kPathTracerAovs[6];
 
+// Error (exit status 2) naming the resolution when its film cannot be one buffer on `device`.
+void check_film_size(int width, int height, const DeviceInfo& device);
+
 class PathTracer : private FrameBound {
    public:
     explicit PathTracer(const FrameScene& frame);

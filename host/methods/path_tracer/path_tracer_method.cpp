@@ -3,6 +3,7 @@
 
 #include "methods/method.h"
 #include "methods/path_tracer/path_tracer.h"
+#include "shared/film.h"
 
 namespace rc {
 namespace {
@@ -45,6 +46,18 @@ class PathTracerMethod final : public Method {
 
     std::vector<ProgramRequest> programs() const override {
         return {{"path_tracer/path_tracer.cl", ""}};
+    }
+
+    DeviceMemoryNeed device_memory_need(const Scene& scene,
+                                        const DeviceInfo& device) const override {
+        DeviceMemoryNeed need;
+        const int width = settings_.width > 0 ? settings_.width : scene.camera.width;
+        const int height = settings_.height > 0 ? settings_.height : scene.camera.height;
+        check_film_size(width, height, device);
+        const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
+        need.add("film", buffer_bytes(pixels * RC_PT_FILM_SLOTS, sizeof(shared::float4)));
+        need.add("counters", buffer_bytes(3, sizeof(unsigned)));
+        return need;
     }
 
    private:

@@ -6,9 +6,12 @@
 #include <memory>
 
 #include "methods/glossy_method.h"
+#include "methods/irradiance_cache/ic_memory.h"
 #include "methods/irradiance_cache/ic_options.h"
 #include "methods/method.h"
 #include "methods/radiance_cache/radiance_cache.h"
+#include "shared/radiance_cache.h"
+#include "shared/sh_rotation_zxz.h"
 #include "util/error.h"
 #include "util/file_io.h"
 #include "util/log.h"
@@ -96,6 +99,17 @@ class RadianceCaching final : public Method {
             {"radiance_cache/rc_record_cells.cl", radiance_source_define(RC_RADIANCE_RECORDS)});
         programs.push_back({"glossy/glossy_placement.cl", ""});
         return programs;
+    }
+
+    DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
+        // RadianceCache::glossy_samples: the queries and glossy samples, with the splat's x90
+        // table and counter.
+        const GlossySampleBytes glossy = {
+            sizeof(shared::RcQuery), sizeof(shared::RcGlossySample),
+            buffer_bytes(RC_SH_X90_TABLE_SIZE, sizeof(float)) + buffer_bytes(1, sizeof(unsigned))};
+        DeviceMemoryNeed need = irradiance_cache_device_need(ic_, scene, glossy);
+        need.excludes += ", the radiance records, their batches and the BRDF tables";
+        return need;
     }
 
    private:

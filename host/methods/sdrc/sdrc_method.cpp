@@ -5,9 +5,11 @@
 #include <memory>
 
 #include "methods/glossy_method.h"
+#include "methods/irradiance_cache/ic_memory.h"
 #include "methods/irradiance_cache/ic_options.h"
 #include "methods/method.h"
 #include "methods/sdrc/sdrc_cache.h"
+#include "shared/radiance_cache.h"
 #include "util/error.h"
 #include "util/log.h"
 
@@ -117,6 +119,15 @@ class SpatialDirectionalRadianceCaching final : public Method {
         programs.push_back({"sdrc/sdrc_trace.cl", radiance_source_define(RC_RADIANCE_RECORDS)});
         programs.push_back({"glossy/glossy_placement.cl", ""});
         return programs;
+    }
+
+    DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
+        // SdrcCache::glossy_samples: the queries and glossy samples.
+        const GlossySampleBytes glossy = {sizeof(shared::RcQuery), sizeof(shared::RcGlossySample),
+                                          0};
+        DeviceMemoryNeed need = irradiance_cache_device_need(ic_, scene, glossy);
+        need.excludes += ", the SDRC records, their batches and their L-trees";
+        return need;
     }
 
    private:

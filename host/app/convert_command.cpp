@@ -1,0 +1,48 @@
+// `radcache convert IN OUT.json`: reads a scene (a glTF 2.0 file, or one of ours) and writes it in
+// radcache's scene format (scene/scene_writer.h), so that the user can edit it; rendering OUT.json
+// gives the image of rendering IN.
+#include <iostream>
+
+#include "app/commands.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_writer.h"
+#include "util/cli.h"
+#include "util/error.h"
+#include "util/file_io.h"
+#include "util/log.h"
+
+namespace rc {
+
+int run_convert_command(const std::vector<std::string>& args) {
+    const std::vector<OptionSpec> specs = {
+        {"--camera", "", "NAME", "glTF scenes: the camera of that name (default: the first)"},
+        {"--quiet", "-q", "", "print nothing but errors"},
+    };
+    const ParsedArguments arguments = parse_arguments("radcache convert", args, specs);
+    if (arguments.has("--help")) {
+        std::cout << format_help("radcache convert IN OUT.json [options]",
+                                 "Writes the scene IN (.gltf, .glb or .json) in radcache's scene "
+                                 "format: OUT.json, its meshes as OBJ files in OUT_meshes/ and "
+                                 "embedded textures in OUT_textures/.",
+                                 specs);
+        return 0;
+    }
+    if (arguments.positionals().size() != 2) {
+        throw Error("radcache convert needs IN and OUT.json (see radcache convert --help)",
+                    kExitUsage);
+    }
+    set_quiet(arguments.has("--quiet"));
+    const std::filesystem::path out = arguments.positionals()[1];
+    if (out.extension() != ".json") {
+        throw Error("convert: OUT " + out.string() + ": expected a .json file name", kExitUsage);
+    }
+    check_writable_parent(out, "OUT");
+    const Scene scene =
+        load_scene(arguments.positionals()[0], disk_files(), arguments.value("--camera"));
+    write_scene(scene, out);
+    log_note("wrote " + out.string() + " (" + std::to_string(scene.shapes.size()) + " shapes, " +
+             std::to_string(scene.materials.size()) + " materials)");
+    return 0;
+}
+
+}  // namespace rc

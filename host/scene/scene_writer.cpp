@@ -1,0 +1,184 @@
+#include "scene/scene_writer.h"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "util/error.h"
+#include "util/file_io.h"
+
+namespace rc {
+namespace {
+
+nlohmann::json vec3_json(glm::vec3 v) { return {v.x, v.y, v.z}; }
+
+// "%.9g": nine significant digits read back to the same float.
+std::string number(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", value);
+    return text;
+}
+
+std::string obj_text(const TriangleMesh& mesh) {
+    std::ostringstream out;
+    out << "# written by radcache convert\n";
+    for (const glm::vec3& p : mesh.positions) {
+        out << "v " << number(p.x) << ' ' << number(p.y) << ' ' << number(p.z) << '\n';
+    }
+    for (const glm::vec3& n : mesh.normals) {
+        out << "vn " << number(n.x) << ' ' << number(n.y) << ' ' << number(n.z) << '\n';
+    }
+    for (const glm::vec2& t : mesh.uvs) {
+        out << "vt " << number(t.x) << ' ' << number(t.y) << '\n';
+    }
+    const bool normals = !mesh.normals.empty();
+    const bool uvs = !mesh.uvs.empty();
+    for (const glm::uvec3& triangle : mesh.triangles) {
+        out << 'f';
+        for (int k = 0; k < 3; ++k) {
+            const unsigned i = triangle[k] + 1;
+            out << ' ' << i;
+            if (normals || uvs) {
+                out << '/' << (uvs ? std::to_string(i) : "");
+            }
+            if (normals) {
+                out << '/' << i;
+            }
+        }
+        out << '\n';
+    }
+    return out.str();
+}
+
+nlohmann::json camera_json(const Camera& camera) {
+    static const char* axes[] = {"x", "y", "diagonal", "smaller", "larger"};
+    return {{"position", vec3_json(camera.position)},
+            {"look_at", vec3_json(camera.look_at)},
+            {"up", vec3_json(camera.up)},
+            {"fov", camera.fov_degrees},
+            {"fov_axis", axes[static_cast<int>(camera.fov_axis)]},
+            {"resolution", {camera.width, camera.height}},
+            {"filter",
+             {{"type", pixel_filter_name(camera.filter.type)}, {"radius", camera.filter.radius}}}};
+}
+
+class SceneWriter {
+   public:
+    SceneWriter(const Scene& scene, const std::filesystem::path& json)
+        : scene_(scene), json_(json), stem_(json.stem().string()) {}
+
+    void write() {
+        nlohmann::json root;
+        root["camera"] = camera_json(scene_.base_camera);
+        root["materials"] = nlohmann::json::object();
+        for (const Material& material : scene_.materials) {
+            root["materials"][material.name] = material_json(material);
+        }
+        root["shapes"] = nlohmann::json::array();
+        for (size_t i = 0; i < scene_.shapes.size(); ++i) {
+            root["shapes"].push_back(shape_json(scene_.shapes[i], i));
+        }
+        root["emitters"] = nlohmann::json::array();
+        for (const Emitter& emitter : scene_.emitters) {
+            root["emitters"].push_back(emitter_json(emitter));
+        }
+        write_file_atomically(json_, root.dump(1) + "\n");
+    }
+
+   private:
+    nlohmann::json reflectance_json(const Material& material) {
+        if (material.diffuse_texture < 0) {
+            return vec3_json(material.diffuse);
+        }
+        const Texture& texture = scene_.textures[material.diffuse_texture];
+        if (texture.encoded.empty()) {
+            return {{"type", "bitmap"},
+                    {"filename", std::filesystem::absolute(texture.file).string()},
+                    {"scale", vec3_json(material.diffuse)}};
+        }
+        const std::string relative = stem_ + "_textures/" +
+                                     std::to_string(material.diffuse_texture) + "_" +
+                                     texture.file.filename().string();
+        std::filesystem::create_directories(json_.parent_path() / (stem_ + "_textures"));
+        write_file_atomically(json_.parent_path() / relative, texture.encoded);
+        return {{"type", "bitmap"}, {"filename", relative}, {"scale", vec3_json(material.diffuse)}};
+    }
+
+    nlohmann::json material_json(const Material& material) {
+        nlohmann::json json;
+        if (material.kind == MaterialKind::kDiffuse) {
+            return {{"type", "diffuse"}, {"reflectance", reflectance_json(material)}};
+        }
+        json["diffuse"] = reflectance_json(material);
+        json["specular"] = vec3_json(material.specular);
+        if (material.kind == MaterialKind::kPhong) {
+            json["type"] = "phong";
+            json["exponent"] = material.exponent;
+        } else {
+            json["type"] = "ward";
+            json["alpha_x"] = material.alpha_x;
+            json["alpha_y"] = material.alpha_y;
+        }
+        return json;
+    }
+
+    nlohmann::json shape_json(const Shape& shape, size_t index) {
+        if (shape.materials.size() != 1 || shape.emission.size() > 1) {
+            throw Error("convert: shape '" + shape.name +
+                        "' has several material slots, which the writer cannot hold");
+        }
+        const std::string relative = stem_ + "_meshes/" + std::to_string(index) + ".obj";
+        std::filesystem::create_directories(json_.parent_path() / (stem_ + "_meshes"));
+        write_file_atomically(json_.parent_path() / relative, obj_text(shape.mesh));
+        nlohmann::json matrix = nlohmann::json::array();
+        for (int row = 0; row < 4; ++row) {
+            for (int column = 0; column < 4; ++column) {
+                matrix.push_back(shape.transform[column][row]);
+            }
+        }
+        nlohmann::json json = {{"type", "obj"},
+                               {"name", shape.name},
+                               {"file", relative},
+                               {"material", scene_.materials[shape.materials[0]].name},
+                               {"transform", {{{"matrix", matrix}}}},
+                               {"flip_normals", shape.flip_normals}};
+        if (!shape.emission.empty()) {
+            json["emitter"] = {{"type", "area"}, {"radiance", vec3_json(shape.emission[0])}};
+        }
+        return json;
+    }
+
+    static nlohmann::json emitter_json(const Emitter& emitter) {
+        switch (emitter.kind) {
+            case EmitterKind::kPoint:
+                return {{"type", "point"},
+                        {"name", emitter.name},
+                        {"position", vec3_json(emitter.position)},
+                        {"intensity", vec3_json(emitter.intensity)}};
+            case EmitterKind::kSpot:
+                return {{"type", "spot"},
+                        {"name", emitter.name},
+                        {"position", vec3_json(emitter.position)},
+                        {"look_at", vec3_json(emitter.look_at)},
+                        {"intensity", vec3_json(emitter.intensity)},
+                        {"cutoff_angle", emitter.cutoff_angle},
+                        {"beam_width", emitter.beam_width}};
+            default:
+                return {{"type", "constant"},
+                        {"name", emitter.name},
+                        {"radiance", vec3_json(emitter.radiance)}};
+        }
+    }
+
+    const Scene& scene_;
+    std::filesystem::path json_;
+    std::string stem_;
+};
+
+}  // namespace
+
+void write_scene(const Scene& scene, const std::filesystem::path& json) {
+    SceneWriter(scene, json).write();
+}
+
+}  // namespace rc

@@ -1,0 +1,237 @@
+// glTF 2.0 import (scene/gltf_loader.h) and `radcache convert`: the Cornell box as glTF renders
+// the image of scenes/cornell-box bitwise; an asymmetric hierarchy lands where its transforms put
+// it, with its cameras, materials and lights mapped as docs/scene-format.md says; a converted
+// scene renders bitwise as its glTF; malformed files are refused with one line naming the file.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include "image/image_io.h"
+#include "scene/gltf_materials.h"
+#include "scene/scene_loader.h"
+#include "test_support.h"
+#include "util/error.h"
+#include "util/file_io.h"
+
+namespace rc {
+namespace {
+
+std::filesystem::path data(const std::string& name) {
+    return test::source_dir() / "tests/data/gltf" / name;
+}
+
+bool same_pixels(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height && a.pixels.size() == b.pixels.size() &&
+           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
+}
+
+Image render(const std::filesystem::path& scene, const std::filesystem::path& out,
+             const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> args = {"render", scene.string(), "-o", out.string(), "--width",
+                                     "32",     "--height",     "32", "--spp",      "4",
+                                     "--quiet"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const test::CommandResult result = test::run_radcache(args);
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    return read_image(out);
+}
+
+TEST(Gltf, CornellBoxRendersTheJsonScenesImageBitwise) {
+    const auto dir = test::scratch_dir("gltf_cornell");
+    // Square (render's size): the JSON's fov spans x, the glTF camera's yfov spans y.
+    const Image json = render(test::source_dir() / "scenes/cornell-box/scene.json", dir / "j.exr");
+    const Image gltf = render(data("cornell-box.gltf"), dir / "g.exr");
+    EXPECT_TRUE(same_pixels(json, gltf));
+}
+
+void expect_near(glm::vec3 a, glm::vec3 b, const std::string& what) {
+    EXPECT_LT(glm::length(a - b), 1e-5f)
+        << what << ": (" << a.x << ", " << a.y << ", " << a.z << ") against (" << b.x << ", " << b.y
+        << ", " << b.z << ")";
+}
+
+const Shape& shape_named(const Scene& scene, const std::string& prefix) {
+    for (const Shape& shape : scene.shapes) {
+        if (shape.name.rfind(prefix, 0) == 0) {
+            return shape;
+        }
+    }
+    ADD_FAILURE() << "no shape " << prefix;
+    return scene.shapes.front();
+}
+
+// The values below are worked out by hand from tools/make_gltf_test_scenes.py's hierarchy().
+TEST(Gltf, HierarchyTransformsCamerasMaterialsAndLights) {
+    const Scene scene = load_scene(data("hierarchy.gltf"));
+    // The lamp: parent translate (1, 2, 3) and 90 degrees about z, child scale (0.5, 0.25, 1):
+    // object corner (x, y, 0) lands at (1 - 0.25 y, 2 + 0.5 x, 3).
+    const Shape& lamp = shape_named(scene, "lamp");
+    for (const glm::vec3& p : lamp.mesh.positions) {
+        const glm::vec3 world = glm::vec3(lamp.transform * glm::vec4(p, 1.0f));
+        expect_near(world, glm::vec3(1.0f - 0.25f * p.y, 2.0f + 0.5f * p.x, 3.0f), "lamp");
+    }
+    ASSERT_EQ(lamp.emission.size(), 1u);
+    expect_near(lamp.emission[0], glm::vec3(1.0f, 0.5f, 0.25f), "lamp emission");
+    // The plate's matrix: scale 2, translate (-2, 0, 1).
+    const Shape& plate = shape_named(scene, "plate");
+    expect_near(glm::vec3(plate.transform * glm::vec4(1, 1, 0, 1)), glm::vec3(0, 2, 1), "plate");
+    const Material& gold = scene.materials[plate.materials[0]];
+    EXPECT_EQ(gold.kind, MaterialKind::kPhong);
+    expect_near(gold.specular, glm::vec3(0.9f, 0.6f, 0.2f), "metal specular = base colour");
+    expect_near(gold.diffuse, glm::vec3(0.0f), "metal diffuse");
+    EXPECT_NEAR(gold.exponent, 2.0 / std::pow(0.3, 4) - 2.0, 1e-2);
+    const Material& floor = scene.materials[shape_named(scene, "ground").materials[0]];
+    EXPECT_EQ(floor.kind, MaterialKind::kDiffuse);
+    expect_near(floor.diffuse, glm::vec3(0.8f), "rough dielectric");
+    const Material& checker = scene.materials[shape_named(scene, "picture").materials[0]];
+    ASSERT_GE(checker.diffuse_texture, 0);
+    EXPECT_EQ(scene.textures[checker.diffuse_texture].width, 2);
+    // glTF's uv (0, 0) is the image's top-left, ours its bottom-left.
+    const Shape& picture = shape_named(scene, "picture");
+    ASSERT_EQ(picture.mesh.uvs.size(), 4u);
+    EXPECT_EQ(picture.mesh.uvs[0], glm::vec2(0.0f, 0.0f));
+    EXPECT_EQ(picture.mesh.uvs[2], glm::vec2(1.0f, 1.0f));
+    // The first camera: at (0, 1, 10) looking down -z, vertical fov 0.8 rad, aspect 1.5.
+    expect_near(scene.base_camera.position, glm::vec3(0, 1, 10), "camera");
+    expect_near(scene.base_camera.look_at, glm::vec3(0, 1, 9), "camera look_at");
+    expect_near(scene.base_camera.up, glm::vec3(0, 1, 0), "camera up");
+    EXPECT_EQ(scene.base_camera.fov_axis, FovAxis::kY);
+    EXPECT_NEAR(scene.base_camera.fov_degrees, 0.8 * 180.0 / M_PI, 1e-4);
+    EXPECT_EQ(scene.base_camera.width, 768);
+    EXPECT_EQ(scene.base_camera.height, 512);
+    // --camera side: at (10, 1, 0), turned 90 degrees about y: looking down -x.
+    const Scene side = load_scene(data("hierarchy.gltf"), disk_files(), "side");
+    expect_near(side.base_camera.look_at, glm::vec3(9, 1, 0), "side camera");
+    EXPECT_THROW(load_scene(data("hierarchy.gltf"), disk_files(), "nowhere"), Error);
+    // Lights: a point light of colour (1, 0.8, 0.6) x 5, a spot at (0, 4, 0) pointing down.
+    ASSERT_EQ(scene.emitters.size(), 2u);
+    EXPECT_EQ(scene.emitters[0].kind, EmitterKind::kPoint);
+    expect_near(scene.emitters[0].position, glm::vec3(0, 3, 2), "point light");
+    expect_near(scene.emitters[0].intensity, glm::vec3(5, 4, 3), "point intensity");
+    EXPECT_EQ(scene.emitters[1].kind, EmitterKind::kSpot);
+    expect_near(scene.emitters[1].look_at, glm::vec3(0, 3, 0), "spot axis");
+    EXPECT_NEAR(scene.emitters[1].cutoff_angle, 0.5 * 180.0 / M_PI, 1e-4);
+    EXPECT_NEAR(scene.emitters[1].beam_width, 0.2 * 180.0 / M_PI, 1e-4);
+}
+
+// The lamp (upper right of the image seen from the front camera: x in [0.75, 1.25], y in
+// [1.5, 2.5]) is brightest on the right half and upper half: no mirroring.
+TEST(Gltf, ImageIsNotMirrored) {
+    const auto dir = test::scratch_dir("gltf_mirror");
+    const Image image = render(data("hierarchy.gltf"), dir / "h.exr", {"-D", "max_depth=0"});
+    double left = 0, right = 0, top = 0, bottom = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const double v = image.at(x, y, 0);
+            (x < image.width / 2 ? left : right) += v;
+            (y < image.height / 2 ? top : bottom) += v;
+        }
+    }
+    EXPECT_GT(right, 2 * left);
+    EXPECT_GT(top, 2 * bottom);
+}
+
+TEST(Gltf, ConvertedSceneRendersBitwiseAsTheGltf) {
+    const auto dir = test::scratch_dir("gltf_convert");
+    for (const std::string name : {"cornell-box", "hierarchy"}) {
+        const test::CommandResult result = test::run_radcache(
+            {"convert", data(name + ".gltf").string(), (dir / (name + ".json")).string(), "-q"});
+        ASSERT_EQ(result.exit_code, 0) << result.output;
+        const Image gltf = render(data(name + ".gltf"), dir / (name + "-g.exr"));
+        const Image json = render(dir / (name + ".json"), dir / (name + "-j.exr"));
+        EXPECT_TRUE(same_pixels(gltf, json)) << name;
+    }
+}
+
+// Malformed files: one line naming the file, exit status 1, no image.
+TEST(Gltf, MalformedFilesAreRefusedCleanly) {
+    const auto dir = test::scratch_dir("gltf_malformed");
+    const std::string good = read_file(data("hierarchy.gltf"));
+    nlohmann::json model = nlohmann::json::parse(good);
+    struct Case {
+        std::string name;
+        std::string text;
+        std::string expected;
+    };
+    std::vector<Case> cases;
+    cases.push_back({"truncated", good.substr(0, good.size() / 2), "truncated.gltf"});
+    nlohmann::json m = model;
+    m["accessors"][0]["count"] = "many";
+    cases.push_back({"wrong_type", m.dump(), "wrong_type.gltf"});
+    m = model;
+    m["accessors"][0]["count"] = 100000;
+    cases.push_back({"past_buffer", m.dump(), "past the end"});
+    m = model;
+    m["meshes"][0]["primitives"][0]["indices"] = 0;  // the positions as indices: wrong type
+    cases.push_back({"bad_indices", m.dump(), "indices"});
+    m = model;
+    m["nodes"][1]["mesh"] = 99;
+    cases.push_back({"missing_mesh", m.dump(), "mesh 99 does not exist"});
+    m = model;
+    m["buffers"][0]["uri"] = "missing.bin";
+    cases.push_back({"missing_buffer", m.dump(), "missing_buffer.gltf"});
+    m = model;
+    m["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    cases.push_back({"draco", m.dump(), "KHR_draco_mesh_compression"});
+    m = model;
+    m["nodes"][1]["children"] = {1};
+    cases.push_back({"cycle", m.dump(), "cycle"});
+    m = model;
+    m["accessors"][1]["bufferView"] = 1;  // the positions' float bits as indices
+    cases.push_back({"index_range", m.dump(), "out of range"});
+    for (const Case& c : cases) {
+        const auto file = dir / (c.name + ".gltf");
+        write_file_atomically(file, c.text);
+        const test::CommandResult result = test::run_radcache(
+            {"render", file.string(), "-o", (dir / "out.png").string(), "--spp", "1"});
+        EXPECT_EQ(result.exit_code, 1) << c.name << ": " << result.output;
+        EXPECT_NE(result.output.find("radcache: error: "), std::string::npos) << result.output;
+        EXPECT_NE(result.output.find(c.expected), std::string::npos)
+            << c.name << ": " << result.output;
+        EXPECT_NE(result.output.find(file.filename().string()), std::string::npos) << result.output;
+        EXPECT_FALSE(std::filesystem::exists(dir / "out.png")) << c.name;
+        std::filesystem::remove(dir / "out.png");
+    }
+    const test::CommandResult json_camera = test::run_radcache(
+        {"render", (test::source_dir() / "scenes/cornell-box/scene.json").string(), "-o",
+         (dir / "out.png").string(), "--camera", "main"});
+    EXPECT_EQ(json_camera.exit_code, 2) << json_camera.output;
+}
+
+// An unsupported feature is one warning (and an error under --strict).
+TEST(Gltf, UnsupportedFeaturesWarnOnce) {
+    const auto dir = test::scratch_dir("gltf_unsupported");
+    nlohmann::json m = nlohmann::json::parse(read_file(data("hierarchy.gltf")));
+    m["extensions"]["KHR_lights_punctual"]["lights"].push_back(
+        {{"type", "directional"}, {"intensity", 3.0}});
+    m["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
+    m["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
+    m["scenes"][0]["nodes"].push_back(m["nodes"].size() - 2);
+    m["scenes"][0]["nodes"].push_back(m["nodes"].size() - 1);
+    write_file_atomically(dir / "sun.gltf", m.dump());
+    const test::CommandResult result =
+        test::run_radcache({"render", (dir / "sun.gltf").string(), "-o", (dir / "out.png").string(),
+                            "--spp", "1", "--width", "8", "--height", "8"});
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    const std::string line = "glTF light type 'directional' not supported";
+    const size_t first = result.output.find(line);
+    EXPECT_NE(first, std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find(line, first + 1), std::string::npos) << result.output;
+    const test::CommandResult strict =
+        test::run_radcache({"render", (dir / "sun.gltf").string(), "-o",
+                            (dir / "strict.png").string(), "--spp", "1", "--strict"});
+    EXPECT_NE(strict.exit_code, 0);
+    EXPECT_FALSE(std::filesystem::exists(dir / "strict.png"));
+}
+
+TEST(Gltf, PhongExponentFollowsRoughness) {
+    EXPECT_FLOAT_EQ(gltf_phong_exponent(1.0f), 0.0f);
+    EXPECT_NEAR(gltf_phong_exponent(0.5f), 2.0f / std::pow(0.25f, 2.0f) - 2.0f, 1e-3);
+    EXPECT_FLOAT_EQ(gltf_phong_exponent(0.0f), 1e6f);
+}
+
+}  // namespace
+}  // namespace rc
