@@ -199,6 +199,17 @@ TEST(Gltf, MalformedFilesAreRefusedCleanly) {
         {"render", (test::source_dir() / "scenes/cornell-box/scene.json").string(), "-o",
          (dir / "out.png").string(), "--camera", "main"});
     EXPECT_EQ(json_camera.exit_code, 2) << json_camera.output;
+    // convert: a glTF in, a .json out, or exit status 2; a malformed glTF writes nothing.
+    const auto convert = [&](const std::string& in, const std::string& out) {
+        return test::run_radcache({"convert", in, (dir / out).string(), "-q"});
+    };
+    EXPECT_EQ(convert((test::source_dir() / "scenes/cornell-box/scene.json").string(), "c.json")
+                  .exit_code,
+              2);
+    EXPECT_EQ(convert(data("hierarchy.gltf").string(), "c.txt").exit_code, 2);
+    EXPECT_EQ(convert((dir / "truncated.gltf").string(), "c.json").exit_code, 1);
+    EXPECT_FALSE(std::filesystem::exists(dir / "c.json"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "c.txt"));
 }
 
 // An unsupported feature is one warning (and an error under --strict).
