@@ -47,6 +47,14 @@ TEST(Gltf, CornellBoxRendersTheJsonScenesImageBitwise) {
     EXPECT_TRUE(same_pixels(json, gltf));
 }
 
+// The same model as a .glb (binary container; the fuzz target's seed) renders the same image.
+TEST(Gltf, BinaryGlbRendersAsItsGltf) {
+    const auto dir = test::scratch_dir("gltf_glb");
+    const Image glb =
+        render(test::source_dir() / "tests/fuzz/seeds/gltf/binary.glb", dir / "b.exr");
+    EXPECT_TRUE(same_pixels(glb, render(data("hierarchy.gltf"), dir / "h.exr")));
+}
+
 void expect_near(glm::vec3 a, glm::vec3 b, const std::string& what) {
     EXPECT_LT(glm::length(a - b), 1e-5f)
         << what << ": (" << a.x << ", " << a.y << ", " << a.z << ") against (" << b.x << ", " << b.y
