@@ -47,6 +47,14 @@ TEST(Gltf, CornellBoxRendersTheJsonScenesImageBitwise) {
     EXPECT_TRUE(same_pixels(json, gltf));
 }
 
+// The same model as a .glb (binary container; the fuzz target's seed) renders the same image.
+TEST(Gltf, BinaryGlbRendersAsItsGltf) {
+    const auto dir = test::scratch_dir("gltf_glb");
+    const Image glb =
+        render(test::source_dir() / "tests/fuzz/seeds/gltf/binary.glb", dir / "b.exr");
+    EXPECT_TRUE(same_pixels(glb, render(data("hierarchy.gltf"), dir / "h.exr")));
+}
+
 void expect_near(glm::vec3 a, glm::vec3 b, const std::string& what) {
     EXPECT_LT(glm::length(a - b), 1e-5f)
         << what << ": (" << a.x << ", " << a.y << ", " << a.z << ") against (" << b.x << ", " << b.y
@@ -199,6 +207,17 @@ TEST(Gltf, MalformedFilesAreRefusedCleanly) {
         {"render", (test::source_dir() / "scenes/cornell-box/scene.json").string(), "-o",
          (dir / "out.png").string(), "--camera", "main"});
     EXPECT_EQ(json_camera.exit_code, 2) << json_camera.output;
+    // convert: a glTF in, a .json out, or exit status 2; a malformed glTF writes nothing.
+    const auto convert = [&](const std::string& in, const std::string& out) {
+        return test::run_radcache({"convert", in, (dir / out).string(), "-q"});
+    };
+    EXPECT_EQ(convert((test::source_dir() / "scenes/cornell-box/scene.json").string(), "c.json")
+                  .exit_code,
+              2);
+    EXPECT_EQ(convert(data("hierarchy.gltf").string(), "c.txt").exit_code, 2);
+    EXPECT_EQ(convert((dir / "truncated.gltf").string(), "c.json").exit_code, 1);
+    EXPECT_FALSE(std::filesystem::exists(dir / "c.json"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "c.txt"));
 }
 
 // An unsupported feature is one warning (and an error under --strict).

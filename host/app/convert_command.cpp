@@ -1,9 +1,10 @@
-// `radcache convert IN OUT.json`: reads a scene (a glTF 2.0 file, or one of ours) and writes it in
+// `radcache convert IN OUT.json`: reads a glTF 2.0 scene and writes it in
 // radcache's scene format (scene/scene_writer.h), so that the user can edit it; rendering OUT.json
 // gives the image of rendering IN.
 #include <iostream>
 
 #include "app/commands.h"
+#include "scene/gltf_loader.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_writer.h"
 #include "util/cli.h"
@@ -21,7 +22,7 @@ int run_convert_command(const std::vector<std::string>& args) {
     const ParsedArguments arguments = parse_arguments("radcache convert", args, specs);
     if (arguments.has("--help")) {
         std::cout << format_help("radcache convert IN OUT.json [options]",
-                                 "Writes the scene IN (.gltf, .glb or .json) in radcache's scene "
+                                 "Writes the glTF 2.0 scene IN (.gltf or .glb) in radcache's scene "
                                  "format: OUT.json, its meshes as OBJ files in OUT_meshes/ and "
                                  "embedded textures in OUT_textures/.",
                                  specs);
@@ -32,13 +33,16 @@ int run_convert_command(const std::vector<std::string>& args) {
                     kExitUsage);
     }
     set_quiet(arguments.has("--quiet"));
+    const std::filesystem::path in = arguments.positionals()[0];
+    if (!is_gltf_path(in)) {
+        throw Error("convert: IN " + in.string() + ": expected a .gltf or .glb file", kExitUsage);
+    }
     const std::filesystem::path out = arguments.positionals()[1];
     if (out.extension() != ".json") {
         throw Error("convert: OUT " + out.string() + ": expected a .json file name", kExitUsage);
     }
     check_writable_parent(out, "OUT");
-    const Scene scene =
-        load_scene(arguments.positionals()[0], disk_files(), arguments.value("--camera"));
+    const Scene scene = load_scene(in, disk_files(), arguments.value("--camera"));
     write_scene(scene, out);
     log_note("wrote " + out.string() + " (" + std::to_string(scene.shapes.size()) + " shapes, " +
              std::to_string(scene.materials.size()) + " materials)");

@@ -17,6 +17,8 @@ namespace rc::fuzz {
 int scene(const uint8_t* data, size_t size);
 // An OBJ file with its MTL libraries in memory.
 int obj(const uint8_t* data, size_t size);
+// A glTF 2.0 file (or .glb bytes) with its buffers and images in memory.
+int gltf(const uint8_t* data, size_t size);
 // An irradiance (or any method's) record cache file, its checksum made to match.
 int cache_file(const uint8_t* data, size_t size);
 // An irradiance vector grid file, its checksum made to match.
@@ -30,6 +32,7 @@ struct Target {
 };
 inline constexpr Target kTargets[] = {{"scene", scene},
                                       {"obj", obj},
+                                      {"gltf", gltf},
                                       {"cache_file", cache_file},
                                       {"grid_file", grid_file},
                                       {"kernel_cache", kernel_cache}};
