@@ -35,7 +35,9 @@ TemporalIrradianceCache::TemporalIrradianceCache(IrradianceCacheOptions ic,
     : ic_(std::move(ic)),
       temporal_(temporal),
       first_frame_(first_frame),
-      last_frame_(first_frame + std::max(frame_count, 1) - 1),
+      // In 64 bits: first + count overflows int when the run ends at the largest frame number.
+      last_frame_(
+          static_cast<int>(static_cast<long long>(first_frame) + std::max(frame_count, 1) - 1)),
       placed_until_(first_frame - 1),
       shaded_until_(first_frame - 1),
       levels_(static_cast<size_t>(std::max(ic_.bounces, 1))) {}
