@@ -64,6 +64,9 @@ shipped_seeds() {
     done
 }
 
+# Known third-party leaks (tests/fuzz/lsan.supp) do not stop a run; any other leak does.
+export LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+
 status=0
 for t in "${targets[@]}"; do
     corpus="$build/corpus/$t"

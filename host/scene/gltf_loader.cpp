@@ -51,10 +51,16 @@ tinygltf::FsCallbacks file_callbacks(const SceneFiles& files) {
     return callbacks;
 }
 
-// Keeps an image's encoded bytes as they are: radcache decodes them itself (texture.h).
+// Keeps an image's encoded bytes as they are: radcache decodes them itself (texture.h). An image
+// in a buffer view is left to the materials, which read the view with its range checked
+// (gltf_materials.cpp): tinygltf 2.7 hands its bytes over without checking that the view lies
+// inside its buffer (a heap-buffer-overflow found by the gltf fuzz target,
+// tests/fuzz/regressions/gltf/).
 bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
                       const unsigned char* bytes, int size, void*) {
-    image->image.assign(bytes, bytes + size);
+    if (image->bufferView < 0) {
+        image->image.assign(bytes, bytes + size);
+    }
     return true;
 }
 
