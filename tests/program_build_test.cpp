@@ -89,13 +89,23 @@ TEST(ProgramBuild, OverrideDirectoryIsReadAndMissingIncludesAreNamed) {
     }
 }
 
-TEST(ProgramBuild, BrokenKernelReportsTheBuildLogWithFileAndLine) {
-    const std::filesystem::path dir = copy_of_kernels("broken_kernel");
+// A copy of kernels/ named `name` whose normals.h does not compile.
+std::filesystem::path broken_kernels(const std::string& name) {
+    const std::filesystem::path dir = copy_of_kernels(name);
     append(dir / "normals" / "normals.h", "\nthis_is_not_opencl_c broken;\n");
+    return dir;
+}
+
+// Context options reading the broken kernels `name`, without the binary cache.
+ContextOptions broken_kernel_options(const std::string& name) {
     ContextOptions options = test::default_context_options();
-    options.kernel_dir = dir;
+    options.kernel_dir = broken_kernels(name);
     options.cache_dir.clear();
-    Context context(options);
+    return options;
+}
+
+TEST(ProgramBuild, BrokenKernelReportsTheBuildLogWithFileAndLine) {
+    Context context(broken_kernel_options("broken_kernel"));
     try {
         context.kernel("normals/normals.cl", "render_normals");
         FAIL() << "no error";
@@ -111,15 +121,14 @@ TEST(ProgramBuild, BrokenKernelReportsTheBuildLogWithFileAndLine) {
     }
 }
 
-// The expanded line (1-based) of normals.cl holding `needle`, and the line of normals/normals.h
-// that holds it, found by searching the texts (not through the #line markers).
+// The line (1-based) of `expanded`, normals.cl expanded, holding `needle`, and the line of
+// normals/normals.h that holds it, found by searching the texts (not through the #line markers).
 struct FoundLine {
     long expanded = 0;
     long original = 0;
 };
-FoundLine find_line(const std::string& needle) {
+FoundLine find_line(const std::string& expanded, const std::string& needle) {
     FoundLine found;
-    const std::string expanded = KernelSources().expand("normals/normals.cl");
     std::istringstream lines(expanded);
     std::string line;
     for (long n = 1; std::getline(lines, line); ++n) {
@@ -147,10 +156,10 @@ TEST(ProgramBuild, VendorLogsWithoutFileNamesAreMappedToOurFileAndLine) {
         }
     }
     ASSERT_FALSE(needle.empty());
-    const FoundLine at = find_line(needle);
+    const std::string source = KernelSources().expand("normals/normals.cl");
+    const FoundLine at = find_line(source, needle);
     ASSERT_GT(at.expanded, 0);
     ASSERT_GT(at.original, 0);
-    const std::string source = KernelSources().expand("normals/normals.cl");
     const std::string ours = "normals/normals.h:" + std::to_string(at.original);
     // NVIDIA: <kernel>:LINE:COL; Intel: a number as the name; AMD: "FILE", line LINE.
     EXPECT_EQ(map_build_log("<kernel>:" + std::to_string(at.expanded) + ":5: error: bad", source),
@@ -170,11 +179,7 @@ TEST(ProgramBuild, VendorLogsWithoutFileNamesAreMappedToOurFileAndLine) {
 }
 
 TEST(ProgramBuild, ABackgroundBuildFailureIsReportedWhenTheProgramIsUsed) {
-    const std::filesystem::path dir = copy_of_kernels("broken_prebuild");
-    append(dir / "normals" / "normals.h", "\nthis_is_not_opencl_c broken;\n");
-    ContextOptions options = test::default_context_options();
-    options.kernel_dir = dir;
-    options.cache_dir.clear();
+    const ContextOptions options = broken_kernel_options("broken_prebuild");
     {
         Context context(options);
         context.prebuild({{"normals/normals.cl", ""}, {"rng_probe.cl", ""}});
@@ -199,8 +204,7 @@ TEST(ProgramBuild, ABackgroundBuildFailureIsReportedWhenTheProgramIsUsed) {
 // ("1 error generated.") on stderr during clBuildProgram, which used to come before our line; it
 // is now the build log's last line.
 TEST(ProgramBuild, BrokenKernelThroughTheCommandLineExitsNonZeroWithTheLog) {
-    const std::filesystem::path dir = copy_of_kernels("broken_kernel_cli");
-    append(dir / "normals" / "normals.h", "\nthis_is_not_opencl_c broken;\n");
+    const std::filesystem::path dir = broken_kernels("broken_kernel_cli");
     const auto output = dir.parent_path() / "out.png";
     const test::CommandResult result = test::run_radcache(
         {"render", (test::source_dir() / "scenes/cornell-box/scene.json").string(), "-o",

@@ -13,8 +13,8 @@ RC_FUNC Ray rc_ic_batch_cell_ray(const IcParams* params, __global const Record* 
                                  uint i, RngStream* rng) {
     const uint per_record = (uint)(params->strata_m * params->strata_n);
     const uint b = i / per_record;
-    return rc_ic_cell_ray(params, streams[b], i % per_record, records[b].normal.xyz,
-                          origins[b].xyz, rng);
+    return rc_ic_cell_ray(params, streams[b], i % per_record, records[b].normal.xyz, origins[b].xyz,
+                          rng);
 }
 
 // Stores a cell's (L.rgb, distance) (a NaN or infinite radiance as black) and counts its rays.
@@ -30,7 +30,8 @@ RC_FUNC void rc_ic_store_cell(__global float4* cells, __global uint* counters, u
 // the shading point) unless the tests ask for it. counters[0] counts the rays traced.
 __kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
                               __global const Record* records, __global const float4* origins,
-                              __global const uint* streams, RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
+                              __global const uint* streams,
+                              RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
                               __global uint* counters) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {

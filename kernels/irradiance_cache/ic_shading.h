@@ -5,8 +5,8 @@
 
 #include "common/cached_radiance.h"
 #include "common/camera.h"
-#include "common/pixel_filter.h"
 #include "common/camera_film.h"
+#include "common/pixel_filter.h"
 #include "irradiance_cache/ic_records.h"
 #include "shared/radiance_cache.h"
 

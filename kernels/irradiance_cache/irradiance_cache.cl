@@ -80,8 +80,8 @@ __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global c
         return;
     }
     const uint per_record = (uint)(params.strata_m * params.strata_n);
-    const RecordEstimate e = rc_ic_reduce(&params, streams[b], records[b].normal.xyz,
-                                          cells + (size_t)b * per_record);
+    const RecordEstimate e =
+        rc_ic_reduce(&params, streams[b], records[b].normal.xyz, cells + (size_t)b * per_record);
     __global IrradiancePayload* r = payloads + b;
     r->irradiance = (float4)(e.irradiance, 0.0f);
     r->rotation_r = (float4)(e.rotation[0], 0.0f);

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "common/camera.h"
-#include "common/pixel_filter.h"
 #include "common/camera_film.h"
+#include "common/pixel_filter.h"
 #include "common/sampling.h"
 #include "irradiance_vector_grid/ivg_radiance.h"
 

@@ -11,8 +11,7 @@
 __kernel void tc_carry_cells(uint begin, uint end, IcParams params, TcParams tc,
                              RC_SCENE_PARAMETERS, __global const Record* records,
                              __global const float4* origins, __global const uint* streams,
-                             __global const float4* cells,
-                             __global const int* moved_slot,
+                             __global const float4* cells, __global const int* moved_slot,
                              __global const Triangle* moved_triangles,
                              __global const TcEmitter* emitters_now,
                              __global const TcEmitter* emitters_next,
@@ -27,8 +26,7 @@ __kernel void tc_carry_cells(uint begin, uint end, IcParams params, TcParams tc,
     const uint cell = i % per_record;
     const float3 normal = records[b].normal.xyz;
     RngStream rng;
-    const Ray ray =
-        rc_ic_cell_ray(&params, streams[b], cell, normal, origins[b].xyz, &rng);
+    const Ray ray = rc_ic_cell_ray(&params, streams[b], cell, normal, origins[b].xyz, &rng);
     const MovedTriangles moved = {moved_slot, moved_triangles};
     carried[i] =
         rc_tc_carry_sample(&scene, moved, emitters_now, emitters_next, &tc, &params,
@@ -47,6 +45,6 @@ __kernel void tc_assemble_cells(uint begin, uint end, IcParams params, TcParams 
         return;
     }
     const size_t first = (size_t)b * (size_t)(params.strata_m * params.strata_n);
-    rc_tc_assemble(&params, streams[b], tc.hole_passes, carried + first,
-                   cells + first, next_cells + first, marks + first);
+    rc_tc_assemble(&params, streams[b], tc.hole_passes, carried + first, cells + first,
+                   next_cells + first, marks + first);
 }

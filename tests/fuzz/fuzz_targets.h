@@ -30,12 +30,9 @@ struct Target {
     const char* name;
     int (*run)(const uint8_t*, size_t);
 };
-inline constexpr Target kTargets[] = {{"scene", scene},
-                                      {"obj", obj},
-                                      {"gltf", gltf},
-                                      {"cache_file", cache_file},
-                                      {"grid_file", grid_file},
-                                      {"kernel_cache", kernel_cache}};
+inline constexpr Target kTargets[] = {{"scene", scene},         {"obj", obj},
+                                      {"gltf", gltf},           {"cache_file", cache_file},
+                                      {"grid_file", grid_file}, {"kernel_cache", kernel_cache}};
 
 // The files of a multi-file input: the first is named `first_name`; every line
 // "#@file NAME" starts the next file, named NAME.
