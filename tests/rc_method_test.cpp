@@ -54,6 +54,29 @@ RcRender render_rc(test::DeviceFrame& device, IrradianceCacheOptions ic,
     return r;
 }
 
+// relMSE of `test` against `reference` (same size and channels) over the pixels but the `drop`
+// worst: the image's error without its few fireflies.
+double trimmed_relmse(const Image& test, const Image& reference, size_t drop) {
+    std::vector<double> pixel_errors;
+    for (int y = 0; y < test.height; ++y) {
+        for (int x = 0; x < test.width; ++x) {
+            double e = 0.0;
+            for (int c = 0; c < test.channels; ++c) {
+                const double r = reference.at(x, y, c);
+                const double d = test.at(x, y, c) - r;
+                e += d * d / (r * r + 0.01) / test.channels;
+            }
+            pixel_errors.push_back(e);
+        }
+    }
+    std::sort(pixel_errors.begin(), pixel_errors.end());
+    double sum = 0.0;
+    for (size_t i = 0; i + drop < pixel_errors.size(); ++i) {
+        sum += pixel_errors[i];
+    }
+    return sum / static_cast<double>(pixel_errors.size());
+}
+
 // glossy-box at 64², 4 camera samples: the indirect layer against the shipped reference (box
 // filtered), means within 1% per channel; and, on the pixels radiance caching serves (the satin
 // sphere), against irradiance caching with the same diffuse records, which path traces the lobe.
@@ -82,8 +105,12 @@ TEST(RadianceCacheMethod, GlossyBoxIndirectIsCloseToTheReference) {
         EXPECT_NEAR(e.test_means[c], e.reference_means[c], 0.01 * e.reference_means[c]);
     }
     // Copper and the brushed box are Monte Carlo at 4 samples per pixel: the image's error is
-    // theirs (measured 0.033).
-    EXPECT_LT(e.relmse, 0.05);
+    // theirs, most of it in a few fireflies whose count is the seed's luck (the full relMSE over
+    // 20 seeds: 0.011 to 0.14). Without the 8 worst pixels of 4096 it is steady (measured 0.008
+    // to 0.012 over 16 seeds and both pixel samplers).
+    const double trimmed = trimmed_relmse(select_layers(r.image, {"indirect"}), reference, 8);
+    std::printf("indirect relMSE without the 8 worst pixels: %.3g\n", trimmed);
+    EXPECT_LT(trimmed, 0.02);
     // On the satin sphere the records beat path tracing the lobe at the same samples (measured
     // 0.36x).
     EXPECT_LT(rc_satin, 0.5 * ic_satin);

@@ -81,8 +81,10 @@ for name in "${scenes[@]}"; do
         outputs=(-o "$name.exr")
         stats=$name.stats.json
     fi
+    # Independent samples: the stddev layer then states the pixel mean's noise exactly (compare's
+    # error net of the reference's noise subtracts it; docs/pixel-filters.md, "Pixel samplers").
     command=(render "scenes/$name/scene.json" "${outputs[@]}" --spp "$n" --seed "$seed"
-             --width "${size[$name]%x*}" --height "${size[$name]#*x}" --half
+             --sampler independent --width "${size[$name]%x*}" --height "${size[$name]#*x}" --half
              --aovs beauty,direct,indirect,stddev --stats "$stats" "${device[@]}")
     # The command line as text: arguments with spaces (a device's name) in single quotes.
     text=radcache

@@ -144,6 +144,8 @@ int run_render_command(const std::vector<std::string>& args) {
     }
     scene.base_camera.filter = pixel_filter(arguments, scene.base_camera.filter);
     scene.camera.filter = scene.base_camera.filter;
+    scene.base_camera.sampler = pixel_sampler(arguments, scene.base_camera.sampler);
+    scene.camera.sampler = scene.base_camera.sampler;
     const RenderSettings settings = render_settings(arguments, scene.render);
     job.write_options.exposure = settings.exposure;
     const MethodEntry& entry = find_method(settings.method);

@@ -33,6 +33,10 @@ std::vector<OptionSpec> render_option_specs() {
          "box)"},
         {"--filter-radius", "", "R",
          "the filter's radius in pixels, in (0, 16] (default: box 0.5, tent 1, gaussian 1.5)"},
+        {"--sampler", "", "NAME",
+         "where a pixel's camera samples fall: sobol (a randomly shifted Sobol' sequence per "
+         "pixel; edges converge at about 1/N) or independent (uniform random; the stddev layer "
+         "is then exact) (default: the scene camera's, else sobol)"},
         {"--frames", "", "A:B", "render frames A to B of an animated scene, one image each"},
         {"-D", "", "KEY=VALUE",
          "override a render default: method, spp, time, max_depth, rr_depth, seed, exposure", true},
@@ -153,6 +157,7 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
         entry.create(arguments, method);
     }
     pixel_filter(arguments, PixelFilter{});
+    pixel_sampler(arguments, RC_SAMPLER_SOBOL);
     job.write_options.half = arguments.has("--half");
     if (arguments.has("--aovs")) {
         job.layers = parse_layers(arguments.value("--aovs"));
@@ -186,6 +191,19 @@ PixelFilter pixel_filter(const ParsedArguments& arguments, PixelFilter filter) {
     filter.radius = static_cast<float>(
         arguments.number("--filter-radius", filter.radius, kMinFilterRadius, kMaxFilterRadius));
     return filter;
+}
+
+int pixel_sampler(const ParsedArguments& arguments, int scene_sampler) {
+    if (!arguments.has("--sampler")) {
+        return scene_sampler;
+    }
+    const std::string name = arguments.value("--sampler");
+    const int type = pixel_sampler_type(name);
+    if (type < 0) {
+        throw Error("--sampler: expected sobol or independent, got '" + excerpt(name) + "'",
+                    kExitUsage);
+    }
+    return type;
 }
 
 MethodSettings method_settings(const ParsedArguments& arguments, const RenderSettings& settings,

@@ -49,6 +49,10 @@ RenderSettings render_settings(const ParsedArguments& arguments, RenderSettings 
 // outside [kMinFilterRadius, kMaxFilterRadius].
 PixelFilter pixel_filter(const ParsedArguments& arguments, PixelFilter scene_filter);
 
+// The scene camera's pixel sampler (RC_SAMPLER_*) overridden by --sampler; Error (exit status 2)
+// naming the option for an unknown name.
+int pixel_sampler(const ParsedArguments& arguments, int scene_sampler);
+
 // What every method reads, for frames first..last.
 MethodSettings method_settings(const ParsedArguments& arguments, const RenderSettings& settings,
                                const RenderJob& job, int first, int last);

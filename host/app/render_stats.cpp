@@ -98,6 +98,7 @@ nlohmann::json RenderTotals::json(const RenderSettings& settings, const Scene& s
     stats["spp"] = spp_;
     stats["filter"] = {{"type", pixel_filter_name(scene.camera.filter.type)},
                        {"radius", scene.camera.filter.radius}};
+    stats["sampler"] = pixel_sampler_name(scene.camera.sampler);
     stats["seed"] = settings.seed;
     stats["max_depth"] = settings.max_depth;
     stats["frames"] = frames_;

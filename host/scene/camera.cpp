@@ -30,6 +30,20 @@ std::string pixel_filter_name(int type) {
     }
 }
 
+int pixel_sampler_type(const std::string& name) {
+    if (name == "independent") {
+        return RC_SAMPLER_INDEPENDENT;
+    }
+    if (name == "sobol") {
+        return RC_SAMPLER_SOBOL;
+    }
+    return -1;
+}
+
+std::string pixel_sampler_name(int type) {
+    return type == RC_SAMPLER_INDEPENDENT ? "independent" : "sobol";
+}
+
 float default_filter_radius(int type) {
     switch (type) {
         case RC_FILTER_TENT:
@@ -81,6 +95,7 @@ shared::CameraParams camera_params(const Camera& camera, int width, int height) 
     params.resolution = {width, height, 0, 0};
     params.filter = camera.filter.type;
     params.filter_radius = camera.filter.radius;
+    params.sampler = camera.sampler;
     return params;
 }
 

@@ -23,6 +23,12 @@ struct PixelFilter {
     bool operator==(const PixelFilter&) const = default;
 };
 
+// "independent" or "sobol" as RC_SAMPLER_* (kernels/common/pixel_sampler.h); -1 for any other
+// name.
+int pixel_sampler_type(const std::string& name);
+// RC_SAMPLER_* by name.
+std::string pixel_sampler_name(int type);
+
 // The range of filter radii (pixels) a scene or --filter-radius may give.
 inline constexpr float kMinFilterRadius = 1e-3f;
 inline constexpr float kMaxFilterRadius = 16.0f;
@@ -44,6 +50,7 @@ struct Camera {
     int width = 512;
     int height = 512;
     PixelFilter filter;
+    int sampler = RC_SAMPLER_SOBOL;  // RC_SAMPLER_*: where a pixel's camera samples fall
 };
 
 // The device camera (with its pixel filter) for an image of width x height pixels. Image x grows

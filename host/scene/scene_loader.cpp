@@ -110,7 +110,8 @@ class SceneParser {
     }
 
     Camera parse_camera(const JsonReader& reader) {
-        reader.allow_only({"position", "look_at", "up", "fov", "fov_axis", "resolution", "filter"});
+        reader.allow_only(
+            {"position", "look_at", "up", "fov", "fov_axis", "resolution", "filter", "sampler"});
         Camera camera;
         camera.position = reader.vec3("position");
         camera.look_at = reader.vec3("look_at");
@@ -123,6 +124,14 @@ class SceneParser {
         camera.height = resolution.y;
         if (reader.has("filter")) {
             camera.filter = parse_filter(reader.object("filter"));
+        }
+        if (reader.has("sampler")) {
+            const std::string name = reader.string("sampler");
+            camera.sampler = pixel_sampler_type(name);
+            if (camera.sampler < 0) {
+                reader.fail("sampler",
+                            "expected \"independent\" or \"sobol\", got \"" + excerpt(name) + "\"");
+            }
         }
         if (!(camera.fov_degrees > 0.0f && camera.fov_degrees < 180.0f)) {
             reader.fail("fov", "must lie strictly between 0 and 180 degrees, got " +

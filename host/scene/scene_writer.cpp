@@ -59,7 +59,8 @@ nlohmann::json camera_json(const Camera& camera) {
             {"fov_axis", axes[static_cast<int>(camera.fov_axis)]},
             {"resolution", {camera.width, camera.height}},
             {"filter",
-             {{"type", pixel_filter_name(camera.filter.type)}, {"radius", camera.filter.radius}}}};
+             {{"type", pixel_filter_name(camera.filter.type)}, {"radius", camera.filter.radius}}},
+            {"sampler", pixel_sampler_name(camera.sampler)}};
 }
 
 class SceneWriter {

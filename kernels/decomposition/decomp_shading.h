@@ -6,17 +6,15 @@
 
 #include "common/cached_radiance.h"
 #include "common/camera.h"
-#include "common/pixel_filter.h"
+#include "common/pixel_sampler.h"
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_near.h"
 
 // The camera ray of sample s of a pixel (the G-buffer and the render pass draw the same one).
 RC_FUNC Ray rc_decomp_camera_ray(const DecompParams* params, const CameraParams* camera, uint pixel,
                                  uint s, RngStream* rng, float* x, float* y) {
-    *rng = rc_rng_stream(params->seed_lo, params->seed_hi, pixel, s);
-    const float u = rc_rng_next_float(rng);
-    const float v = rc_rng_next_float(rng);
-    const float2 position = rc_filter_sample_position(camera, pixel, u, v);
+    const float2 position =
+        rc_camera_sample_position(camera, params->seed_lo, params->seed_hi, pixel, s, rng);
     *x = position.x;
     *y = position.y;
     return rc_camera_ray(camera, *x, *y);

@@ -6,7 +6,7 @@
 #include "common/cached_radiance.h"
 #include "common/camera.h"
 #include "common/camera_film.h"
-#include "common/pixel_filter.h"
+#include "common/pixel_sampler.h"
 #include "irradiance_cache/ic_records.h"
 #include "shared/radiance_cache.h"
 
@@ -28,10 +28,8 @@ RC_FUNC float rc_ic_deeper_pixel_width(const IcParams* params) {
 // The camera ray of sample s of a pixel (the same jitter in every pass that regenerates it).
 RC_FUNC Ray rc_ic_camera_ray(const IcParams* params, const CameraParams* camera, uint pixel, uint s,
                              RngStream* rng, float* x, float* y) {
-    *rng = rc_rng_stream(params->seed_lo, params->seed_hi, pixel, s);
-    const float u = rc_rng_next_float(rng);
-    const float v = rc_rng_next_float(rng);
-    const float2 position = rc_filter_sample_position(camera, pixel, u, v);
+    const float2 position =
+        rc_camera_sample_position(camera, params->seed_lo, params->seed_hi, pixel, s, rng);
     *x = position.x;
     *y = position.y;
     return rc_camera_ray(camera, *x, *y);

@@ -4,17 +4,15 @@
 
 #include "common/camera.h"
 #include "common/camera_film.h"
-#include "common/pixel_filter.h"
+#include "common/pixel_sampler.h"
 #include "common/sampling.h"
 #include "irradiance_vector_grid/ivg_radiance.h"
 
 // The camera ray of sample s of a pixel, and its random stream.
 RC_FUNC Ray rc_ivg_camera_ray(const IvgParams* p, const CameraParams* camera, uint pixel, uint s,
                               RngStream* rng) {
-    *rng = rc_rng_stream(p->seed_lo, p->seed_hi, pixel, s);
-    const float u = rc_rng_next_float(rng);
-    const float v = rc_rng_next_float(rng);
-    const float2 position = rc_filter_sample_position(camera, pixel, u, v);
+    const float2 position =
+        rc_camera_sample_position(camera, p->seed_lo, p->seed_hi, pixel, s, rng);
     return rc_camera_ray(camera, position.x, position.y);
 }
 

@@ -3,7 +3,7 @@
 
 #include "common/bvh_traversal.h"
 #include "common/camera.h"
-#include "common/pixel_filter.h"
+#include "common/pixel_sampler.h"
 #include "common/triangle_geometry.h"
 #include "shared/rng.h"
 #include "shared/types.h"
@@ -36,10 +36,8 @@ RC_FUNC float4 rc_normals_pixel(const CameraParams* camera, RC_GLOBAL const Trav
         float2 position = (float2)((float)(pixel % (uint)camera->resolution.x) + 0.5f,
                                    (float)(pixel / (uint)camera->resolution.x) + 0.5f);
         if (samples > 1u) {
-            RngStream rng = rc_rng_stream(seed_lo, seed_hi, pixel, s);
-            const float u = rc_rng_next_float(&rng);
-            const float v = rc_rng_next_float(&rng);
-            position = rc_filter_sample_position(camera, pixel, u, v);
+            RngStream rng;
+            position = rc_camera_sample_position(camera, seed_lo, seed_hi, pixel, s, &rng);
         }
         sum += rc_normals_sample(camera, nodes, triangles, triangle_of_primitive, position.x,
                                  position.y);

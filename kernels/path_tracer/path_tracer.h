@@ -4,16 +4,15 @@
 
 #include "common/camera.h"
 #include "common/path_radiance.h"
-#include "common/pixel_filter.h"
+#include "common/pixel_sampler.h"
 #include "shared/rng.h"
 #include "shared/types.h"
 
 RC_FUNC PathSample rc_path_sample(const SceneData* scene, const CameraParams* camera,
                                   const PathTracerParams* params, uint pixel) {
-    RngStream rng = rc_rng_stream(params->seed_lo, params->seed_hi, pixel, (uint)params->sample);
-    const float jx = rc_rng_next_float(&rng);
-    const float jy = rc_rng_next_float(&rng);
-    const float2 position = rc_filter_sample_position(camera, pixel, jx, jy);
+    RngStream rng;
+    const float2 position = rc_camera_sample_position(camera, params->seed_lo, params->seed_hi,
+                                                      pixel, (uint)params->sample, &rng);
     const Ray ray = rc_camera_ray(camera, position.x, position.y);
     return rc_path_radiance(scene, ray, &rng, 0, params->max_depth, params->rr_depth, true);
 }

@@ -100,6 +100,11 @@ typedef struct Triangle {
 #define RC_FILTER_TENT 1
 #define RC_FILTER_GAUSSIAN 2
 
+// Pixel samplers (CameraParams.sampler): where a pixel's camera samples fall, before the filter
+// (kernels/common/pixel_sampler.h).
+#define RC_SAMPLER_INDEPENDENT 0
+#define RC_SAMPLER_SOBOL 1
+
 // A pinhole camera. The ray through image position (x, y) in pixels, (0, 0) the top-left corner,
 // has direction top_left + right * x / width + down * y / height.
 typedef struct CameraParams {
@@ -110,7 +115,7 @@ typedef struct CameraParams {
     int4 resolution;      // x: width, y: height, in pixels
     int filter;           // RC_FILTER_*: the pixel filter camera samples are drawn from
     float filter_radius;  // its radius in pixels (along x and along y)
-    int pad0;
+    int sampler;          // RC_SAMPLER_*: how the samples' (u, v) are drawn
     int pad1;
 } CameraParams;
 

@@ -14,6 +14,9 @@ std::vector<OptionSpec> irradiance_cache_option_specs() {
          "ic: interpolation accuracy a in (0, 1] (Radiance's -aa): a record serves points within "
          "a R (default 0.35)"},
         {"--ic-rays", "", "N", "ic: hemisphere rays per record (Radiance's -ad; default 1024)"},
+        {"--ic-deeper-rays", "", "N",
+         "ic: hemisphere rays per record of the deeper cache levels (the course: deeper levels "
+         "use fewer samples; default a quarter of --ic-rays)"},
         {"--ic-min-spacing", "", "L",
          "ic: smallest record radius R_min, in projected pixels (\"3\", \"3px\") or scene units "
          "(\"5u\") (default 8px)"},
@@ -43,6 +46,7 @@ IrradianceCacheOptions parse_irradiance_cache_options(const ParsedArguments& arg
     IrradianceCacheOptions ic;
     ic.accuracy = static_cast<float>(arguments.number("--accuracy", ic.accuracy, 1e-3, 1.0));
     ic.rays = static_cast<int>(arguments.integer("--ic-rays", ic.rays, 4, 1 << 16));
+    ic.deeper_rays = static_cast<int>(arguments.integer("--ic-deeper-rays", 0, 4, 1 << 16));
     if (arguments.has("--ic-min-spacing")) {
         ic.min_spacing = parse_spacing(arguments.value("--ic-min-spacing"), "--ic-min-spacing");
     }

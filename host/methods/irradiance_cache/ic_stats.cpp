@@ -25,6 +25,9 @@ void add_irradiance_cache_stats(const IrradianceCacheStats& stats,
     s["level_records"] = stats.level_records;
     s["placement_passes"] = passes;
     s["strata"] = {stats.strata_m, stats.strata_n};
+    if (stats.level_records.size() > 1) {
+        s["deeper_strata"] = {stats.deeper_strata_m, stats.deeper_strata_n};
+    }
     s["rays_per_record"] = computed > 0 ? static_cast<double>(stats.record_rays) / computed : 0.0;
     s["record_rays"] = stats.record_rays;
     s["shading_rays"] = stats.shading_rays;

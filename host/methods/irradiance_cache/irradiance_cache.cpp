@@ -79,6 +79,8 @@ RecordSampling strata_for(int rays) {
     const double pi = 3.14159265358979;
     sampling.m = std::max(1, static_cast<int>(std::lround(std::sqrt(rays / pi))));
     sampling.n = std::max(1, static_cast<int>(std::lround(static_cast<double>(rays) / sampling.m)));
+    sampling.deeper_m = sampling.m;
+    sampling.deeper_n = sampling.n;
     return sampling;
 }
 
@@ -101,7 +103,8 @@ IrradianceCache::IrradianceCache(const FrameScene& frame)
           frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_records_used")) {}
 
 void IrradianceCache::reset(const RecordSampling& sampling) {
-    if (sampling.levels < 1 || sampling.m < 1 || sampling.n < 1) {
+    if (sampling.levels < 1 || sampling.m < 1 || sampling.n < 1 || sampling.deeper_m < 1 ||
+        sampling.deeper_n < 1) {
         throw Error("irradiance cache: needs at least one level and one hemisphere stratum",
                     kExitUsage);
     }
@@ -111,6 +114,8 @@ void IrradianceCache::reset(const RecordSampling& sampling) {
     stats_ = IrradianceCacheStats{};
     stats_.strata_m = sampling.m;
     stats_.strata_n = sampling.n;
+    stats_.deeper_strata_m = sampling.deeper_m;
+    stats_.deeper_strata_n = sampling.deeper_n;
 }
 
 Kernel& IrradianceCache::cells_kernel(const RadianceSource& source) {
@@ -129,8 +134,8 @@ shared::IcParams IrradianceCache::level_params(int level) const {
     params.width = width_;
     params.height = height_;
     params.camera_spp = camera_spp_;
-    params.strata_m = sampling_.m;
-    params.strata_n = sampling_.n;
+    params.strata_m = level == 0 ? sampling_.m : sampling_.deeper_m;
+    params.strata_n = level == 0 ? sampling_.n : sampling_.deeper_n;
     params.count_emission = sampling_.include_emission ? 1 : 0;
     params.max_depth = sampling_.max_depth;
     params.rr_depth = sampling_.rr_depth;
@@ -161,7 +166,8 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
     std::vector<ComputedRecord> computed;
     computed.reserve(sites.size());
     const bool cached = level + 1 < sampling_.levels;
-    const size_t per_record = static_cast<size_t>(sampling_.m) * sampling_.n;
+    const shared::IcParams params = level_params(level);
+    const size_t per_record = static_cast<size_t>(params.strata_m) * params.strata_n;
     // Reading a deeper level needs the hemisphere hits on the host side too: smaller batches.
     const size_t cells_limit = cached ? kMaxBatchCells / 8 : kMaxBatchCells;
     const size_t batch_limit = std::max<size_t>(1, cells_limit / per_record);
@@ -188,7 +194,6 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
         Buffer<shared::IrradiancePayload> payload_buffer(context_, count, "ic_batch_payloads");
         Buffer<shared::float4> cells(context_, count * per_record, "ic_cells");
         Buffer<shared::float4> distances(context_, count, "ic_distances");
-        const shared::IcParams params = level_params(level);
         counters.fill_zero();
         if (cached) {
             // The next level must cover every hit of these rays before they read it.
@@ -234,6 +239,13 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
 
 shared::IcParams IrradianceCache::candidate_params(int level, Candidates placement) const {
     shared::IcParams params = level_params(level);
+    if (level > 0) {
+        // A deeper level's candidates are the hits of the level above's hemisphere rays: their
+        // "pixel" (rc_ic_deeper_pixel_width) is that hemisphere's stratum.
+        const shared::IcParams above = level_params(level - 1);
+        params.strata_m = above.strata_m;
+        params.strata_n = above.strata_n;
+    }
     params.placement_stride = placement.stride;
     params.placement_spp = placement.spp;
     params.placement_columns = placement.columns;
@@ -452,6 +464,10 @@ namespace {
 
 RecordSampling sampling_of(const IrradianceCacheOptions& options) {
     RecordSampling sampling = strata_for(options.rays);
+    const RecordSampling deeper =
+        strata_for(options.deeper_rays > 0 ? options.deeper_rays : std::max(4, options.rays / 4));
+    sampling.deeper_m = deeper.m;
+    sampling.deeper_n = deeper.n;
     sampling.max_depth = options.max_depth;
     sampling.rr_depth = options.rr_depth;
     sampling.seed = options.seed;

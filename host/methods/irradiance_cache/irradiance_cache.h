@@ -41,8 +41,9 @@ struct IrradianceCacheOptions {
     uint64_t seed = 0;
     int max_depth = 64;
     int rr_depth = 3;
-    float accuracy = 0.35f;            // a: records influence points within a R
-    int rays = 1024;                   // hemisphere rays per record (M x N strata, N ~ pi M)
+    float accuracy = 0.35f;  // a: records influence points within a R
+    int rays = 1024;         // hemisphere rays per record (M x N strata, N ~ pi M)
+    int deeper_rays = 0;     // per record of the deeper levels (--ic-deeper-rays; 0: rays / 4)
     Spacing min_spacing{8.0f, false};  // bounds on a record's radius R (course: R_min, R_max)
     Spacing max_spacing{64.0f, false};
     int bounces = 2;        // cache levels: 1 path-traces beyond the hemisphere rays' hits; n > 1
@@ -85,6 +86,8 @@ struct IrradianceCacheStats {
     size_t loaded_records = 0;          // all levels
     int strata_m = 0;
     int strata_n = 0;
+    int deeper_strata_m = 0;  // of the deeper levels' records
+    int deeper_strata_n = 0;
     uint64_t record_rays = 0;   // rays traced for records (hemisphere rays and their paths)
     uint64_t shading_rays = 0;  // rays traced by the shading pass
     double gbuffer_seconds = 0.0;
@@ -145,8 +148,10 @@ class RecordBatchObserver {
 
 // How records sample their hemisphere and how deeper cache levels place their records.
 struct RecordSampling {
-    int m = 18;  // polar strata
-    int n = 57;  // azimuthal strata
+    int m = 18;         // polar strata
+    int n = 57;         // azimuthal strata
+    int deeper_m = 18;  // the same at the deeper cache levels (fewer rays: --ic-deeper-rays)
+    int deeper_n = 57;
     int max_depth = 64;
     int rr_depth = 3;
     uint64_t seed = 0;
@@ -164,7 +169,7 @@ struct RecordSampling {
 std::vector<ProgramRequest> irradiance_cache_programs(const IrradianceCacheOptions& options,
                                                       int last_source);
 
-// M x N strata with N ~ pi M and M N close to `rays`.
+// M x N strata with N ~ pi M and M N close to `rays`, at every level.
 RecordSampling strata_for(int rays);
 
 struct DeviceRecords;  // record_level_source.h
