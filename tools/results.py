@@ -11,7 +11,13 @@ points (not a timed full run): 35-40 minutes per 512-pixel scene on 2 CPU cores 
 for the 256-pixel moving sphere (docs/benchmarks.md, "Error against time").
 
 Usage: tools/results.py [--scenes cornell-box two-rooms ...] [--repeats N] [--no-povray]
-           [--out build/results] [-- extra radcache render options, e.g. --device 0:0]
+           [--quick] [--reuse] [--out build/results] [-- extra radcache render options, e.g.
+           --device 0:0]
+--quick sweeps fewer points per scene (QUICK below: pt to 256 spp, ic and rc at 1024 rays and
+the default spacing, the grid at its automatic size, two decomposition clusters; every accuracy
+and photon count kept), about a third of the time. --reuse takes a scene's sweep from OUT/SCENE/
+sweep.json where one is there instead of sweeping it again (each scene's section quotes the
+sweep command that made it).
 The default scenes are every shipped scene with a reference (scenes/README.md); an animated
 scene is swept at its first frame.
 """
@@ -28,6 +34,10 @@ RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 DOCS = os.path.join(ROOT, "docs")
 # Every method at tools/sweep.py's default knobs.
 METHODS = ["pt", "ic", "ic-ivg", "rc", "sdrc", "ivg", "ivg-gather", "decomposition"]
+# tools/sweep.py's knobs under --quick.
+QUICK = ["--pt-spp", "1", "2", "4", "8", "16", "32", "64", "128", "256", "--ic-rays", "1024",
+         "--ic-min-spacing", "default", "--rc-rays", "1024", "--ivg-grid", "auto",
+         "--decomp-cluster", "20%", "5%"]
 
 
 def run(command):
@@ -144,6 +154,9 @@ def main(argv):
                         help="timed renders of every point (tools/sweep.py --repeats)")
     parser.add_argument("--no-povray", action="store_true", help="leave the POV-Ray peer out")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "results"))
+    parser.add_argument("--quick", action="store_true", help="fewer points per sweep (QUICK)")
+    parser.add_argument("--reuse", action="store_true",
+                        help="take a scene's existing OUT/SCENE/sweep.json instead of sweeping")
     if "--" in argv:
         split = argv.index("--")
         args = parser.parse_args(argv[:split])
@@ -160,12 +173,13 @@ def main(argv):
         out = os.path.join(args.out, scene)
         command = [sys.executable, os.path.join(ROOT, "tools", "sweep.py"),
                    os.path.join("scenes", scene), "--out", out, "--repeats", str(args.repeats),
-                   "--methods"] + METHODS
+                   "--methods"] + METHODS + (QUICK if args.quick else [])
         if scene == "cornell-box" and not args.no_povray and shutil.which("povray"):
             command.append("--povray")
         if extra:
             command += ["--"] + extra
-        run(command)
+        if not (args.reuse and os.path.isfile(os.path.join(out, "sweep.json"))):
+            run(command)
         with open(os.path.join(out, "sweep.json")) as f:
             report = json.load(f)
         reports.append(report)
