@@ -36,6 +36,9 @@ std::vector<Case> cases() {
     all.push_back({"ic_temporal",
                    "moving-sphere",
                    {"--method", "ic", "--temporal", "--frames", "0:1", "-o", "#"}});
+    all.push_back({"rc_temporal",
+                   "glossy-box",
+                   {"--method", "rc", "--temporal", "--frames", "0:1", "-o", "#"}});
     all.push_back({"decomposition_path",
                    "cornell-box",
                    {"--method", "decomposition", "--decomp-source", "path"}});

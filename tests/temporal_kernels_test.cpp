@@ -171,49 +171,56 @@ TEST(TemporalKernels, PointSpotAndEnvironmentFollowTheirClosedForms) {
     EXPECT_NEAR(e[1].x, far + kPi * 0.5, 1e-4);
 }
 
-// The cell a direction passes through holds it: row j with j/M <= sin^2 theta < (j+1)/M and
-// column k with 2 pi k / N <= phi < 2 pi (k+1)/N (the strata of ic_records.h); -1 below.
-TEST(TemporalKernels, CellOfADirectionIsTheStratumHoldingIt) {
+// The cell a direction passes through holds it: column k with 2 pi k / N <= phi < 2 pi (k+1)/N
+// and, for irradiance records' cosine-weighted cells (ic_records.h), row j with
+// j/M <= sin^2 theta < (j+1)/M; for radiance records' uniform cells (rc_hemisphere.h)
+// j/M <= 1 - cos theta < (j+1)/M; -1 below.
+void check_cell_of_direction(int layout) {
     const int m = 18;
     const int n = 57;
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     std::vector<shared::float4> directions;
-    std::vector<dvec3> exact;
     for (int i = 0; i < 20000; ++i) {
         const double z = i % 100 == 0 ? -u(rng) : u(rng);  // some below the hemisphere
         const double phi = 2.0 * kPi * u(rng);
         const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
-        const dvec3 d(s * std::cos(phi), s * std::sin(phi), z);
-        directions.push_back(f4(d));
-        exact.push_back(d);
+        directions.push_back(f4(dvec3(s * std::cos(phi), s * std::sin(phi), z)));
     }
     Context& context = test::shared_context();
     Kernel kernel = context.kernel("temporal/tc_probe.cl", "tc_cell_probe");
     const Buffer<shared::float4> in(context, directions, "directions");
     Buffer<int> out(context, directions.size(), "cells");
-    context.launch(kernel, directions.size(), m, n, in, out);
+    context.launch(kernel, directions.size(), m, n, layout, in, out);
     const std::vector<int> cells = out.download();
     int checked = 0;
-    for (size_t i = 0; i < exact.size(); ++i) {
+    for (size_t i = 0; i < directions.size(); ++i) {
         const dvec3 d(directions[i].x, directions[i].y, directions[i].z);  // as the device saw it
         if (!(d.z > 0.0)) {
             EXPECT_EQ(cells[i], -1);
             continue;
         }
-        const double sin2 = 1.0 - d.z * d.z;
+        const double row = layout == RC_TC_CELLS_UNIFORM ? 1.0 - d.z : 1.0 - d.z * d.z;
         double phi = std::atan2(d.y, d.x);
         phi += phi < 0.0 ? 2.0 * kPi : 0.0;
         const int j = cells[i] / n;
         const int k = cells[i] % n;
         // float rounding of the direction: allow 1e-5 across a stratum's border.
-        EXPECT_GE(sin2, static_cast<double>(j) / m - 1e-5) << i;
-        EXPECT_LT(sin2, static_cast<double>(j + 1) / m + 1e-5) << i;
+        EXPECT_GE(row, static_cast<double>(j) / m - 1e-5) << i;
+        EXPECT_LT(row, static_cast<double>(j + 1) / m + 1e-5) << i;
         EXPECT_GE(phi, 2.0 * kPi * k / n - 1e-5) << i;
         EXPECT_LT(phi, 2.0 * kPi * (k + 1) / n + 1e-5) << i;
         ++checked;
     }
     EXPECT_GT(checked, 19000);
+}
+
+TEST(TemporalKernels, CellOfADirectionIsTheStratumHoldingIt) {
+    check_cell_of_direction(RC_TC_CELLS_COSINE);
+}
+
+TEST(TemporalKernels, CellOfADirectionIsTheUniformStratumHoldingIt) {
+    check_cell_of_direction(RC_TC_CELLS_UNIFORM);
 }
 
 }  // namespace

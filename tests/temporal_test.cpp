@@ -456,7 +456,9 @@ TEST(TemporalCaching, BadOptionsAreRefusedByName) {
         {{"--method", "ic", "--temporal-accuracy", "0.1"}, "needs --temporal"},
         {{"--method", "ic", "--temporal", "--cache-out", (dir / "c.bin").string()}, "--cache-out"},
         {{"--method", "ic", "--temporal", "--ic-ivg"}, "--ic-ivg"},
-        {{"--method", "rc", "--temporal"}, "--temporal"},
+        {{"--method", "sdrc", "--temporal"}, "--temporal"},
+        {{"--method", "rc", "--temporal-accuracy", "0.1"}, "needs --temporal"},
+        {{"--method", "rc", "--temporal", "--temporal-max-frames", "0"}, "--temporal-max-frames"},
         {{"--method", "pt", "--temporal"}, "--temporal"},
     };
     for (const Case& c : cases) {

@@ -59,3 +59,29 @@ __kernel void rc_uncovered(uint begin, uint end, float accuracy, float max_weigh
     }
     uncovered[atomic_inc(&uncovered_count[0])] = candidates[q];
 }
+
+// Item q: query q, when the cache serves it (order > 0), marks every record the world-space grid
+// lists at it that weighs it positively: used[r] = 1 (temporal caching replaces an expired record
+// only while it still serves the image, the report's §5 "Replacement/Deletion Method"). Only the
+// value 1 is written, so the result does not depend on the order.
+__kernel void rc_records_used(uint begin, uint end, float accuracy, float max_weight,
+                              RecordGrid grid, __global const int* cell_start,
+                              __global const int* cell_records, __global const Record* records,
+                              __global const RcQuery* queries, __global uint* used) {
+    const uint q = begin + (uint)get_global_id(0);
+    if (q >= end) {
+        return;
+    }
+    const RcQuery query = queries[q];
+    const int cell = query.order > 0 ? rc_ic_grid_cell(&grid, query.position.xyz) : -1;
+    if (cell < 0) {
+        return;
+    }
+    for (int i = cell_start[cell]; i < cell_start[cell + 1]; ++i) {
+        const int r = cell_records[i];
+        if (rc_record_weight(records + r, query.position.xyz, query.normal.xyz, accuracy,
+                             max_weight) > 0.0f) {
+            atomic_or(&used[r], 1u);
+        }
+    }
+}

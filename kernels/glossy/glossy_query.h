@@ -5,7 +5,7 @@
 #include "shared/radiance_cache.h"
 
 // The camera sample s of a pixel: the hit of the same camera ray the irradiance cache's passes
-// trace (rc_ic_camera_ray), its shading frame, w_o and pixel footprint, order -1. *glossy: its
+// trace (rc_ic_camera_ray), its shading frame, w_o, pixel footprint and triangle, order -1. *glossy: its
 // material has a specular lobe to cache and the depth limit leaves a bounce for indirect light.
 RC_FUNC RcQuery rc_glossy_camera_query(const SceneData* scene, const IcParams* params,
                                        const CameraParams* camera, uint pixel, uint s,
@@ -15,7 +15,7 @@ RC_FUNC RcQuery rc_glossy_camera_query(const SceneData* scene, const IcParams* p
     q.footprint = 0.0f;
     q.material = -1;
     q.order = -1;
-    q.pad0 = 0;
+    q.primitive = -1;
     *glossy = false;
     RngStream rng;
     float x, y;
@@ -34,6 +34,7 @@ RC_FUNC RcQuery rc_glossy_camera_query(const SceneData* scene, const IcParams* p
     q.outgoing = (float4)(rc_to_local(&sp.shading, -ray.direction.xyz), 0.0f);
     q.footprint = rc_ic_pixel_footprint(camera, x, y, hit.t);
     q.material = sp.material;
+    q.primitive = (int)hit.primitive;
     *glossy = material.kind != RC_MATERIAL_DIFFUSE && !rc_is_black(material.specular) &&
               params->max_depth >= 2;
     return q;

@@ -17,12 +17,13 @@ __kernel void rc_glossy_queries(uint begin, uint end, IcParams params, CameraPar
     queries[i] = rc_camera_query(&scene, &params, &camera, infos, orders, i / spp, i % spp);
 }
 
-// Item b: record b of a batch (stream params.first_record + b) from its M N cells: its
+// Item b: record b of a batch (random stream streams[b]) from its M N cells: its
 // coefficient vectors and their translational gradients (rc_project_cells_with_gradients, SH at
 // params.order) into payloads[b * 9 order^2 ...], and the harmonic mean (x) and minimum (y) of
 // its hit distances into distances[b].
-__kernel void rc_record_project(uint begin, uint end, RcParams params, __global const float4* cells,
-                                __global float* payloads, __global float4* distances) {
+__kernel void rc_record_project(uint begin, uint end, RcParams params, __global const uint* streams,
+                                __global const float4* cells, __global float* payloads,
+                                __global float4* distances) {
     const uint b = begin + (uint)get_global_id(0);
     if (b >= end) {
         return;
@@ -34,7 +35,7 @@ __kernel void rc_record_project(uint begin, uint end, RcParams params, __global 
     float c[3 * RC_SH_MAX_COEFFICIENTS];
     float g[6 * RC_SH_MAX_COEFFICIENTS];
     rc_project_cells_with_gradients(own, params.strata_m, params.strata_n, key_lo, key_hi,
-                                    (uint)params.first_record + b, RC_BASIS_SH, params.order, c, g);
+                                    streams[b], RC_BASIS_SH, params.order, c, g);
     const int count = rc_sh_count(params.order);
     __global float* out = payloads + (size_t)b * 9u * (uint)count;
     for (int k = 0; k < 3 * count; ++k) {

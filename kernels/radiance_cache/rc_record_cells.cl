@@ -6,7 +6,7 @@
 // The source after the method's own headers (see common/radiance_source.h).
 #include "common/radiance_source.h"
 
-// Item i: cell i % (M N) of batch record i / (M N) (stream params.first_record + i / (M N)), the
+// Item i: cell i % (M N) of batch record i / (M N) (random stream streams[i / (M N)]), the
 // record at sites[i / (M N)]: (L.rgb, distance to the hit) in cells[i], a NaN or infinite
 // radiance stored as black. The hemisphere ray is the camera hit's first bounce: the emission it
 // sees is direct light, left to the render pass's next-event estimation unless the tests ask for
@@ -15,7 +15,7 @@
 // no light, and no neighbour (infinitely far), so a record's radius is not cut to the offset
 // of its rays' origin. counters[0] counts the rays traced.
 __kernel void rc_record_cells(uint begin, uint end, RcParams params, RC_SCENE_PARAMETERS,
-                              __global const RcQuery* sites,
+                              __global const RcQuery* sites, __global const uint* streams,
                               RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
                               __global uint* counters) {
     const uint i = begin + (uint)get_global_id(0);
@@ -26,7 +26,7 @@ __kernel void rc_record_cells(uint begin, uint end, RcParams params, RC_SCENE_PA
     const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
     const uint per_record = (uint)(params.strata_m * params.strata_n);
     const uint b = i / per_record;
-    const uint record = (uint)params.first_record + b;
+    const uint record = streams[b];
     const int cell = (int)(i % per_record);
     const RcQuery site = sites[b];
     const float3 direction = rc_record_cell_direction(&params, record, cell, site.normal.xyz);

@@ -59,7 +59,7 @@ typedef struct RcQuery {
     int material;             // -1: no hit
     int order;  // the material's order where its table represents w_o's lobe; 0: Monte
                 // Carlo; -1: no specular lobe or no hit (radiance caching does not serve it)
-    int pad0;
+    int primitive;  // the triangle hit (-1: none)
 } RcQuery;
 
 // A camera sample's glossy indirect light from a glossy cache (read by the render pass), with
@@ -80,7 +80,6 @@ typedef struct RcParams {
     int order;         // n: the records' coefficient vectors have n^2 entries per channel
     int strata_m;      // M: polar strata of a record's hemisphere
     int strata_n;      // N: azimuthal strata
-    int first_record;  // stream index of the launch's first record
     uint seed_lo;      // the 64-bit seed
     uint seed_hi;
     float accuracy;      // a: records influence points within a R
@@ -89,6 +88,7 @@ typedef struct RcParams {
     int rr_depth;        // the depth where Russian roulette starts
     int count_emission;  // 1 to count emission the hemisphere rays see (tests)
     int pad0;
+    int pad1;
 } RcParams;
 
 RC_SHARED_END
@@ -121,6 +121,7 @@ RC_SHARED_END
     FIELD(RcQuery, footprint)                       \
     FIELD(RcQuery, material)                        \
     FIELD(RcQuery, order)                           \
+    FIELD(RcQuery, primitive)                       \
     STRUCT(RcGlossySample)                          \
     FIELD(RcGlossySample, reflected)                \
     FIELD(RcGlossySample, weight)                   \
@@ -130,7 +131,6 @@ RC_SHARED_END
     FIELD(RcParams, order)                          \
     FIELD(RcParams, strata_m)                       \
     FIELD(RcParams, strata_n)                       \
-    FIELD(RcParams, first_record)                   \
     FIELD(RcParams, seed_lo)                        \
     FIELD(RcParams, seed_hi)                        \
     FIELD(RcParams, accuracy)                       \

@@ -28,8 +28,13 @@ typedef struct TcParams {
     int emitter_count;    // in each of the two emitter lists
     int hole_passes;      // 3 x 3 hole-filling passes (the report's §4.3)
     int emitters_change;  // 0: the two emitter lists are the same
-    int pad0;
+    int cell_layout;      // the records' hemisphere cells: RC_TC_CELLS_COSINE or _UNIFORM
 } TcParams;
+
+// How a record's M x N hemisphere cells divide it: irradiance caching's cosine-weighted strata
+// (row j holds M sin^2 theta in [j, j + 1)) or radiance caching's uniform ones (M (1 - cos theta)).
+#define RC_TC_CELLS_COSINE 0
+#define RC_TC_CELLS_UNIFORM 1
 
 // A record's hemisphere sample carried to the next frame (rc_tc_carry_sample).
 typedef struct TcCarriedSample {
@@ -62,6 +67,7 @@ RC_SHARED_END
     FIELD(TcParams, emitter_count)           \
     FIELD(TcParams, hole_passes)             \
     FIELD(TcParams, emitters_change)         \
+    FIELD(TcParams, cell_layout)             \
     STRUCT(TcCarriedSample)                  \
     FIELD(TcCarriedSample, radiance)         \
     FIELD(TcCarriedSample, depth)            \

@@ -29,12 +29,13 @@ __kernel void tc_unshadowed_probe(uint begin, uint end, __global const TcEmitter
                       0.0f);
 }
 
-// Item q: the cell of an M x N hemisphere that local direction directions[q] passes through.
-__kernel void tc_cell_probe(uint begin, uint end, int m, int n, __global const float4* directions,
-                            __global int* out) {
+// Item q: the cell of an M x N hemisphere of `layout` (RC_TC_CELLS_*) that local direction
+// directions[q] passes through.
+__kernel void tc_cell_probe(uint begin, uint end, int m, int n, int layout,
+                            __global const float4* directions, __global int* out) {
     const uint q = begin + (uint)get_global_id(0);
     if (q >= end) {
         return;
     }
-    out[q] = rc_tc_cell_of(directions[q].xyz, m, n);
+    out[q] = rc_tc_cell_of(directions[q].xyz, m, n, layout);
 }

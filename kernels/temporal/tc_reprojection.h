@@ -8,6 +8,7 @@
 
 #include "irradiance_cache/ic_shading.h"
 #include "shared/temporal.h"
+#include "radiance_cache/rc_hemisphere.h"
 #include "temporal/tc_unshadowed.h"
 
 // The next frame's world triangles of the primitives that move: moved_slot[p] is primitive p's
@@ -18,24 +19,57 @@ typedef struct MovedTriangles {
 } MovedTriangles;
 
 // Where local direction d (unit, z along the record normal) passes through the cells of an
-// M x N record hemisphere (ic_records.h, rc_ic_cell_direction), in continuous cell units:
-// (row, column) = (M sin^2 theta, N phi / 2 pi), cell (j, k) holding [j, j + 1) x [k, k + 1).
-RC_FUNC float2 rc_tc_cell_position(float3 d, int m, int n) {
-    const float sin2 = fmax(0.0f, 1.0f - d.z * d.z);
+// M x N record hemisphere of `layout` (shared/temporal.h), in continuous cell units: (row, column)
+// = (M sin^2 theta, N phi / 2 pi) for irradiance caching's cosine-weighted cells
+// (ic_records.h, rc_ic_cell_direction), (M (1 - cos theta), N phi / 2 pi) for radiance caching's
+// uniform ones (radiance_cache/rc_hemisphere.h); cell (j, k) holds [j, j + 1) x [k, k + 1).
+RC_FUNC float2 rc_tc_cell_position(float3 d, int m, int n, int layout) {
+    const float row = layout == RC_TC_CELLS_UNIFORM ? 1.0f - d.z : fmax(0.0f, 1.0f - d.z * d.z);
     float phi = atan2(d.y, d.x);
     if (phi < 0.0f) {
         phi += 2.0f * RC_PI;
     }
-    return (float2)(sin2 * (float)m, phi * (float)n / (2.0f * RC_PI));
+    return (float2)(row * (float)m, phi * (float)n / (2.0f * RC_PI));
 }
 
 // The cell direction d passes through; -1 below the hemisphere.
-RC_FUNC int rc_tc_cell_of(float3 d, int m, int n) {
+RC_FUNC int rc_tc_cell_of(float3 d, int m, int n, int layout) {
     if (!(d.z > 0.0f)) {
         return -1;
     }
-    const float2 position = rc_tc_cell_position(d, m, n);
+    const float2 position = rc_tc_cell_position(d, m, n, layout);
     return min(m - 1, (int)position.x) * n + min(n - 1, (int)position.y);
+}
+
+// What places the jittered ray of each cell of one record's hemisphere: its cells' layout, the
+// key of the random streams the jitter comes from and the record's stream.
+typedef struct TcCellJitter {
+    int m;
+    int n;
+    int layout;  // RC_TC_CELLS_COSINE or RC_TC_CELLS_UNIFORM
+    uint key_lo;
+    uint key_hi;
+    uint record;
+} TcCellJitter;
+
+// The jitter (zeta, xi) of cell `cell`'s ray within the cell, in cell units: words 0 and 1 of the
+// cell's stream for irradiance caching (rc_ic_cell_jitter); for radiance caching the row's polar
+// and the column's azimuthal jitter of its jittered grid (rc_grid_stratum_direction).
+RC_FUNC void rc_tc_cell_jitter(const TcCellJitter* jitter, int cell, float* zeta, float* xi) {
+    if (jitter->layout == RC_TC_CELLS_UNIFORM) {
+        const int row = cell / jitter->n;
+        const int column = cell % jitter->n;
+        float unused;
+        rc_stratum_jitter(jitter->key_lo, jitter->key_hi, jitter->record, (uint)(row * jitter->n),
+                          zeta, &unused);
+        rc_stratum_jitter(jitter->key_lo, jitter->key_hi, jitter->record, (uint)column, &unused,
+                          xi);
+        return;
+    }
+    *zeta = rc_uint_to_unit_float(
+        rc_rng_word(jitter->key_lo, jitter->key_hi, jitter->record, (uint)cell, 0u));
+    *xi = rc_uint_to_unit_float(
+        rc_rng_word(jitter->key_lo, jitter->key_hi, jitter->record, (uint)cell, 1u));
 }
 
 // Whether the segment of `ray` from its origin to distance t_max meets the box [lower, upper]
@@ -69,8 +103,8 @@ RC_FUNC bool rc_tc_segment_meets_box(Ray ray, float t_max, float3 lower, float3 
 RC_FUNC TcCarriedSample rc_tc_carry_sample(const SceneData* scene, MovedTriangles moved,
                                            RC_GLOBAL const TcEmitter* now,
                                            RC_GLOBAL const TcEmitter* next, const TcParams* tc,
-                                           const IcParams* params, Frame frame, float3 origin,
-                                           int cell, Ray ray, float4 seen) {
+                                           int m, int n, Frame frame, float3 origin, int cell,
+                                           Ray ray, float4 seen) {
     const int emitter_count = tc->emitter_count;
     TcCarriedSample s;
     s.pad0 = s.pad1 = s.pad2 = 0;
@@ -108,10 +142,9 @@ RC_FUNC TcCarriedSample rc_tc_carry_sample(const SceneData* scene, MovedTriangle
         s.depth = length(offset);
         const float3 direction = rc_to_local(&frame, offset / s.depth);
         s.cell = dot(normal, offset) < 0.0f && s.depth > 0.0f
-                     ? rc_tc_cell_of(direction, params->strata_m, params->strata_n)
+                     ? rc_tc_cell_of(direction, m, n, tc->cell_layout)
                      : -1;
-        const float2 position_in_cells =
-            rc_tc_cell_position(direction, params->strata_m, params->strata_n);
+        const float2 position_in_cells = rc_tc_cell_position(direction, m, n, tc->cell_layout);
         s.row = position_in_cells.x;
         s.column = position_in_cells.y;
         s.size = clamp(seen.w / s.depth, 1.0f, RC_TC_MAX_SQUARE);
@@ -199,20 +232,20 @@ RC_FUNC float4 rc_tc_fill_hole(RC_GLOBAL const float4* out, RC_GLOBAL const uint
                     inverse_depth > 0.0f ? (float)count / inverse_depth : INFINITY);
 }
 
-// Record `record`'s (its random stream) hemisphere at the next frame, as M N cells (L.rgb,
+// A record's hemisphere (`jitter`: its cells and their jittered rays) at the next frame, as M N cells (L.rgb,
 // distance) into out[], from its carried samples (`carried`, one per cell of this frame; marks[]
 // is scratch of M N): a cell takes the nearest of the samples that cover its ray (a still sample
 // its own cell's; a moved one, its square, rc_tc_carry_sample; the first in cell order on a tie),
 // so that a moving surface neither grows nor shrinks by the cells its edge lands in; then up to
-// params->hole_passes passes fill each empty cell from its 3 x 3 neighbourhood (azimuth wraps,
+// hole_passes passes fill each empty cell from its 3 x 3 neighbourhood (azimuth wraps,
 // rows do not; rc_tc_fill_hole) — the report's 3 x 3 filter, made to tell a gap in a surface
 // that came nearer from background a moving occluder uncovered; a cell still empty keeps this
 // frame's sample `seen`.
-RC_FUNC void rc_tc_assemble(const IcParams* params, uint record, int hole_passes,
+RC_FUNC void rc_tc_assemble(const TcCellJitter* jitter, int hole_passes,
                             RC_GLOBAL const TcCarriedSample* carried, RC_GLOBAL const float4* seen,
                             RC_GLOBAL float4* out, RC_GLOBAL uint* marks) {
-    const int m = params->strata_m;
-    const int n = params->strata_n;
+    const int m = jitter->m;
+    const int n = jitter->n;
     const int cells = m * n;
     for (int c = 0; c < cells; ++c) {
         marks[c] = RC_TC_EMPTY;
@@ -241,7 +274,7 @@ RC_FUNC void rc_tc_assemble(const IcParams* params, uint record, int hole_passes
                     continue;
                 }
                 float zeta, xi;
-                rc_ic_cell_jitter(params, record, (uint)target, &zeta, &xi);
+                rc_tc_cell_jitter(jitter, target, &zeta, &xi);
                 const float row = (float)(j + dj) + zeta;
                 float column = (float)(k + dk) + xi - s.column;  // k + dk may leave [0, N)
                 column -= (float)n * round(column / (float)n);   // the azimuth wraps

@@ -29,8 +29,9 @@ __kernel void tc_carry_cells(uint begin, uint end, IcParams params, TcParams tc,
     const Ray ray = rc_ic_cell_ray(&params, streams[b], cell, normal, origins[b].xyz, &rng);
     const MovedTriangles moved = {moved_slot, moved_triangles};
     carried[i] =
-        rc_tc_carry_sample(&scene, moved, emitters_now, emitters_next, &tc, &params,
-                           rc_ic_record_frame(normal), origins[b].xyz, (int)cell, ray, cells[i]);
+        rc_tc_carry_sample(&scene, moved, emitters_now, emitters_next, &tc, params.strata_m,
+                           params.strata_n, rc_ic_record_frame(normal), origins[b].xyz, (int)cell,
+                           ray, cells[i]);
 }
 
 // Item b: batch record b's hemisphere at the next frame into next_cells (rc_tc_assemble; random
@@ -45,6 +46,9 @@ __kernel void tc_assemble_cells(uint begin, uint end, IcParams params, TcParams 
         return;
     }
     const size_t first = (size_t)b * (size_t)(params.strata_m * params.strata_n);
-    rc_tc_assemble(&params, streams[b], tc.hole_passes, carried + first, cells + first,
-                   next_cells + first, marks + first);
+    const TcCellJitter jitter = {params.strata_m,          params.strata_n,
+                                 RC_TC_CELLS_COSINE,       params.seed_lo ^ RC_IC_RNG_DOMAIN,
+                                 rc_ic_level_key(&params), streams[b]};
+    rc_tc_assemble(&jitter, tc.hole_passes, carried + first, cells + first, next_cells + first,
+                   marks + first);
 }

@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""Temporal caching against per-frame irradiance caching over a clip (issue 13's targets: the
-speed-up at equal per-frame relMSE, and the temporal error, flicker, at equal time).
+"""Temporal caching against per-frame caching over a clip (issue 13's targets: the speed-up at
+equal per-frame relMSE, and the temporal error, flicker, at equal time), for irradiance caching
+(`--method ic`, the default) or radiance caching (`--method rc`: the ladder is of radiance records'
+rays, --rc-rays; --options sets the irradiance records').
 
 On an animated scene with per-frame references (default scenes/moving-sphere), all in this one
 invocation on one device with warm kernel binaries (one untimed small render first):
@@ -26,7 +28,8 @@ Per-frame caching in one `--frames` run draws the same random streams every fram
 in the same places while nothing moves), so its flicker is that of a renderer whose streams do
 not depend on the frame; that is the baseline here.
 
-Usage: tools/bench/temporal.py [--scene scenes/moving-sphere] [--frames 0:11] [--width 128]
+Usage: tools/bench/temporal.py [--scene scenes/moving-sphere] [--method ic|rc]
+           [--reference DIR/frame####.exr] [--frames 0:11] [--width 128]
            [--height 128] [--spp 16] [--ladder "1024 512 256"] [--options "--ic-bounces 1"]
            [--temporal-options "--temporal-accuracy 0.05"] [--clock cpu] [--chart FILE.png]
            [--out build/bench/temporal] [-- extra radcache render options, e.g. --device 0:0]
@@ -78,6 +81,10 @@ def measure(label, scene, pattern, options, args):
     temporal = [f.get("temporal") for f in stats.get("frames", []) if f.get("temporal")]
     if temporal:
         row["records_computed"] = sum(t["created"] + t["recomputed"] for t in temporal)
+        radiance = [t["radiance"] for t in temporal if "radiance" in t]
+        if radiance:
+            row["radiance_records_computed"] = sum(r["created"] + r["recomputed"]
+                                                   for r in radiance)
     print("  %-28s %8.1f s  indirect relMSE %.3g  temporal %.3g  beauty relMSE %.3g"
           % (label, seconds, row["indirect_relmse"], row["indirect_temporal"],
              row["beauty_relmse"]), flush=True)
@@ -131,6 +138,9 @@ def chart(path, rows, args):
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--scene", default=os.path.join(ROOT, "scenes", "moving-sphere"))
+    parser.add_argument("--method", choices=["ic", "rc"], default="ic")
+    parser.add_argument("--reference", default="",
+                        help="the references' pattern (default SCENE/reference/frame####.exr)")
     parser.add_argument("--frames", default="0:11")
     parser.add_argument("--width", type=int, default=128)
     parser.add_argument("--height", type=int, default=128)
@@ -153,9 +163,10 @@ def main(argv):
         extra = []
     args.scene_dir = args.scene if os.path.isdir(args.scene) else os.path.dirname(args.scene)
     scene = os.path.join(args.scene_dir, "scene.json")
-    args.reference = os.path.join(args.scene_dir, "reference", "frame####.exr")
+    args.reference = args.reference or os.path.join(args.scene_dir, "reference", "frame####.exr")
     ladder_rays = [int(n) for n in args.ladder.split()]
-    common = ["--method", "ic", "--frames", args.frames, "--width", str(args.width), "--height",
+    rays_option = "--ic-rays" if args.method == "ic" else "--rc-rays"
+    common = ["--method", args.method, "--frames", args.frames, "--width", str(args.width), "--height",
               str(args.height), "--spp", str(args.spp), "--aovs", "beauty,indirect"] \
         + shlex.split(args.options) + extra
     os.makedirs(args.out, exist_ok=True)
@@ -166,18 +177,20 @@ def main(argv):
     print("%s, frames %s at %dx%d, %d spp (%s clock):" % (os.path.relpath(scene, ROOT),
                                                         args.frames, args.width, args.height,
                                                         args.spp, args.clock))
-    temporal = measure("temporal ic, %d rays" % ladder_rays[0], scene, out("tc####.exr"),
-                       common + ["--ic-rays", str(ladder_rays[0]), "--temporal"]
+    temporal = measure("temporal %s, %d rays" % (args.method, ladder_rays[0]), scene,
+                       out("tc####.exr"),
+                       common + [rays_option, str(ladder_rays[0]), "--temporal"]
                        + shlex.split(args.temporal_options), args)
-    ladder = [measure("per-frame ic, %d rays" % rays, scene, out("ic%d-####.exr" % rays),
-                      common + ["--ic-rays", str(rays)], args) for rays in ladder_rays]
+    ladder = [measure("per-frame %s, %d rays" % (args.method, rays), scene,
+                      out("%s%d-####.exr" % (args.method, rays)),
+                      common + [rays_option, str(rays)], args) for rays in ladder_rays]
 
     per_frame_time, bound = time_at_error(temporal["indirect_relmse"], ladder)
     speedup = per_frame_time / temporal["seconds"]
     flicker, bracketed = temporal_error_at_time(temporal["seconds"], ladder, "indirect_temporal")
     flicker_ratio = flicker / temporal["indirect_temporal"]
     same = ladder[0]
-    result = {"scene": scene, "frames": args.frames, "resolution": [args.width, args.height],
+    result = {"scene": scene, "method": args.method, "frames": args.frames, "resolution": [args.width, args.height],
               "spp": args.spp, "clock": args.clock, "extra_options": extra,
               "temporal": temporal, "ladder": ladder,
               "speedup_at_equal_indirect_relmse": {"value": speedup, "bound": bound,

@@ -225,6 +225,8 @@ class IrradianceCache : private FrameBound {
     // The camera samples (G-buffer, entry pixel * spp + s) of the last render(), and its camera.
     std::vector<shared::GBufferSample> camera_samples() const { return gbuffer_.download(); }
     const shared::CameraParams& camera() const { return camera_; }
+    // The first level's kernel parameters since begin() (image, camera samples, seed, depths).
+    shared::IcParams first_level_params() const { return level_params(0); }
 
     // The records of cache level `level` (0: the one the camera samples read) after render():
     // irradiance payloads (irradiance_records.h).

@@ -18,15 +18,20 @@ namespace {
 constexpr size_t kMaxBatchCells = size_t{1} << 22;  // hemisphere cells per record launch
 
 // The scene's BRDF tables for these options (their options checked first), the build time
-// into *seconds.
-BrdfTables build_tables(const FrameScene& frame, const RadianceCacheOptions& options,
-                        double* seconds) {
+// into *seconds; `built` when given.
+std::shared_ptr<const BrdfTables> build_tables(const FrameScene& frame,
+                                               const RadianceCacheOptions& options,
+                                               std::shared_ptr<const BrdfTables> built,
+                                               double* seconds) {
     check_radiance_cache_options(options);
+    if (built) {
+        return built;
+    }
     BrdfTableOptions table;
     table.max_order = options.order > 0 ? options.order : RC_SH_MAX_ORDER;
     table.max_error = options.max_error;
     const auto start = SteadyClock::now();
-    BrdfTables tables(frame.context, frame.scene.materials, table);
+    auto tables = std::make_shared<const BrdfTables>(frame.context, frame.scene.materials, table);
     frame.context.finish();
     *seconds = seconds_since(start);
     return tables;
@@ -87,18 +92,20 @@ void radiance_strata(int rays, int* m, int* n) {
     *n = std::max(2, static_cast<int>(std::lround(static_cast<double>(rays) / *m)));
 }
 
-RadianceCache::RadianceCache(const FrameScene& frame, const RadianceCacheOptions& options)
+RadianceCache::RadianceCache(const FrameScene& frame, const RadianceCacheOptions& options,
+                             std::shared_ptr<const BrdfTables> tables)
     : FrameBound(frame),
       options_(options),
-      tables_(build_tables(frame, options, &stats_.table_seconds)),
-      order_(records_order(tables_)),
+      tables_(build_tables(frame, options, std::move(tables), &stats_.table_seconds)),
+      order_(records_order(*tables_)),
       store_(radiance_store(options.accuracy, std::max(order_, 1))),
       queries_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_queries")),
       project_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_record_project")),
       splat_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_splat")),
+      used_kernel_(frame.context.kernel("glossy/glossy_placement.cl", "rc_records_used")),
       placement_(frame.context) {
     radiance_strata(options.rays, &strata_m_, &strata_n_);
-    stats_.materials = tables_.summaries();
+    stats_.materials = tables_->summaries();
     stats_.order = order_;
     stats_.strata_m = strata_m_;
     stats_.strata_n = strata_n_;
@@ -109,6 +116,7 @@ RadianceCache::RadianceCache(const FrameScene& frame, const RadianceCacheOptions
                           .at(0));
         stats_.loaded_records = store_.size();
     }
+    next_stream_ = static_cast<unsigned>(store_.size());
 }
 
 Kernel& RadianceCache::cells_kernel(const RadianceSource& source) {
@@ -137,27 +145,39 @@ shared::RcParams RadianceCache::record_params() const {
     return params;
 }
 
+void RadianceCache::set_store(RecordStore store, unsigned next_stream) {
+    store_ = std::move(store);
+    next_stream_ = next_stream;
+}
+
 void RadianceCache::add_records(const std::vector<shared::RcQuery>& sites,
+                                const std::vector<unsigned>& streams,
                                 const RadianceSource& diffuse) {
     const size_t per_record = static_cast<size_t>(strata_m_) * strata_n_;
     const size_t batch_limit = std::max<size_t>(1, kMaxBatchCells / per_record);
     const size_t floats = radiance_payload_floats(std::max(order_, 1));
     const SceneArguments scene(bvh_, device_scene_);
+    const shared::RcParams params = record_params();
     Buffer<unsigned> counters(context_, 1, "rc_record_counters");
     for (size_t begin = 0; begin < sites.size(); begin += batch_limit) {
         const size_t count = std::min(batch_limit, sites.size() - begin);
         const std::vector<shared::RcQuery> batch(sites.begin() + begin,
                                                  sites.begin() + begin + count);
+        const std::vector<unsigned> batch_streams(streams.begin() + begin,
+                                                  streams.begin() + begin + count);
         const Buffer<shared::RcQuery> site_buffer(context_, batch, "rc_batch_sites");
+        const Buffer<unsigned> stream_buffer(context_, batch_streams, "rc_batch_streams");
         Buffer<shared::float4> cells(context_, count * per_record, "rc_cells");
         Buffer<float> payloads(context_, count * floats, "rc_batch_payloads");
         Buffer<shared::float4> distances(context_, count, "rc_distances");
-        shared::RcParams params = record_params();
-        params.first_record = static_cast<int>(store_.size());  // streams: record indices
         counters.fill_zero();
         context_.launch(cells_kernel(diffuse), count * per_record, params, scene, site_buffer,
-                        diffuse, cells, counters);
-        context_.launch(project_kernel_, count, params, cells, payloads, distances);
+                        stream_buffer, diffuse, cells, counters);
+        if (observer_ != nullptr) {
+            observer_->observe({params, site_buffer, stream_buffer, cells, batch.data(),
+                                batch_streams.data(), count});
+        }
+        context_.launch(project_kernel_, count, params, stream_buffer, cells, payloads, distances);
         const std::vector<float> payload = payloads.download();
         const std::vector<shared::float4> distance = distances.download();
         stats_.record_rays += counters.download()[0];
@@ -177,44 +197,82 @@ void RadianceCache::add_records(const std::vector<shared::RcQuery>& sites,
     }
 }
 
+std::vector<uint8_t> RadianceCache::records_used(const Buffer<shared::RcQuery>& queries,
+                                                 const RecordStore& store) {
+    if (store.size() == 0) {
+        return {};
+    }
+    const DeviceRadianceRecords records(context_, store, std::max(order_, 1));
+    Buffer<unsigned> used(context_, store.size(), "rc_records_used");
+    used.fill_zero();
+    context_.launch(used_kernel_, queries.size(), store.accuracy(), kIrradianceCacheMaxWeight,
+                    records.grid, records.cell_start, records.cell_records, records.records,
+                    queries, used);
+    const std::vector<unsigned> flags = used.download();
+    return std::vector<uint8_t>(flags.begin(), flags.end());
+}
+
+Buffer<shared::RcQuery> RadianceCache::queries(const shared::IcParams& params,
+                                               const shared::CameraParams& camera) {
+    const size_t samples =
+        static_cast<size_t>(params.width) * params.height * static_cast<size_t>(params.camera_spp);
+    const auto start = SteadyClock::now();
+    Buffer<shared::RcQuery> device(context_, samples, "rc_queries");
+    context_.launch(queries_kernel_, samples, params, camera, SceneArguments(bvh_, device_scene_),
+                    tables_->device_infos(), tables_->orders(), device);
+    stats_.query_seconds += seconds_since(start);
+    return device;
+}
+
+void RadianceCache::place(const Buffer<shared::RcQuery>& queries, const shared::IcParams& params,
+                          const RadianceSource& diffuse) {
+    placement_.place(
+        queries, store_, static_cast<uint32_t>(params.width),
+        static_cast<uint32_t>(params.camera_spp), options_.min_spacing,
+        [&](const std::vector<shared::RcQuery>& sites) {
+            std::vector<unsigned> streams(sites.size());
+            for (unsigned& stream : streams) {
+                stream = next_stream_++;
+            }
+            add_records(sites, streams, diffuse);
+        },
+        &stats_.placement);
+    stats_.records = store_.size();
+}
+
+Buffer<shared::RcGlossySample> RadianceCache::splat(const Buffer<shared::RcQuery>& queries) {
+    const auto start = SteadyClock::now();
+    const DeviceRadianceRecords records(context_, store_, std::max(order_, 1));
+    std::vector<float> x90(RC_SH_X90_TABLE_SIZE);
+    shared::rc_sh_x90_table(x90.data());
+    const Buffer<float> x90_buffer(context_, x90, "rc_x90");
+    Buffer<shared::RcGlossySample> glossy(context_, queries.size(), "rc_glossy");
+    Buffer<unsigned> counters(context_, 1, "rc_splat_counters");
+    counters.fill_zero();
+    context_.launch(splat_kernel_, queries.size(), record_params(), records.grid,
+                    records.cell_start, records.cell_records, records.records, records.payloads,
+                    queries, tables_->device_infos(), tables_->coefficients(), x90_buffer, glossy,
+                    counters);
+    stats_.reflections = counters.download()[0];
+    stats_.records = store_.size();
+    stats_.splat_seconds = seconds_since(start);
+    return glossy;
+}
+
 Buffer<shared::RcGlossySample> RadianceCache::glossy_samples(const shared::IcParams& params,
                                                              const shared::CameraParams& camera,
                                                              const RadianceSource& diffuse) {
-    const size_t samples =
-        static_cast<size_t>(params.width) * params.height * static_cast<size_t>(params.camera_spp);
     // 1. The camera samples as radiance caching sees them.
-    auto start = SteadyClock::now();
-    const Buffer<shared::RcQuery> device(context_, samples, "rc_queries");
-    context_.launch(queries_kernel_, samples, params, camera, SceneArguments(bvh_, device_scene_),
-                    tables_.device_infos(), tables_.orders(), device);
-    stats_.query_seconds = seconds_since(start);
+    const Buffer<shared::RcQuery> device = queries(params, camera);
     // 2. Placement, coarse to fine as irradiance caching's (GlossyPlacement).
-    placement_.place(
-        device, store_, static_cast<uint32_t>(params.width),
-        static_cast<uint32_t>(params.camera_spp), options_.min_spacing,
-        [&](const std::vector<shared::RcQuery>& sites) { add_records(sites, diffuse); },
-        &stats_.placement);
-    stats_.records = store_.size();
+    place(device, params, diffuse);
     if (!options_.cache_out.empty()) {
         write_cache_file(options_.cache_out,
                          radiance_cache_key(scene_, options_.accuracy, std::max(order_, 1)),
                          {store_});
     }
     // 3. The glossy buffer: every served sample's interpolated reflection.
-    start = SteadyClock::now();
-    const DeviceRadianceRecords records(context_, store_, std::max(order_, 1));
-    std::vector<float> x90(RC_SH_X90_TABLE_SIZE);
-    shared::rc_sh_x90_table(x90.data());
-    const Buffer<float> x90_buffer(context_, x90, "rc_x90");
-    Buffer<shared::RcGlossySample> glossy(context_, samples, "rc_glossy");
-    Buffer<unsigned> counters(context_, 1, "rc_splat_counters");
-    counters.fill_zero();
-    context_.launch(splat_kernel_, samples, record_params(), records.grid, records.cell_start,
-                    records.cell_records, records.records, records.payloads, device,
-                    tables_.device_infos(), tables_.coefficients(), x90_buffer, glossy, counters);
-    stats_.reflections = counters.download()[0];
-    stats_.splat_seconds = seconds_since(start);
-    return glossy;
+    return splat(device);
 }
 
 }  // namespace rc

@@ -8,9 +8,11 @@
 // buffer irradiance caching's render pass reads. Owns its buffers; reports its statistics.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -53,6 +55,25 @@ struct RadianceCacheStats {
     double splat_seconds = 0.0;  // the glossy buffer
 };
 
+// A batch of radiance records as the record kernel computed them, still on the device.
+struct RadianceBatch {
+    const shared::RcParams& params;
+    const Buffer<shared::RcQuery>& sites;  // count sites
+    const Buffer<unsigned>& streams;       // their random streams
+    const Buffer<shared::float4>& cells;   // count x M N uniform cells: (L.rgb, hit distance)
+    const shared::RcQuery* site_values;    // the same sites and streams on the host
+    const unsigned* stream_values;
+    size_t count;
+};
+
+// Shown every batch of records before their projection and insertion (temporal caching
+// reprojects their hemisphere samples: host/methods/temporal/tc_radiance_reprojection.h).
+class RadianceBatchObserver {
+   public:
+    virtual ~RadianceBatchObserver() = default;
+    virtual void observe(const RadianceBatch& batch) = 0;
+};
+
 // Error (exit status 2) naming the option radiance caching cannot honour.
 void check_radiance_cache_options(const RadianceCacheOptions& options);
 
@@ -61,36 +82,64 @@ void radiance_strata(int rays, int* m, int* n);
 
 class RadianceCache final : public GlossyCache, private FrameBound {
    public:
-    // Builds the frame's BRDF tables (the adaptive order, TVCG §4.1); reads options.cache_in.
-    RadianceCache(const FrameScene& frame, const RadianceCacheOptions& options);
+    // Builds the frame's BRDF tables (the adaptive order, TVCG §4.1), or takes `tables` when
+    // given (built by an earlier cache of the same scene's materials, device and options); reads
+    // options.cache_in.
+    RadianceCache(const FrameScene& frame, const RadianceCacheOptions& options,
+                  std::shared_ptr<const BrdfTables> tables = nullptr);
 
+    // queries(), place() and splat() in turn, the records saved to options.cache_out between.
     Buffer<shared::RcGlossySample> glossy_samples(const shared::IcParams& params,
                                                   const shared::CameraParams& camera,
                                                   const RadianceSource& diffuse) override;
+
+    // The camera samples of `camera`'s image as radiance caching sees them (entry pixel * spp + s).
+    Buffer<shared::RcQuery> queries(const shared::IcParams& params,
+                                    const shared::CameraParams& camera);
+    // Records placed, coarse to fine, where the served queries are not covered (GlossyPlacement).
+    void place(const Buffer<shared::RcQuery>& queries, const shared::IcParams& params,
+               const RadianceSource& diffuse);
+    // The glossy buffer: every served query's interpolated reflection from the store's records.
+    Buffer<shared::RcGlossySample> splat(const Buffer<shared::RcQuery>& queries);
+
+    // Records at `sites` with the given random streams (one each), inserted in order.
+    void add_records(const std::vector<shared::RcQuery>& sites,
+                     const std::vector<unsigned>& streams, const RadianceSource& diffuse);
+    // Replaces the store; new records take streams from `next_stream` on.
+    void set_store(RecordStore store, unsigned next_stream);
+    // Per record of `store` (order and payloads as this cache's): 1 where a served query
+    // weighs it positively (the report's occlusion query for the records still in use).
+    std::vector<uint8_t> records_used(const Buffer<shared::RcQuery>& queries,
+                                      const RecordStore& store);
+    void set_observer(RadianceBatchObserver* observer) { observer_ = observer; }
+    unsigned next_stream() const { return next_stream_; }
+    int order() const { return std::max(order_, 1); }
     // (Saves the records to options.cache_out at the end.)
     std::vector<FilmLayer> layers() const override {
         return {{"rc-order", RC_CACHED_FILM_ORDER, 1}};
     }
 
     const RecordStore& store() const { return store_; }
+    const std::shared_ptr<const BrdfTables>& tables() const { return tables_; }
     const RadianceCacheStats& stats() const { return stats_; }
 
    private:
     shared::RcParams record_params() const;
-    // Records at `sites`, numbered from the store's size, inserted.
-    void add_records(const std::vector<shared::RcQuery>& sites, const RadianceSource& diffuse);
     Kernel& cells_kernel(const RadianceSource& source);
 
     RadianceCacheOptions options_;
     RadianceCacheStats stats_;  // before tables_, which record their build time there
-    BrdfTables tables_;
+    std::shared_ptr<const BrdfTables> tables_;
     int order_ = 0;
     int strata_m_ = 1;
     int strata_n_ = 1;
     RecordStore store_;
+    unsigned next_stream_ = 0;  // the random stream of the next new record
+    RadianceBatchObserver* observer_ = nullptr;
     Kernel queries_kernel_;
     Kernel project_kernel_;
     Kernel splat_kernel_;
+    Kernel used_kernel_;
     GlossyPlacement placement_;
     std::map<std::string, Kernel> cells_kernels_;  // by build options
 };

@@ -10,6 +10,9 @@
 #include "methods/irradiance_cache/ic_options.h"
 #include "methods/method.h"
 #include "methods/radiance_cache/radiance_cache.h"
+#include "methods/temporal/temporal_cache.h"
+#include "methods/temporal/temporal_options.h"
+#include "methods/temporal/temporal_radiance_cache.h"
 #include "shared/radiance_cache.h"
 #include "shared/sh_rotation_zxz.h"
 #include "util/error.h"
@@ -35,6 +38,9 @@ std::vector<OptionSpec> radiance_cache_option_specs() {
          "order)"},
     };
     for (OptionSpec& spec : glossy_method_ic_option_specs()) {
+        specs.push_back(std::move(spec));
+    }
+    for (OptionSpec& spec : temporal_option_specs()) {
         specs.push_back(std::move(spec));
     }
     return specs;
@@ -76,10 +82,41 @@ class RadianceCaching final : public Method {
    public:
     RadianceCaching(const ParsedArguments& arguments, const MethodSettings& settings)
         : ic_(parse_irradiance_cache_options(arguments, settings)),
-          rc_(parse_options(arguments, settings, ic_)) {}
+          rc_(parse_options(arguments, settings, ic_)) {
+        const TemporalOptions temporal = parse_temporal_options(arguments);
+        if (!temporal.enabled) {
+            return;
+        }
+        if (!ic_.cache_in.empty() || !ic_.cache_out.empty() || !rc_.cache_in.empty() ||
+            !rc_.cache_out.empty()) {
+            throw Error(
+                "--temporal: the records live across frames, not in cache files "
+                "(--cache-in/--cache-out, --rc-cache-in/--rc-cache-out)",
+                kExitUsage);
+        }
+        const long long last =
+            static_cast<long long>(settings.first_frame) + std::max(settings.frame_count, 1) - 1;
+        temporal_glossy_ = std::make_unique<TemporalRadianceCache>(
+            rc_, temporal, settings.first_frame, static_cast<int>(last));
+        temporal_ = std::make_unique<TemporalIrradianceCache>(ic_, temporal, settings.first_frame,
+                                                              settings.frame_count);
+        temporal_->set_glossy(temporal_glossy_.get());
+    }
 
-    FrameResult render_frame(const FrameScene& frame, const FrameHooks&) override {
-        RadianceCache glossy(frame, rc_);
+    FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
+        if (temporal_) {
+            FrameResult result = temporal_->render_frame(frame, hooks);
+            const nlohmann::json& t = result.stats["temporal"];
+            const nlohmann::json& r = t["radiance"];
+            log_note(t["records"].dump() + " irradiance records, " + r["records"].dump() +
+                     " radiance records (" + r["created"].dump() + " new, " +
+                     r["recomputed"].dump() + " recomputed, " + r["reused"].dump() + " reused, " +
+                     r["dropped"].dump() + " dropped)");
+            return result;
+        }
+        // The materials are the same at every frame: their BRDF tables are built once.
+        RadianceCache glossy(frame, rc_, tables_);
+        tables_ = glossy.tables();
         IrradianceCacheStats stats;
         FrameResult result = render_with_glossy_cache(frame, ic_, glossy, &stats);
         const RadianceCacheStats& rc = glossy.stats();
@@ -98,6 +135,10 @@ class RadianceCaching final : public Method {
         programs.push_back(
             {"radiance_cache/rc_record_cells.cl", radiance_source_define(RC_RADIANCE_RECORDS)});
         programs.push_back({"glossy/glossy_placement.cl", ""});
+        if (temporal_) {
+            programs.push_back({"temporal/temporal.cl", ""});
+            programs.push_back({"temporal/tc_radiance.cl", ""});
+        }
         return programs;
     }
 
@@ -157,6 +198,9 @@ class RadianceCaching final : public Method {
 
     IrradianceCacheOptions ic_;
     RadianceCacheOptions rc_;
+    std::shared_ptr<const BrdfTables> tables_;                // built at the first frame
+    std::unique_ptr<TemporalRadianceCache> temporal_glossy_;  // with --temporal
+    std::unique_ptr<TemporalIrradianceCache> temporal_;
 };
 
 }  // namespace

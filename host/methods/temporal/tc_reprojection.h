@@ -13,6 +13,7 @@
 #include "device/buffer.h"
 #include "methods/frame_scene.h"
 #include "methods/irradiance_cache/irradiance_cache.h"
+#include "methods/temporal/tc_motion.h"
 #include "shared/temporal.h"
 
 namespace rc {
@@ -34,22 +35,18 @@ class TemporalReprojection final : public RecordBatchObserver, private FrameBoun
     // Every record of cache level `level` observed so far, in observation order; clears the list.
     std::vector<CarriedRecord> take(int level);
 
+    // What moves and changes between the two frames.
+    const TcMotion& motion() const { return motion_; }
     // Primitives that move between the two frames.
-    size_t moving_primitives() const { return moving_; }
+    size_t moving_primitives() const { return motion_.moving_primitives(); }
     // Per primitive: 1 where it moves between the two frames.
-    const std::vector<uint8_t>& moves() const { return moves_; }
+    const std::vector<uint8_t>& moves() const { return motion_.moves(); }
 
    private:
+    TcMotion motion_;
     Kernel carry_kernel_;
     Kernel assemble_kernel_;
     Kernel reduce_kernel_;
-    shared::TcParams params_{};
-    std::vector<uint8_t> moves_;  // per primitive
-    size_t moving_ = 0;
-    Buffer<int> moved_slot_;
-    Buffer<shared::Triangle> moved_triangles_;
-    Buffer<shared::TcEmitter> emitters_now_;
-    Buffer<shared::TcEmitter> emitters_next_;
     std::map<int, std::vector<CarriedRecord>> carried_;  // by level
 };
 

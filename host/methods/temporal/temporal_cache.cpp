@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "methods/irradiance_cache/ic_stats.h"
+#include "methods/irradiance_cache/record_level_source.h"
 #include "util/error.h"
 #include "util/timing.h"
 
@@ -227,6 +228,13 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
     stats.placement_seconds = seconds_since(start);
     serving_.push_back(std::move(now));
     frame_stats_.push_back(stats);
+    // The glossy lobes' radiance records, whose hemisphere rays read this frame's first level.
+    if (glossy_ != nullptr) {
+        const RecordLevelSource first_level(frame.context, cache.store(0),
+                                            kIrradianceCacheMaxWeight);
+        glossy_->place_frame(frame, reprojection.motion(), cache.first_level_params(),
+                             cache.camera(), first_level);
+    }
 }
 
 void TemporalIrradianceCache::place_through(int last, const FrameScene& frame,
@@ -267,12 +275,18 @@ FrameResult TemporalIrradianceCache::shade_frame(const FrameScene& frame) {
             return temporal_payload(r, successor, t, gradients);
         },
         std::move(shared_parts), std::move(host));
+    IrradianceCacheOptions options = ic_;
+    std::unique_ptr<GlossyCache> glossy;
+    if (glossy_ != nullptr) {
+        glossy = glossy_->shading(frame);
+        options.glossy = glossy.get();
+    }
     IrradianceCache cache(frame);
-    cache.begin(ic_);
+    cache.begin(options);
     cache.set_records(0, std::move(store), 0);
     IrradianceCacheStats stats;
     FrameResult result;
-    result.image = cache.finish(ic_, &stats);
+    result.image = cache.finish(options, &stats);
     result.spp = ic_.spp;
     const TemporalFrameStats& placed = frame_stats_[static_cast<size_t>(t - first_frame_)];
     IrradianceCacheStats combined = placed.placement;
@@ -309,6 +323,11 @@ FrameResult TemporalIrradianceCache::shade_frame(const FrameScene& frame) {
                           {"mean_new_lifespan", placed.deeper[l].mean_new_lifespan}});
     }
     result.stats["temporal"]["deeper_levels"] = deeper;
+    if (glossy_ != nullptr) {
+        const nlohmann::json radiance = glossy_->frame_stats(t);
+        result.rays += radiance["record_rays"].get<uint64_t>();
+        result.stats["temporal"]["radiance"] = radiance;
+    }
     return result;
 }
 

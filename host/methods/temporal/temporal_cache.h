@@ -19,6 +19,7 @@
 #include "methods/method.h"
 #include "methods/temporal/tc_reprojection.h"
 #include "methods/temporal/temporal_options.h"
+#include "methods/temporal/temporal_radiance_cache.h"
 #include "methods/temporal/temporal_record.h"
 
 namespace rc {
@@ -52,6 +53,9 @@ class TemporalIrradianceCache {
     // Frames first_frame .. first_frame + frame_count - 1 will be asked for, in order.
     TemporalIrradianceCache(IrradianceCacheOptions ic, TemporalOptions temporal, int first_frame,
                             int frame_count);
+    // With `glossy` (`--method rc --temporal`), the glossy lobes come from its radiance records:
+    // placed in pass 1 after each frame's irradiance records, read in pass 2.
+    void set_glossy(TemporalRadianceCache* glossy) { glossy_ = glossy; }
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks);
 
@@ -105,6 +109,7 @@ class TemporalIrradianceCache {
     std::vector<Level> levels_;                    // 0: the camera's
     std::vector<std::vector<Serving>> serving_;    // per frame from first_frame_: first level
     std::vector<TemporalFrameStats> frame_stats_;  // per frame from first_frame_
+    TemporalRadianceCache* glossy_ = nullptr;
 };
 
 }  // namespace rc

@@ -7,21 +7,21 @@ namespace rc {
 std::vector<OptionSpec> temporal_option_specs() {
     return {
         {"--temporal", "", "",
-         "ic: temporal caching over --frames: records live across frames while their light "
-         "changes less than --temporal-accuracy allows, replaced in place when they expire "
-         "(docs/temporal-caching.md)"},
+         "ic, rc: temporal caching over --frames: records (rc: irradiance and radiance records) "
+         "live across frames while their light changes less than --temporal-accuracy allows, "
+         "replaced in place when they expire (docs/temporal-caching.md)"},
         {"--temporal-gradients", "", "interpolated|extrapolated|none",
-         "ic --temporal: a record's value over its frames: interpolated towards its replacement "
+         "--temporal: a record's value over its frames: interpolated towards its replacement "
          "(two passes, default), extrapolated from its reprojected next frame (one pass), or held"},
         {"--temporal-accuracy", "", "A",
-         "ic --temporal: a^t, the largest relative change of a record's irradiance over its "
-         "lifespan, estimated by reprojection (default 0.02)"},
+         "--temporal: a^t, the largest relative change of a record's irradiance (rc: of its "
+         "radiance's SH coefficients) over its lifespan, estimated by reprojection (default 0.02)"},
         {"--temporal-max-frames", "", "N",
-         "ic --temporal: the longest lifespan of a record, in frames (default 20)"},
+         "--temporal: the longest lifespan of a record, in frames (default 20)"},
         {"--temporal-moving-hits", "", "trace|cache",
-         "ic --temporal: hemisphere hits on objects moving into or out of the frame path-trace "
-         "the light beyond them (trace, default) or get deeper-level records, which live one "
-         "frame (cache)"},
+         "--temporal: irradiance records' hemisphere hits on objects moving into or out of the "
+         "frame path-trace the light beyond them (trace, default) or get deeper-level records, "
+         "which live one frame (cache)"},
     };
 }
 
