@@ -7,6 +7,7 @@
 #include "app/commands.h"
 #include "app/device_options.h"
 #include "app/progress_bar.h"
+#include "app/render_devices.h"
 #include "app/render_job.h"
 #include "app/render_stats.h"
 #include "bvh/device_bvh.h"
@@ -66,9 +67,12 @@ void warn_unless_frames_in_range(const FrameRange& frames, const Animation& anim
     log_warning(asked + " reaches outside the scene's frame range " + range + ": " + held);
 }
 
-// Poses the scene at `frame`, renders it with `method` and writes its image.
-void render_frame(const RenderJob& job, int frame, Context& context, Scene& scene, Bvh& bvh,
+// Poses the scene at `frame`, renders it with `method` (on every device of `contexts`, the
+// first holding the method's state) and writes its image.
+void render_frame(const RenderJob& job, int frame,
+                  const std::vector<std::unique_ptr<Context>>& contexts, Scene& scene, Bvh& bvh,
                   Method& method, RenderTotals& totals) {
+    Context& context = *contexts[0];
     if (static_cast<double>(frame) != scene.frame) {
         scene.set_frame(frame);
     }
@@ -78,11 +82,14 @@ void render_frame(const RenderJob& job, int frame, Context& context, Scene& scen
     totals.phase("bvh") += seconds_since(start);
     // The whole frame is refused before its first buffer when it cannot fit (issue 17).
     const DeviceMemoryNeed need = frame_need(context, scene, bvh, method);
-    check_device_memory_need(context, need);
+    for (const auto& device : contexts) {
+        check_device_memory_need(*device, frame_need(*device, scene, bvh, method));
+    }
     totals.set_frame_need(need);
     start = SteadyClock::now();
     const DeviceBvh device_bvh(context, bvh);
     const DeviceScene device_scene(context, scene);
+    const PeerFrames peers(contexts, scene, bvh, frame);
     totals.phase("upload") += seconds_since(start);
 
     start = SteadyClock::now();
@@ -105,8 +112,8 @@ void render_frame(const RenderJob& job, int frame, Context& context, Scene& scen
         const DeviceScene other_device_scene(context, posed);
         use({context, posed, other_device_bvh, other_device_scene, other});
     };
-    const FrameResult result =
-        method.render_frame({context, scene, device_bvh, device_scene, frame}, hooks);
+    const FrameResult result = method.render_frame(
+        {context, scene, device_bvh, device_scene, frame, &peers.frames()}, hooks);
     progress.finish();
     totals.phase("render") += seconds_since(start);
 
@@ -159,15 +166,21 @@ int run_render_command(const std::vector<std::string>& args) {
         entry.create(arguments, method_settings(arguments, settings, job, first, last));
 
     start = SteadyClock::now();
-    Context context(context_options(arguments));
-    context.prebuild(method->programs());  // all at once, in the background
+    const std::vector<std::unique_ptr<Context>> contexts =
+        open_render_devices(context_options(arguments), *method, entry.name);
+    Context& context = *contexts[0];
     totals.phase("device") = seconds_since(start);
-    log_note("device " + context.device().name + "; " +
+    std::string names;
+    for (const auto& device : contexts) {
+        names += (names.empty() ? "" : ", ") +
+                 (contexts.size() > 1 ? device->device().spec() + " " : "") + device->device().name;
+    }
+    log_note(std::string(contexts.size() > 1 ? "devices " : "device ") + names + "; " +
              std::to_string(scene.mesh.triangle_count()) + " triangles, " +
              std::to_string(scene.lights.lights.size()) + " lights");
     Bvh bvh;
     for (long long frame = first; frame <= last; ++frame) {
-        render_frame(job, static_cast<int>(frame), context, scene, bvh, *method, totals);
+        render_frame(job, static_cast<int>(frame), contexts, scene, bvh, *method, totals);
     }
     if (!job.stats.empty()) {
         const nlohmann::json stats =

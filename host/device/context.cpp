@@ -140,12 +140,12 @@ size_t Context::local_size_for(const Kernel& kernel) const {
     return std::max<size_t>(local, 1);
 }
 
-void Context::run_chunked(Kernel& kernel, size_t count) {
-    if (count == 0) {
+void Context::run_chunked(Kernel& kernel, size_t first, size_t end) {
+    if (end <= first) {
         return;
     }
-    if (count > std::numeric_limits<uint32_t>::max()) {
-        throw Error("kernel " + kernel.name() + ": " + std::to_string(count) +
+    if (end > std::numeric_limits<uint32_t>::max()) {
+        throw Error("kernel " + kernel.name() + ": " + std::to_string(end) +
                     " work items exceed the 32-bit item range");
     }
     const size_t local = local_size_for(kernel);
@@ -153,8 +153,8 @@ void Context::run_chunked(Kernel& kernel, size_t count) {
         options_.max_chunk_items != 0 ? options_.max_chunk_items : kDefaultMaxChunkItems, local);
     size_t chunk = std::min(max_chunk, round_up(kFirstChunkItems, local));
     KernelTime& time = kernel_times_[kernel.name()];
-    for (size_t begin = 0; begin < count;) {
-        const size_t items = std::min(chunk, count - begin);
+    for (size_t begin = first; begin < end;) {
+        const size_t items = std::min(chunk, end - begin);
         const cl_uint range[2] = {static_cast<cl_uint>(begin), static_cast<cl_uint>(begin + items)};
         kernel.set_arg(0, sizeof range[0], &range[0]);
         kernel.set_arg(1, sizeof range[1], &range[1]);

@@ -98,9 +98,14 @@ class Context {
     // chunking.
     template <class... Args>
     void launch(Kernel& kernel, size_t count, const Args&... args) {
+        launch_range(kernel, 0, count, args...);
+    }
+    // The same over items [first, end) (a share of a larger item range: several devices).
+    template <class... Args>
+    void launch_range(Kernel& kernel, size_t first, size_t end, const Args&... args) {
         unsigned index = 2;
         (set_kernel_arg(kernel, index, args), ...);
-        run_chunked(kernel, count);
+        run_chunked(kernel, first, end);
     }
 
     const std::map<std::string, KernelTime>& kernel_times() const { return kernel_times_; }
@@ -138,7 +143,7 @@ class Context {
                                                               const T& value) {
         kernel.set_arg(index++, sizeof(T), &value);
     }
-    void run_chunked(Kernel& kernel, size_t count);
+    void run_chunked(Kernel& kernel, size_t first, size_t end);
 
     ContextOptions options_;
     DeviceInfo device_;

@@ -192,4 +192,34 @@ DeviceInfo select_device(const std::vector<DeviceInfo>& devices, const std::stri
                 kExitUsage);
 }
 
+std::vector<DeviceInfo> select_devices(const std::vector<DeviceInfo>& devices,
+                                       const std::string& spec) {
+    if (lower(spec) == "all") {
+        return devices;
+    }
+    if (spec.find(',') == std::string::npos) {
+        return {select_device(devices, spec)};
+    }
+    std::vector<DeviceInfo> chosen;
+    size_t start = 0;
+    while (start <= spec.size()) {
+        const size_t comma = std::min(spec.find(',', start), spec.size());
+        const std::string entry = spec.substr(start, comma - start);
+        if (entry.find_first_not_of(" \t") == std::string::npos) {
+            throw Error("--device '" + spec + "' has an empty entry", kExitUsage);
+        }
+        const DeviceInfo device = select_device(devices, entry);
+        for (const DeviceInfo& other : chosen) {
+            if (other.spec() == device.spec()) {
+                throw Error("--device '" + spec + "' names device " + device.spec() + " (" +
+                                device.name + ") twice",
+                            kExitUsage);
+            }
+        }
+        chosen.push_back(device);
+        start = comma + 1;
+    }
+    return chosen;
+}
+
 }  // namespace rc

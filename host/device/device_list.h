@@ -48,4 +48,10 @@ std::string format_device_table(const std::vector<DeviceInfo>& devices);
 // devices.
 DeviceInfo select_device(const std::vector<DeviceInfo>& devices, const std::string& spec);
 
+// The devices a --device value names for one render on several devices: "all" (every device,
+// in list order), or specs separated by commas (each as select_device takes it); a single spec
+// names one device. Error (exit status 2) for an empty entry or a device named twice.
+std::vector<DeviceInfo> select_devices(const std::vector<DeviceInfo>& devices,
+                                       const std::string& spec);
+
 }  // namespace rc

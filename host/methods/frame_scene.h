@@ -3,6 +3,8 @@
 // schedule a method's kernels for one frame and keep those four references.
 #pragma once
 
+#include <vector>
+
 #include "bvh/device_bvh.h"
 #include "device/context.h"
 #include "scene/device_scene.h"
@@ -16,6 +18,10 @@ struct FrameScene {
     const DeviceBvh& bvh;
     const DeviceScene& device_scene;
     int frame = 0;
+    // The same frame on the render's other devices (--device with several), each with its own
+    // BVH and scene buffers; empty or null with one device. Only a method that splits its work
+    // across devices (Method::splits_across_devices) is given them.
+    const std::vector<FrameScene>* peers = nullptr;
 };
 
 class FrameBound {

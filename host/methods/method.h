@@ -94,6 +94,9 @@ class Method {
     // refused here (Error, exit status 2), before any device memory is used.
     virtual DeviceMemoryNeed device_memory_need(const Scene& scene,
                                                 const DeviceInfo& device) const = 0;
+    // Whether its frames can share their work among several devices (FrameScene::peers) with an
+    // image that does not depend on the split; a render on several devices refuses the others.
+    virtual bool splits_across_devices() const { return false; }
 };
 
 // A method as the registry lists it.

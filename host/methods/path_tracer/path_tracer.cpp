@@ -41,13 +41,14 @@ void check_film_size(int width, int height, const DeviceInfo& device) {
 
 PathTracer::PathTracer(const FrameScene& frame)
     : FrameBound(frame),
+      frame_(frame),
+      frame_peers_(frame.peers),
       kernel_(frame.context.kernel("path_tracer/path_tracer.cl", "path_trace_pass")) {}
 
-Image PathTracer::resolve(const Buffer<shared::float4>& film, int width, int height) const {
+Image PathTracer::resolve(std::vector<shared::float4> means, int width, int height) {
     // The sums become means over the pixel's finite samples (the beauty slot's w), and the sums
     // of squares the standard deviation of one sample, unbiased variance estimate (that of the
     // mean is stddev / sqrt(n)): unlike the mean's variance it keeps its precision in half floats.
-    std::vector<shared::float4> means = film.download();
     const size_t pixels = static_cast<size_t>(width) * height;
     for (size_t p = 0; p < pixels; ++p) {
         shared::float4* s = &means[RC_PT_FILM_SLOTS * p];
@@ -73,6 +74,18 @@ Image PathTracer::resolve(const Buffer<shared::float4>& film, int width, int hei
                         {"stddev", RC_PT_FILM_BEAUTY_SQUARED}});
 }
 
+shared::PathTracerParams PathTracer::pass_params(const PathTracerOptions& options, int width,
+                                                 int height) {
+    shared::PathTracerParams params{};
+    params.width = width;
+    params.height = height;
+    params.max_depth = options.max_depth;
+    params.rr_depth = options.rr_depth;
+    params.seed_lo = static_cast<unsigned>(options.seed);
+    params.seed_hi = static_cast<unsigned>(options.seed >> 32);
+    return params;
+}
+
 Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stats) {
     const int width = options.width > 0 ? options.width : scene_.camera.width;
     const int height = options.height > 0 ? options.height : scene_.camera.height;
@@ -81,18 +94,15 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
     if (options.spp < 1 && options.time_limit <= 0.0) {
         throw Error("samples per pixel must be at least 1", kExitUsage);
     }
+    if (frame_peers_ != nullptr && !frame_peers_->empty()) {
+        return render_split(options, width, height, stats);
+    }
     const auto count = static_cast<size_t>(pixels);
     Buffer<shared::float4> film(context_, count * RC_PT_FILM_SLOTS, "film");
     film.fill_zero();
     Buffer<unsigned> counters(context_, 3, "path_counters");
 
-    shared::PathTracerParams params{};
-    params.width = width;
-    params.height = height;
-    params.max_depth = options.max_depth;
-    params.rr_depth = options.rr_depth;
-    params.seed_lo = static_cast<unsigned>(options.seed);
-    params.seed_hi = static_cast<unsigned>(options.seed >> 32);
+    shared::PathTracerParams params = pass_params(options, width, height);
     const shared::CameraParams camera = camera_params(scene_.camera, width, height);
 
     PathTracerStats result;
@@ -116,7 +126,7 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
         }
         result.spp = pass + 1;
         if (options.on_power_of_two && (result.spp & (result.spp - 1)) == 0) {
-            options.on_power_of_two(result.spp, resolve(film, width, height));
+            options.on_power_of_two(result.spp, resolve(film.download(), width, height));
         }
         if (options.on_progress) {
             options.on_progress(options.time_limit > 0.0
@@ -129,7 +139,7 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
     if (stats != nullptr) {
         *stats = result;
     }
-    return resolve(film, width, height);
+    return resolve(film.download(), width, height);
 }
 
 }  // namespace rc

@@ -4,9 +4,12 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "image/image.h"
 #include "methods/frame_scene.h"
+#include "shared/types.h"
 
 namespace rc {
 
@@ -24,7 +27,17 @@ struct PathTracerOptions {
     std::function<void(double fraction, int spp)> on_progress;
 };
 
+// One device's share of a render on several devices (PathTracer::render with peers).
+struct PathTracerDeviceShare {
+    std::string device;  // "P:D name"
+    size_t chunks = 0;   // pixel chunks it rendered
+    size_t pixels = 0;
+    uint64_t rays = 0;
+    double seconds = 0.0;  // its thread's time from start to its last chunk
+};
+
 struct PathTracerStats {
+    std::vector<PathTracerDeviceShare> devices;  // with peers: per device, the render's first
     int spp = 0;
     double seconds = 0.0;
     uint64_t rays = 0;
@@ -44,11 +57,24 @@ class PathTracer : private FrameBound {
    public:
     explicit PathTracer(const FrameScene& frame);
 
+    // With the frame's peers (several devices), the pixels are split into chunks of rows that
+    // the devices take in turn as they finish the last (faster devices take more); a device
+    // renders every pass of a chunk, so a pixel's sum of samples is the one device's in pass
+    // order: the image is bitwise the one-device image on identical devices, whatever the split.
+    // --time and intermediate images (on_power_of_two) need one device (Error, exit status 2).
     Image render(const PathTracerOptions& options, PathTracerStats* stats = nullptr);
 
    private:
-    Image resolve(const Buffer<shared::float4>& film, int width, int height) const;
+    // The kernel's parameters but the pass (params.sample).
+    static shared::PathTracerParams pass_params(const PathTracerOptions& options, int width,
+                                                int height);
+    // The film's sums as the image of means and standard deviations.
+    static Image resolve(std::vector<shared::float4> sums, int width, int height);
+    Image render_split(const PathTracerOptions& options, int width, int height,
+                       PathTracerStats* stats);
 
+    FrameScene frame_;
+    const std::vector<FrameScene>* frame_peers_;
     Kernel kernel_;
 };
 

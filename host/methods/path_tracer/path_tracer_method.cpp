@@ -41,8 +41,21 @@ class PathTracerMethod final : public Method {
         result.nonfinite_samples = stats.nonfinite_samples;
         result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
         result.stats = {{"spp", stats.spp}, {"rays", stats.rays}, {"seconds", stats.seconds}};
+        if (!stats.devices.empty()) {
+            nlohmann::json devices = nlohmann::json::array();
+            for (const PathTracerDeviceShare& d : stats.devices) {
+                devices.push_back({{"device", d.device},
+                                   {"chunks", d.chunks},
+                                   {"pixels", d.pixels},
+                                   {"rays", d.rays},
+                                   {"seconds", d.seconds}});
+            }
+            result.stats["devices"] = devices;
+        }
         return result;
     }
+
+    bool splits_across_devices() const override { return true; }
 
     std::vector<ProgramRequest> programs() const override {
         return {{"path_tracer/path_tracer.cl", ""}};

@@ -1,0 +1,45 @@
+#include "app/render_devices.h"
+
+#include "device/device_list.h"
+#include "util/error.h"
+
+namespace rc {
+
+std::vector<std::unique_ptr<Context>> open_render_devices(const ContextOptions& options,
+                                                          const Method& method,
+                                                          const std::string& name) {
+    const std::vector<DeviceInfo> devices = select_devices(list_devices(), options.device_spec);
+    if (devices.size() > 1 && !method.splits_across_devices()) {
+        throw Error("--device names " + std::to_string(devices.size()) + " devices; --method " +
+                        name + " renders on one (pt splits its pixels across devices)",
+                    kExitUsage);
+    }
+    std::vector<std::unique_ptr<Context>> contexts;
+    for (const DeviceInfo& device : devices) {
+        ContextOptions one = options;
+        one.device_spec = devices.size() > 1 ? device.spec() : options.device_spec;
+        contexts.push_back(std::make_unique<Context>(one));
+        contexts.back()->prebuild(method.programs());  // all at once, in the background
+    }
+    return contexts;
+}
+
+PeerFrames::PeerFrames(const std::vector<std::unique_ptr<Context>>& contexts, const Scene& scene,
+                       const Bvh& bvh, int frame) {
+    for (size_t i = 1; i < contexts.size(); ++i) {
+        Context& context = *contexts[i];
+        const Bvh* own = &bvh;
+        if (context.bvh_layout() != contexts[0]->bvh_layout()) {
+            bvhs_.push_back(std::make_unique<Bvh>(build_bvh(scene.mesh, context.bvh_layout())));
+            own = bvhs_.back().get();
+        }
+        device_bvhs_.push_back(std::make_unique<DeviceBvh>(context, *own));
+        device_scenes_.push_back(std::make_unique<DeviceScene>(context, scene));
+    }
+    for (size_t i = 1; i < contexts.size(); ++i) {
+        frames_.push_back(
+            {*contexts[i], scene, *device_bvhs_[i - 1], *device_scenes_[i - 1], frame, nullptr});
+    }
+}
+
+}  // namespace rc
