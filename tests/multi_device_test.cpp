@@ -1,7 +1,8 @@
 // Rendering on several devices (issue 14; `--device all`, `--device P:D,P:D`): with PoCL
 // exposing two CPU devices (POCL_DEVICES="pthread pthread"), the path tracer's image is bitwise
 // the single-device image whatever the devices' order, chunking and work-group size, both devices
-// render a share that adds up to the image (stats); methods that render on one device, a device
+// render a share that adds up to the image (stats); so are the grid methods' images, their
+// photons shared; methods that render on one device, a device
 // named twice, an empty entry, --time and intermediate images are refused with exit status 2 and
 // no output; a device that fails mid-render stops the render with one line naming that device and
 // the call, and no output file. Skipped where PoCL does not give two devices.
@@ -81,6 +82,32 @@ TEST(MultiDevice, PathTracerImageIsTheOneDeviceImageWhateverTheSplit) {
             pixels += d.at("pixels").get<size_t>();
         }
         EXPECT_EQ(pixels, 40u * 36u) << name;
+    }
+}
+
+// The irradiance vector grid's photons shared by the two devices: the grid's fixed-point sums are
+// added exactly, so `ivg` and `ivg-gather` images are bitwise the one-device images, and both
+// devices traced photons that add up to the grid's.
+TEST(MultiDevice, GridMethodsImageIsTheOneDeviceImage) {
+    if (!two_devices()) {
+        GTEST_SKIP() << "PoCL does not expose two devices here";
+    }
+    const auto dir = test::scratch_dir("multi_device_ivg");
+    for (const std::string method : {"ivg", "ivg-gather"}) {
+        render(dir, method + "_one", {"--method", method, "--device", "0:0"});
+        const nlohmann::json stats =
+            render(dir, method + "_two", {"--method", method, "--device", "0:1,0:0"});
+        EXPECT_TRUE(same_pixels(read_image(dir / (method + "_two.exr")),
+                                read_image(dir / (method + "_one.exr"))))
+            << method;
+        const nlohmann::json& grid = stats.at("grid");
+        ASSERT_EQ(grid.at("devices").size(), 2u) << method;
+        uint64_t photons = 0;
+        for (const nlohmann::json& d : grid.at("devices")) {
+            EXPECT_GT(d.at("batches").get<size_t>(), 0u) << method;
+            photons += d.at("photons").get<uint64_t>();
+        }
+        EXPECT_EQ(photons, grid.at("photons").get<uint64_t>()) << method;
     }
 }
 

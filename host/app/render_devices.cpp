@@ -11,7 +11,8 @@ std::vector<std::unique_ptr<Context>> open_render_devices(const ContextOptions& 
     const std::vector<DeviceInfo> devices = select_devices(list_devices(), options.device_spec);
     if (devices.size() > 1 && !method.splits_across_devices()) {
         throw Error("--device names " + std::to_string(devices.size()) + " devices; --method " +
-                        name + " renders on one (pt splits its pixels across devices)",
+                        name +
+                        " renders on one (pt and the grid methods split their work across devices)",
                     kExitUsage);
     }
     std::vector<std::unique_ptr<Context>> contexts;

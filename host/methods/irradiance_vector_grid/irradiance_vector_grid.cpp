@@ -107,6 +107,7 @@ std::array<int, 3> auto_grid_cells(glm::vec3 extent) {
 
 IrradianceVectorGrid::IrradianceVectorGrid(const FrameScene& frame)
     : FrameBound(frame),
+      frame_(frame),
       trace_kernel_(frame.context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl",
                                          "ivg_trace_photons")),
       deposit_kernel_(frame.context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl",
@@ -203,6 +204,26 @@ shared::IvgParams IrradianceVectorGrid::layout(const IvgOptions& options) const 
     return p;
 }
 
+void IrradianceVectorGrid::trace_photons(uint64_t photons, Buffer<int64_t>& accum,
+                                         IvgStats* stats) {
+    if (frame_.peers != nullptr && !frame_.peers->empty()) {
+        trace_photons_split(photons, accum, stats);
+        return;
+    }
+    Buffer<unsigned> counters(context_, 2, "ivg_counters");
+    const SceneArguments scene(bvh_, device_scene_);
+    for (uint64_t first = 0; first < photons; first += kPhotonsPerLaunch) {
+        shared::IvgParams launch = params_;
+        launch.first_photon = static_cast<unsigned>(first);
+        counters.fill_zero();
+        context_.launch(trace_kernel_, std::min(kPhotonsPerLaunch, photons - first), launch, scene,
+                        accum, counters);
+        const std::vector<unsigned> counted = counters.download();
+        stats->crossings += counted[0];
+        stats->rays += counted[1];
+    }
+}
+
 void IrradianceVectorGrid::build(const IvgOptions& options, IvgStats* stats) {
     IvgStats s;
     params_ = layout(options);
@@ -234,18 +255,7 @@ void IrradianceVectorGrid::build(const IvgOptions& options, IvgStats* stats) {
         auto start = SteadyClock::now();
         Buffer<int64_t> accum(context_, vertices * RC_IVG_VALUES_PER_VERTEX, "ivg_accum");
         accum.fill_zero();
-        Buffer<unsigned> counters(context_, 2, "ivg_counters");
-        const SceneArguments scene(bvh_, device_scene_);
-        for (uint64_t first = 0; first < photons; first += kPhotonsPerLaunch) {
-            shared::IvgParams launch = params_;
-            launch.first_photon = static_cast<unsigned>(first);
-            counters.fill_zero();
-            context_.launch(trace_kernel_, std::min(kPhotonsPerLaunch, photons - first), launch,
-                            scene, accum, counters);
-            const std::vector<unsigned> counted = counters.download();
-            s.crossings += counted[0];
-            s.rays += counted[1];
-        }
+        trace_photons(photons, accum, &s);
         s.photons = photons;
         context_.finish();
         s.trace_seconds = seconds_since(start);

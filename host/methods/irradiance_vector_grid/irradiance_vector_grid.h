@@ -37,7 +37,16 @@ struct IvgOptions {
 // "NxMxK" or "auto"; Error (exit status 2) naming --grid otherwise.
 std::array<int, 3> parse_grid_resolution(const std::string& text);
 
+// One device's share of the photons when the grid is traced on several devices.
+struct IvgDeviceShare {
+    std::string device;  // "P:D name"
+    size_t batches = 0;
+    uint64_t photons = 0;
+    double seconds = 0.0;
+};
+
 struct IvgStats {
+    std::vector<IvgDeviceShare> devices;  // with the frame's peers: per device, the first first
     std::array<int, 3> cells{0, 0, 0};
     uint64_t photons = 0;
     uint64_t crossings = 0;
@@ -105,6 +114,13 @@ class IrradianceVectorGrid : public RadianceSource, private FrameBound {
 
    private:
     void upload_values(const std::vector<float>& values);
+    // Photons 0 .. photons - 1 of params_ traced into `accum` (fixed-point sums, zeroed): on the
+    // frame's device, or in batches shared with its peers (ivg_photon_split.cpp), each device
+    // into its own sums, added on the host (integer sums: bitwise the same in any order).
+    void trace_photons(uint64_t photons, Buffer<int64_t>& accum, IvgStats* stats);
+    void trace_photons_split(uint64_t photons, Buffer<int64_t>& accum, IvgStats* stats);
+
+    FrameScene frame_;
 
     Kernel trace_kernel_;
     Kernel deposit_kernel_;

@@ -51,6 +51,10 @@ class GridRendering final : public Method {
         return {{"irradiance_vector_grid/irradiance_vector_grid.cl", ""}};
     }
 
+    // The grid's photons are shared among the devices (ivg_photon_split.cpp); the shading pass
+    // runs on the first.
+    bool splits_across_devices() const override { return true; }
+
     DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
         const IvgDeviceNeed grid = ivg_device_need(grid_options_, scene);
         DeviceMemoryNeed shading = grid.built;

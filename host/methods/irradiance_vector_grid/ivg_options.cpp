@@ -84,7 +84,7 @@ std::unique_ptr<IrradianceVectorGrid> build_frame_grid(const FrameScene& frame,
 
 nlohmann::json ivg_stats_json(const IvgStats& stats) {
     const double seconds = stats.trace_seconds;
-    return {
+    nlohmann::json json = {
         {"cells", stats.cells},
         {"photons", stats.photons},
         {"loaded", stats.loaded},
@@ -93,6 +93,17 @@ nlohmann::json ivg_stats_json(const IvgStats& stats) {
         {"photons_per_second", seconds > 0.0 ? static_cast<double>(stats.photons) / seconds : 0.0},
         {"grid_bytes", stats.grid_bytes},
         {"seconds", {{"photons", stats.trace_seconds}, {"normalize", stats.normalize_seconds}}}};
+    if (!stats.devices.empty()) {
+        nlohmann::json devices = nlohmann::json::array();
+        for (const IvgDeviceShare& d : stats.devices) {
+            devices.push_back({{"device", d.device},
+                               {"batches", d.batches},
+                               {"photons", d.photons},
+                               {"seconds", d.seconds}});
+        }
+        json["devices"] = devices;
+    }
+    return json;
 }
 
 }  // namespace rc

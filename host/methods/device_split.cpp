@@ -1,0 +1,82 @@
+#include "methods/device_split.h"
+
+#include <chrono>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "util/error.h"
+#include "util/timing.h"
+
+namespace rc {
+namespace {
+
+// What the device threads share: the next item, how many are done, and the first failure.
+struct SplitQueue {
+    size_t count = 0;
+    std::atomic<size_t> next{0};
+    std::atomic<size_t> done{0};
+    std::atomic<bool> failed{false};
+    std::mutex mutex;
+    std::string error;
+    int exit_code = kExitFailure;
+};
+
+void run_device(size_t index, const Context& context, SplitQueue& queue,
+                const std::function<void(size_t, size_t, const std::atomic<bool>&)>& work,
+                std::vector<size_t>& items, double& seconds) {
+    const auto start = SteadyClock::now();
+    try {
+        for (size_t item = index; item < queue.count && !queue.failed; item = queue.next++) {
+            work(index, item, queue.failed);
+            if (queue.failed) {
+                break;
+            }
+            items.push_back(item);
+            ++queue.done;
+        }
+    } catch (const std::exception& e) {
+        const std::lock_guard<std::mutex> lock(queue.mutex);
+        if (!queue.failed.exchange(true)) {
+            queue.error = "device " + context.device().spec() + " (" + context.device().name +
+                          "): " + e.what();
+            const auto* error = dynamic_cast<const Error*>(&e);
+            queue.exit_code = error != nullptr ? error->exit_code() : kExitFailure;
+        }
+    }
+    seconds = seconds_since(start);
+}
+
+}  // namespace
+
+DeviceSplit run_device_split(
+    const std::vector<Context*>& devices, size_t count,
+    const std::function<void(size_t device, size_t item, const std::atomic<bool>& stop)>& work,
+    const std::function<void(double fraction)>& progress) {
+    SplitQueue queue;
+    queue.count = count;
+    queue.next = devices.size();  // items 0 .. devices - 1 are the devices' first
+    DeviceSplit split;
+    split.items.resize(devices.size());
+    split.seconds.resize(devices.size());
+    std::vector<std::thread> threads;
+    for (size_t i = 0; i < devices.size(); ++i) {
+        threads.emplace_back(run_device, i, std::cref(*devices[i]), std::ref(queue),
+                             std::cref(work), std::ref(split.items[i]), std::ref(split.seconds[i]));
+    }
+    while (queue.done < count && !queue.failed) {
+        if (progress) {
+            progress(static_cast<double>(queue.done) / static_cast<double>(count));
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    for (std::thread& thread : threads) {
+        thread.join();
+    }
+    if (queue.failed) {
+        throw Error(queue.error, queue.exit_code);
+    }
+    return split;
+}
+
+}  // namespace rc
