@@ -205,12 +205,11 @@ shared::IvgParams IrradianceVectorGrid::layout(const IvgOptions& options) const 
 }
 
 void IrradianceVectorGrid::trace_photons(uint64_t photons, Buffer<int64_t>& accum,
-                                         IvgStats* stats) {
+                                         Buffer<unsigned>& counters, IvgStats* stats) {
     if (frame_.peers != nullptr && !frame_.peers->empty()) {
         trace_photons_split(photons, accum, stats);
         return;
     }
-    Buffer<unsigned> counters(context_, 2, "ivg_counters");
     const SceneArguments scene(bvh_, device_scene_);
     for (uint64_t first = 0; first < photons; first += kPhotonsPerLaunch) {
         shared::IvgParams launch = params_;
@@ -255,7 +254,8 @@ void IrradianceVectorGrid::build(const IvgOptions& options, IvgStats* stats) {
         auto start = SteadyClock::now();
         Buffer<int64_t> accum(context_, vertices * RC_IVG_VALUES_PER_VERTEX, "ivg_accum");
         accum.fill_zero();
-        trace_photons(photons, accum, &s);
+        Buffer<unsigned> counters(context_, 2, "ivg_counters");
+        trace_photons(photons, accum, counters, &s);
         s.photons = photons;
         context_.finish();
         s.trace_seconds = seconds_since(start);

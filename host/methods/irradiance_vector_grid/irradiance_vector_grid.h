@@ -114,10 +114,12 @@ class IrradianceVectorGrid : public RadianceSource, private FrameBound {
 
    private:
     void upload_values(const std::vector<float>& values);
-    // Photons 0 .. photons - 1 of params_ traced into `accum` (fixed-point sums, zeroed): on the
-    // frame's device, or in batches shared with its peers (ivg_photon_split.cpp), each device
-    // into its own sums, added on the host (integer sums: bitwise the same in any order).
-    void trace_photons(uint64_t photons, Buffer<int64_t>& accum, IvgStats* stats);
+    // Photons 0 .. photons - 1 of params_ traced into `accum` (fixed-point sums, zeroed; counters:
+    // the launches' two counters): on the frame's device, or in batches shared with its peers
+    // (ivg_photon_split.cpp), each device into its own sums, added on the host (integer sums:
+    // bitwise the same in any order).
+    void trace_photons(uint64_t photons, Buffer<int64_t>& accum, Buffer<unsigned>& counters,
+                       IvgStats* stats);
     void trace_photons_split(uint64_t photons, Buffer<int64_t>& accum, IvgStats* stats);
 
     FrameScene frame_;
