@@ -179,7 +179,10 @@ ParsedArguments parsed_arguments(const BoundCommand& bound,
     ParsedArguments arguments;
     for (const auto& [spec, option] : bound.options) {
         if (option->count() > 0) {
-            arguments.add(*spec, option->results());
+            // A flag has no value: one empty one per occurrence.
+            arguments.add(*spec, spec->value_name.empty()
+                                     ? std::vector<std::string>(option->count(), "")
+                                     : option->results());
         }
     }
     for (const std::string& word : bound.positionals) {
