@@ -12,8 +12,7 @@ std::vector<OptionSpec> irradiance_cache_option_specs() {
     std::vector<OptionSpec> specs = {
         OptionSpec{"--accuracy", "", "A",
                    "ic: interpolation accuracy a in (0, 1] (Radiance's -aa): a record serves "
-                   "points within "
-                   "a R (default 0.35)"}
+                   "points within a R (default 0.35)"}
             .numbers(1e-3, 1.0),
         OptionSpec{"--ic-rays", "", "N",
                    "ic: hemisphere rays per record (Radiance's -ad; default 1024)"}
