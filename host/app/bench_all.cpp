@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <functional>
-#include <iostream>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -268,51 +267,38 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
     return result;
 }
 
-}  // namespace
-
-int run_bench_all(const std::vector<std::string>& args) {
+std::vector<OptionSpec> bench_all_options() {
     std::vector<OptionSpec> specs = {
         {"--scene", "", "FILE", "scene (default scenes/cornell-box/scene.json)"},
-        {"--width", "", "N", "image width (default 512)"},
-        {"--height", "", "N", "image height (default 512)"},
-        {"--spp", "", "N", "timed path-tracing samples per pixel (default 4)"},
-        {"--repeat", "", "N", "timed repetitions per ray case, median reported (default 3)"},
-        {"--photons", "", "N", "photons traced into the irradiance vector grid (default 2^18)"},
+        OptionSpec{"--width", "", "N", "image width (default 512)"}.integers(1, 1 << 14),
+        OptionSpec{"--height", "", "N", "image height (default 512)"}.integers(1, 1 << 14),
+        OptionSpec{"--spp", "", "N", "timed path-tracing samples per pixel (default 4)"}.integers(
+            1, 1 << 16),
+        OptionSpec{"--repeat", "", "N",
+                   "timed repetitions per ray case, median reported (default 3)"}
+            .integers(1, 1000),
+        OptionSpec{"--photons", "", "N",
+                   "photons traced into the irradiance vector grid (default 2^18)"}
+            .integers(1, 1LL << 31),
         {"--json", "", "FILE", "also write the results as JSON"},
     };
     for (OptionSpec& spec : device_option_specs()) {
         specs.push_back(std::move(spec));
     }
-    const ParsedArguments arguments = parse_arguments("radcache bench all", args, specs);
-    if (arguments.has("--help")) {
-        std::cout << format_help(
-            "radcache bench all [options]",
-            "Every kernel family on every OpenCL device (or the one --device names), side by\n"
-            "side: traversal Mrays/s (coherent and incoherent, closest and any hit) with Embree's\n"
-            "rtcIntersect1/rtcOccluded1 on the same rays as the anchor, path samples/s, "
-            "irradiance\n"
-            "cache hemisphere samples/s and records/s, render-pass, splat and gather samples/s, "
-            "and "
-            "photons/s\n"
-            "into the irradiance vector grid, radiance caching's SH coefficients projected/s and "
-            "records\n"
-            "interpolated/s, SDRC's L-tree range queries/s and directions interpolated/s (on "
-            "glossy-box). Device\n"
-            "kernel time from profiling events; kernels are built and warmed up first.",
-            specs);
-        return 0;
-    }
+    return specs;
+}
+
+int bench_all(const ParsedArguments& arguments) {
     if (!arguments.positionals().empty()) {
         throw Error("unexpected argument '" + arguments.positionals()[0] + "'", kExitUsage);
     }
     const std::string scene_path =
         arguments.has("--scene") ? arguments.value("--scene") : shipped_scene("cornell-box");
-    const int width = static_cast<int>(arguments.integer("--width", 512, 1, 1 << 14));
-    const int height = static_cast<int>(arguments.integer("--height", 512, 1, 1 << 14));
-    const int spp = static_cast<int>(arguments.integer("--spp", 4, 1, 1 << 16));
-    const int repeats = static_cast<int>(arguments.integer("--repeat", 3, 1, 1000));
-    const uint64_t photons =
-        static_cast<uint64_t>(arguments.integer("--photons", 1 << 18, 1, 1LL << 31));
+    const int width = static_cast<int>(arguments.integer("--width", 512));
+    const int height = static_cast<int>(arguments.integer("--height", 512));
+    const int spp = static_cast<int>(arguments.integer("--spp", 4));
+    const int repeats = static_cast<int>(arguments.integer("--repeat", 3));
+    const uint64_t photons = static_cast<uint64_t>(arguments.integer("--photons", 1 << 18));
     const std::filesystem::path json_path = arguments.value("--json");
     if (!json_path.empty()) {
         check_writable_parent(json_path, "--json");
@@ -406,6 +392,31 @@ int run_bench_all(const std::vector<std::string>& args) {
     const bool any_failed = std::any_of(results.begin(), results.end(),
                                         [](const DeviceResult& r) { return !r.error.empty(); });
     return any_failed ? 1 : 0;
+}
+
+}  // namespace
+
+CommandSpec bench_all_command() {
+    return {
+        .name = "bench all",
+        .synopsis = "bench all",
+        .summary = "every kernel family on every device, side by side",
+        .usage = "radcache bench all [options]",
+        .description =
+            "Every kernel family on every OpenCL device (or the one --device names), side by\n"
+            "side: traversal Mrays/s (coherent and incoherent, closest and any hit) with Embree's\n"
+            "rtcIntersect1/rtcOccluded1 on the same rays as the anchor, path samples/s, "
+            "irradiance\n"
+            "cache hemisphere samples/s and records/s, render-pass, splat and gather samples/s, "
+            "and "
+            "photons/s\n"
+            "into the irradiance vector grid, radiance caching's SH coefficients projected/s and "
+            "records\n"
+            "interpolated/s, SDRC's L-tree range queries/s and directions interpolated/s (on "
+            "glossy-box). Device\n"
+            "kernel time from profiling events; kernels are built and warmed up first.",
+        .options = bench_all_options(),
+        .run = bench_all};
 }
 
 }  // namespace rc

@@ -2,13 +2,11 @@
 #include <unistd.h>
 
 #include <cstdlib>
-#include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
 #include "app/device_options.h"
 #include "device/embedded_sources.h"
-#include "util/cli.h"
 #include "util/error.h"
 #include "util/file_io.h"
 
@@ -40,25 +38,17 @@ double build_all(const ContextOptions& options, const std::vector<std::string>& 
     return total;
 }
 
-}  // namespace
-
-int run_bench_compile(const std::vector<std::string>& args) {
+std::vector<OptionSpec> bench_compile_options() {
     std::vector<OptionSpec> specs = {{"--json", "", "FILE", "also write the results as JSON"}};
     for (OptionSpec& spec : device_option_specs()) {
         if (spec.name == "--device" || spec.name == "--kernel-dir") {
             specs.push_back(std::move(spec));
         }
     }
-    const ParsedArguments arguments = parse_arguments("radcache bench compile", args, specs);
-    if (arguments.has("--help")) {
-        std::cout << format_help(
-            "radcache bench compile [options]",
-            "Builds every kernel program twice in fresh, empty caches: cold (compiled from\n"
-            "source; PoCL's own cache also empty) and warm (loaded from the binary cache the cold\n"
-            "build wrote).",
-            specs);
-        return 0;
-    }
+    return specs;
+}
+
+int bench_compile(const ParsedArguments& arguments) {
     // Fresh caches: ours, and PoCL's (read when the first OpenCL call initialises PoCL).
     char pattern[] = "/tmp/radcache-bench-compile-XXXXXX";
     const char* scratch = ::mkdtemp(pattern);
@@ -91,6 +81,22 @@ int run_bench_compile(const std::vector<std::string>& args) {
         write_file_atomically(arguments.value("--json"), report.dump(2) + "\n");
     }
     return 0;
+}
+
+}  // namespace
+
+CommandSpec bench_compile_command() {
+    return {
+        .name = "bench compile",
+        .synopsis = "bench compile",
+        .summary = "cold and warm kernel build times",
+        .usage = "radcache bench compile [options]",
+        .description =
+            "Builds every kernel program twice in fresh, empty caches: cold (compiled from\n"
+            "source; PoCL's own cache also empty) and warm (loaded from the binary cache the cold\n"
+            "build wrote).",
+        .options = bench_compile_options(),
+        .run = bench_compile};
 }
 
 }  // namespace rc

@@ -1,7 +1,6 @@
 // `radcache bench pt`: path-tracing throughput (path samples/s, Mrays/s) and its ratio to the
 // raw traversal throughput of the same device on the same scene, measured in the same run.
 #include <cstdio>
-#include <iostream>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -12,38 +11,32 @@
 #include "scene/camera.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
-#include "util/cli.h"
 #include "util/error.h"
 #include "util/file_io.h"
 
 namespace rc {
+namespace {
 
-int run_bench_pt(const std::vector<std::string>& args) {
+std::vector<OptionSpec> bench_pt_options() {
     std::vector<OptionSpec> specs = {
         {"--scene", "", "FILE", "scene (default scenes/cornell-box/scene.json)"},
-        {"--width", "", "N", "image width (default 512)"},
-        {"--height", "", "N", "image height (default 512)"},
-        {"--spp", "", "N", "timed samples per pixel (default 16)"},
+        OptionSpec{"--width", "", "N", "image width (default 512)"}.integers(1, 1 << 14),
+        OptionSpec{"--height", "", "N", "image height (default 512)"}.integers(1, 1 << 14),
+        OptionSpec{"--spp", "", "N", "timed samples per pixel (default 16)"}.integers(1, 1 << 16),
         {"--json", "", "FILE", "also write the results as JSON"},
     };
     for (OptionSpec& spec : device_option_specs()) {
         specs.push_back(std::move(spec));
     }
-    const ParsedArguments arguments = parse_arguments("radcache bench pt", args, specs);
-    if (arguments.has("--help")) {
-        std::cout << format_help(
-            "radcache bench pt [options]",
-            "Path-traces the scene and reports path samples/s and Mrays/s (device kernel time),\n"
-            "and the ratio of its ray throughput to raw traversal of incoherent rays on the same\n"
-            "device and scene (bench rays' incoherent_closest): what shading costs.",
-            specs);
-        return 0;
-    }
+    return specs;
+}
+
+int bench_pt(const ParsedArguments& arguments) {
     const std::string scene_path =
         arguments.has("--scene") ? arguments.value("--scene") : shipped_scene("cornell-box");
-    const int width = static_cast<int>(arguments.integer("--width", 512, 1, 1 << 14));
-    const int height = static_cast<int>(arguments.integer("--height", 512, 1, 1 << 14));
-    const int spp = static_cast<int>(arguments.integer("--spp", 16, 1, 1 << 16));
+    const int width = static_cast<int>(arguments.integer("--width", 512));
+    const int height = static_cast<int>(arguments.integer("--height", 512));
+    const int spp = static_cast<int>(arguments.integer("--spp", 16));
 
     Context context(context_options(arguments));
     const Scene scene = load_scene(scene_path);
@@ -103,6 +96,22 @@ int run_bench_pt(const std::vector<std::string>& args) {
         write_file_atomically(arguments.value("--json"), report.dump(2) + "\n");
     }
     return 0;
+}
+
+}  // namespace
+
+CommandSpec bench_pt_command() {
+    return {
+        .name = "bench pt",
+        .synopsis = "bench pt",
+        .summary = "path-tracing throughput",
+        .usage = "radcache bench pt [options]",
+        .description =
+            "Path-traces the scene and reports path samples/s and Mrays/s (device kernel time),\n"
+            "and the ratio of its ray throughput to raw traversal of incoherent rays on the same\n"
+            "device and scene (bench rays' incoherent_closest): what shading costs.",
+        .options = bench_pt_options(),
+        .run = bench_pt};
 }
 
 }  // namespace rc

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <thread>
@@ -20,7 +19,6 @@
 #include "scene/camera.h"
 #include "scene/generated_meshes.h"
 #include "scene/scene_loader.h"
-#include "util/cli.h"
 #include "util/error.h"
 #include "util/file_io.h"
 #include "util/log.h"
@@ -38,11 +36,15 @@ std::vector<OptionSpec> bench_rays_specs() {
              std::string(kDenseSceneName) + ")",
          true},
         {"--json", "", "FILE", "also write the results as JSON"},
-        {"--width", "", "N", "camera rays across (default 1024)"},
-        {"--height", "", "N", "camera rays down (default: by the scene camera's aspect)"},
-        {"--repeat", "", "N", "timed repetitions per case, median reported (default 3)"},
-        {"--threads", "", "N", "Embree threads (default: the device's compute units)"},
-        {"--seed", "", "N", "seed of the bounce directions (default 1)"},
+        OptionSpec{"--width", "", "N", "camera rays across (default 1024)"}.integers(1, 1 << 14),
+        OptionSpec{"--height", "", "N", "camera rays down (default: by the scene camera's aspect)"}
+            .integers(1, 1 << 14),
+        OptionSpec{"--repeat", "", "N", "timed repetitions per case, median reported (default 3)"}
+            .integers(1, 1000),
+        OptionSpec{"--threads", "", "N", "Embree threads (default: the device's compute units)"}
+            .integers(1, 4096),
+        OptionSpec{"--seed", "", "N", "seed of the bounce directions (default 1)"}.integers(
+            0, 1LL << 62),
     };
     for (OptionSpec& spec : device_option_specs()) {
         specs.push_back(std::move(spec));
@@ -84,22 +86,7 @@ std::vector<BvhLayout> measured_layouts(const ContextOptions& options) {
     return {std::begin(kBvhLayouts), std::end(kBvhLayouts)};
 }
 
-}  // namespace
-
-int run_bench_rays(const std::vector<std::string>& args) {
-    const std::vector<OptionSpec> specs = bench_rays_specs();
-    const ParsedArguments arguments = parse_arguments("radcache bench rays", args, specs);
-    if (arguments.has("--help")) {
-        std::cout << format_help(
-            "radcache bench rays [options]",
-            "Measures closest-hit and any-hit throughput (Mrays/s) of the device traversal on\n"
-            "coherent (camera) and incoherent (diffuse bounce) rays, in each BVH layout (bvh4 and\n"
-            "wide; --bvh picks one), and Embree's rtcIntersect1 / rtcOccluded1 on the same rays\n"
-            "right after each; ratio = device / Embree per thread (device threads = compute\n"
-            "units). 'agree' is the fraction of rays with the same answer.",
-            specs);
-        return 0;
-    }
+int bench_rays(const ParsedArguments& arguments) {
     if (!arguments.positionals().empty()) {
         throw Error("unexpected argument '" + arguments.positionals()[0] + "'", kExitUsage);
     }
@@ -108,9 +95,9 @@ int run_bench_rays(const std::vector<std::string>& args) {
         scenes = {shipped_scene("cornell-box"), kDenseSceneName};
     }
     const std::filesystem::path json_path = arguments.value("--json");
-    const int width = static_cast<int>(arguments.integer("--width", 1024, 1, 1 << 14));
-    const int repeats = static_cast<int>(arguments.integer("--repeat", 3, 1, 1000));
-    const uint64_t seed = static_cast<uint64_t>(arguments.integer("--seed", 1, 0, 1LL << 62));
+    const int width = static_cast<int>(arguments.integer("--width", 1024));
+    const int repeats = static_cast<int>(arguments.integer("--repeat", 3));
+    const uint64_t seed = static_cast<uint64_t>(arguments.integer("--seed", 1));
 
     std::vector<std::unique_ptr<Context>> contexts;
     for (BvhLayout layout : measured_layouts(context_options(arguments))) {
@@ -120,8 +107,8 @@ int run_bench_rays(const std::vector<std::string>& args) {
     }
     const DeviceInfo& device = contexts.front()->device();
     const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-    const unsigned threads = static_cast<unsigned>(arguments.integer(
-        "--threads", std::min(hardware, std::max(1u, device.compute_units)), 1, 4096));
+    const unsigned threads = static_cast<unsigned>(
+        arguments.integer("--threads", std::min(hardware, std::max(1u, device.compute_units))));
 
     nlohmann::json report = nlohmann::json::array();
     for (const std::string& scene_name : scenes) {
@@ -130,8 +117,7 @@ int run_bench_rays(const std::vector<std::string>& args) {
         const int height = static_cast<int>(arguments.integer(
             "--height",
             std::max(1, static_cast<int>(std::lround(static_cast<double>(width) *
-                                                     scene.camera.height / scene.camera.width))),
-            1, 1 << 14));
+                                                     scene.camera.height / scene.camera.width)))));
         std::printf("\nscene %s: %zu triangles, device %s (%u compute units), Embree %u threads\n",
                     scene_name.c_str(), scene.mesh.triangle_count(), device.name.c_str(),
                     device.compute_units, threads);
@@ -169,6 +155,24 @@ int run_bench_rays(const std::vector<std::string>& args) {
         write_file_atomically(json_path, report.dump(2) + "\n");
     }
     return 0;
+}
+
+}  // namespace
+
+CommandSpec bench_rays_command() {
+    return {
+        .name = "bench rays",
+        .synopsis = "bench rays",
+        .summary = "traversal throughput against Embree",
+        .usage = "radcache bench rays [options]",
+        .description =
+            "Measures closest-hit and any-hit throughput (Mrays/s) of the device traversal on\n"
+            "coherent (camera) and incoherent (diffuse bounce) rays, in each BVH layout (bvh4 and\n"
+            "wide; --bvh picks one), and Embree's rtcIntersect1 / rtcOccluded1 on the same rays\n"
+            "right after each; ratio = device / Embree per thread (device threads = compute\n"
+            "units). 'agree' is the fraction of rays with the same answer.",
+        .options = bench_rays_specs(),
+        .run = bench_rays};
 }
 
 }  // namespace rc

@@ -3,7 +3,6 @@
 // scene's materials in both bases (DESIGN.md §6.4, docs/radiance-caching.md).
 #include <cmath>
 #include <cstdio>
-#include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
@@ -11,7 +10,6 @@
 #include "methods/radiance_cache/brdf_tables.h"
 #include "scene/scene_loader.h"
 #include "shared/sh_rotation_zxz.h"
-#include "util/cli.h"
 #include "util/error.h"
 #include "util/file_io.h"
 
@@ -82,40 +80,36 @@ ShFigures measure(Context& context, int records, int m, int n) {
     return figures;
 }
 
-}  // namespace
-
-int run_bench_sh(const std::vector<std::string>& args) {
+std::vector<OptionSpec> bench_sh_options() {
     std::vector<OptionSpec> specs = {
         {"--scene", "", "FILE", "scene whose materials get BRDF tables (default glossy-box)"},
-        {"--records", "", "N", "records projected and vector triples rotated (default 4096)"},
-        {"--strata", "", "M", "polar strata M of a record's hemisphere; N = 4 M (default 16)"},
-        {"--max-error", "", "E", "largest BRDF representation error (default 0.1)"},
-        {"--resolution", "", "N", "BRDF table texels per side (default 32)"},
+        OptionSpec{"--records", "", "N",
+                   "records projected and vector triples rotated (default 4096)"}
+            .integers(1, 1 << 20),
+        OptionSpec{"--strata", "", "M",
+                   "polar strata M of a record's hemisphere; N = 4 M (default 16)"}
+            .integers(1, 256),
+        OptionSpec{"--max-error", "", "E", "largest BRDF representation error (default 0.1)"}
+            .numbers(1e-6, 0.999),
+        OptionSpec{"--resolution", "", "N", "BRDF table texels per side (default 32)"}.integers(
+            2, 256),
         {"--json", "", "FILE", "also write the results as JSON"},
     };
     for (OptionSpec& spec : device_option_specs()) {
         specs.push_back(std::move(spec));
     }
-    const ParsedArguments arguments = parse_arguments("radcache bench sh", args, specs);
-    if (arguments.has("--help")) {
-        std::cout << format_help(
-            "radcache bench sh [options]",
-            "Radiance caching's spherical harmonics at order 10 on one device (kernel time):\n"
-            "coefficients projected/s from stratified hemisphere samples, r, g, b vector triples\n"
-            "rotated/s (Ivanic-Ruedenberg and zxzxz), and the BRDF tables of the scene's "
-            "materials: build\n"
-            "time and each material's adaptive order in SH and in HSH.",
-            specs);
-        return 0;
-    }
+    return specs;
+}
+
+int bench_sh(const ParsedArguments& arguments) {
     const std::string scene_path =
         arguments.has("--scene") ? arguments.value("--scene") : shipped_scene("glossy-box");
-    const int records = static_cast<int>(arguments.integer("--records", 4096, 1, 1 << 20));
-    const int m = static_cast<int>(arguments.integer("--strata", 16, 1, 256));
+    const int records = static_cast<int>(arguments.integer("--records", 4096));
+    const int m = static_cast<int>(arguments.integer("--strata", 16));
     BrdfTableOptions table_options;
-    table_options.max_error = arguments.number("--max-error", table_options.max_error, 1e-6, 0.999);
+    table_options.max_error = arguments.number("--max-error", table_options.max_error);
     table_options.resolution =
-        static_cast<int>(arguments.integer("--resolution", table_options.resolution, 2, 256));
+        static_cast<int>(arguments.integer("--resolution", table_options.resolution));
 
     Context context(context_options(arguments));
     const Scene scene = load_scene(scene_path);
@@ -171,6 +165,24 @@ int run_bench_sh(const std::vector<std::string>& args) {
         write_file_atomically(arguments.value("--json"), report.dump(2) + "\n");
     }
     return 0;
+}
+
+}  // namespace
+
+CommandSpec bench_sh_command() {
+    return {
+        .name = "bench sh",
+        .synopsis = "bench sh",
+        .summary = "radiance caching's spherical harmonics: projection, rotation, BRDF tables",
+        .usage = "radcache bench sh [options]",
+        .description =
+            "Radiance caching's spherical harmonics at order 10 on one device (kernel time):\n"
+            "coefficients projected/s from stratified hemisphere samples, r, g, b vector triples\n"
+            "rotated/s (Ivanic-Ruedenberg and zxzxz), and the BRDF tables of the scene's "
+            "materials: build\n"
+            "time and each material's adaptive order in SH and in HSH.",
+        .options = bench_sh_options(),
+        .run = bench_sh};
 }
 
 }  // namespace rc

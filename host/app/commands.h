@@ -1,23 +1,30 @@
-// The subcommands of `radcache`. Each takes the words after its name and returns the exit
-// status; errors are thrown as rc::Error.
+// The commands of `radcache` (app/command_line.h): each declares its usage, help and options
+// and runs on the checked arguments; errors are thrown as rc::Error.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "app/command_line.h"
+
 namespace rc {
 
-int run_devices_command(const std::vector<std::string>& args);
+// The whole command line: every command below, in the order `radcache --help` lists them.
+CommandLine radcache_command_line();
+
+// `radcache render ARGS...` in this process, as main() runs it: the exit status, or an Error.
 int run_render_command(const std::vector<std::string>& args);
-int run_compare_command(const std::vector<std::string>& args);
-int run_warmup_command(const std::vector<std::string>& args);
-int run_convert_command(const std::vector<std::string>& args);
-int run_bench_command(const std::vector<std::string>& args);
-int run_bench_all(const std::vector<std::string>& args);
-int run_bench_rays(const std::vector<std::string>& args);
-int run_bench_compile(const std::vector<std::string>& args);
-int run_bench_pt(const std::vector<std::string>& args);
-int run_bench_sh(const std::vector<std::string>& args);
+
+CommandSpec devices_command();
+CommandSpec render_command();
+CommandSpec compare_command();
+CommandSpec convert_command();
+CommandSpec warmup_command();
+CommandSpec bench_all_command();
+CommandSpec bench_rays_command();
+CommandSpec bench_pt_command();
+CommandSpec bench_sh_command();
+CommandSpec bench_compile_command();
 
 // scenes/<name>/scene.json of the working directory, else of the source tree radcache was built
 // from; Error (exit status 2) naming --scene when neither exists.

@@ -10,7 +10,6 @@
 #include "image/image.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
-#include "util/cli.h"
 #include "util/error.h"
 #include "util/file_io.h"
 
@@ -116,10 +115,8 @@ int compare_one(const ParsedArguments& arguments) {
     return 0;
 }
 
-}  // namespace
-
-int run_compare_command(const std::vector<std::string>& args) {
-    const std::vector<OptionSpec> specs = {
+std::vector<OptionSpec> compare_options() {
+    std::vector<OptionSpec> specs = {
         {"--aov", "", "NAME", "layer to compare (default beauty: the R, G, B channels)"},
         {"--json", "", "FILE", "also write the figures as JSON"},
         {"--error-image", "", "FILE",
@@ -133,38 +130,19 @@ int run_compare_command(const std::vector<std::string>& args) {
         {"--allow-nan", "", "",
          "accept NaN or infinite pixels: the figures are over the pixels finite in both images "
          "(without it such pixels are counted and the command fails)"},
-        {"--reference-spp", "", "N",
-         "samples per pixel of REF, for the relMSE net of its noise (default: `spp` of "
-         "REF's .stats.json or .json beside it)"},
+        OptionSpec{"--reference-spp", "", "N",
+                   "samples per pixel of REF, for the relMSE net of its noise (default: `spp` of "
+                   "REF's .stats.json or .json beside it)"}
+            .integers(1, std::numeric_limits<long long>::max()),
         {"--frames", "", "A:B",
          "compare frames A..B of sequences: TEST and REF (and --mask, if it has one) are names "
          "with #### for the frame number, as render -o writes them; adds the temporal error of "
          "every pair of consecutive frames (flicker)"},
     };
-    const ParsedArguments arguments = parse_arguments("radcache compare", args, specs);
-    if (arguments.has("--help")) {
-        std::cout << format_help(
-            "radcache compare TEST REF [options]\n       radcache compare "
-            "--frames A:B TEST#### REF#### [options]",
-            "Error of TEST against REF over one layer: RMSE, relMSE "
-            "((v-r)^2/(r^2+0.01) averaged over pixels and channels), PSNR "
-            "(peak 1), per-channel means and the largest difference. Where "
-            "REF has a stddev layer (per-sample standard deviation) and its "
-            "spp is known, also relMSE net of REF's noise: relMSE minus the "
-            "mean of (stddev^2/spp)/(r^2+0.01), which may dip below 0. The "
-            "error image maps log10 of a pixel's relMSE from -5 (black) "
-            "through blue, magenta, red and yellow to 0 (white). With "
-            "--frames: those figures for every frame, and for every frame f "
-            "after A the temporal error, the mean over pixels and channels "
-            "of ((v_f-v_f-1)-(r_f-r_f-1))^2/(r_f^2+0.01), net of the "
-            "references' noise (both frames' stddev^2/spp over "
-            "r_f^2+0.01) where known; and their means over the sequence "
-            "(docs/path-tracer.md, \"Flicker\"). A REF at k times TEST's "
-            "resolution on both axes is box-filtered k x k to TEST's first "
-            "(its stddev as the root mean square, its spp times k^2).",
-            specs);
-        return 0;
-    }
+    return specs;
+}
+
+int compare(const ParsedArguments& arguments) {
     if (arguments.positionals().size() != 2) {
         throw Error("radcache compare needs TEST and REF images (see radcache compare --help)",
                     kExitUsage);
@@ -173,6 +151,36 @@ int run_compare_command(const std::vector<std::string>& args) {
         throw Error("--mask-aov needs --mask FILE", kExitUsage);
     }
     return arguments.has("--frames") ? compare_frames(arguments) : compare_one(arguments);
+}
+
+}  // namespace
+
+CommandSpec compare_command() {
+    return {.name = "compare",
+            .synopsis = "compare TEST REF",
+            .summary = "an image's error against a reference",
+            .usage =
+                "radcache compare TEST REF [options]\n       radcache compare "
+                "--frames A:B TEST#### REF#### [options]",
+            .description =
+                "Error of TEST against REF over one layer: RMSE, relMSE "
+                "((v-r)^2/(r^2+0.01) averaged over pixels and channels), PSNR "
+                "(peak 1), per-channel means and the largest difference. Where "
+                "REF has a stddev layer (per-sample standard deviation) and its "
+                "spp is known, also relMSE net of REF's noise: relMSE minus the "
+                "mean of (stddev^2/spp)/(r^2+0.01), which may dip below 0. The "
+                "error image maps log10 of a pixel's relMSE from -5 (black) "
+                "through blue, magenta, red and yellow to 0 (white). With "
+                "--frames: those figures for every frame, and for every frame f "
+                "after A the temporal error, the mean over pixels and channels "
+                "of ((v_f-v_f-1)-(r_f-r_f-1))^2/(r_f^2+0.01), net of the "
+                "references' noise (both frames' stddev^2/spp over "
+                "r_f^2+0.01) where known; and their means over the sequence "
+                "(docs/path-tracer.md, \"Flicker\"). A REF at k times TEST's "
+                "resolution on both axes is box-filtered k x k to TEST's first "
+                "(its stddev as the root mean square, its spp times k^2).",
+            .options = compare_options(),
+            .run = compare};
 }
 
 }  // namespace rc

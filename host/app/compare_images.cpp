@@ -56,8 +56,7 @@ ReferenceNoiseSource find_reference_spp(const ParsedArguments& arguments,
                                         const std::filesystem::path& reference_path) {
     ReferenceNoiseSource source;
     if (arguments.has("--reference-spp")) {
-        source.spp = static_cast<double>(
-            arguments.integer("--reference-spp", 0, 1, std::numeric_limits<long long>::max()));
+        source.spp = static_cast<double>(arguments.integer("--reference-spp", 0));
         source.from = "--reference-spp";
         return source;
     }

@@ -1,33 +1,18 @@
 // `radcache convert IN OUT.json`: reads a glTF 2.0 scene and writes it in
 // radcache's scene format (scene/scene_writer.h), so that the user can edit it; rendering OUT.json
 // gives the image of rendering IN.
-#include <iostream>
-
 #include "app/commands.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_writer.h"
-#include "util/cli.h"
 #include "util/error.h"
 #include "util/file_io.h"
 #include "util/log.h"
 
 namespace rc {
+namespace {
 
-int run_convert_command(const std::vector<std::string>& args) {
-    const std::vector<OptionSpec> specs = {
-        {"--camera", "", "NAME", "glTF scenes: the camera of that name (default: the first)"},
-        {"--quiet", "-q", "", "print nothing but errors"},
-    };
-    const ParsedArguments arguments = parse_arguments("radcache convert", args, specs);
-    if (arguments.has("--help")) {
-        std::cout << format_help("radcache convert IN OUT.json [options]",
-                                 "Writes the glTF 2.0 scene IN (.gltf or .glb) in radcache's scene "
-                                 "format: OUT.json, its meshes as OBJ files in OUT_meshes/ and "
-                                 "embedded textures in OUT_textures/.",
-                                 specs);
-        return 0;
-    }
+int convert(const ParsedArguments& arguments) {
     if (arguments.positionals().size() != 2) {
         throw Error("radcache convert needs IN and OUT.json (see radcache convert --help)",
                     kExitUsage);
@@ -47,6 +32,23 @@ int run_convert_command(const std::vector<std::string>& args) {
     log_note("wrote " + out.string() + " (" + std::to_string(scene.shapes.size()) + " shapes, " +
              std::to_string(scene.materials.size()) + " materials)");
     return 0;
+}
+
+}  // namespace
+
+CommandSpec convert_command() {
+    return {.name = "convert",
+            .synopsis = "convert IN OUT.json",
+            .summary = "a glTF scene in radcache's scene format",
+            .usage = "radcache convert IN OUT.json [options]",
+            .description =
+                "Writes the glTF 2.0 scene IN (.gltf or .glb) in radcache's scene "
+                "format: OUT.json, its meshes as OBJ files in OUT_meshes/ and "
+                "embedded textures in OUT_textures/.",
+            .options = {{"--camera", "", "NAME",
+                         "glTF scenes: the camera of that name (default: the first)"},
+                        {"--quiet", "-q", "", "print nothing but errors"}},
+            .run = convert};
 }
 
 }  // namespace rc

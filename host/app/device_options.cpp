@@ -13,11 +13,15 @@ std::vector<OptionSpec> device_option_specs() {
          "read kernel sources from DIR instead of the embedded copies ($RADCACHE_KERNEL_DIR)"},
         {"--dump-kernels", "", "DIR", "write the expanded kernel sources to DIR"},
         {"--no-kernel-cache", "", "", "do not read or write the kernel binary cache"},
-        {"--local-size", "", "N", "work-group size of every launch (default: per kernel)"},
-        {"--max-chunk", "", "N", "largest number of work items in one launch (default 2^20)"},
-        {"--device-memory", "", "MIB",
-         "the most device memory a run may hold in buffers (default: the device's global "
-         "memory); a run that needs more is refused with the figure"},
+        OptionSpec{"--local-size", "", "N", "work-group size of every launch (default: per kernel)"}
+            .integers(1, 1024),
+        OptionSpec{"--max-chunk", "", "N",
+                   "largest number of work items in one launch (default 2^20)"}
+            .integers(1, 1LL << 31),
+        OptionSpec{"--device-memory", "", "MIB",
+                   "the most device memory a run may hold in buffers (default: the device's "
+                   "global memory); a run that needs more is refused with the figure"}
+            .integers(1, 1LL << 40),
         {"--bvh", "", "LAYOUT",
          "BVH layout the traversal uses: wide (8-wide, compressed; the default) or bvh4 (4-wide, "
          "float boxes); docs/bvh.md"},
@@ -32,11 +36,9 @@ ContextOptions context_options(const ParsedArguments& arguments) {
     if (arguments.has("--no-kernel-cache")) {
         options.cache_dir.clear();
     }
-    options.local_size = static_cast<size_t>(arguments.integer("--local-size", 0, 1, 1024));
-    options.max_chunk_items =
-        static_cast<size_t>(arguments.integer("--max-chunk", 0, 1, 1LL << 31));
-    options.memory_limit =
-        static_cast<uint64_t>(arguments.integer("--device-memory", 0, 1, 1LL << 40)) << 20;
+    options.local_size = static_cast<size_t>(arguments.integer("--local-size", 0));
+    options.max_chunk_items = static_cast<size_t>(arguments.integer("--max-chunk", 0));
+    options.memory_limit = static_cast<uint64_t>(arguments.integer("--device-memory", 0)) << 20;
     if (arguments.has("--bvh")) {
         const std::string name = arguments.value("--bvh");
         options.bvh_layout = parse_bvh_layout(name);

@@ -2,7 +2,6 @@
 // (methods/registry.cpp), and renders frame after frame with it, writing one image per frame
 // and, when asked, the stats file.
 #include <algorithm>
-#include <iostream>
 
 #include "app/commands.h"
 #include "app/device_options.h"
@@ -125,17 +124,8 @@ void render_frame(const RenderJob& job, int frame,
     totals.add_frame(frame, output, result, context);
 }
 
-}  // namespace
-
-int run_render_command(const std::vector<std::string>& args) {
-    const std::vector<OptionSpec> specs = render_option_specs();
-    const ParsedArguments arguments = parse_arguments("radcache render", args, specs);
-    if (arguments.has("--help")) {
-        std::cout << format_help(
-            "radcache render SCENE [options]",
-            "Renders SCENE (a scene.json file, or a glTF 2.0 .gltf/.glb file) to an image.", specs);
-        return 0;
-    }
+// Renders the scene of `arguments` frame after frame; returns the exit status.
+int render(const ParsedArguments& arguments) {
     const auto total_start = SteadyClock::now();
     RenderJob job = read_render_job(arguments);
     set_quiet(arguments.has("--quiet"));
@@ -189,6 +179,19 @@ int run_render_command(const std::vector<std::string>& args) {
     }
     outputs.commit();
     return 0;
+}
+
+}  // namespace
+
+CommandSpec render_command() {
+    return {.name = "render",
+            .synopsis = "render SCENE",
+            .summary = "render a scene to an image",
+            .usage = "radcache render SCENE [options]",
+            .description =
+                "Renders SCENE (a scene.json file, or a glTF 2.0 .gltf/.glb file) to an image.",
+            .options = render_option_specs(),
+            .run = render};
 }
 
 }  // namespace rc

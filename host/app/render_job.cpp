@@ -22,25 +22,35 @@ std::vector<OptionSpec> render_option_specs() {
          "#### in the name becomes the frame number"},
         {"--method", "", "NAME",
          "rendering method: " + method_names() + " (default pt; each listed below)"},
-        {"--spp", "", "N", "samples per pixel (default: the scene's render.spp, else 16)"},
-        {"--seed", "", "N", "random seed (default: the scene's render.seed, else 0)"},
-        {"--width", "", "N", "image width in pixels (default: the scene camera's)"},
-        {"--height", "", "N", "image height in pixels (default: the scene camera's)"},
+        OptionSpec{"--spp", "", "N", "samples per pixel (default: the scene's render.spp, else 16)"}
+            .integers(1, 1 << 24),
+        OptionSpec{"--seed", "", "N", "random seed (default: the scene's render.seed, else 0)"}
+            .integers(0, 1LL << 62),
+        OptionSpec{"--width", "", "N", "image width in pixels (default: the scene camera's)"}
+            .integers(1, 1 << 16),
+        OptionSpec{"--height", "", "N", "image height in pixels (default: the scene camera's)"}
+            .integers(1, 1 << 16),
         {"--camera", "", "NAME",
          "glTF scenes: the camera of that name (or its node's name; default: the first)"},
-        {"--filter", "", "NAME",
-         "pixel reconstruction filter: box, tent or gaussian (default: the scene camera's, else "
-         "box)"},
-        {"--filter-radius", "", "R",
-         "the filter's radius in pixels, in (0, 16] (default: box 0.5, tent 1, gaussian 1.5)"},
-        {"--sampler", "", "NAME",
-         "where a pixel's camera samples fall: sobol (a randomly shifted Sobol' sequence per "
-         "pixel; edges converge at about 1/N) or independent (uniform random; the stddev layer "
-         "is then exact) (default: the scene camera's, else sobol)"},
+        OptionSpec{"--filter", "", "NAME",
+                   "pixel reconstruction filter: box, tent or gaussian (default: the scene "
+                   "camera's, else box)"}
+            .one_of({"box", "tent", "gaussian"}),
+        OptionSpec{"--filter-radius", "", "R",
+                   "the filter's radius in pixels, in (0, 16] (default: box 0.5, tent 1, "
+                   "gaussian 1.5)"}
+            .numbers(kMinFilterRadius, kMaxFilterRadius),
+        OptionSpec{"--sampler", "", "NAME",
+                   "where a pixel's camera samples fall: sobol (a randomly shifted Sobol' "
+                   "sequence per pixel; edges converge at about 1/N) or independent (uniform "
+                   "random; the stddev layer is then exact) (default: the scene camera's, else "
+                   "sobol)"}
+            .one_of({"sobol", "independent"}),
         {"--frames", "", "A:B", "render frames A to B of an animated scene, one image each"},
         {"-D", "", "KEY=VALUE",
          "override a render default: method, spp, time, max_depth, rr_depth, seed, exposure", true},
-        {"--exposure", "", "STOPS", "exposure applied before 8-bit encoding (default 0)"},
+        OptionSpec{"--exposure", "", "STOPS", "exposure applied before 8-bit encoding (default 0)"}
+            .numbers(-64.0, 64.0),
         {"--half", "", "", ".exr: store half floats"},
         {"--aovs", "", "LIST", ".exr: the layers to write, comma-separated (default all)"},
         {"--stats", "", "FILE", "write timings and counts as JSON"},
@@ -170,11 +180,10 @@ RenderSettings render_settings(const ParsedArguments& arguments, RenderSettings 
         settings.apply_override(assignment);
     }
     settings.method = arguments.value("--method", settings.method);
-    settings.spp = static_cast<int>(arguments.integer("--spp", settings.spp, 1, 1 << 24));
-    settings.seed = static_cast<uint64_t>(
-        arguments.integer("--seed", static_cast<long long>(settings.seed), 0, 1LL << 62));
-    settings.exposure =
-        static_cast<float>(arguments.number("--exposure", settings.exposure, -64.0, 64.0));
+    settings.spp = static_cast<int>(arguments.integer("--spp", settings.spp));
+    settings.seed =
+        static_cast<uint64_t>(arguments.integer("--seed", static_cast<long long>(settings.seed)));
+    settings.exposure = static_cast<float>(arguments.number("--exposure", settings.exposure));
     return settings;
 }
 
@@ -188,8 +197,7 @@ PixelFilter pixel_filter(const ParsedArguments& arguments, PixelFilter filter) {
         }
         filter.radius = default_filter_radius(filter.type);
     }
-    filter.radius = static_cast<float>(
-        arguments.number("--filter-radius", filter.radius, kMinFilterRadius, kMaxFilterRadius));
+    filter.radius = static_cast<float>(arguments.number("--filter-radius", filter.radius));
     return filter;
 }
 
@@ -209,8 +217,8 @@ int pixel_sampler(const ParsedArguments& arguments, int scene_sampler) {
 MethodSettings method_settings(const ParsedArguments& arguments, const RenderSettings& settings,
                                const RenderJob& job, int first, int last) {
     MethodSettings method;
-    method.width = static_cast<int>(arguments.integer("--width", 0, 1, 1 << 16));
-    method.height = static_cast<int>(arguments.integer("--height", 0, 1, 1 << 16));
+    method.width = static_cast<int>(arguments.integer("--width", 0));
+    method.height = static_cast<int>(arguments.integer("--height", 0));
     method.spp = settings.spp;
     method.time = settings.time;
     method.seed = settings.seed;

@@ -4,12 +4,10 @@
 // its defaults. A render afterwards on the same device loads every program from the cache.
 #include <chrono>
 #include <cstdio>
-#include <iostream>
 
 #include "app/commands.h"
 #include "app/device_options.h"
 #include "methods/registry.h"
-#include "util/cli.h"
 #include "util/error.h"
 
 namespace rc {
@@ -25,9 +23,7 @@ void add_programs(const MethodEntry& entry, const ParsedArguments& arguments,
     }
 }
 
-}  // namespace
-
-int run_warmup_command(const std::vector<std::string>& args) {
+std::vector<OptionSpec> warmup_options() {
     std::vector<OptionSpec> specs = {
         {"--method", "", "NAME",
          "the method (with its options) whose programs to build (default: every method at its "
@@ -38,15 +34,10 @@ int run_warmup_command(const std::vector<std::string>& args) {
     for (OptionSpec& spec : method_option_specs()) {
         specs.push_back(std::move(spec));
     }
-    const ParsedArguments arguments = parse_arguments("radcache warmup", args, specs);
-    if (arguments.has("--help")) {
-        std::cout << format_help("radcache warmup [--method NAME [its options]] [options]",
-                                 "Builds the kernel programs a render will need into the binary "
-                                 "cache, all at once, so that\nthe render loads them instead of "
-                                 "compiling them.",
-                                 specs);
-        return 0;
-    }
+    return specs;
+}
+
+int warmup(const ParsedArguments& arguments) {
     if (!arguments.positionals().empty()) {
         throw Error("radcache warmup takes no positional argument ('" +
                         arguments.positionals().front() + "')",
@@ -80,6 +71,21 @@ int run_warmup_command(const std::vector<std::string>& args) {
                 context.program_builds().size(), compiled, context.device().name.c_str(), wall,
                 summed);
     return 0;
+}
+
+}  // namespace
+
+CommandSpec warmup_command() {
+    return {.name = "warmup",
+            .synopsis = "warmup",
+            .summary = "build the kernel programs a render needs into the binary cache",
+            .usage = "radcache warmup [--method NAME [its options]] [options]",
+            .description =
+                "Builds the kernel programs a render will need into the binary "
+                "cache, all at once, so that\nthe render loads them instead of "
+                "compiling them.",
+            .options = warmup_options(),
+            .run = warmup};
 }
 
 }  // namespace rc

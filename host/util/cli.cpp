@@ -1,18 +1,113 @@
 #include "util/cli.h"
 
-#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <stdexcept>
 
 #include "util/error.h"
 #include "util/text.h"
 
 namespace rc {
 
+OptionSpec OptionSpec::integers(long long min, long long max,
+                                std::vector<std::string> words) const {
+    OptionSpec spec = *this;
+    spec.check.kind = ValueCheck::Kind::kInteger;
+    spec.check.integer_min = min;
+    spec.check.integer_max = max;
+    spec.check.words = std::move(words);
+    return spec;
+}
+
+OptionSpec OptionSpec::numbers(double min, double max) const {
+    OptionSpec spec = *this;
+    spec.check.kind = ValueCheck::Kind::kNumber;
+    spec.check.number_min = min;
+    spec.check.number_max = max;
+    return spec;
+}
+
+OptionSpec OptionSpec::one_of(std::vector<std::string> choices) const {
+    OptionSpec spec = *this;
+    spec.check.kind = ValueCheck::Kind::kChoice;
+    spec.check.words = std::move(choices);
+    return spec;
+}
+
+namespace {
+
+bool parse_integer(const std::string& text, long long* value) {
+    char* end = nullptr;
+    errno = 0;
+    *value = std::strtoll(text.c_str(), &end, 10);
+    return !text.empty() && *end == '\0' && errno == 0;
+}
+
+bool parse_number(const std::string& text, double* value) {
+    char* end = nullptr;
+    *value = std::strtod(text.c_str(), &end);
+    return !text.empty() && *end == '\0' && std::isfinite(*value);
+}
+
+bool is_word(const ValueCheck& check, const std::string& value) {
+    for (const std::string& word : check.words) {
+        if (value == word) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// "a, b or c"
+std::string listed(const std::vector<std::string>& words) {
+    std::string list;
+    for (size_t i = 0; i < words.size(); ++i) {
+        list += (i == 0 ? "" : i + 1 == words.size() ? " or " : ", ") + words[i];
+    }
+    return list;
+}
+
+}  // namespace
+
+std::string check_value(const ValueCheck& check, const std::string& value) {
+    const std::string got = ", got '" + excerpt(value) + "'";
+    switch (check.kind) {
+        case ValueCheck::Kind::kAny:
+            return "";
+        case ValueCheck::Kind::kChoice:
+            return is_word(check, value) ? "" : "expected " + listed(check.words) + got;
+        case ValueCheck::Kind::kInteger: {
+            long long parsed = 0;
+            if (is_word(check, value) ||
+                (parse_integer(value, &parsed) && parsed >= check.integer_min &&
+                 parsed <= check.integer_max)) {
+                return "";
+            }
+            return "expected an integer in [" + std::to_string(check.integer_min) + ", " +
+                   std::to_string(check.integer_max) + "]" + got;
+        }
+        case ValueCheck::Kind::kNumber: {
+            double parsed = 0.0;
+            if (parse_number(value, &parsed) && parsed >= check.number_min &&
+                parsed <= check.number_max) {
+                return "";
+            }
+            return "expected a number in [" + std::to_string(check.number_min) + ", " +
+                   std::to_string(check.number_max) + "]" + got;
+        }
+    }
+    return "";
+}
+
+void ParsedArguments::add(const OptionSpec& spec, std::vector<std::string> values) {
+    values_[spec.name] = std::move(values);
+    kinds_[spec.name] = spec.check.kind;
+}
+
 std::string ParsedArguments::value(const std::string& name, const std::string& fallback) const {
     const auto found = values_.find(name);
-    return found == values_.end() ? fallback : found->second.back();
+    return found == values_.end() || found->second.empty() ? fallback : found->second.back();
 }
 
 std::vector<std::string> ParsedArguments::values(const std::string& name) const {
@@ -20,129 +115,27 @@ std::vector<std::string> ParsedArguments::values(const std::string& name) const 
     return found == values_.end() ? std::vector<std::string>{} : found->second;
 }
 
-long long ParsedArguments::integer(const std::string& name, long long fallback, long long min,
-                                   long long max) const {
+long long ParsedArguments::integer(const std::string& name, long long fallback) const {
     if (!has(name)) {
         return fallback;
     }
-    const std::string text = value(name);
-    char* end = nullptr;
-    errno = 0;
-    const long long parsed = std::strtoll(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || errno != 0 || parsed < min || parsed > max) {
-        throw Error(name + ": expected an integer in [" + std::to_string(min) + ", " +
-                        std::to_string(max) + "], got '" + excerpt(text) + "'",
-                    kExitUsage);
+    long long parsed = 0;
+    if (kinds_.at(name) != ValueCheck::Kind::kInteger || !parse_integer(value(name), &parsed)) {
+        // The declaration, not the user, is wrong: an option read as an integer declares it.
+        throw std::logic_error(name + " is read as an integer but not declared with integers()");
     }
     return parsed;
 }
 
-double ParsedArguments::number(const std::string& name, double fallback, double min,
-                               double max) const {
+double ParsedArguments::number(const std::string& name, double fallback) const {
     if (!has(name)) {
         return fallback;
     }
-    const std::string text = value(name);
-    char* end = nullptr;
-    const double parsed = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !std::isfinite(parsed) || parsed < min || parsed > max) {
-        throw Error(name + ": expected a number in [" + std::to_string(min) + ", " +
-                        std::to_string(max) + "], got '" + excerpt(text) + "'",
-                    kExitUsage);
+    double parsed = 0.0;
+    if (kinds_.at(name) != ValueCheck::Kind::kNumber || !parse_number(value(name), &parsed)) {
+        throw std::logic_error(name + " is read as a number but not declared with numbers()");
     }
     return parsed;
-}
-
-ParsedArguments parse_arguments(const std::string& command, const std::vector<std::string>& args,
-                                const std::vector<OptionSpec>& specs) {
-    ParsedArguments parsed;
-    auto find = [&](const std::string& word) -> const OptionSpec* {
-        for (const OptionSpec& spec : specs) {
-            if (word == spec.name || (!spec.short_name.empty() && word == spec.short_name)) {
-                return &spec;
-            }
-        }
-        return nullptr;
-    };
-    for (size_t i = 0; i < args.size(); ++i) {
-        std::string word = args[i];
-        if (word == "--help" || word == "-h") {
-            parsed.values_["--help"].push_back("");
-            continue;
-        }
-        if (word.size() < 2 || word[0] != '-' || word == "--") {
-            parsed.positionals_.push_back(word);
-            continue;
-        }
-        std::string inline_value;
-        bool has_inline_value = false;
-        if (const size_t equals = word.find('=');
-            word.rfind("--", 0) == 0 && equals != std::string::npos) {
-            inline_value = word.substr(equals + 1);
-            word = word.substr(0, equals);
-            has_inline_value = true;
-        }
-        const OptionSpec* spec = find(word);
-        if (spec == nullptr && !has_inline_value && word.size() > 2 && word[1] != '-') {
-            // A short option glued to its value: -Dkey=value.
-            spec = find(word.substr(0, 2));
-            if (spec != nullptr && !spec->value_name.empty()) {
-                inline_value = word.substr(2);
-                has_inline_value = true;
-                word = word.substr(0, 2);
-            } else {
-                spec = nullptr;
-            }
-        }
-        if (spec == nullptr) {
-            throw Error("unknown option '" + excerpt(word) + "' for '" + command + "' (see " +
-                            command + " --help)",
-                        kExitUsage);
-        }
-        if (!spec->repeatable && parsed.has(spec->name)) {
-            throw Error("option " + spec->name + " given twice", kExitUsage);
-        }
-        if (spec->value_name.empty()) {
-            if (has_inline_value) {
-                throw Error("option " + spec->name + " takes no value", kExitUsage);
-            }
-            parsed.values_[spec->name].push_back("");
-            continue;
-        }
-        if (!has_inline_value) {
-            if (i + 1 >= args.size()) {
-                throw Error("option " + spec->name + " needs a value (" + spec->value_name + ")",
-                            kExitUsage);
-            }
-            inline_value = args[++i];
-        }
-        parsed.values_[spec->name].push_back(inline_value);
-    }
-    return parsed;
-}
-
-std::string format_help(const std::string& usage, const std::string& description,
-                        const std::vector<OptionSpec>& specs) {
-    std::string help = "usage: " + usage + "\n\n" + description + "\n";
-    if (specs.empty()) {
-        return help;
-    }
-    help += "\noptions:\n";
-    std::vector<std::string> left;
-    size_t width = 0;
-    for (const OptionSpec& spec : specs) {
-        std::string text = spec.short_name.empty() ? spec.name : spec.short_name + ", " + spec.name;
-        if (!spec.value_name.empty()) {
-            text += " " + spec.value_name;
-        }
-        width = std::max(width, text.size());
-        left.push_back(text);
-    }
-    for (size_t i = 0; i < specs.size(); ++i) {
-        help +=
-            "  " + left[i] + std::string(width - left[i].size() + 2, ' ') + specs[i].help + "\n";
-    }
-    return help;
 }
 
 }  // namespace rc

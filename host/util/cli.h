@@ -1,5 +1,7 @@
-// Command-line options: declared per command, parsed strictly (an unknown option or a bad value
-// is an error with exit status 2), and listed in --help.
+// Command-line options as data: each command and each method declares its options (names, value,
+// help and the values it accepts); app/command_line.cpp hands them to CLI11, which parses the
+// command line, checks every value against its declaration and formats --help. An unknown option
+// or a bad value is an error with exit status 2.
 #pragma once
 
 #include <map>
@@ -8,38 +10,57 @@
 
 namespace rc {
 
+// The values an option accepts, checked while the command line is parsed.
+struct ValueCheck {
+    enum class Kind { kAny, kInteger, kNumber, kChoice };
+    Kind kind = Kind::kAny;
+    long long integer_min = 0;
+    long long integer_max = 0;
+    double number_min = 0.0;
+    double number_max = 0.0;
+    // kChoice: the values; kInteger: words accepted besides an integer ("auto").
+    std::vector<std::string> words;
+};
+
 struct OptionSpec {
     std::string name;        // "--spp"
     std::string short_name;  // "-o", or empty
     std::string value_name;  // "N"; empty for a flag
     std::string help;
     bool repeatable = false;
+    ValueCheck check;
+
+    // This option, its value an integer in [min, max] (or one of `words`).
+    OptionSpec integers(long long min, long long max, std::vector<std::string> words = {}) const;
+    // This option, its value a finite number in [min, max].
+    OptionSpec numbers(double min, double max) const;
+    // This option, its value one of `choices`.
+    OptionSpec one_of(std::vector<std::string> choices) const;
 };
 
+// Empty when `check` accepts `value`, else why not: "expected an integer in [1, 64], got '0'".
+std::string check_value(const ValueCheck& check, const std::string& value);
+
+// The options given on a command line (already checked against their OptionSpecs) and its
+// positional arguments.
 class ParsedArguments {
    public:
+    void add(const OptionSpec& spec, std::vector<std::string> values);
+    void add_positional(std::string word) { positionals_.push_back(std::move(word)); }
+
     bool has(const std::string& name) const { return values_.count(name) != 0; }
     std::string value(const std::string& name, const std::string& fallback = "") const;
     std::vector<std::string> values(const std::string& name) const;
-    // An integer in [min, max]; Error naming the option otherwise.
-    long long integer(const std::string& name, long long fallback, long long min,
-                      long long max) const;
-    double number(const std::string& name, double fallback, double min, double max) const;
+    // The value of an option declared with integers() or numbers() (its range checked while
+    // parsing), or `fallback` when it is not given.
+    long long integer(const std::string& name, long long fallback) const;
+    double number(const std::string& name, double fallback) const;
     const std::vector<std::string>& positionals() const { return positionals_; }
 
    private:
-    friend ParsedArguments parse_arguments(const std::string&, const std::vector<std::string>&,
-                                           const std::vector<OptionSpec>&);
     std::map<std::string, std::vector<std::string>> values_;
+    std::map<std::string, ValueCheck::Kind> kinds_;
     std::vector<std::string> positionals_;
 };
-
-// Parses `args` (after the command words) against `specs`; --help is always accepted.
-ParsedArguments parse_arguments(const std::string& command, const std::vector<std::string>& args,
-                                const std::vector<OptionSpec>& specs);
-
-// "usage: <usage>\n\n<description>\n\noptions:\n  --name VALUE  help\n..."
-std::string format_help(const std::string& usage, const std::string& description,
-                        const std::vector<OptionSpec>& specs);
 
 }  // namespace rc

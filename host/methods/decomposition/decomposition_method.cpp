@@ -124,9 +124,9 @@ class Decomposition final : public Method {
         options_.radiosity_samples = with_grid_ ? kRadiositySamplesGrid : kRadiositySamplesPath;
         settings.apply_to(options_);
         options_.cluster_rays =
-            static_cast<int>(arguments.integer("--decomp-rays", kDefaultClusterRays, 4, 1 << 16));
+            static_cast<int>(arguments.integer("--decomp-rays", kDefaultClusterRays));
         options_.split_factor =
-            static_cast<float>(arguments.number("--decomp-split", kDefaultSplitFactor, 1.0, 1e3));
+            static_cast<float>(arguments.number("--decomp-split", kDefaultSplitFactor));
         options_.light_samples = light_samples(arguments);
         const std::string visibility = arguments.value("--decomp-visibility", "heuristic");
         if (visibility != "heuristic" && visibility != "rays") {
@@ -206,22 +206,27 @@ std::vector<OptionSpec> decomposition_option_specs() {
         {"--alpha", "", "L",
          "decomposition: the near/far distance alpha, in scene units (\"0.2\", \"0.2u\") or a "
          "percentage of the scene's bounding-box diagonal (\"1%\"; default 1%)"},
-        {"--decomp-rays", "", "N",
-         "decomposition: rays per cluster's far-field fit (default 512, the paper's)"},
+        OptionSpec{"--decomp-rays", "", "N",
+                   "decomposition: rays per cluster's far-field fit (default 512, the paper's)"}
+            .integers(4, 1 << 16),
         {"--decomp-cluster", "", "L",
          "decomposition: a cluster of shading points less than L across is not split (a length "
          "as --alpha takes; the paper's rule: alpha; default 5%)"},
-        {"--decomp-split", "", "S",
-         "decomposition: a cluster is split while its rays hit inside S times its bounding "
-         "sphere (>= 1; the paper's test is 1; default 4)"},
-        {"--decomp-visibility", "", "NAME",
-         "decomposition: which near triangles count: heuristic (the paper's: all but the "
-         "back-facing and those below the horizon; default) or rays (of those, the ones a "
-         "shadow ray to the centroid reaches)"},
-        {"--decomp-source", "", "NAME",
-         "decomposition: the coarse solution the rays read at their hits and the near "
-         "triangles' radiosity comes from: grid (the irradiance vector grid, default; its "
-         "options apply) or path (path-traced continuation)"},
+        OptionSpec{
+            "--decomp-split", "", "S",
+            "decomposition: a cluster is split while its rays hit inside S times its bounding "
+            "sphere (>= 1; the paper's test is 1; default 4)"}
+            .numbers(1.0, 1e3),
+        OptionSpec{"--decomp-visibility", "", "NAME",
+                   "decomposition: which near triangles count: heuristic (the paper's: all but "
+                   "the back-facing and those below the horizon; default) or rays (of those, the "
+                   "ones a shadow ray to the centroid reaches)"}
+            .one_of({"heuristic", "rays"}),
+        OptionSpec{"--decomp-source", "", "NAME",
+                   "decomposition: the coarse solution the rays read at their hits and the near "
+                   "triangles' radiosity comes from: grid (the irradiance vector grid, default; "
+                   "its options apply) or path (path-traced continuation)"}
+            .one_of({"grid", "path"}),
         kLightSamplesOption,
     };
     for (OptionSpec& spec : ivg_option_specs()) {

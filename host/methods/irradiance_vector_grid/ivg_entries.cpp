@@ -13,8 +13,9 @@ namespace {
 
 constexpr int kDefaultGatherRays = 16;
 
-const OptionSpec kGatherRaysOption = {"--gather-rays", "", "N",
-                                      "ivg-gather: gather rays per camera sample (default 16)"};
+const OptionSpec kGatherRaysOption =
+    OptionSpec{"--gather-rays", "", "N", "ivg-gather: gather rays per camera sample (default 16)"}
+        .integers(1, 1 << 16);
 
 class GridRendering final : public Method {
    public:
@@ -96,8 +97,8 @@ MethodEntry ivg_gather_method_entry() {
     return {"ivg-gather",
             "final gathering: gather rays read the irradiance vector grid at their hits", options,
             grid_aovs(), [](const ParsedArguments& arguments, const MethodSettings& settings) {
-                const int gather_rays = static_cast<int>(
-                    arguments.integer("--gather-rays", kDefaultGatherRays, 1, 1 << 16));
+                const int gather_rays =
+                    static_cast<int>(arguments.integer("--gather-rays", kDefaultGatherRays));
                 return std::make_unique<GridRendering>(arguments, settings, gather_rays);
             }};
 }

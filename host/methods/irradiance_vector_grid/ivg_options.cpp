@@ -11,9 +11,11 @@ std::vector<OptionSpec> ivg_option_specs() {
         {"--grid", "", "NxMxK|auto",
          "ivg, ivg-gather, ic --ic-ivg: voxels of the irradiance vector grid per axis, or auto "
          "(about 32k vertices over the scene's bounding box; default)"},
-        {"--photons", "", "N", "grid: photons to trace (default: 8 per grid vertex)"},
-        {"--ivg-interp", "", "NAME",
-         "grid: spatial interpolation, trilinear (default) or tricubic (Catmull-Rom)"},
+        OptionSpec{"--photons", "", "N", "grid: photons to trace (default: 8 per grid vertex)"}
+            .integers(1, 1LL << 31),
+        OptionSpec{"--ivg-interp", "", "NAME",
+                   "grid: spatial interpolation, trilinear (default) or tricubic (Catmull-Rom)"}
+            .one_of({"trilinear", "tricubic"}),
         {"--ivg-compressed", "", "",
          "grid: read the 16-bit colour + direction layout (RR-6983 §4.2)"},
         {"--ivg-include-direct", "", "",
@@ -36,7 +38,7 @@ void refuse_ivg_options(const ParsedArguments& arguments, const std::string& why
 IvgOptions ivg_options(const ParsedArguments& arguments, const MethodSettings& settings) {
     IvgOptions options;
     options.cells = parse_grid_resolution(arguments.value("--grid", "auto"));
-    options.photons = static_cast<uint64_t>(arguments.integer("--photons", 0, 1, 1LL << 31));
+    options.photons = static_cast<uint64_t>(arguments.integer("--photons", 0));
     const std::string interpolation = arguments.value("--ivg-interp", "trilinear");
     if (interpolation == "trilinear") {
         options.interpolation = RC_IVG_TRILINEAR;

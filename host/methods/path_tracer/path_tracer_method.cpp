@@ -9,8 +9,10 @@ namespace rc {
 namespace {
 
 const std::vector<OptionSpec> kPathTracerOptions = {
-    {"--time", "", "SECONDS",
-     "pt: render passes until this much time has passed, not to --spp (also -D time=SECONDS)"},
+    OptionSpec{
+        "--time", "", "SECONDS",
+        "pt: render passes until this much time has passed, not to --spp (also -D time=SECONDS)"}
+        .numbers(0.0, 1e7),
     {"--save-every-pow2", "", "",
      "pt: also write the image after 1, 2, 4, 8, ... samples per pixel (name.sppN.ext)"},
 };
@@ -19,7 +21,7 @@ class PathTracerMethod final : public Method {
    public:
     PathTracerMethod(const ParsedArguments& arguments, const MethodSettings& settings)
         : settings_(settings), save_every_pow2_(arguments.has("--save-every-pow2")) {
-        settings_.time = arguments.number("--time", settings.time, 0.0, 1e7);
+        settings_.time = arguments.number("--time", settings.time);
     }
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {

@@ -24,14 +24,18 @@ namespace {
 
 std::vector<OptionSpec> radiance_cache_option_specs() {
     std::vector<OptionSpec> specs = {
-        {"--rc-order", "", "N|auto",
-         "rc: largest spherical-harmonic order n (n^2 coefficients per channel) of the BRDF "
-         "tables and the radiance records, 1-10; lobes that need more go to Monte Carlo "
-         "(default auto: 10)"},
-        {"--rc-max-error", "", "E",
-         "rc: largest relative L2 error of a BRDF lobe's representation in (0, 1); each "
-         "material gets the lowest order below it (default 0.1)"},
-        {"--rc-rays", "", "N", "rc: hemisphere rays per radiance record (default 4096)"},
+        OptionSpec{
+            "--rc-order", "", "N|auto",
+            "rc: largest spherical-harmonic order n (n^2 coefficients per channel) of the BRDF "
+            "tables and the radiance records, 1-10; lobes that need more go to Monte Carlo "
+            "(default auto: 10)"}
+            .integers(1, RC_SH_MAX_ORDER, {"auto"}),
+        OptionSpec{"--rc-max-error", "", "E",
+                   "rc: largest relative L2 error of a BRDF lobe's representation in (0, 1); each "
+                   "material gets the lowest order below it (default 0.1)"}
+            .numbers(1e-6, 0.999999),
+        OptionSpec{"--rc-rays", "", "N", "rc: hemisphere rays per radiance record (default 4096)"}
+            .integers(16, 1 << 16),
         {"--rc-cache-out", "", "FILE", "rc: save the radiance records"},
         {"--rc-cache-in", "", "FILE",
          "rc: start from the radiance records of a saved cache (same scene, frame, accuracy and "
@@ -51,15 +55,15 @@ int parse_order(const ParsedArguments& arguments) {
     if (text == "auto") {
         return 0;
     }
-    return static_cast<int>(arguments.integer("--rc-order", 0, 1, RC_SH_MAX_ORDER));
+    return static_cast<int>(arguments.integer("--rc-order", 0));
 }
 
 RadianceCacheOptions parse_options(const ParsedArguments& arguments, const MethodSettings& settings,
                                    const IrradianceCacheOptions& ic) {
     RadianceCacheOptions rc;
     rc.order = parse_order(arguments);
-    rc.max_error = arguments.number("--rc-max-error", rc.max_error, 1e-6, 0.999999);
-    rc.rays = static_cast<int>(arguments.integer("--rc-rays", rc.rays, 16, 1 << 16));
+    rc.max_error = arguments.number("--rc-max-error", rc.max_error);
+    rc.rays = static_cast<int>(arguments.integer("--rc-rays", rc.rays));
     rc.accuracy = ic.accuracy;
     rc.min_spacing = ic.min_spacing;
     rc.max_spacing = ic.max_spacing;

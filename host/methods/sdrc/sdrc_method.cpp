@@ -18,16 +18,23 @@ namespace {
 
 std::vector<OptionSpec> sdrc_option_specs() {
     std::vector<OptionSpec> specs = {
-        {"--sdrc-samples", "", "N|auto",
-         "sdrc: directions a new record samples from its lobe and keeps in its L-tree, 16-65536 "
-         "(default auto: 3 x interp x spp within [64, 8192])"},
-        {"--sdrc-interp", "", "M",
-         "sdrc: lobe directions per camera sample looked up in the L-trees, 1-64 (default 4)"},
-        {"--sdrc-max-radius", "", "R",
-         "sdrc: ceiling of a lookup's radius in the paraboloid map, (0, 2] (default 0.15)"},
-        {"--sdrc-memory", "", "MIB",
-         "sdrc: cap on the L-trees' memory; a render that needs more stops with an error "
-         "(default 4096)"},
+        OptionSpec{
+            "--sdrc-samples", "", "N|auto",
+            "sdrc: directions a new record samples from its lobe and keeps in its L-tree, 16-65536 "
+            "(default auto: 3 x interp x spp within [64, 8192])"}
+            .integers(16, 65536, {"auto"}),
+        OptionSpec{
+            "--sdrc-interp", "", "M",
+            "sdrc: lobe directions per camera sample looked up in the L-trees, 1-64 (default 4)"}
+            .integers(1, 64),
+        OptionSpec{
+            "--sdrc-max-radius", "", "R",
+            "sdrc: ceiling of a lookup's radius in the paraboloid map, (0, 2] (default 0.15)"}
+            .numbers(1e-4, 2.0),
+        OptionSpec{"--sdrc-memory", "", "MIB",
+                   "sdrc: cap on the L-trees' memory; a render that needs more stops with an error "
+                   "(default 4096)"}
+            .numbers(1e-3, 1e9),
     };
     for (OptionSpec& spec : glossy_method_ic_option_specs()) {
         specs.push_back(std::move(spec));
@@ -38,12 +45,10 @@ std::vector<OptionSpec> sdrc_option_specs() {
 SdrcOptions parse_options(const ParsedArguments& arguments, const IrradianceCacheOptions& ic) {
     SdrcOptions sdrc;
     const std::string samples = arguments.value("--sdrc-samples", "auto");
-    sdrc.samples =
-        samples == "auto" ? 0 : static_cast<int>(arguments.integer("--sdrc-samples", 0, 16, 65536));
-    sdrc.interp = static_cast<int>(arguments.integer("--sdrc-interp", sdrc.interp, 1, 64));
-    sdrc.max_radius =
-        static_cast<float>(arguments.number("--sdrc-max-radius", sdrc.max_radius, 1e-4, 2.0));
-    sdrc.memory_mib = arguments.number("--sdrc-memory", sdrc.memory_mib, 1e-3, 1e9);
+    sdrc.samples = samples == "auto" ? 0 : static_cast<int>(arguments.integer("--sdrc-samples", 0));
+    sdrc.interp = static_cast<int>(arguments.integer("--sdrc-interp", sdrc.interp));
+    sdrc.max_radius = static_cast<float>(arguments.number("--sdrc-max-radius", sdrc.max_radius));
+    sdrc.memory_mib = arguments.number("--sdrc-memory", sdrc.memory_mib);
     sdrc.accuracy = ic.accuracy;
     sdrc.min_spacing = ic.min_spacing;
     sdrc.max_spacing = ic.max_spacing;

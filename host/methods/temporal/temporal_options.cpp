@@ -10,18 +10,24 @@ std::vector<OptionSpec> temporal_option_specs() {
          "ic, rc: temporal caching over --frames: records (rc: irradiance and radiance records) "
          "live across frames while their light changes less than --temporal-accuracy allows, "
          "replaced in place when they expire (docs/temporal-caching.md)"},
-        {"--temporal-gradients", "", "interpolated|extrapolated|none",
-         "--temporal: a record's value over its frames: interpolated towards its replacement "
-         "(two passes, default), extrapolated from its reprojected next frame (one pass), or held"},
-        {"--temporal-accuracy", "", "A",
-         "--temporal: a^t, the largest relative change of a record's irradiance (rc: of its "
-         "radiance's SH coefficients) over its lifespan, estimated by reprojection (default 0.02)"},
-        {"--temporal-max-frames", "", "N",
-         "--temporal: the longest lifespan of a record, in frames (default 20)"},
-        {"--temporal-moving-hits", "", "trace|cache",
-         "--temporal: irradiance records' hemisphere hits on objects moving into or out of the "
-         "frame path-trace the light beyond them (trace, default) or get deeper-level records, "
-         "which live one frame (cache)"},
+        OptionSpec{"--temporal-gradients", "", "interpolated|extrapolated|none",
+                   "--temporal: a record's value over its frames: interpolated towards its "
+                   "replacement (two passes, default), extrapolated from its reprojected next "
+                   "frame (one pass), or held"}
+            .one_of({"interpolated", "extrapolated", "none"}),
+        OptionSpec{"--temporal-accuracy", "", "A",
+                   "--temporal: a^t, the largest relative change of a record's irradiance (rc: "
+                   "of its radiance's SH coefficients) over its lifespan, estimated by "
+                   "reprojection (default 0.02)"}
+            .numbers(1e-4, 10.0),
+        OptionSpec{"--temporal-max-frames", "", "N",
+                   "--temporal: the longest lifespan of a record, in frames (default 20)"}
+            .integers(1, 1 << 20),
+        OptionSpec{"--temporal-moving-hits", "", "trace|cache",
+                   "--temporal: irradiance records' hemisphere hits on objects moving into or out "
+                   "of the frame path-trace the light beyond them (trace, default) or get "
+                   "deeper-level records, which live one frame (cache)"}
+            .one_of({"trace", "cache"}),
     };
 }
 
@@ -59,10 +65,8 @@ TemporalOptions parse_temporal_options(const ParsedArguments& arguments) {
         }
         t.cache_moving_hits = value == "cache";
     }
-    t.accuracy =
-        static_cast<float>(arguments.number("--temporal-accuracy", t.accuracy, 1e-4, 10.0));
-    t.max_frames =
-        static_cast<int>(arguments.integer("--temporal-max-frames", t.max_frames, 1, 1 << 20));
+    t.accuracy = static_cast<float>(arguments.number("--temporal-accuracy", t.accuracy));
+    t.max_frames = static_cast<int>(arguments.integer("--temporal-max-frames", t.max_frames));
     return t;
 }
 

@@ -1,0 +1,38 @@
+#include "app/commands.h"
+
+#include <filesystem>
+
+#include "util/error.h"
+
+namespace rc {
+
+CommandLine radcache_command_line() {
+    CommandLine line;
+    line.program = "radcache";
+    line.version = "radcache 0.1.0";
+    line.groups = {{"bench", "benchmark"}};
+    line.commands = {devices_command(),      render_command(),   compare_command(),
+                     convert_command(),      warmup_command(),   bench_all_command(),
+                     bench_rays_command(),   bench_pt_command(), bench_sh_command(),
+                     bench_compile_command()};
+    return line;
+}
+
+int run_render_command(const std::vector<std::string>& args) {
+    std::vector<std::string> words = {"render"};
+    words.insert(words.end(), args.begin(), args.end());
+    return run_command_line(radcache_command_line(), words);
+}
+
+std::string shipped_scene(const std::string& name) {
+    const std::string relative = "scenes/" + name + "/scene.json";
+    for (const std::string& candidate :
+         {relative, std::string(RADCACHE_SOURCE_DIR) + "/" + relative}) {
+        if (std::filesystem::is_regular_file(candidate)) {
+            return candidate;
+        }
+    }
+    throw Error("cannot find " + relative + "; pass --scene", kExitUsage);
+}
+
+}  // namespace rc
