@@ -139,6 +139,16 @@ TEST(MultiDevice, WhatRendersOnOneDeviceIsRefusedByName) {
     }
 }
 
+// Commands other than render use one device: a list or `all` is refused by name (exit 2).
+TEST(MultiDevice, OtherCommandsRefuseSeveralDevices) {
+    for (const std::string spec : {"all", "0:0,0:1"}) {
+        const test::CommandResult result =
+            test::run_radcache({"warmup", "--method", "pt", "--device", spec}, {kTwoDevices});
+        EXPECT_EQ(result.exit_code, 2) << result.output;
+        EXPECT_NE(result.output.find("names several devices"), std::string::npos) << result.output;
+    }
+}
+
 // In this process (the fault injection is in-process): the 20th kernel launch of the render
 // fails, on whichever device made it.
 TEST(MultiDevice, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {

@@ -169,6 +169,12 @@ DeviceInfo select_device(const std::vector<DeviceInfo>& devices, const std::stri
         }
         return devices.front();
     }
+    if (lower(spec) == "all" || spec.find(',') != std::string::npos) {
+        throw Error(source + " '" + spec +
+                        "' names several devices; this command uses one (radcache render takes "
+                        "several)",
+                    kExitUsage);
+    }
     static const std::regex index_form(R"(^\s*(\d+)\s*:\s*(\d+)\s*$)");
     std::smatch match;
     if (std::regex_match(spec, match, index_form)) {
