@@ -1,10 +1,9 @@
-// `radcache convert IN OUT.json`: reads a glTF 2.0 scene and writes it in
+// `radcache convert IN OUT.json`: reads a glTF 2.0 or pbrt-v4 scene and writes it in
 // radcache's scene format (scene/scene_writer.h), so that the user can edit it; rendering OUT.json
 // gives the image of rendering IN.
 #include <iostream>
 
 #include "app/commands.h"
-#include "scene/gltf_loader.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_writer.h"
 #include "util/cli.h"
@@ -21,11 +20,12 @@ int run_convert_command(const std::vector<std::string>& args) {
     };
     const ParsedArguments arguments = parse_arguments("radcache convert", args, specs);
     if (arguments.has("--help")) {
-        std::cout << format_help("radcache convert IN OUT.json [options]",
-                                 "Writes the glTF 2.0 scene IN (.gltf or .glb) in radcache's scene "
-                                 "format: OUT.json, its meshes as OBJ files in OUT_meshes/ and "
-                                 "embedded textures in OUT_textures/.",
-                                 specs);
+        std::cout << format_help(
+            "radcache convert IN OUT.json [options]",
+            "Writes the glTF 2.0 scene IN (.gltf or .glb) or the pbrt-v4 scene "
+            "IN (.pbrt) in radcache's scene format: OUT.json, its meshes as "
+            "OBJ files in OUT_meshes/ and embedded textures in OUT_textures/.",
+            specs);
         return 0;
     }
     if (arguments.positionals().size() != 2) {
@@ -34,8 +34,9 @@ int run_convert_command(const std::vector<std::string>& args) {
     }
     set_quiet(arguments.has("--quiet"));
     const std::filesystem::path in = arguments.positionals()[0];
-    if (!is_gltf_path(in)) {
-        throw Error("convert: IN " + in.string() + ": expected a .gltf or .glb file", kExitUsage);
+    if (!is_imported_scene_path(in)) {
+        throw Error("convert: IN " + in.string() + ": expected a .gltf, .glb or .pbrt file",
+                    kExitUsage);
     }
     const std::filesystem::path out = arguments.positionals()[1];
     if (out.extension() != ".json") {
