@@ -9,7 +9,9 @@
 #include <cstring>
 #include <glm/geometric.hpp>
 
+#include "fuzz_targets.h"
 #include "image/image_io.h"
+#include "scene/pbrt_loader.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
 #include "util/error.h"
@@ -349,6 +351,8 @@ TEST(Pbrt, MalformedInputsAreRefusedCleanly) {
                        "\"integer indices\" [0 1 3]\n",
                    "index 3 out of range (3 vertices)", 6);
     expect_refused(dir, "include", head + "Include \"nowhere.pbrt\"\n", "file not found", 6);
+    expect_refused(dir, "twice", "Camera \"perspective\" \"float fov\" 45 \"float fov\" 50\n",
+                   "parameter \"fov\" is given twice", 1);
     expect_refused(dir, "no_world", "Camera \"perspective\"\n", "has no WorldBegin", 0);
     expect_refused(dir, "unbalanced", head + "AttributeEnd\n",
                    "AttributeEnd without a matching AttributeBegin", 6);
@@ -401,6 +405,27 @@ TEST(Pbrt, ConvertedSceneRendersBitwiseAsThePbrt) {
         EXPECT_EQ(load_scene(dir / (name + ".json")).render.max_depth,
                   load_scene(data(name + ".pbrt")).render.max_depth);
     }
+}
+
+// The fuzz target's seeds (tests/fuzz/seeds/pbrt/) are whole scenes the import accepts, so that
+// fuzzing starts from inputs that reach every stage.
+TEST(Pbrt, FuzzSeedsAreScenesTheImportAccepts) {
+    const auto seeds = test::source_dir() / "tests/fuzz/seeds/pbrt";
+    int count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(seeds)) {
+        SCOPED_TRACE(entry.path().string());
+        const std::string input = read_file(entry.path());
+        MemoryFiles files;
+        for (auto& [name, bytes] : fuzz::split_files(reinterpret_cast<const uint8_t*>(input.data()),
+                                                     input.size(), "scene.pbrt")) {
+            files.add(name, std::move(bytes));
+        }
+        const Scene scene = load_pbrt_scene("scene.pbrt", files);
+        EXPECT_GT(scene.mesh.triangle_count(), 0u);
+        EXPECT_FALSE(scene.lights.lights.empty());
+        ++count;
+    }
+    EXPECT_GE(count, 5);
 }
 
 }  // namespace

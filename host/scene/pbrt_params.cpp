@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "util/error.h"
 #include "util/log.h"
@@ -11,11 +12,10 @@ namespace rc {
 
 PbrtParams::PbrtParams(const PbrtDirective& directive, std::string what)
     : params_(directive.params), used_(directive.params.size(), false), what_(std::move(what)) {
-    for (size_t i = 0; i < params_.size(); ++i) {
-        for (size_t j = 0; j < i; ++j) {
-            if (params_[i].name == params_[j].name) {
-                fail("parameter \"" + excerpt(params_[i].name) + "\" is given twice");
-            }
+    std::set<std::string> names;
+    for (const PbrtParam& param : params_) {
+        if (!names.insert(param.name).second) {
+            fail("parameter \"" + excerpt(param.name) + "\" is given twice");
         }
     }
 }
