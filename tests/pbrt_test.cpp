@@ -6,10 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <glm/geometric.hpp>
 
 #include "fuzz_targets.h"
+#include "glossy_scenes.h"  // test::bitwise_equal
 #include "image/image_io.h"
 #include "scene/pbrt_loader.h"
 #include "scene/scene_loader.h"
@@ -22,11 +22,6 @@ namespace {
 
 std::filesystem::path data(const std::string& name) {
     return test::source_dir() / "tests/data/pbrt" / name;
-}
-
-bool same_pixels(const Image& a, const Image& b) {
-    return a.width == b.width && a.height == b.height && a.pixels.size() == b.pixels.size() &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
 }
 
 Image render(const std::filesystem::path& scene, const std::filesystem::path& out,
@@ -43,7 +38,7 @@ TEST(Pbrt, CornellBoxRendersTheJsonScenesImageBitwise) {
     const auto dir = test::scratch_dir("pbrt_cornell");
     const Image json = render(test::source_dir() / "scenes/cornell-box/scene.json", dir / "j.exr");
     const Image pbrt = render(data("cornell-box.pbrt"), dir / "p.exr");
-    EXPECT_TRUE(same_pixels(json, pbrt));
+    EXPECT_TRUE(test::bitwise_equal(json, pbrt));
     // The scene's own settings came across: 64 samples, depth 64, 512 x 512.
     const Scene scene = load_scene(data("cornell-box.pbrt"));
     EXPECT_EQ(scene.render.spp, 64);
@@ -400,7 +395,7 @@ TEST(Pbrt, ConvertedSceneRendersBitwiseAsThePbrt) {
         ASSERT_EQ(result.exit_code, 0) << result.output;
         const Image pbrt = render(data(name + ".pbrt"), dir / (name + "-p.exr"));
         const Image json = render(dir / (name + ".json"), dir / (name + "-j.exr"));
-        EXPECT_TRUE(same_pixels(pbrt, json)) << name;
+        EXPECT_TRUE(test::bitwise_equal(pbrt, json)) << name;
         // The pbrt scene's render settings travel with it.
         EXPECT_EQ(load_scene(dir / (name + ".json")).render.max_depth,
                   load_scene(data(name + ".pbrt")).render.max_depth);

@@ -16,26 +16,11 @@ usage: tools/make_pbrt_test_scenes.py [OUT_DIR]   (default tests/data/pbrt)
 """
 import json
 import pathlib
-import struct
 import sys
-import zlib
+
+from make_gltf_test_scenes import png_2x2, read_obj
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-
-
-def read_obj(path):
-    positions, faces = [], []
-    for line in path.read_text().splitlines():
-        words = line.split()
-        if not words:
-            continue
-        if words[0] == "v":
-            positions.append(tuple(float(w) for w in words[1:4]))
-        elif words[0] == "f":
-            corners = [int(w.split("/")[0]) - 1 for w in words[1:]]
-            for k in range(1, len(corners) - 1):
-                faces.append((corners[0], corners[k], corners[k + 1]))
-    return positions, faces
 
 
 def numbers(values):
@@ -73,15 +58,6 @@ def cornell_box():
         out.append("    " + mesh(positions, faces))
         out.append("AttributeEnd\n")
     return "".join(out)
-
-
-def png_2x2():
-    """A 2x2 RGB PNG: red, green / blue, white (rows top to bottom)."""
-    rows = [bytes([0, 255, 0, 0, 0, 255, 0]), bytes([0, 0, 0, 255, 255, 255, 255])]
-    def chunk(kind, payload):
-        return struct.pack(">I", len(payload)) + kind + payload + struct.pack(">I", zlib.crc32(kind + payload))
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 2, 2, 8, 2, 0, 0, 0))
-            + chunk(b"IDAT", zlib.compress(b"".join(rows))) + chunk(b"IEND", b""))
 
 
 QUAD = [(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)]

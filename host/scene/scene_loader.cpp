@@ -531,17 +531,7 @@ Scene load_scene(const std::filesystem::path& path, const SceneFiles& files,
     Scene scene;
     scene.path = path;
     SceneParser(path, files, scene).parse(root);
-    if (scene.shapes.empty()) {
-        throw Error(file + ": the scene has no triangles");
-    }
-    try {
-        scene.set_frame(scene.animation.frame_start);
-    } catch (const Error& error) {
-        throw Error(file + ": " + error.what());
-    }
-    if (scene.mesh.triangle_count() == 0) {
-        throw Error(file + ": the scene has no triangles");
-    }
+    pose_loaded_scene(scene, scene.animation.frame_start);
     warn_unless_lit(scene);
     return scene;
 }
