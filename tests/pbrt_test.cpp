@@ -354,6 +354,19 @@ TEST(Pbrt, MalformedInputsAreRefusedCleanly) {
     // An include cycle stops at the nesting limit.
     write_file_atomically(dir / "self.pbrt", head + "Include \"self.pbrt\"\n");
     expect_refused(dir, "self", head + "Include \"self.pbrt\"\n", "nested deeper", 0);
+    // A PLY whose header declares more than its file holds, and one without end_header (on
+    // which Assimp 5.2 loops without end: radcache checks the header first).
+    std::string huge = ascii_ply();
+    huge.replace(huge.find("element vertex 5"), 16, "element vertex 500000");
+    write_file_atomically(dir / "huge.ply", huge);
+    expect_refused(dir, "huge", head + "Shape \"plymesh\" \"string filename\" \"huge.ply\"\n",
+                   "its elements need at least", 6);
+    write_file_atomically(dir / "headless.ply",
+                          "ply\nformat ascii 1.0\nelement vertex 5\n"
+                          "property float x\nprop 1 2 3\n3 1 4 2\n");
+    expect_refused(dir, "headless",
+                   head + "Shape \"plymesh\" \"string filename\" \"headless.ply\"\n",
+                   "no \"ply\" ... \"end_header\" header", 6);
     // Truncated PLY files: the ASCII one ends inside its vertices, the binary one in its faces.
     for (const auto& [name, ply] :
          {std::pair{"ascii_cut", ascii_ply().substr(0, ascii_ply().size() - 40)},

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "scene/generated_meshes.h"
+#include "scene/ply_header.h"
 #include "util/error.h"
 #include "util/log.h"
 #include "util/text.h"
@@ -138,6 +139,7 @@ TriangleMesh sphere_mesh(PbrtParams& params) {
 }  // namespace
 
 TriangleMesh load_ply_mesh(const std::string& bytes, const std::string& what) {
+    check_ply_header(bytes, what);
     Assimp::Importer importer;
     const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(),
                                                        aiProcess_ValidateDataStructure, "ply");
