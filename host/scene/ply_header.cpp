@@ -55,8 +55,14 @@ void check_ply_header(const std::string& bytes, const std::string& what) {
     if (bytes.compare(0, 3, "ply") != 0 || end == std::string::npos || end > kMaxHeaderBytes) {
         fail("no \"ply\" ... \"end_header\" header");
     }
-    size_t body = bytes.find('\n', end);
-    body = body == std::string::npos ? bytes.size() : body + 1;
+    size_t body = end + std::string("end_header").size();
+    if (bytes.compare(body, 1, "\n") == 0) {
+        body += 1;
+    } else if (bytes.compare(body, 2, "\r\n") == 0) {
+        body += 2;
+    } else if (body != bytes.size()) {
+        fail("\"end_header\" is not followed by the end of its line");
+    }
     std::istringstream header(bytes.substr(0, end));
     std::string line;
     std::getline(header, line);
@@ -99,6 +105,18 @@ void check_ply_header(const std::string& bytes, const std::string& what) {
     }
     if (format.empty()) {
         fail("no \"format ascii|binary_little_endian|binary_big_endian 1.0\" line");
+    }
+    if (format == "ascii") {
+        // Numbers, signs, points, exponents, nan and inf, separated by blanks: nothing else (a
+        // NUL or another control byte in the body sends Assimp's reader into an endless loop).
+        for (size_t i = body; i < bytes.size(); ++i) {
+            const unsigned char c = static_cast<unsigned char>(bytes[i]);
+            if (!std::isalnum(c) && c != '.' && c != '-' && c != '+' && c != ' ' && c != '\t' &&
+                c != '\r' && c != '\n') {
+                fail("a byte " + std::to_string(c) + " that is no part of a number at offset " +
+                     std::to_string(i));
+            }
+        }
     }
     const auto has = [](const Element& e, const std::string& property) {
         for (const std::string& p : e.properties) {
