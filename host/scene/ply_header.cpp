@@ -51,9 +51,18 @@ void check_ply_header(const std::string& bytes, const std::string& what) {
     const auto fail = [&](const std::string& message) {
         throw Error(what + ": not a readable PLY file: " + message);
     };
-    const size_t end = bytes.find("end_header");
+    size_t end = bytes.find("\nend_header");
     if (bytes.compare(0, 3, "ply") != 0 || end == std::string::npos || end > kMaxHeaderBytes) {
         fail("no \"ply\" ... \"end_header\" header");
+    }
+    ++end;  // the start of the end_header line
+    // Printable text, blanks and line ends only (Assimp's reader loops without end on a
+    // vertical tab in the header).
+    for (size_t i = 0; i < end; ++i) {
+        const unsigned char c = static_cast<unsigned char>(bytes[i]);
+        if (!(c >= 0x20 && c < 0x7f) && c != '\t' && c != '\r' && c != '\n') {
+            fail("a byte " + std::to_string(c) + " in the header at offset " + std::to_string(i));
+        }
     }
     size_t body = end + std::string("end_header").size();
     if (bytes.compare(body, 1, "\n") == 0) {
@@ -107,12 +116,12 @@ void check_ply_header(const std::string& bytes, const std::string& what) {
         fail("no \"format ascii|binary_little_endian|binary_big_endian 1.0\" line");
     }
     if (format == "ascii") {
-        // Numbers, signs, points, exponents, nan and inf, separated by blanks: nothing else (a
-        // NUL or another control byte in the body sends Assimp's reader into an endless loop).
+        // Digits, signs, points and exponents, separated by blanks: nothing else (a NUL or
+        // another control byte in the body sends Assimp's reader into an endless loop).
         for (size_t i = body; i < bytes.size(); ++i) {
             const unsigned char c = static_cast<unsigned char>(bytes[i]);
-            if (!std::isalnum(c) && c != '.' && c != '-' && c != '+' && c != ' ' && c != '\t' &&
-                c != '\r' && c != '\n') {
+            if (!std::isdigit(c) && c != '.' && c != '-' && c != '+' && c != 'e' && c != 'E' &&
+                c != ' ' && c != '\t' && c != '\r' && c != '\n') {
                 fail("a byte " + std::to_string(c) + " that is no part of a number at offset " +
                      std::to_string(i));
             }
