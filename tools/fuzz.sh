@@ -3,7 +3,7 @@
 #
 #   tools/fuzz.sh TARGET SECONDS [libFuzzer options...]
 #
-# TARGET is scene, obj, gltf, cache_file, grid_file, kernel_cache, or all (each for SECONDS). The fuzz
+# TARGET is scene, obj, gltf, pbrt, cache_file, grid_file, kernel_cache, or all (each for SECONDS). The fuzz
 # build (clang, -DRADCACHE_FUZZ=ON: coverage, ASan, UBSan) is made in build-fuzz/ first
 # ($RADCACHE_FUZZ_BUILD_DIR overrides), apart from the main build. Seeds: tests/fuzz/seeds/TARGET,
 # the shipped scenes (scene, obj) and every saved regression input; the corpus grows in
@@ -14,7 +14,7 @@ set -euo pipefail
 
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${RADCACHE_FUZZ_BUILD_DIR:-$root/build-fuzz}"
-all_targets=(scene obj gltf cache_file grid_file kernel_cache)
+all_targets=(scene obj gltf pbrt cache_file grid_file kernel_cache)
 
 if [ $# -lt 2 ]; then
     echo "usage: tools/fuzz.sh TARGET|all SECONDS [libFuzzer options...]" >&2

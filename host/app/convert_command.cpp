@@ -1,8 +1,7 @@
-// `radcache convert IN OUT.json`: reads a glTF 2.0 scene and writes it in
+// `radcache convert IN OUT.json`: reads a glTF 2.0 or pbrt-v4 scene and writes it in
 // radcache's scene format (scene/scene_writer.h), so that the user can edit it; rendering OUT.json
 // gives the image of rendering IN.
 #include "app/commands.h"
-#include "scene/gltf_loader.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_writer.h"
 #include "util/error.h"
@@ -19,8 +18,9 @@ int convert(const ParsedArguments& arguments) {
     }
     set_quiet(arguments.has("--quiet"));
     const std::filesystem::path in = arguments.positionals()[0];
-    if (!is_gltf_path(in)) {
-        throw Error("convert: IN " + in.string() + ": expected a .gltf or .glb file", kExitUsage);
+    if (!is_imported_scene_path(in)) {
+        throw Error("convert: IN " + in.string() + ": expected a .gltf, .glb or .pbrt file",
+                    kExitUsage);
     }
     const std::filesystem::path out = arguments.positionals()[1];
     if (out.extension() != ".json") {
@@ -39,12 +39,12 @@ int convert(const ParsedArguments& arguments) {
 CommandSpec convert_command() {
     return {.name = "convert",
             .synopsis = "convert IN OUT.json",
-            .summary = "a glTF scene in radcache's scene format",
+            .summary = "a glTF or pbrt-v4 scene in radcache's scene format",
             .usage = "radcache convert IN OUT.json [options]",
             .description =
-                "Writes the glTF 2.0 scene IN (.gltf or .glb) in radcache's scene "
-                "format: OUT.json, its meshes as OBJ files in OUT_meshes/ and "
-                "embedded textures in OUT_textures/.",
+                "Writes the glTF 2.0 scene IN (.gltf or .glb) or the pbrt-v4 scene "
+                "IN (.pbrt) in radcache's scene format: OUT.json, its meshes as "
+                "OBJ files in OUT_meshes/ and embedded textures in OUT_textures/.",
             .options = {{"--camera", "", "NAME",
                          "glTF scenes: the camera of that name (default: the first)"},
                         {"--quiet", "-q", "", "print nothing but errors"}},

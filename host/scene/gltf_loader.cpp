@@ -454,17 +454,7 @@ Scene load_gltf_scene(const std::filesystem::path& path, const SceneFiles& files
     Scene scene;
     scene.path = path;
     GltfSceneBuilder(path, model, scene).build(camera);
-    if (scene.shapes.empty()) {
-        throw Error(path.string() + ": the scene has no triangles");
-    }
-    try {
-        scene.set_frame(0);
-    } catch (const Error& error) {
-        throw Error(path.string() + ": " + error.what());
-    }
-    if (scene.mesh.triangle_count() == 0) {
-        throw Error(path.string() + ": the scene has no triangles");
-    }
+    pose_loaded_scene(scene, 0.0);
     return scene;
 }
 

@@ -16,11 +16,7 @@ void GltfWarnings::warn(const std::string& feature, const std::string& what) {
 }
 
 float gltf_phong_exponent(float roughness) {
-    const float alpha = roughness * roughness;
-    if (!(alpha > 1e-3f)) {
-        return 1e6f;
-    }
-    return std::clamp(2.0f / (alpha * alpha) - 2.0f, 0.0f, 1e6f);
+    return phong_exponent_of_alpha(roughness * roughness);
 }
 
 const GltfMaterial& GltfMaterials::get(int index, const std::string& where) {

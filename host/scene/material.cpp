@@ -1,5 +1,7 @@
 #include "scene/material.h"
 
+#include <algorithm>
+
 #include "util/glm_helpers.h"
 
 namespace rc {
@@ -37,6 +39,13 @@ shared::Material to_device(const Material& material) {
                                                       : RC_MATERIAL_WARD;
     m.texture = material.diffuse_texture;
     return m;
+}
+
+float phong_exponent_of_alpha(float alpha) {
+    if (!(alpha > 1e-3f)) {
+        return 1e6f;
+    }
+    return std::clamp(2.0f / (alpha * alpha) - 2.0f, 0.0f, 1e6f);
 }
 
 }  // namespace rc

@@ -28,4 +28,9 @@ shared::Material to_device(const Material& material);
 
 const char* material_kind_name(MaterialKind kind);
 
+// The Phong exponent of a microfacet roughness alpha: n = 2 / alpha^2 - 2 (Walter et al. 2007,
+// "Microfacet Models for Refraction through Rough Surfaces", §5.2), within [0, 1e6] (1e6 for
+// alpha <= 1e-3: a near mirror).
+float phong_exponent_of_alpha(float alpha);
+
 }  // namespace rc

@@ -25,6 +25,21 @@ int default_material(Scene& scene) {
     return static_cast<int>(scene.materials.size() - 1);
 }
 
+void pose_loaded_scene(Scene& scene, double frame) {
+    const std::string file = scene.path.string();
+    if (scene.shapes.empty()) {
+        throw Error(file + ": the scene has no triangles");
+    }
+    try {
+        scene.set_frame(frame);
+    } catch (const Error& error) {
+        throw Error(file + ": " + error.what());
+    }
+    if (scene.mesh.triangle_count() == 0) {
+        throw Error(file + ": the scene has no triangles");
+    }
+}
+
 void Scene::add_shape(Shape shape) {
     dropped_degenerate += drop_degenerate_triangles(shape.mesh);
     if (shape.materials.empty()) {

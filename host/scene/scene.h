@@ -79,6 +79,10 @@ struct Scene {
     Camera base_camera;  // the camera as the scene file gives it, before animation
 };
 
+// Completes a loaded scene: poses it at `frame`; Error naming the scene's file when it has no
+// triangles (none given, or all degenerate) or the frame cannot be built.
+void pose_loaded_scene(Scene& scene, double frame);
+
 // The index of the default material (diffuse 0.5), added on first use.
 int default_material(Scene& scene);
 

@@ -11,6 +11,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/json_reader.h"
 #include "scene/obj_loader.h"
+#include "scene/pbrt_loader.h"
 #include "scene/transform.h"
 #include "util/error.h"
 #include "util/file_io.h"
@@ -501,6 +502,10 @@ void warn_unless_lit(const Scene& scene) {
 
 }  // namespace
 
+bool is_imported_scene_path(const std::filesystem::path& path) {
+    return is_gltf_path(path) || is_pbrt_path(path);
+}
+
 Scene load_scene(const std::filesystem::path& path, const SceneFiles& files,
                  const std::string& camera) {
     if (is_gltf_path(path)) {
@@ -510,6 +515,11 @@ Scene load_scene(const std::filesystem::path& path, const SceneFiles& files,
     }
     if (!camera.empty()) {
         throw Error("--camera " + excerpt(camera) + ": applies to glTF scenes only", kExitUsage);
+    }
+    if (is_pbrt_path(path)) {
+        Scene scene = load_pbrt_scene(path, files);
+        warn_unless_lit(scene);
+        return scene;
     }
     if (!files.exists(path)) {
         throw Error(path.string() + ": scene file not found");
@@ -521,17 +531,7 @@ Scene load_scene(const std::filesystem::path& path, const SceneFiles& files,
     Scene scene;
     scene.path = path;
     SceneParser(path, files, scene).parse(root);
-    if (scene.shapes.empty()) {
-        throw Error(file + ": the scene has no triangles");
-    }
-    try {
-        scene.set_frame(scene.animation.frame_start);
-    } catch (const Error& error) {
-        throw Error(file + ": " + error.what());
-    }
-    if (scene.mesh.triangle_count() == 0) {
-        throw Error(file + ": the scene has no triangles");
-    }
+    pose_loaded_scene(scene, scene.animation.frame_start);
     warn_unless_lit(scene);
     return scene;
 }

@@ -11,7 +11,11 @@ namespace rc {
 // Loads the scene, reading it and its meshes and textures through `files`; any problem throws
 // Error naming the file and the key or line. A scene without light is warned about (log_warning).
 // A .gltf or .glb file is imported (scene/gltf_loader.h), `camera` naming its camera (empty: the
-// first); a JSON scene takes no camera name.
+// first); a .pbrt file is imported (scene/pbrt_loader.h); a JSON or pbrt scene takes no camera
+// name.
+// Whether `path` names a scene load_scene imports from another format (glTF or pbrt-v4).
+bool is_imported_scene_path(const std::filesystem::path& path);
+
 Scene load_scene(const std::filesystem::path& path, const SceneFiles& files = disk_files(),
                  const std::string& camera = "");
 

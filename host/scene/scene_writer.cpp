@@ -63,6 +63,20 @@ nlohmann::json camera_json(const Camera& camera) {
             {"sampler", pixel_sampler_name(camera.sampler)}};
 }
 
+// The render defaults that differ from RenderSettings' own (a pbrt scene's spp and max_depth).
+nlohmann::json render_json(const RenderSettings& render) {
+    const RenderSettings defaults;
+    nlohmann::json json = nlohmann::json::object();
+    if (render.method != defaults.method) json["method"] = render.method;
+    if (render.spp != defaults.spp) json["spp"] = render.spp;
+    if (render.time != defaults.time) json["time"] = render.time;
+    if (render.max_depth != defaults.max_depth) json["max_depth"] = render.max_depth;
+    if (render.rr_depth != defaults.rr_depth) json["rr_depth"] = render.rr_depth;
+    if (render.seed != defaults.seed) json["seed"] = render.seed;
+    if (render.exposure != defaults.exposure) json["exposure"] = render.exposure;
+    return json;
+}
+
 class SceneWriter {
    public:
     SceneWriter(const Scene& scene, const std::filesystem::path& json)
@@ -82,6 +96,10 @@ class SceneWriter {
         root["emitters"] = nlohmann::json::array();
         for (const Emitter& emitter : scene_.emitters) {
             root["emitters"].push_back(emitter_json(emitter));
+        }
+        const nlohmann::json render = render_json(scene_.render);
+        if (!render.empty()) {
+            root["render"] = render;
         }
         write_file_atomically(json_, root.dump(1) + "\n");
     }

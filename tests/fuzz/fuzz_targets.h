@@ -19,6 +19,8 @@ int scene(const uint8_t* data, size_t size);
 int obj(const uint8_t* data, size_t size);
 // A glTF 2.0 file (or .glb bytes) with its buffers and images in memory.
 int gltf(const uint8_t* data, size_t size);
+// A pbrt-v4 scene with its included files, PLY meshes and images in memory.
+int pbrt(const uint8_t* data, size_t size);
 // An irradiance (or any method's) record cache file, its checksum made to match.
 int cache_file(const uint8_t* data, size_t size);
 // An irradiance vector grid file, its checksum made to match.
@@ -30,9 +32,13 @@ struct Target {
     const char* name;
     int (*run)(const uint8_t*, size_t);
 };
-inline constexpr Target kTargets[] = {{"scene", scene},         {"obj", obj},
-                                      {"gltf", gltf},           {"cache_file", cache_file},
-                                      {"grid_file", grid_file}, {"kernel_cache", kernel_cache}};
+inline constexpr Target kTargets[] = {{"scene", scene},
+                                      {"obj", obj},
+                                      {"gltf", gltf},
+                                      {"pbrt", pbrt},
+                                      {"cache_file", cache_file},
+                                      {"grid_file", grid_file},
+                                      {"kernel_cache", kernel_cache}};
 
 // The files of a multi-file input: the first is named `first_name`; every line
 // "#@file NAME" starts the next file, named NAME.

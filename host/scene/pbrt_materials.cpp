@@ -1,0 +1,262 @@
+#include "scene/pbrt_materials.h"
+
+#include <cmath>
+
+#include "scene/pbrt_params.h"
+#include "scene/texture.h"
+#include "util/error.h"
+#include "util/log.h"
+#include "util/text.h"
+
+namespace rc {
+namespace {
+
+std::string in_quotes(const std::string& text) { return "\"" + excerpt(text) + "\""; }
+
+// Why a pbrt material type has no radcache counterpart (empty: it has one).
+std::string refusal(const std::string& type) {
+    if (type == "diffuse" || type == "coateddiffuse" || type == "conductor") {
+        return "";
+    }
+    if (type == "dielectric" || type == "thindielectric" || type == "diffusetransmission") {
+        return "transmits light, and radcache's materials only reflect";
+    }
+    if (type == "interface") {
+        return "bounds a participating medium, and radcache has none";
+    }
+    return "is not supported (diffuse, coateddiffuse and conductor are)";
+}
+
+// pbrt's roughness to a microfacet alpha: TrowbridgeReitzDistribution::RoughnessToAlpha
+// (alpha = sqrt(roughness)) unless "remaproughness" is false.
+float alpha_of(PbrtParams& params, const std::string& prefix) {
+    const float roughness = params.get_float(prefix + "roughness", 0.0f);
+    float u = params.get_float(prefix + "uroughness", roughness);
+    float v = params.get_float(prefix + "vroughness", roughness);
+    if (!(u >= 0.0f && v >= 0.0f)) {
+        params.fail("roughness must not be negative");
+    }
+    if (u != v) {
+        log_warning(params.what() + ": anisotropic roughness (uroughness " + std::to_string(u) +
+                    ", vroughness " + std::to_string(v) +
+                    ") is rendered isotropic with their geometric mean");
+    }
+    if (params.get_bool("remaproughness", true)) {
+        u = std::sqrt(u);
+        v = std::sqrt(v);
+    }
+    return std::sqrt(u * v);
+}
+
+// A Fresnel reflectance at normal incidence, ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2), per channel.
+glm::vec3 normal_incidence_reflectance(glm::vec3 eta, glm::vec3 k) {
+    return ((eta - 1.0f) * (eta - 1.0f) + k * k) / ((eta + 1.0f) * (eta + 1.0f) + k * k);
+}
+
+void check_unit(glm::vec3 colour, const PbrtParams& params, const std::string& name) {
+    for (int c = 0; c < 3; ++c) {
+        if (!(colour[c] >= 0.0f && colour[c] <= 1.0f)) {
+            params.fail(in_quotes(name) + " component " + std::to_string(c) + " = " +
+                        std::to_string(colour[c]) + " outside [0, 1]");
+        }
+    }
+}
+
+}  // namespace
+
+void PbrtMaterials::define_texture(const PbrtDirective& directive) {
+    const std::string& name = directive.strings[0];
+    const std::string& kind = directive.strings[1];
+    const std::string& type = directive.strings[2];
+    TextureEntry entry;
+    entry.what = directive.where() + ": Texture " + in_quotes(name);
+    PbrtParams params(directive, entry.what + " (" + excerpt(type) + ")");
+    if (kind != "spectrum" && kind != "color") {
+        entry.refused = "is a " + excerpt(kind) + " texture (only spectrum textures serve, as " +
+                        "diffuse reflectances)";
+    } else if (type == "constant") {
+        entry.value = params.get_rgb("value").value_or(glm::vec3(1.0f));
+        check_unit(entry.value, params, "value");
+        params.warn_unused();
+    } else if (type == "imagemap") {
+        const std::string file = params.get_string("filename", "");
+        if (file.empty()) {
+            params.fail("parameter \"string filename\" is missing");
+        }
+        const std::string encoding = params.get_string("encoding", "sRGB");
+        if (encoding != "sRGB") {
+            params.fail("encoding " + in_quotes(encoding) +
+                        " is not supported (8-bit images are decoded as sRGB, float ones as "
+                        "linear)");
+        }
+        if (params.get_bool("invert", false)) {
+            params.fail("\"invert\" is not supported");
+        }
+        if (params.get_string("mapping", "uv") != "uv" || params.get_float("uscale", 1) != 1 ||
+            params.get_float("vscale", 1) != 1 || params.get_float("udelta", 0) != 0 ||
+            params.get_float("vdelta", 0) != 0) {
+            params.fail("texture coordinate mappings other than plain \"uv\" are not supported");
+        }
+        if (params.get_string("wrap", "repeat") != "repeat") {
+            log_warning(params.what() +
+                        ": wrap modes other than \"repeat\" are not supported: "
+                        "the texture repeats");
+        }
+        params.ignore("filter");  // radcache filters textures its own way
+        params.ignore("maxanisotropy");
+        entry.value = glm::vec3(params.get_float("scale", 1.0f));
+        const std::filesystem::path path =
+            std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : dir_ / file;
+        entry.texture = load_image(path, params);
+        if (scene_.textures[entry.texture].max_value * entry.value.x > 1.0f + 1e-6f) {
+            params.fail("texture values times scale reach " +
+                        std::to_string(scene_.textures[entry.texture].max_value * entry.value.x) +
+                        " (albedo > 1)");
+        }
+        params.warn_unused();
+    } else {
+        entry.refused = "is of class " + in_quotes(type) + " (imagemap and constant are supported)";
+    }
+    textures_[name] = entry;
+}
+
+int PbrtMaterials::load_image(const std::filesystem::path& path, PbrtParams& params) {
+    const std::string key = path.lexically_normal().string();
+    const auto found = images_.find(key);
+    if (found != images_.end()) {
+        return found->second;
+    }
+    if (!files_.exists(path)) {
+        params.fail("image file " + in_quotes(path.string()) + " not found");
+    }
+    scene_.textures.push_back(load_texture(path, files_));
+    images_[key] = static_cast<int>(scene_.textures.size() - 1);
+    return images_[key];
+}
+
+int PbrtMaterials::define(const PbrtDirective& directive) {
+    Spec spec;
+    spec.directive = directive;
+    spec.type = directive.strings[0];
+    spec.what = directive.where() + ": Material " + in_quotes(spec.type);
+    specs_.push_back(std::move(spec));
+    return static_cast<int>(specs_.size() - 1);
+}
+
+void PbrtMaterials::define_named(const PbrtDirective& directive) {
+    const std::string& name = directive.strings[0];
+    Spec spec;
+    spec.directive = directive;
+    spec.what = directive.where() + ": MakeNamedMaterial " + in_quotes(name);
+    PbrtParams params(directive, spec.what);
+    spec.type = params.get_string("type", "");
+    if (spec.type.empty()) {
+        params.fail("parameter \"string type\" is missing");
+    }
+    specs_.push_back(std::move(spec));
+    named_[name] = static_cast<int>(specs_.size() - 1);
+}
+
+int PbrtMaterials::named(const PbrtDirective& directive) const {
+    const auto found = named_.find(directive.strings[0]);
+    if (found == named_.end()) {
+        throw Error(directive.where() + ": NamedMaterial " + in_quotes(directive.strings[0]) +
+                    ": no material of that name is defined");
+    }
+    return found->second;
+}
+
+int PbrtMaterials::scene_material(int handle) {
+    if (handle < 0) {
+        return default_material(scene_);
+    }
+    Spec& spec = specs_[handle];
+    if (spec.made < 0) {
+        scene_.materials.push_back(make(spec));
+        spec.made = static_cast<int>(scene_.materials.size() - 1);
+    }
+    return spec.made;
+}
+
+glm::vec3 PbrtMaterials::reflectance(PbrtParams& params, const std::string& name,
+                                     glm::vec3 fallback, int* texture) {
+    if (params.type_of(name) == "texture") {
+        const std::string texture_name = params.get_string(name, "");
+        const auto found = textures_.find(texture_name);
+        if (found == textures_.end()) {
+            params.fail("texture " + in_quotes(texture_name) + " is not defined");
+        }
+        if (!found->second.refused.empty()) {
+            params.fail("texture " + in_quotes(texture_name) + " (" + found->second.what + ") " +
+                        found->second.refused);
+        }
+        *texture = found->second.texture;
+        return found->second.value;
+    }
+    const glm::vec3 colour = params.get_rgb(name).value_or(fallback);
+    check_unit(colour, params, name);
+    return colour;
+}
+
+Material PbrtMaterials::make(Spec& spec) {
+    const std::string why = refusal(spec.type);
+    if (!why.empty()) {
+        throw Error(spec.what + " " + why);
+    }
+    PbrtParams params(spec.directive, spec.what);
+    params.ignore("type");
+    Material material;
+    material.name = "pbrt" + std::to_string(scene_.materials.size()) + "_" + spec.type;
+    if (spec.type == "diffuse") {
+        material.diffuse =
+            reflectance(params, "reflectance", glm::vec3(0.5f), &material.diffuse_texture);
+    } else if (spec.type == "coateddiffuse") {
+        // The coat's Fresnel reflectance at normal incidence, ((eta - 1) / (eta + 1))^2, as the
+        // specular lobe; the base seen through the coat as the diffuse one.
+        const float eta = params.get_float("eta", 1.5f);
+        if (!(eta >= 1.0f && eta <= 10.0f)) {
+            params.fail("eta must lie in [1, 10]");
+        }
+        const float f0 = (eta - 1.0f) * (eta - 1.0f) / ((eta + 1.0f) * (eta + 1.0f));
+        const glm::vec3 base =
+            reflectance(params, "reflectance", glm::vec3(0.5f), &material.diffuse_texture);
+        material.kind = MaterialKind::kPhong;
+        material.diffuse = (1.0f - f0) * base;
+        material.specular = glm::vec3(f0);
+        material.exponent = phong_exponent_of_alpha(alpha_of(params, ""));
+        if (params.get_rgb("albedo").value_or(glm::vec3(0.0f)) != glm::vec3(0.0f)) {
+            log_warning(spec.what + ": the scattering medium in the coat (albedo) is ignored");
+        }
+        for (const char* ignored : {"thickness", "g", "maxdepth", "nsamples"}) {
+            params.ignore(ignored);  // the layered simulation's own settings
+        }
+    } else {
+        material.kind = MaterialKind::kPhong;
+        material.diffuse = glm::vec3(0.0f);
+        int texture = -1;
+        if (params.has("reflectance")) {
+            material.specular = reflectance(params, "reflectance", glm::vec3(1.0f), &texture);
+            if (texture >= 0) {
+                params.fail("a textured conductor reflectance is not supported");
+            }
+        } else {
+            const auto eta = params.get_rgb("eta");
+            const auto k = params.get_rgb("k");
+            if (!eta || !k) {
+                params.fail(
+                    "give \"rgb eta\" and \"rgb k\", or \"rgb reflectance\" (pbrt's "
+                    "default copper spectra are not supported)");
+            }
+            if (glm::any(glm::lessThan(*eta, glm::vec3(0.0f))) ||
+                glm::any(glm::lessThan(*k, glm::vec3(0.0f)))) {
+                params.fail("eta and k must not be negative");
+            }
+            material.specular = normal_incidence_reflectance(*eta, *k);
+        }
+        material.exponent = phong_exponent_of_alpha(alpha_of(params, ""));
+    }
+    params.warn_unused();
+    return material;
+}
+
+}  // namespace rc

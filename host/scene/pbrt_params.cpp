@@ -1,0 +1,176 @@
+#include "scene/pbrt_params.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "util/error.h"
+#include "util/log.h"
+#include "util/text.h"
+
+namespace rc {
+
+PbrtParams::PbrtParams(const PbrtDirective& directive, std::string what)
+    : params_(directive.params), used_(directive.params.size(), false), what_(std::move(what)) {
+    std::set<std::string> names;
+    for (const PbrtParam& param : params_) {
+        if (!names.insert(param.name).second) {
+            fail("parameter \"" + excerpt(param.name) + "\" is given twice");
+        }
+    }
+}
+
+bool PbrtParams::has(const std::string& name) const {
+    return std::any_of(params_.begin(), params_.end(),
+                       [&](const PbrtParam& p) { return p.name == name; });
+}
+
+std::string PbrtParams::type_of(const std::string& name) const {
+    for (const PbrtParam& p : params_) {
+        if (p.name == name) {
+            return p.type;
+        }
+    }
+    return "";
+}
+
+void PbrtParams::fail(const std::string& message) const { throw Error(what_ + ": " + message); }
+
+const PbrtParam* PbrtParams::find(const std::string& name, const std::vector<std::string>& types) {
+    for (size_t i = 0; i < params_.size(); ++i) {
+        if (params_[i].name != name) {
+            continue;
+        }
+        used_[i] = true;
+        if (std::find(types.begin(), types.end(), params_[i].type) == types.end()) {
+            std::string list;
+            for (const std::string& t : types) {
+                list += (list.empty() ? "" : " or ") + t;
+            }
+            fail("parameter \"" + excerpt(name) + "\" must be of type " + list + ", not " +
+                 excerpt(params_[i].type));
+        }
+        return &params_[i];
+    }
+    return nullptr;
+}
+
+namespace {
+
+std::string declared(const PbrtParam& p) { return "\"" + excerpt(p.type + " " + p.name) + "\""; }
+
+}  // namespace
+
+float PbrtParams::get_float(const std::string& name, float fallback) {
+    const PbrtParam* p = find(name, {"float"});
+    if (p == nullptr) {
+        return fallback;
+    }
+    if (p->numbers.size() != 1) {
+        fail("parameter " + declared(*p) + " expects one number");
+    }
+    const auto value = static_cast<float>(p->numbers[0]);
+    if (!std::isfinite(value)) {
+        fail("parameter " + declared(*p) + " overflows float");
+    }
+    return value;
+}
+
+int PbrtParams::get_int(const std::string& name, int fallback) {
+    const PbrtParam* p = find(name, {"integer"});
+    if (p == nullptr) {
+        return fallback;
+    }
+    if (p->numbers.size() != 1) {
+        fail("parameter " + declared(*p) + " expects one integer");
+    }
+    return static_cast<int>(p->numbers[0]);
+}
+
+bool PbrtParams::get_bool(const std::string& name, bool fallback) {
+    const PbrtParam* p = find(name, {"bool"});
+    if (p == nullptr) {
+        return fallback;
+    }
+    if (p->strings.size() != 1) {
+        fail("parameter " + declared(*p) + " expects one of true or false");
+    }
+    return p->strings[0] == "true";
+}
+
+std::string PbrtParams::get_string(const std::string& name, const std::string& fallback) {
+    const PbrtParam* p = find(name, {"string", "texture"});
+    if (p == nullptr) {
+        return fallback;
+    }
+    if (p->strings.size() != 1) {
+        fail("parameter " + declared(*p) + " expects one string");
+    }
+    return p->strings[0];
+}
+
+std::optional<glm::vec3> PbrtParams::get_point3(const std::string& name) {
+    const std::vector<double> v = get_numbers(name, {"point3", "point", "vector3", "vector"}, 3);
+    if (v.empty()) {
+        return std::nullopt;
+    }
+    if (v.size() != 3) {
+        fail("parameter \"" + excerpt(name) + "\" expects one point (3 numbers)");
+    }
+    return glm::vec3(v[0], v[1], v[2]);
+}
+
+std::vector<double> PbrtParams::get_numbers(const std::string& name,
+                                            const std::vector<std::string>& types, size_t width) {
+    const PbrtParam* p = find(name, types);
+    if (p == nullptr) {
+        return {};
+    }
+    if (p->numbers.size() % width != 0) {
+        fail("parameter " + declared(*p) + " has " + std::to_string(p->numbers.size()) +
+             " numbers, not a multiple of " + std::to_string(width));
+    }
+    for (double value : p->numbers) {
+        if (!std::isfinite(static_cast<float>(value))) {
+            fail("parameter " + declared(*p) + " has a value that overflows float");
+        }
+    }
+    return p->numbers;
+}
+
+std::optional<glm::vec3> PbrtParams::get_rgb(const std::string& name) {
+    const std::string type = type_of(name);
+    if (type == "blackbody" || type == "spectrum") {
+        find(name, {type});
+        fail("parameter \"" + excerpt(type + " " + name) + "\": " + type +
+             " spectra are not supported (radcache renders in RGB: give \"rgb " + excerpt(name) +
+             "\")");
+    }
+    const std::vector<double> v = get_numbers(name, {"rgb", "color"}, 3);
+    if (v.empty()) {
+        return std::nullopt;
+    }
+    if (v.size() != 3) {
+        fail("parameter \"rgb " + excerpt(name) + "\" expects 3 numbers");
+    }
+    return glm::vec3(v[0], v[1], v[2]);
+}
+
+void PbrtParams::ignore(const std::string& name) {
+    for (size_t i = 0; i < params_.size(); ++i) {
+        if (params_[i].name == name) {
+            used_[i] = true;
+        }
+    }
+}
+
+void PbrtParams::warn_unused() const {
+    for (size_t i = 0; i < params_.size(); ++i) {
+        if (!used_[i]) {
+            log_warning(what_ + ": parameter " + declared(params_[i]) +
+                        " is not supported and ignored");
+        }
+    }
+}
+
+}  // namespace rc

@@ -1,0 +1,55 @@
+// Typed access to a pbrt-v4 directive's parameter list (scene/pbrt_parser.h), as pbrt's
+// ParameterDictionary gives it: a value by name with a default, its type checked. Every
+// parameter read is marked; those left unread are warned about by name (pbrt refuses them), so
+// nothing in the file is dropped without a word.
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/pbrt_parser.h"
+
+namespace rc {
+
+class PbrtParams {
+   public:
+    // `what` names the directive in messages: "scene.pbrt:12: Shape \"trianglemesh\"".
+    PbrtParams(const PbrtDirective& directive, std::string what);
+
+    const std::string& what() const { return what_; }
+    bool has(const std::string& name) const;
+    // The parameter's declared type ("" when absent); does not mark it read.
+    std::string type_of(const std::string& name) const;
+
+    float get_float(const std::string& name, float fallback);
+    int get_int(const std::string& name, int fallback);
+    bool get_bool(const std::string& name, bool fallback);
+    std::string get_string(const std::string& name, const std::string& fallback);
+    std::optional<glm::vec3> get_point3(const std::string& name);
+    // All values of a float, integer, point3, normal3 or point2 array ("point3 P", "integer
+    // indices"), checked to be a whole number of `width`-tuples.
+    std::vector<double> get_numbers(const std::string& name, const std::vector<std::string>& types,
+                                    size_t width);
+    // An "rgb" (or pbrt-v3 "color") spectrum; blackbody and sampled spectra are refused.
+    std::optional<glm::vec3> get_rgb(const std::string& name);
+    // Marks the parameter read without using it (a parameter the import may ignore).
+    void ignore(const std::string& name);
+
+    // Warns about every parameter no getter read: "<what>: parameter \"float foo\" is not
+    // supported and ignored".
+    void warn_unused() const;
+    // Error "<what>: <message>".
+    [[noreturn]] void fail(const std::string& message) const;
+
+   private:
+    const PbrtParam* find(const std::string& name, const std::vector<std::string>& types);
+
+    std::vector<PbrtParam> params_;
+    std::vector<bool> used_;
+    std::string what_;
+};
+
+}  // namespace rc

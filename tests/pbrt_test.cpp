@@ -1,0 +1,440 @@
+// pbrt-v4 import (scene/pbrt_loader.h) and `radcache convert` of it: the Cornell box in pbrt's
+// format (tools/make_pbrt_test_scenes.py) renders the image of scenes/cornell-box bitwise; an
+// asymmetric scene lands where pbrt puts it (pbrt's camera space is left-handed: no mirroring),
+// with its transforms, materials, lights and instances as docs/scene-format.md says; PLY meshes
+// load in ASCII and binary; refused and malformed inputs give one line naming file:line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "fuzz_targets.h"
+#include "glossy_scenes.h"  // test::bitwise_equal
+#include "image/image_io.h"
+#include "scene/pbrt_loader.h"
+#include "scene/scene_loader.h"
+#include "test_support.h"
+#include "util/error.h"
+#include "util/file_io.h"
+
+namespace rc {
+namespace {
+
+std::filesystem::path data(const std::string& name) {
+    return test::source_dir() / "tests/data/pbrt" / name;
+}
+
+Image render(const std::filesystem::path& scene, const std::filesystem::path& out,
+             const std::vector<std::string>& extra = {"--width", "32", "--height", "32"}) {
+    std::vector<std::string> args = {"render", scene.string(), "-o", out.string(), "--spp",
+                                     "4",      "--quiet"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const test::CommandResult result = test::run_radcache(args);
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    return read_image(out);
+}
+
+TEST(Pbrt, CornellBoxRendersTheJsonScenesImageBitwise) {
+    const auto dir = test::scratch_dir("pbrt_cornell");
+    const Image json = render(test::source_dir() / "scenes/cornell-box/scene.json", dir / "j.exr");
+    const Image pbrt = render(data("cornell-box.pbrt"), dir / "p.exr");
+    EXPECT_TRUE(test::bitwise_equal(json, pbrt));
+    // The scene's own settings came across: 64 samples, depth 64, 512 x 512.
+    const Scene scene = load_scene(data("cornell-box.pbrt"));
+    EXPECT_EQ(scene.render.spp, 64);
+    EXPECT_EQ(scene.render.max_depth, 64);
+    EXPECT_EQ(scene.base_camera.width, 512);
+    EXPECT_EQ(scene.base_camera.filter.type, RC_FILTER_BOX);
+}
+
+void expect_near(glm::vec3 a, glm::vec3 b, const std::string& what) {
+    EXPECT_LT(glm::length(a - b), 1e-5f)
+        << what << ": (" << a.x << ", " << a.y << ", " << a.z << ") against (" << b.x << ", " << b.y
+        << ", " << b.z << ")";
+}
+
+glm::vec3 world(const Shape& shape, glm::vec3 p) {
+    return glm::vec3(shape.transform * glm::vec4(p, 1.0f));
+}
+
+// Values worked out by hand from tools/make_pbrt_test_scenes.py's hierarchy(). The camera looks
+// from the origin along +z with pbrt's plain LookAt, so the import mirrors pbrt's world about the
+// plane x = 0 (pbrt_loader.h): a pbrt point (x, y, z) is (-x, y, z) in radcache's world.
+TEST(Pbrt, HierarchyTransformsMaterialsLightsAndInstances) {
+    const Scene scene = load_scene(data("hierarchy.pbrt"));
+    ASSERT_EQ(scene.shapes.size(), 5u);
+    // The lamp: object (x, y, 0) -> pbrt (2 - 0.25 y, 0.5 x, 4), ReverseOrientation.
+    const Shape& lamp = scene.shapes[0];
+    for (const glm::vec3& p : lamp.mesh.positions) {
+        expect_near(world(lamp, p), glm::vec3(-(2.0f - 0.25f * p.y), 0.5f * p.x, 4.0f), "lamp");
+    }
+    EXPECT_TRUE(lamp.flip_normals);
+    ASSERT_EQ(lamp.emission.size(), 1u);
+    expect_near(lamp.emission[0], glm::vec3(1.0f), "lamp radiance");
+    EXPECT_EQ(scene.materials[lamp.materials[0]].name, "default");
+    // The plate: ConcatTransform scale 2, translate (-2, 0, 6); a conductor.
+    const Shape& plate = scene.shapes[1];
+    expect_near(world(plate, {-1, -1, 0}), glm::vec3(4, -2, 6), "plate");
+    const Material& gold = scene.materials[plate.materials[0]];
+    EXPECT_EQ(gold.kind, MaterialKind::kPhong);
+    expect_near(gold.diffuse, glm::vec3(0.0f), "conductor diffuse");
+    // F0 = ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2) of n = 0.2, k = 3.5 (red channel).
+    EXPECT_NEAR(gold.specular.r, (0.64 + 12.25) / (1.44 + 12.25), 1e-5);
+    EXPECT_NEAR(gold.exponent, 2.0 / (0.09 * 0.09) - 2.0, 1e-2);  // alpha = 0.09, not remapped
+    // The picture: Transform replaces the CTM; an image texture times 0.5, uvs as given.
+    const Shape& picture = scene.shapes[2];
+    expect_near(world(picture, {1, 1, 0}), glm::vec3(-1, 0.5, 8), "picture");
+    const Material& checks = scene.materials[picture.materials[0]];
+    EXPECT_EQ(checks.kind, MaterialKind::kDiffuse);
+    ASSERT_GE(checks.diffuse_texture, 0);
+    EXPECT_EQ(scene.textures[checks.diffuse_texture].width, 2);
+    expect_near(checks.diffuse, glm::vec3(0.5f), "texture scale");
+    ASSERT_EQ(picture.mesh.uvs.size(), 4u);
+    EXPECT_EQ(picture.mesh.uvs[2], glm::vec2(1.0f, 1.0f));
+    // Two instances of the tile: scale 0.25 inside the object, translate (0, +-1, 5) outside;
+    // coateddiffuse: Fresnel 0.04 at eta 1.5, the base times 0.96, roughness 0: a near mirror.
+    expect_near(world(scene.shapes[3], {1, 1, 0}), glm::vec3(-0.25f, 1.25f, 5.0f), "tile 1");
+    expect_near(world(scene.shapes[4], {1, 1, 0}), glm::vec3(-0.25f, -0.75f, 5.0f), "tile 2");
+    const Material& tile = scene.materials[scene.shapes[3].materials[0]];
+    EXPECT_EQ(tile.kind, MaterialKind::kPhong);
+    expect_near(tile.specular, glm::vec3(0.04f), "coat F0");
+    expect_near(tile.diffuse, 0.96f * glm::vec3(0.2f, 0.6f, 0.2f), "coat base");
+    EXPECT_FLOAT_EQ(tile.exponent, 1e6f);
+    EXPECT_EQ(scene.shapes[4].materials[0], scene.shapes[3].materials[0]);
+    // The named "coat" no shape uses is not made: default, gold, checks, tile.
+    EXPECT_EQ(scene.materials.size(), 4u);
+    // The Include's lights: a point at pbrt (1, 2, 3) + from (1, 0, 0); a spot from (0, 4, 5)
+    // down to (0, 3, 5), I 20 x scale 0.5, cone 30 degrees, full beam 30 - 10.
+    ASSERT_EQ(scene.emitters.size(), 2u);
+    EXPECT_EQ(scene.emitters[0].kind, EmitterKind::kPoint);
+    expect_near(scene.emitters[0].position, glm::vec3(-2, 2, 3), "point light");
+    expect_near(scene.emitters[0].intensity, glm::vec3(5, 4, 3), "point intensity");
+    EXPECT_EQ(scene.emitters[1].kind, EmitterKind::kSpot);
+    expect_near(scene.emitters[1].position, glm::vec3(0, 4, 5), "spot");
+    expect_near(scene.emitters[1].look_at, glm::vec3(0, 3, 5), "spot target");
+    expect_near(scene.emitters[1].intensity, glm::vec3(10), "spot intensity");
+    EXPECT_FLOAT_EQ(scene.emitters[1].cutoff_angle, 30.0f);
+    EXPECT_FLOAT_EQ(scene.emitters[1].beam_width, 20.0f);
+    // Camera, film, sampler, integrator, filter.
+    expect_near(scene.base_camera.position, glm::vec3(0), "camera");
+    expect_near(scene.base_camera.look_at, glm::vec3(0, 0, 1), "camera look_at");
+    expect_near(scene.base_camera.up, glm::vec3(0, 1, 0), "camera up");
+    EXPECT_EQ(scene.base_camera.fov_axis, FovAxis::kSmaller);
+    EXPECT_FLOAT_EQ(scene.base_camera.fov_degrees, 90.0f);
+    EXPECT_EQ(scene.base_camera.width, 64);
+    EXPECT_EQ(scene.base_camera.height, 32);
+    EXPECT_EQ(scene.base_camera.sampler, RC_SAMPLER_INDEPENDENT);
+    EXPECT_EQ(scene.render.spp, 4);
+    EXPECT_EQ(scene.render.max_depth, 3);
+}
+
+// pbrt's image has world +x on the right (its camera x is cross(up, forward)): the lamp, at pbrt
+// x in [1.75, 2.25], y in [-0.5, 0.5], z = 4, covers exactly pixels x 39-40, y 14-17 of the
+// 64 x 32 image (fov 90 on the vertical: raster x = (x / z + 2) * 16, y = (1 - y / z) * 16).
+TEST(Pbrt, ImageIsNotMirroredAndLandsWhereHandWorked) {
+    const auto dir = test::scratch_dir("pbrt_mirror");
+    const Image image = render(data("hierarchy.pbrt"), dir / "h.exr", {"-D", "max_depth=0"});
+    ASSERT_EQ(image.width, 64);
+    ASSERT_EQ(image.height, 32);
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const bool lamp = x >= 39 && x <= 40 && y >= 14 && y <= 17;
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_NEAR(image.at(x, y, c), lamp ? 1.0f : 0.0f, 1e-6f)
+                    << "pixel (" << x << ", " << y << ")";
+            }
+        }
+    }
+}
+
+// A wide film: pbrt's fov spans the shorter axis (y here), as the lamp's pixels above show; a tall
+// one spans x.
+TEST(Pbrt, FovSpansTheShorterAxis) {
+    const auto dir = test::scratch_dir("pbrt_fov");
+    std::string text = read_file(data("hierarchy.pbrt"));
+    text.replace(text.find("64 \"integer yresolution\" 32"), 27, "32 \"integer yresolution\" 64");
+    text.replace(text.find("Include"), std::string::npos, "");
+    write_file_atomically(dir / "tall.pbrt", text);
+    write_file_atomically(dir / "checker.png", read_file(data("checker.png")));
+    // Tall 32 x 64: fov 90 on x, screen x in [-1, 1], y in [-2, 2]; the lamp's x / z in
+    // [0.4375, 0.5625] is raster x = (x / z + 1) * 16 in [23, 25); y / z in [-0.125, 0.125] is
+    // raster y = (2 - y / z) * 16 in [30, 34).
+    const Image image = render(dir / "tall.pbrt", dir / "t.exr", {"-D", "max_depth=0"});
+    ASSERT_EQ(image.width, 32);
+    ASSERT_EQ(image.height, 64);
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const bool lamp = x >= 23 && x <= 24 && y >= 30 && y <= 33;
+            EXPECT_NEAR(image.at(x, y, 0), lamp ? 1.0f : 0.0f, 1e-6f) << x << ", " << y;
+        }
+    }
+}
+
+// A PLY with a triangle and a quad, with normals and uvs, in ASCII and binary little-endian.
+std::string ply_header(const std::string& format) {
+    return "ply\nformat " + format +
+           " 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+           "property float nx\nproperty float ny\nproperty float nz\nproperty float u\n"
+           "property float v\nelement face 2\nproperty list uchar int vertex_indices\n"
+           "end_header\n";
+}
+
+const float kPlyVertices[5][8] = {{0, 0, 0, 0, 0, 1, 0, 0},
+                                  {1, 0, 0, 0, 0, 1, 1, 0},
+                                  {1, 1, 0, 0, 0, 1, 1, 1},
+                                  {0, 1, 0, 0, 0, 1, 0, 1},
+                                  {2, 0, 0, 0, 0, 1, 0.5f, 0.5f}};
+
+std::string ascii_ply() {
+    std::string text = ply_header("ascii");
+    for (const auto& v : kPlyVertices) {
+        for (float x : v) {
+            text += std::to_string(x) + " ";
+        }
+        text += "\n";
+    }
+    return text + "4 0 1 2 3\n3 1 4 2\n";
+}
+
+std::string binary_ply() {
+    std::string bytes = ply_header("binary_little_endian");
+    for (const auto& v : kPlyVertices) {
+        bytes.append(reinterpret_cast<const char*>(v), sizeof v);
+    }
+    for (const std::vector<int32_t>& face : {std::vector<int32_t>{0, 1, 2, 3}, {1, 4, 2}}) {
+        bytes += static_cast<char>(face.size());
+        bytes.append(reinterpret_cast<const char*>(face.data()), face.size() * 4);
+    }
+    return bytes;
+}
+
+std::filesystem::path write_ply_scene(const std::filesystem::path& dir, const std::string& name,
+                                      const std::string& ply) {
+    write_file_atomically(dir / (name + ".ply"), ply);
+    const auto scene = dir / (name + ".pbrt");
+    write_file_atomically(scene,
+                          "LookAt 0.5 0.5 5  0.5 0.5 0  0 1 0\nCamera \"perspective\"\n"
+                          "WorldBegin\nAreaLightSource \"diffuse\"\nShape \"plymesh\" "
+                          "\"string filename\" \"" +
+                              name + ".ply\"\n");
+    return scene;
+}
+
+TEST(Pbrt, PlyMeshesLoadInAsciiAndBinary) {
+    const auto dir = test::scratch_dir("pbrt_ply");
+    for (const auto& [name, ply] : {std::pair{"ascii", ascii_ply()}, {"binary", binary_ply()}}) {
+        SCOPED_TRACE(name);
+        const Scene scene = load_scene(write_ply_scene(dir, name, ply));
+        ASSERT_EQ(scene.shapes.size(), 1u);
+        const TriangleMesh& mesh = scene.shapes[0].mesh;
+        ASSERT_EQ(mesh.triangles.size(), 3u);  // the quad split in two
+        ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
+        ASSERT_EQ(mesh.uvs.size(), mesh.positions.size());
+        // Every triangle corner is one of the file's vertices, with its normal and uv.
+        double area = 0.0;
+        for (const glm::uvec3& t : mesh.triangles) {
+            for (int k = 0; k < 3; ++k) {
+                const glm::vec3 p = mesh.positions[t[k]];
+                bool found = false;
+                for (const auto& v : kPlyVertices) {
+                    if (p == glm::vec3(v[0], v[1], v[2])) {
+                        found = true;
+                        EXPECT_EQ(mesh.uvs[t[k]], glm::vec2(v[6], v[7]));
+                        expect_near(mesh.normals[t[k]], glm::vec3(0, 0, 1), "normal");
+                    }
+                }
+                EXPECT_TRUE(found);
+            }
+            const glm::vec3 a = mesh.positions[t.x], b = mesh.positions[t.y],
+                            c = mesh.positions[t.z];
+            area += glm::length(glm::cross(b - a, c - a)) / 2.0;
+            EXPECT_GT(glm::cross(b - a, c - a).z, 0.0f);  // the file's winding kept
+        }
+        EXPECT_NEAR(area, 1.5, 1e-6);  // the unit quad and the triangle (1,0) (2,0) (1,1)
+    }
+}
+
+struct Refusal {
+    std::string name;
+    std::string text;      // after the standard header; the error is on its last line
+    std::string expected;  // in the error line
+    int line = 0;          // the line the error names; 0: the case's last
+};
+
+// The header every refusal case follows: 5 lines, so a case's first line is line 6.
+const char* kHeader =
+    "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\"\nFilm \"rgb\"\nWorldBegin\n"
+    "LightSource \"point\" \"point3 from\" [0 0 -4]\n";
+const char* kTriangle = "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0]\n";
+
+// Runs `radcache render` on the case; expects exit 1, one line naming file:line, no image.
+void expect_refused(const std::filesystem::path& dir, const std::string& name,
+                    const std::string& text, const std::string& expected, int line) {
+    const auto file = dir / (name + ".pbrt");
+    write_file_atomically(file, text);
+    const test::CommandResult result = test::run_radcache(
+        {"render", file.string(), "-o", (dir / "out.png").string(), "--spp", "1"});
+    EXPECT_EQ(result.exit_code, 1) << name << ": " << result.output;
+    const std::string where =
+        "radcache: error: " + file.string() + (line > 0 ? ":" + std::to_string(line) + ":" : "");
+    EXPECT_EQ(result.output.rfind(where, 0), 0u) << name << ": " << result.output;
+    EXPECT_NE(result.output.find(expected), std::string::npos) << name << ": " << result.output;
+    EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1)
+        << name << ": " << result.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png")) << name;
+}
+
+TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
+    const auto dir = test::scratch_dir("pbrt_refused");
+    const std::vector<Refusal> cases = {
+        {"curve", "Shape \"curve\" \"point3 P\" [0 0 0 1 0 0 2 0 0 3 0 0]\n",
+         "Shape \"curve\" is not supported"},
+        {"dielectric", std::string("Material \"dielectric\"\n") + kTriangle,
+         "Material \"dielectric\" transmits light", 6},
+        {"distant", "LightSource \"distant\"\n", "LightSource \"distant\" is not supported"},
+        {"blackbody", "AreaLightSource \"diffuse\" \"blackbody L\" [6500]\n",
+         "blackbody spectra are not supported"},
+        {"twosided", "AreaLightSource \"diffuse\" \"bool twosided\" true\n",
+         "two-sided area lights are not supported"},
+        {"medium", "MediumInterface \"fog\" \"\"\n", "participating media are not supported"},
+        {"envmap", "LightSource \"infinite\" \"string filename\" \"sky.exr\"\n",
+         "image maps (\"filename\") are not"},
+        {"checkerboard",
+         "Texture \"c\" \"spectrum\" \"checkerboard\"\nMaterial \"diffuse\" \"texture "
+         "reflectance\" \"c\"\n" +
+             std::string(kTriangle),
+         "is of class \"checkerboard\"", 7},
+        {"copper", std::string("Material \"conductor\"\n") + kTriangle,
+         "pbrt's default copper spectra are not supported", 6},
+        {"unknown", "Frobnicate 1 2 3\n", "unknown directive 'Frobnicate'"},
+        {"spectrum",
+         "Material \"diffuse\" \"spectrum reflectance\" [400 0.5 700 0.5]\n" +
+             std::string(kTriangle),
+         "spectrum spectra are not supported", 6},
+        {"alpha", "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"float alpha\" 0.5\n",
+         "alpha cut-outs are not supported"},
+    };
+    for (const Refusal& c : cases) {
+        const std::string text = std::string(kHeader) + c.text;
+        const int last = static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+        expect_refused(dir, c.name, text, c.expected, c.line > 0 ? c.line : last);
+    }
+    // Camera and filter types: in the options block.
+    expect_refused(dir, "ortho", "Camera \"orthographic\"\nWorldBegin\n",
+                   "Camera \"orthographic\" is not supported", 1);
+    expect_refused(dir, "mitchell", "PixelFilter \"mitchell\"\nWorldBegin\n",
+                   "PixelFilter \"mitchell\" is not supported", 1);
+    expect_refused(dir, "shape_first", std::string(kTriangle) + "WorldBegin\n",
+                   "Shape is not allowed before WorldBegin", 1);
+}
+
+// Wrong values, truncated files and missing files: one line naming the file (and the line).
+TEST(Pbrt, MalformedInputsAreRefusedCleanly) {
+    const auto dir = test::scratch_dir("pbrt_malformed");
+    const std::string head = kHeader;
+    expect_refused(dir, "unterminated", head + "Shape \"trianglemesh\n\"point3 P\" [0 0 0]\n",
+                   "unterminated string \"trianglemesh\"", 6);
+    expect_refused(dir, "bracket", head + "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0\n",
+                   "expected a value or ']', got the end of the file", 6);
+    expect_refused(dir, "type", head + "Shape \"trianglemesh\" \"point3 P\" \"zero\"\n",
+                   "expected numbers, got a string", 6);
+    expect_refused(dir, "fov_type", "Camera \"perspective\" \"integer fov\" 45\nWorldBegin\n",
+                   "parameter \"fov\" must be of type float, not integer", 1);
+    expect_refused(dir, "indices",
+                   head +
+                       "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] "
+                       "\"integer indices\" [0 1 3]\n",
+                   "index 3 out of range (3 vertices)", 6);
+    expect_refused(dir, "include", head + "Include \"nowhere.pbrt\"\n", "file not found", 6);
+    expect_refused(dir, "twice", "Camera \"perspective\" \"float fov\" 45 \"float fov\" 50\n",
+                   "parameter \"fov\" is given twice", 1);
+    expect_refused(dir, "no_world", "Camera \"perspective\"\n", "has no WorldBegin", 0);
+    expect_refused(dir, "unbalanced", head + "AttributeEnd\n",
+                   "AttributeEnd without a matching AttributeBegin", 6);
+    // An include cycle stops at the nesting limit.
+    write_file_atomically(dir / "self.pbrt", head + "Include \"self.pbrt\"\n");
+    expect_refused(dir, "self", head + "Include \"self.pbrt\"\n", "nested deeper", 0);
+    // A PLY whose header declares more than its file holds, and one without end_header (on
+    // which Assimp 5.2 loops without end: radcache checks the header first).
+    std::string huge = ascii_ply();
+    huge.replace(huge.find("element vertex 5"), 16, "element vertex 500000");
+    write_file_atomically(dir / "huge.ply", huge);
+    expect_refused(dir, "huge", head + "Shape \"plymesh\" \"string filename\" \"huge.ply\"\n",
+                   "its elements need at least", 6);
+    write_file_atomically(dir / "headless.ply",
+                          "ply\nformat ascii 1.0\nelement vertex 5\n"
+                          "property float x\nprop 1 2 3\n3 1 4 2\n");
+    expect_refused(dir, "headless",
+                   head + "Shape \"plymesh\" \"string filename\" \"headless.ply\"\n",
+                   "no \"ply\" ... \"end_header\" header", 6);
+    // Truncated PLY files: the ASCII one ends inside its vertices, the binary one in its faces.
+    for (const auto& [name, ply] :
+         {std::pair{"ascii_cut", ascii_ply().substr(0, ascii_ply().size() - 40)},
+          {"binary_cut", binary_ply().substr(0, binary_ply().size() - 6)}}) {
+        write_file_atomically(dir / (std::string(name) + ".ply"), ply);
+        expect_refused(dir, name,
+                       head + "Shape \"plymesh\" \"string filename\" \"" + name + ".ply\"\n", "PLY",
+                       6);
+    }
+}
+
+// A parameter the import does not know is one warning naming it; --strict makes it an error.
+TEST(Pbrt, UnsupportedParametersWarnAndStrictRefuses) {
+    const auto dir = test::scratch_dir("pbrt_warn");
+    const auto file = dir / "warn.pbrt";
+    write_file_atomically(file, std::string(kHeader) +
+                                    "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] "
+                                    "\"vector3 S\" [1 0 0 1 0 0 1 0 0]\n");
+    const test::CommandResult result =
+        test::run_radcache({"render", file.string(), "-o", (dir / "out.png").string(), "--spp", "1",
+                            "--width", "8", "--height", "8"});
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find(file.string() +
+                                 ":6: Shape \"trianglemesh\": parameter \"vector3 S\" is not "
+                                 "supported and ignored"),
+              std::string::npos)
+        << result.output;
+    const test::CommandResult strict = test::run_radcache(
+        {"render", file.string(), "-o", (dir / "strict.png").string(), "--spp", "1", "--strict"});
+    EXPECT_NE(strict.exit_code, 0);
+    EXPECT_FALSE(std::filesystem::exists(dir / "strict.png"));
+}
+
+TEST(Pbrt, ConvertedSceneRendersBitwiseAsThePbrt) {
+    const auto dir = test::scratch_dir("pbrt_convert");
+    for (const std::string name : {"cornell-box", "hierarchy"}) {
+        const test::CommandResult result = test::run_radcache(
+            {"convert", data(name + ".pbrt").string(), (dir / (name + ".json")).string(), "-q"});
+        ASSERT_EQ(result.exit_code, 0) << result.output;
+        const Image pbrt = render(data(name + ".pbrt"), dir / (name + "-p.exr"));
+        const Image json = render(dir / (name + ".json"), dir / (name + "-j.exr"));
+        EXPECT_TRUE(test::bitwise_equal(pbrt, json)) << name;
+        // The pbrt scene's render settings travel with it.
+        EXPECT_EQ(load_scene(dir / (name + ".json")).render.max_depth,
+                  load_scene(data(name + ".pbrt")).render.max_depth);
+    }
+}
+
+// The fuzz target's seeds (tests/fuzz/seeds/pbrt/) are whole scenes the import accepts, so that
+// fuzzing starts from inputs that reach every stage.
+TEST(Pbrt, FuzzSeedsAreScenesTheImportAccepts) {
+    const auto seeds = test::source_dir() / "tests/fuzz/seeds/pbrt";
+    int count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(seeds)) {
+        SCOPED_TRACE(entry.path().string());
+        const std::string input = read_file(entry.path());
+        MemoryFiles files;
+        for (auto& [name, bytes] : fuzz::split_files(reinterpret_cast<const uint8_t*>(input.data()),
+                                                     input.size(), "scene.pbrt")) {
+            files.add(name, std::move(bytes));
+        }
+        const Scene scene = load_pbrt_scene("scene.pbrt", files);
+        EXPECT_GT(scene.mesh.triangle_count(), 0u);
+        EXPECT_FALSE(scene.lights.lights.empty());
+        ++count;
+    }
+    EXPECT_GE(count, 5);
+}
+
+}  // namespace
+}  // namespace rc
