@@ -5,8 +5,9 @@
 #include "shared/radiance_cache.h"
 
 // The camera sample s of a pixel: the hit of the same camera ray the irradiance cache's passes
-// trace (rc_ic_camera_ray), its shading frame, w_o, pixel footprint and triangle, order -1. *glossy: its
-// material has a specular lobe to cache and the depth limit leaves a bounce for indirect light.
+// trace (rc_ic_camera_ray), its shading frame, w_o, pixel footprint and triangle, order -1.
+// *glossy: its material has a specular lobe to cache and the depth limit leaves a bounce for
+// indirect light.
 RC_FUNC RcQuery rc_glossy_camera_query(const SceneData* scene, const IcParams* params,
                                        const CameraParams* camera, uint pixel, uint s,
                                        bool* glossy) {

@@ -57,8 +57,8 @@ typedef struct RcQuery {
     float4 outgoing;          // xyz: w_o in the shading frame; w: 0
     float footprint;          // world size of a pixel at the hit
     int material;             // -1: no hit
-    int order;  // the material's order where its table represents w_o's lobe; 0: Monte
-                // Carlo; -1: no specular lobe or no hit (radiance caching does not serve it)
+    int order;      // the material's order where its table represents w_o's lobe; 0: Monte
+                    // Carlo; -1: no specular lobe or no hit (radiance caching does not serve it)
     int primitive;  // the triangle hit (-1: none)
 } RcQuery;
 
@@ -77,10 +77,10 @@ typedef struct RcGlossySample {
 
 // Parameters of radiance caching's record and splat kernels.
 typedef struct RcParams {
-    int order;         // n: the records' coefficient vectors have n^2 entries per channel
-    int strata_m;      // M: polar strata of a record's hemisphere
-    int strata_n;      // N: azimuthal strata
-    uint seed_lo;      // the 64-bit seed
+    int order;     // n: the records' coefficient vectors have n^2 entries per channel
+    int strata_m;  // M: polar strata of a record's hemisphere
+    int strata_n;  // N: azimuthal strata
+    uint seed_lo;  // the 64-bit seed
     uint seed_hi;
     float accuracy;      // a: records influence points within a R
     float max_weight;    // the largest weight (near a record's centre)

@@ -43,10 +43,9 @@ __kernel void tc_carry_radiance_cells(uint begin, uint end, RcParams params, TcP
     ray.origin = (float4)(site.origin.xyz, 0.0f);
     ray.direction = (float4)(direction, INFINITY);
     const MovedTriangles moved = {moved_slot, moved_triangles};
-    carried[i] = rc_tc_carry_sample(&scene, moved, emitters_now, emitters_next, &tc,
-                                    params.strata_m, params.strata_n,
-                                    rc_ic_record_frame(site.normal.xyz), site.origin.xyz, cell, ray,
-                                    cells[i]);
+    carried[i] = rc_tc_carry_sample(
+        &scene, moved, emitters_now, emitters_next, &tc, params.strata_m, params.strata_n,
+        rc_ic_record_frame(site.normal.xyz), site.origin.xyz, cell, ray, cells[i]);
 }
 
 // Item b: batch record b's hemisphere at the next frame into next_cells (rc_tc_assemble with the
@@ -54,8 +53,8 @@ __kernel void tc_carry_radiance_cells(uint begin, uint end, RcParams params, TcP
 __kernel void tc_assemble_radiance_cells(uint begin, uint end, RcParams params, TcParams tc,
                                          __global const uint* streams,
                                          __global const TcCarriedSample* carried,
-                                         __global const float4* cells,
-                                         __global float4* next_cells, __global uint* marks) {
+                                         __global const float4* cells, __global float4* next_cells,
+                                         __global uint* marks) {
     const uint b = begin + (uint)get_global_id(0);
     if (b >= end) {
         return;
@@ -63,8 +62,8 @@ __kernel void tc_assemble_radiance_cells(uint begin, uint end, RcParams params, 
     const size_t first = (size_t)b * (size_t)(params.strata_m * params.strata_n);
     uint key_lo, key_hi;
     rc_record_key(&params, &key_lo, &key_hi);
-    const TcCellJitter jitter = {params.strata_m,     params.strata_n, RC_TC_CELLS_UNIFORM, key_lo,
-                                 key_hi,              streams[b]};
+    const TcCellJitter jitter = {params.strata_m, params.strata_n, RC_TC_CELLS_UNIFORM,
+                                 key_lo,          key_hi,          streams[b]};
     rc_tc_assemble(&jitter, tc.hole_passes, carried + first, cells + first, next_cells + first,
                    marks + first);
 }

@@ -7,8 +7,8 @@
 #pragma once
 
 #include "irradiance_cache/ic_shading.h"
-#include "shared/temporal.h"
 #include "radiance_cache/rc_hemisphere.h"
+#include "shared/temporal.h"
 #include "temporal/tc_unshadowed.h"
 
 // The next frame's world triangles of the primitives that move: moved_slot[p] is primitive p's
@@ -232,12 +232,12 @@ RC_FUNC float4 rc_tc_fill_hole(RC_GLOBAL const float4* out, RC_GLOBAL const uint
                     inverse_depth > 0.0f ? (float)count / inverse_depth : INFINITY);
 }
 
-// A record's hemisphere (`jitter`: its cells and their jittered rays) at the next frame, as M N cells (L.rgb,
-// distance) into out[], from its carried samples (`carried`, one per cell of this frame; marks[]
-// is scratch of M N): a cell takes the nearest of the samples that cover its ray (a still sample
-// its own cell's; a moved one, its square, rc_tc_carry_sample; the first in cell order on a tie),
-// so that a moving surface neither grows nor shrinks by the cells its edge lands in; then up to
-// hole_passes passes fill each empty cell from its 3 x 3 neighbourhood (azimuth wraps,
+// A record's hemisphere (`jitter`: its cells and their jittered rays) at the next frame, as M N
+// cells (L.rgb, distance) into out[], from its carried samples (`carried`, one per cell of this
+// frame; marks[] is scratch of M N): a cell takes the nearest of the samples that cover its ray (a
+// still sample its own cell's; a moved one, its square, rc_tc_carry_sample; the first in cell order
+// on a tie), so that a moving surface neither grows nor shrinks by the cells its edge lands in;
+// then up to hole_passes passes fill each empty cell from its 3 x 3 neighbourhood (azimuth wraps,
 // rows do not; rc_tc_fill_hole) — the report's 3 x 3 filter, made to tell a gap in a surface
 // that came nearer from background a moving occluder uncovered; a cell still empty keeps this
 // frame's sample `seen`.

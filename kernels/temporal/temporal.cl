@@ -28,10 +28,9 @@ __kernel void tc_carry_cells(uint begin, uint end, IcParams params, TcParams tc,
     RngStream rng;
     const Ray ray = rc_ic_cell_ray(&params, streams[b], cell, normal, origins[b].xyz, &rng);
     const MovedTriangles moved = {moved_slot, moved_triangles};
-    carried[i] =
-        rc_tc_carry_sample(&scene, moved, emitters_now, emitters_next, &tc, params.strata_m,
-                           params.strata_n, rc_ic_record_frame(normal), origins[b].xyz, (int)cell,
-                           ray, cells[i]);
+    carried[i] = rc_tc_carry_sample(&scene, moved, emitters_now, emitters_next, &tc,
+                                    params.strata_m, params.strata_n, rc_ic_record_frame(normal),
+                                    origins[b].xyz, (int)cell, ray, cells[i]);
 }
 
 // Item b: batch record b's hemisphere at the next frame into next_cells (rc_tc_assemble; random

@@ -29,12 +29,9 @@ class IrradianceCaching final : public Method {
                 throw Error("--temporal: the hemisphere rays cannot read the grid (--ic-ivg)",
                             kExitUsage);
             }
-            if (!options_.cache_in.empty() || !options_.cache_out.empty()) {
-                throw Error(
-                    "--temporal: the records live across frames, not in cache files "
-                    "(--cache-in/--cache-out)",
-                    kExitUsage);
-            }
+            refuse_cache_files_with_temporal(
+                !options_.cache_in.empty() || !options_.cache_out.empty(),
+                "--cache-in/--cache-out");
             temporal_ = std::make_unique<TemporalIrradianceCache>(
                 options_, temporal, settings.first_frame, settings.frame_count);
         }

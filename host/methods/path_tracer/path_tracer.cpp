@@ -42,7 +42,6 @@ void check_film_size(int width, int height, const DeviceInfo& device) {
 PathTracer::PathTracer(const FrameScene& frame)
     : FrameBound(frame),
       frame_(frame),
-      frame_peers_(frame.peers),
       kernel_(frame.context.kernel("path_tracer/path_tracer.cl", "path_trace_pass")) {}
 
 Image PathTracer::resolve(std::vector<shared::float4> means, int width, int height) {
@@ -94,7 +93,7 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
     if (options.spp < 1 && options.time_limit <= 0.0) {
         throw Error("samples per pixel must be at least 1", kExitUsage);
     }
-    if (frame_peers_ != nullptr && !frame_peers_->empty()) {
+    if (frame_.peers != nullptr && !frame_.peers->empty()) {
         return render_split(options, width, height, stats);
     }
     const auto count = static_cast<size_t>(pixels);

@@ -74,7 +74,6 @@ class PathTracer : private FrameBound {
                        PathTracerStats* stats);
 
     FrameScene frame_;
-    const std::vector<FrameScene>* frame_peers_;
     Kernel kernel_;
 };
 

@@ -61,7 +61,7 @@ void render_chunk(DeviceWork& work, size_t begin, size_t end, shared::PathTracer
 
 Image PathTracer::render_split(const PathTracerOptions& options, int width, int height,
                                PathTracerStats* stats) {
-    const std::string devices = std::to_string(frame_peers_->size() + 1);
+    const std::string devices = std::to_string(frame_.peers->size() + 1);
     if (options.time_limit > 0.0) {
         throw Error("--time renders on one device; --device names " + devices, kExitUsage);
     }
@@ -73,7 +73,7 @@ Image PathTracer::render_split(const PathTracerOptions& options, int width, int 
     std::vector<std::unique_ptr<DeviceWork>> works;
     std::vector<Context*> contexts;
     works.push_back(std::make_unique<DeviceWork>(frame_, pixels));
-    for (const FrameScene& peer : *frame_peers_) {
+    for (const FrameScene& peer : *frame_.peers) {
         works.push_back(std::make_unique<DeviceWork>(peer, pixels));
     }
     for (const auto& work : works) {

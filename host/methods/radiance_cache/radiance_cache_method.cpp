@@ -91,13 +91,9 @@ class RadianceCaching final : public Method {
         if (!temporal.enabled) {
             return;
         }
-        if (!ic_.cache_in.empty() || !ic_.cache_out.empty() || !rc_.cache_in.empty() ||
-            !rc_.cache_out.empty()) {
-            throw Error(
-                "--temporal: the records live across frames, not in cache files "
-                "(--cache-in/--cache-out, --rc-cache-in/--rc-cache-out)",
-                kExitUsage);
-        }
+        refuse_cache_files_with_temporal(!ic_.cache_in.empty() || !ic_.cache_out.empty() ||
+                                             !rc_.cache_in.empty() || !rc_.cache_out.empty(),
+                                         "--cache-in/--cache-out, --rc-cache-in/--rc-cache-out");
         const long long last =
             static_cast<long long>(settings.first_frame) + std::max(settings.frame_count, 1) - 1;
         temporal_glossy_ = std::make_unique<TemporalRadianceCache>(

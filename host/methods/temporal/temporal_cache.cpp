@@ -119,15 +119,7 @@ double TemporalIrradianceCache::adopt(int level, int frame, const RecordStore& p
         r.next = carried[k].next;
         r.site_moves = carried[k].site_moves;
         const float change = temporal_change(r.computed.payload, r.next);
-        r.lifespan = temporal_lifespan(change, temporal_, r.site_moves);
-        // Interpolated gradients: a changing record that would outlive the clip expires at its
-        // last frame instead, so that it is replaced there and the frames before blend towards
-        // the replacement rather than extrapolate the record's one-frame change over several
-        // (a record that sees no change keeps its value either way).
-        if (temporal_.gradients == TemporalGradients::kInterpolated && change > 0.0f &&
-            frame < last_frame_ && frame + r.lifespan > last_frame_) {
-            r.lifespan = last_frame_ - frame;
-        }
+        r.lifespan = temporal_lifespan_in_clip(change, temporal_, r.site_moves, frame, last_frame_);
         lifespans += r.lifespan;
         if (k < replaced.size()) {
             records[replaced[k]].successor = static_cast<int>(records.size());

@@ -82,4 +82,12 @@ std::string temporal_gradients_name(TemporalGradients gradients) {
     return "?";
 }
 
+void refuse_cache_files_with_temporal(bool given, const std::string& options) {
+    if (given) {
+        throw Error(
+            "--temporal: the records live across frames, not in cache files (" + options + ")",
+            kExitUsage);
+    }
+}
+
 }  // namespace rc

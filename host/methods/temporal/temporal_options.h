@@ -32,4 +32,8 @@ TemporalOptions parse_temporal_options(const ParsedArguments& arguments);
 
 std::string temporal_gradients_name(TemporalGradients gradients);
 
+// With --temporal the records live across frames, not in cache files: Error (exit status 2)
+// naming `options` (the cache-file options of the method) when `given`.
+void refuse_cache_files_with_temporal(bool given, const std::string& options);
+
 }  // namespace rc

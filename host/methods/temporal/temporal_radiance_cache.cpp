@@ -106,13 +106,7 @@ double TemporalRadianceCache::adopt(int frame, int order, const RecordStore& pla
         r.created = frame;
         r.site_moves = carried[k].site_moves;
         const float change = radiance_temporal_change(r.payload, r.next, order);
-        r.lifespan = temporal_lifespan(change, temporal_, r.site_moves);
-        // As for irradiance records (TemporalIrradianceCache::adopt): a changing record that
-        // would outlive the clip is replaced at its last frame, so the frames before interpolate.
-        if (temporal_.gradients == TemporalGradients::kInterpolated && change > 0.0f &&
-            frame < last_frame_ && frame + r.lifespan > last_frame_) {
-            r.lifespan = last_frame_ - frame;
-        }
+        r.lifespan = temporal_lifespan_in_clip(change, temporal_, r.site_moves, frame, last_frame_);
         lifespans += r.lifespan;
         if (k < replaced.size()) {
             records_[replaced[k]].successor = static_cast<int>(records_.size());

@@ -58,6 +58,16 @@ int temporal_lifespan(float change, const TemporalOptions& options, bool site_mo
     return static_cast<int>(std::min<double>(options.max_frames, 1.0 + frames));
 }
 
+int temporal_lifespan_in_clip(float change, const TemporalOptions& options, bool site_moves,
+                              int frame, int last_frame) {
+    const int lifespan = temporal_lifespan(change, options, site_moves);
+    if (options.gradients == TemporalGradients::kInterpolated && change > 0.0f &&
+        frame < last_frame && frame + lifespan > last_frame) {
+        return last_frame - frame;
+    }
+    return lifespan;
+}
+
 shared::IrradiancePayload temporal_payload(const TemporalRecord& r, const TemporalRecord* successor,
                                            int frame, TemporalGradients gradients) {
     const float elapsed = static_cast<float>(frame - r.created);

@@ -31,6 +31,14 @@ float temporal_change(const shared::IrradiancePayload& now, const shared::Irradi
 // serves one frame.
 int temporal_lifespan(float change, const TemporalOptions& options, bool site_moves);
 
+// temporal_lifespan of a record created at `frame` of a clip ending at `last_frame`, where with
+// interpolated gradients a changing record that would outlive the clip expires at its last frame
+// instead, so that it is replaced there and the frames before blend towards the replacement
+// rather than extrapolate the record's one-frame change over several (a record that sees no
+// change keeps its value either way).
+int temporal_lifespan_in_clip(float change, const TemporalOptions& options, bool site_moves,
+                              int frame, int last_frame);
+
 // Record r's payload at `frame` (created <= frame < created + lifespan): with `successor` (the
 // record replacing it; may be null) and the chosen temporal gradients, E, grad_r and grad_t of
 // eq. 17 with the extrapolated (eqs. 18-20) or interpolated (eqs. 21-23) temporal gradients; the
