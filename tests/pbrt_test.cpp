@@ -259,6 +259,7 @@ struct Refusal {
     std::string text;      // after the standard header; the error is on its last line
     std::string expected;  // in the error line
     int line = 0;          // the line the error names; 0: the case's last
+    int exit_code = 2;     // 2: a refused feature; 1: a malformed file
 };
 
 // The header every refusal case follows: 5 lines, so a case's first line is line 6.
@@ -267,14 +268,16 @@ const char* kHeader =
     "LightSource \"point\" \"point3 from\" [0 0 -4]\n";
 const char* kTriangle = "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0]\n";
 
-// Runs `radcache render` on the case; expects exit 1, one line naming file:line, no image.
+// Runs `radcache render` on the case; expects `exit_code` (1: malformed, 2: a feature radcache
+// does not have), one line naming file:line, no image.
 void expect_refused(const std::filesystem::path& dir, const std::string& name,
-                    const std::string& text, const std::string& expected, int line) {
+                    const std::string& text, const std::string& expected, int line,
+                    int exit_code = 1) {
     const auto file = dir / (name + ".pbrt");
     write_file_atomically(file, text);
     const test::CommandResult result = test::run_radcache(
         {"render", file.string(), "-o", (dir / "out.png").string(), "--spp", "1"});
-    EXPECT_EQ(result.exit_code, 1) << name << ": " << result.output;
+    EXPECT_EQ(result.exit_code, exit_code) << name << ": " << result.output;
     const std::string where =
         "radcache: error: " + file.string() + (line > 0 ? ":" + std::to_string(line) + ":" : "");
     EXPECT_EQ(result.output.rfind(where, 0), 0u) << name << ": " << result.output;
@@ -306,7 +309,11 @@ TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
          "is of class \"checkerboard\"", 7},
         {"copper", std::string("Material \"conductor\"\n") + kTriangle,
          "pbrt's default copper spectra are not supported", 6},
-        {"unknown", "Frobnicate 1 2 3\n", "unknown directive 'Frobnicate'"},
+        {"unknown", "Frobnicate 1 2 3\n", "unknown directive 'Frobnicate'", 0, 1},
+        {"two_skies", "LightSource \"infinite\"\nLightSource \"infinite\"\n",
+         "at most one constant infinite light"},
+        {"motion", "ActiveTransform StartTime\n", "animated transforms (motion blur)"},
+        {"partial_sphere", "Shape \"sphere\" \"float zmax\" 0.5\n", "partial spheres"},
         {"spectrum",
          "Material \"diffuse\" \"spectrum reflectance\" [400 0.5 700 0.5]\n" +
              std::string(kTriangle),
@@ -317,13 +324,13 @@ TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
     for (const Refusal& c : cases) {
         const std::string text = std::string(kHeader) + c.text;
         const int last = static_cast<int>(std::count(text.begin(), text.end(), '\n'));
-        expect_refused(dir, c.name, text, c.expected, c.line > 0 ? c.line : last);
+        expect_refused(dir, c.name, text, c.expected, c.line > 0 ? c.line : last, c.exit_code);
     }
     // Camera and filter types: in the options block.
     expect_refused(dir, "ortho", "Camera \"orthographic\"\nWorldBegin\n",
-                   "Camera \"orthographic\" is not supported", 1);
+                   "Camera \"orthographic\" is not supported", 1, 2);
     expect_refused(dir, "mitchell", "PixelFilter \"mitchell\"\nWorldBegin\n",
-                   "PixelFilter \"mitchell\" is not supported", 1);
+                   "PixelFilter \"mitchell\" is not supported", 1, 2);
     expect_refused(dir, "shape_first", std::string(kTriangle) + "WorldBegin\n",
                    "Shape is not allowed before WorldBegin", 1);
 }

@@ -57,7 +57,7 @@ AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, const std:
     }
     const tinygltf::Accessor& accessor = model.accessors[index];
     if (accessor.sparse.isSparse) {
-        throw Error(name + ": sparse accessors are not supported");
+        throw Error(name + ": sparse accessors are not supported", kExitUnsupported);
     }
     AccessorBytes bytes;
     bytes.component_type = accessor.componentType;

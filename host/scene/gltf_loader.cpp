@@ -163,7 +163,8 @@ class GltfSceneBuilder {
         for (const std::string& extension : model_.extensionsRequired) {
             if (!supported.count(extension)) {
                 throw Error(file_ + ": requires the glTF extension " + excerpt(extension) +
-                            ", which radcache does not support");
+                                ", which radcache does not support",
+                            kExitUnsupported);
             }
         }
         for (const std::string& extension : model_.extensionsUsed) {
@@ -390,7 +391,8 @@ class GltfSceneBuilder {
         const tinygltf::Camera& gltf = model_.cameras[chosen->camera];
         if (gltf.type != "perspective") {
             throw Error(file_ + ": camera " + std::to_string(chosen->camera) + " is " +
-                        excerpt(gltf.type) + " (radcache has perspective cameras only)");
+                            excerpt(gltf.type) + " (radcache has perspective cameras only)",
+                        kExitUnsupported);
         }
         Camera camera;
         camera.position = glm::vec3(chosen->world * glm::vec4(0, 0, 0, 1));

@@ -141,7 +141,8 @@ class PbrtSceneBuilder {
         } else if (d.name == "ActiveTransform") {
             if (d.strings[0] != "All") {
                 throw Error(d.where() + ": ActiveTransform " + excerpt(d.strings[0]) +
-                            ": animated transforms (motion blur) are not supported");
+                                ": animated transforms (motion blur) are not supported",
+                            kExitUnsupported);
             }
         } else if (d.name != "TransformTimes") {  // times only matter to animated transforms
             return false;
@@ -183,7 +184,8 @@ class PbrtSceneBuilder {
         } else if (d.name == "ColorSpace") {
             if (d.strings[0] != "srgb") {
                 throw Error(d.where() + ": ColorSpace " + in_quotes(d.strings[0]) +
-                            " is not supported (radcache renders in linear sRGB)");
+                                " is not supported (radcache renders in linear sRGB)",
+                            kExitUnsupported);
             }
         } else if (d.name == "WorldBegin") {
             require(d, false);
@@ -197,7 +199,7 @@ class PbrtSceneBuilder {
     void camera(const PbrtDirective& d) {
         const std::string what = d.where() + ": Camera " + in_quotes(d.strings[0]);
         if (d.strings[0] != "perspective") {
-            throw Error(what + " is not supported (perspective is)");
+            throw Error(what + " is not supported (perspective is)", kExitUnsupported);
         }
         PbrtParams params(d, what);
         const float fov = params.get_float("fov", 90.0f);
@@ -222,7 +224,7 @@ class PbrtSceneBuilder {
     void film(const PbrtDirective& d) {
         const std::string what = d.where() + ": Film " + in_quotes(d.strings[0]);
         if (d.strings[0] != "rgb" && d.strings[0] != "gbuffer" && d.strings[0] != "spectral") {
-            throw Error(what + " is not supported (rgb is)");
+            throw Error(what + " is not one of pbrt-v4's films (rgb, gbuffer, spectral)");
         }
         PbrtParams params(d, what);
         for (const char* axis : {"xresolution", "yresolution"}) {
@@ -253,7 +255,7 @@ class PbrtSceneBuilder {
                    type == "halton" || type == "pmj02bn" || type == "stratified") {
             camera_.sampler = RC_SAMPLER_SOBOL;
         } else {
-            throw Error(what + " is not supported");
+            throw Error(what + " is not one of pbrt-v4's samplers");
         }
         if (type == "stratified") {
             spp_ = static_cast<long long>(params.get_int("xsamples", 4)) *
@@ -279,8 +281,9 @@ class PbrtSceneBuilder {
         if (std::find(std::begin(kConverging), std::end(kConverging), type) ==
             std::end(kConverging)) {
             throw Error(what +
-                        " is not supported (radcache renders the light transport image "
-                        "that path, volpath, bdpt, mlt and sppm converge to)");
+                            " is not supported (radcache renders the light transport image "
+                            "that path, volpath, bdpt, mlt and sppm converge to)",
+                        kExitUnsupported);
         }
         PbrtParams params(d, what);
         max_depth_ = params.get_int("maxdepth", 5);
@@ -298,13 +301,13 @@ class PbrtSceneBuilder {
         PbrtParams params(d, what);
         const int filter = type == "triangle" ? RC_FILTER_TENT : pixel_filter_type(type);
         if (filter < 0 || type == "tent") {
-            throw Error(what + " is not supported (box, triangle, gaussian)");
+            throw Error(what + " is not supported (box, triangle, gaussian)", kExitUnsupported);
         }
         const float fallback = filter == RC_FILTER_TENT ? 2.0f : default_filter_radius(filter);
         const float x = params.get_float("xradius", fallback);
         const float y = params.get_float("yradius", fallback);
         if (x != y) {
-            params.fail("xradius and yradius differ (radcache's filters are square)");
+            params.refuse("xradius and yradius differ (radcache's filters are square)");
         }
         if (!(x >= kMinFilterRadius && x <= kMaxFilterRadius)) {
             params.fail("the radius must lie in [" + std::to_string(kMinFilterRadius) + ", " +
@@ -343,8 +346,9 @@ class PbrtSceneBuilder {
                                  0.0;
         if (!similar) {
             throw Error(d.where() +
-                        ": the camera transform has shear, a projection or a "
-                        "non-uniform scale, which radcache's camera cannot reproduce");
+                            ": the camera transform has shear, a projection or a "
+                            "non-uniform scale, which radcache's camera cannot reproduce",
+                        kExitUnsupported);
         }
         camera_.position = glm::vec3(eye);
         camera_.look_at = glm::vec3(eye + forward / scale);
@@ -401,27 +405,28 @@ class PbrtSceneBuilder {
             for (const std::string& medium : d.strings) {
                 if (!medium.empty()) {
                     throw Error(d.where() + ": MediumInterface " + in_quotes(medium) +
-                                ": participating media are not supported");
+                                    ": participating media are not supported",
+                                kExitUnsupported);
                 }
             }
         } else if (d.name == "WorldEnd") {
             // pbrt-v3's end of the scene: nothing to do.
         } else {
-            throw Error(d.where() + ": " + d.name + " is not supported");
+            throw Error(d.where() + ": " + d.name + " is not supported", kExitUnsupported);
         }
     }
 
     void area_light(const PbrtDirective& d) {
         const std::string what = d.where() + ": AreaLightSource " + in_quotes(d.strings[0]);
         if (d.strings[0] != "diffuse") {
-            throw Error(what + " is not supported (diffuse is)");
+            throw Error(what + " is not supported (diffuse is)", kExitUnsupported);
         }
         PbrtParams params(d, what);
         if (params.has("filename") || params.has("power")) {
-            params.fail("\"filename\" and \"power\" are not supported: give \"rgb L\" and scale");
+            params.refuse("\"filename\" and \"power\" are not supported: give \"rgb L\" and scale");
         }
         if (params.get_bool("twosided", false)) {
-            params.fail(
+            params.refuse(
                 "two-sided area lights are not supported (radcache's emit on the side "
                 "of their normal)");
         }
@@ -455,7 +460,8 @@ class PbrtSceneBuilder {
         const std::string& type = d.strings[0];
         const std::string what = d.where() + ": Shape " + in_quotes(type);
         if (!is_pbrt_shape_supported(type)) {
-            throw Error(what + " is not supported (trianglemesh, plymesh, bilinearmesh, sphere)");
+            throw Error(what + " is not supported (trianglemesh, plymesh, bilinearmesh, sphere)",
+                        kExitUnsupported);
         }
         PbrtParams params(d, what);
         Shape shape;
@@ -469,7 +475,8 @@ class PbrtSceneBuilder {
         shape.materials.push_back(materials_.scene_material(attributes_.material));
         if (object_) {
             if (attributes_.area_radiance) {
-                throw Error(what + ": area lights in object instances are not supported");
+                throw Error(what + ": area lights in object instances are not supported",
+                            kExitUnsupported);
             }
             shape.transform = glm::mat4(attributes_.ctm);
             objects_[object_name_].push_back(std::move(shape));
@@ -541,11 +548,11 @@ class PbrtSceneBuilder {
         const std::string& type = d.strings[0];
         const std::string what = d.where() + ": LightSource " + in_quotes(type);
         if (type != "point" && type != "spot" && type != "infinite") {
-            throw Error(what + " is not supported (point, spot, infinite)");
+            throw Error(what + " is not supported (point, spot, infinite)", kExitUnsupported);
         }
         PbrtParams params(d, what);
         if (params.has("power") || params.has("illuminance") || params.has("filename")) {
-            params.fail(
+            params.refuse(
                 "\"power\", \"illuminance\" and image maps (\"filename\") are not "
                 "supported: give the intensity (I or L) and scale");
         }
@@ -560,7 +567,7 @@ class PbrtSceneBuilder {
             check_range(emitter.radiance, 1e9f, params, "L times scale");
             for (const Emitter& other : scene_.emitters) {
                 if (other.kind == EmitterKind::kConstant) {
-                    params.fail("a scene has at most one constant infinite light");
+                    params.refuse("a scene has at most one constant infinite light");
                 }
             }
         } else {

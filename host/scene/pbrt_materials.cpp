@@ -85,17 +85,17 @@ void PbrtMaterials::define_texture(const PbrtDirective& directive) {
         }
         const std::string encoding = params.get_string("encoding", "sRGB");
         if (encoding != "sRGB") {
-            params.fail("encoding " + in_quotes(encoding) +
-                        " is not supported (8-bit images are decoded as sRGB, float ones as "
-                        "linear)");
+            params.refuse("encoding " + in_quotes(encoding) +
+                          " is not supported (8-bit images are decoded as sRGB, float ones as "
+                          "linear)");
         }
         if (params.get_bool("invert", false)) {
-            params.fail("\"invert\" is not supported");
+            params.refuse("\"invert\" is not supported");
         }
         if (params.get_string("mapping", "uv") != "uv" || params.get_float("uscale", 1) != 1 ||
             params.get_float("vscale", 1) != 1 || params.get_float("udelta", 0) != 0 ||
             params.get_float("vdelta", 0) != 0) {
-            params.fail("texture coordinate mappings other than plain \"uv\" are not supported");
+            params.refuse("texture coordinate mappings other than plain \"uv\" are not supported");
         }
         if (params.get_string("wrap", "repeat") != "repeat") {
             log_warning(params.what() +
@@ -187,8 +187,8 @@ glm::vec3 PbrtMaterials::reflectance(PbrtParams& params, const std::string& name
             params.fail("texture " + in_quotes(texture_name) + " is not defined");
         }
         if (!found->second.refused.empty()) {
-            params.fail("texture " + in_quotes(texture_name) + " (" + found->second.what + ") " +
-                        found->second.refused);
+            params.refuse("texture " + in_quotes(texture_name) + " (" + found->second.what + ") " +
+                          found->second.refused);
         }
         *texture = found->second.texture;
         return found->second.value;
@@ -201,7 +201,7 @@ glm::vec3 PbrtMaterials::reflectance(PbrtParams& params, const std::string& name
 Material PbrtMaterials::make(Spec& spec) {
     const std::string why = refusal(spec.type);
     if (!why.empty()) {
-        throw Error(spec.what + " " + why);
+        throw Error(spec.what + " " + why, kExitUnsupported);
     }
     PbrtParams params(spec.directive, spec.what);
     params.ignore("type");
@@ -237,13 +237,13 @@ Material PbrtMaterials::make(Spec& spec) {
         if (params.has("reflectance")) {
             material.specular = reflectance(params, "reflectance", glm::vec3(1.0f), &texture);
             if (texture >= 0) {
-                params.fail("a textured conductor reflectance is not supported");
+                params.refuse("a textured conductor reflectance is not supported");
             }
         } else {
             const auto eta = params.get_rgb("eta");
             const auto k = params.get_rgb("k");
             if (!eta || !k) {
-                params.fail(
+                params.refuse(
                     "give \"rgb eta\" and \"rgb k\", or \"rgb reflectance\" (pbrt's "
                     "default copper spectra are not supported)");
             }

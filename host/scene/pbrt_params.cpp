@@ -36,6 +36,10 @@ std::string PbrtParams::type_of(const std::string& name) const {
 
 void PbrtParams::fail(const std::string& message) const { throw Error(what_ + ": " + message); }
 
+void PbrtParams::refuse(const std::string& message) const {
+    throw Error(what_ + ": " + message, kExitUnsupported);
+}
+
 const PbrtParam* PbrtParams::find(const std::string& name, const std::vector<std::string>& types) {
     for (size_t i = 0; i < params_.size(); ++i) {
         if (params_[i].name != name) {
@@ -142,9 +146,9 @@ std::optional<glm::vec3> PbrtParams::get_rgb(const std::string& name) {
     const std::string type = type_of(name);
     if (type == "blackbody" || type == "spectrum") {
         find(name, {type});
-        fail("parameter \"" + excerpt(type + " " + name) + "\": " + type +
-             " spectra are not supported (radcache renders in RGB: give \"rgb " + excerpt(name) +
-             "\")");
+        refuse("parameter \"" + excerpt(type + " " + name) + "\": " + type +
+               " spectra are not supported (radcache renders in RGB: give \"rgb " + excerpt(name) +
+               "\")");
     }
     const std::vector<double> v = get_numbers(name, {"rgb", "color"}, 3);
     if (v.empty()) {

@@ -41,8 +41,10 @@ class PbrtParams {
     // Warns about every parameter no getter read: "<what>: parameter \"float foo\" is not
     // supported and ignored".
     void warn_unused() const;
-    // Error "<what>: <message>".
+    // Error "<what>: <message>" for a malformed value (exit status 1).
     [[noreturn]] void fail(const std::string& message) const;
+    // The same for a well-formed request radcache does not do (exit status 2, kExitUnsupported).
+    [[noreturn]] void refuse(const std::string& message) const;
 
    private:
     const PbrtParam* find(const std::string& name, const std::vector<std::string>& types);

@@ -130,7 +130,7 @@ TriangleMesh sphere_mesh(PbrtParams& params) {
         params.fail("radius must be positive");
     }
     if (zmin > -radius || zmax < radius || phimax < 360.0f) {
-        params.fail("partial spheres (zmin, zmax, phimax) are not supported");
+        params.refuse("partial spheres (zmin, zmax, phimax) are not supported");
     }
     log_warning(params.what() + ": the sphere is tessellated into triangles (48 x 96)");
     return make_uv_sphere(glm::vec3(0.0f), radius);
@@ -200,7 +200,7 @@ TriangleMesh load_ply_mesh(const std::string& bytes, const std::string& what) {
 TriangleMesh pbrt_shape_mesh(const std::string& type, PbrtParams& params,
                              const std::filesystem::path& dir, const SceneFiles& files) {
     if (params.has("alpha")) {
-        params.fail("alpha cut-outs are not supported");
+        params.refuse("alpha cut-outs are not supported");
     }
     if (type == "trianglemesh") {
         return triangle_mesh(params);
@@ -212,7 +212,7 @@ TriangleMesh pbrt_shape_mesh(const std::string& type, PbrtParams& params,
         return sphere_mesh(params);
     }
     if (params.has("displacement")) {
-        params.fail("displacement is not supported");
+        params.refuse("displacement is not supported");
     }
     params.ignore("edgelength");  // the displacement's tessellation
     const std::string name = params.get_string("filename", "");

@@ -8,9 +8,12 @@
 namespace rc {
 
 // Exit statuses: 1 for failures of the work itself (bad input files, I/O, device errors),
-// 2 for bad command lines and unusable device set-ups.
+// 2 for bad command lines and unusable device set-ups, and 2 as well for a well-formed scene file
+// that asks for what radcache does not do (an imported pbrt-v4 or glTF file's refused directive,
+// shape, light, material or parameter): the file is not broken, the request is refused.
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitUsage = 2;
+inline constexpr int kExitUnsupported = 2;
 
 class Error : public std::runtime_error {
    public:
