@@ -543,6 +543,47 @@ TEST(Cli, BenchAllMeasuresEveryFamilyOnTheDevice) {
         ASSERT_TRUE(device.contains(key)) << key;
         EXPECT_GT(device[key].get<double>(), 0.0) << key;
     }
+    EXPECT_FALSE(report.contains("together"));  // one device: nothing to split
+}
+
+// With two devices (PoCL's POCL_DEVICES="pthread pthread"; skipped where PoCL gives one), bench
+// all measures each device, then whole pt renders and grid builds on each alone and on both
+// together, and reports the ratios of the medians it prints.
+TEST(Cli, BenchAllTimesSeveralDevicesTogether) {
+    const std::string two = "POCL_DEVICES=pthread pthread";
+    if (test::run_radcache({"devices"}, {two}).output.find("0:1") == std::string::npos) {
+        GTEST_SKIP() << "PoCL does not expose two devices here";
+    }
+    const auto dir = test::scratch_dir("cli_bench_together");
+    const auto json_path = dir / "all.json";
+    const test::CommandResult result = test::run_radcache(
+        {"bench", "all", "--scene", cornell_box(), "--width", "32", "--height", "32", "--spp", "1",
+         "--photons", "4096", "--repeat", "1", "--device", "0:0,0:1", "--json", json_path.string()},
+        {two});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("devices together"), std::string::npos) << result.output;
+    const nlohmann::json report = nlohmann::json::parse(read_file(json_path));
+    ASSERT_EQ(report["devices"].size(), 2u);
+    ASSERT_TRUE(report.contains("together"));
+    const nlohmann::json& together = report["together"];
+    EXPECT_EQ(together["devices"], nlohmann::json({"0:0", "0:1"}));
+    for (const char* key : {"path_samples_per_second", "photons_per_second"}) {
+        ASSERT_TRUE(together.contains(key)) << key;
+        const nlohmann::json& f = together[key];
+        ASSERT_EQ(f["alone"].size(), 2u) << key;
+        const double a = f["alone"][0].get<double>();
+        const double b = f["alone"][1].get<double>();
+        EXPECT_GT(a, 0.0) << key;
+        EXPECT_GT(b, 0.0) << key;
+        EXPECT_GT(f["together"].get<double>(), 0.0) << key;
+        EXPECT_DOUBLE_EQ(f["sum_alone"].get<double>(), a + b) << key;
+        EXPECT_DOUBLE_EQ(f["together_over_sum"].get<double>(),
+                         f["together"].get<double>() / (a + b))
+            << key;
+        EXPECT_DOUBLE_EQ(f["together_over_best"].get<double>(),
+                         f["together"].get<double>() / std::max(a, b))
+            << key;
+    }
 }
 
 }  // namespace

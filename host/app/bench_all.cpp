@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "app/bench_together.h"
 #include "app/commands.h"
 #include "app/device_options.h"
 #include "app/ray_bench.h"
@@ -308,7 +309,7 @@ int bench_all(const ParsedArguments& arguments) {
     const std::vector<DeviceInfo> all = list_devices();
     std::vector<DeviceInfo> devices;
     if (arguments.has("--device")) {
-        devices.push_back(select_device(all, options.device_spec));
+        devices = select_devices(all, options.device_spec);
     } else {
         devices = all;
     }
@@ -363,6 +364,14 @@ int bench_all(const ParsedArguments& arguments) {
         }
     }
 
+    std::vector<TogetherFigure> together;
+    if (devices.size() > 1) {
+        std::fprintf(stderr, "bench all: %zu devices together\n", devices.size());
+        together =
+            bench_devices_together(devices, options, scene, {width, height, spp, photons, repeats});
+        print_together(devices, together);
+    }
+
     if (!json_path.empty()) {
         nlohmann::json report;
         report["scene"] = scene_path;
@@ -387,6 +396,9 @@ int bench_all(const ParsedArguments& arguments) {
             }
             report["devices"].push_back(entry);
         }
+        if (!together.empty()) {
+            report["together"] = together_json(devices, together);
+        }
         write_file_atomically(json_path, report.dump(2) + "\n");
     }
     const bool any_failed = std::any_of(results.begin(), results.end(),
@@ -403,7 +415,7 @@ CommandSpec bench_all_command() {
         .summary = "every kernel family on every device, side by side",
         .usage = "radcache bench all [options]",
         .description =
-            "Every kernel family on every OpenCL device (or the one --device names), side by\n"
+            "Every kernel family on every OpenCL device (or those --device names), side by\n"
             "side: traversal Mrays/s (coherent and incoherent, closest and any hit) with Embree's\n"
             "rtcIntersect1/rtcOccluded1 on the same rays as the anchor, path samples/s, "
             "irradiance\n"
@@ -414,7 +426,11 @@ CommandSpec bench_all_command() {
             "records\n"
             "interpolated/s, SDRC's L-tree range queries/s and directions interpolated/s (on "
             "glossy-box). Device\n"
-            "kernel time from profiling events; kernels are built and warmed up first.",
+            "kernel time from profiling events; kernels are built and warmed up first. With "
+            "several devices,\n"
+            "whole pt renders and grid builds are also timed on the wall clock on each device "
+            "alone and on all\n"
+            "of them together (their work split as render --device all splits it).",
         .options = bench_all_options(),
         .run = bench_all};
 }
