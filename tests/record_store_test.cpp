@@ -155,6 +155,68 @@ TEST(RecordStore, NeighborClampingUsesTheUnclampedRadius) {
     EXPECT_EQ(store.gradient_scale(0), 1.0f);
 }
 
+// The greatest fixed point of R_b = min(R_b, R_a + |p_a - p_b|) over every ordered pair of the
+// first `count` records, from their initial radii: relaxed in sweeps until nothing changes.
+std::vector<float> brute_force_radii(const std::vector<glm::vec3>& positions,
+                                     std::vector<float> radii, size_t count) {
+    radii.resize(count);
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (size_t a = 0; a < count; ++a) {
+            for (size_t b = 0; b < count; ++b) {
+                const float bound = radii[a] + glm::length(positions[a] - positions[b]);
+                if (b != a && bound < radii[b]) {
+                    radii[b] = bound;
+                    changed = true;
+                }
+            }
+        }
+    }
+    return radii;
+}
+
+// The store's radii after several numbers of insertions, bit for bit, against brute force: the
+// greatest fixed point of R_b = min(R_b, R_a + |p_a - p_b|) over every ordered pair, relaxed in
+// sweeps until nothing changes, from each record's initial R = min(harmonic distance, limit). (A
+// pair that violates the inequality always overlaps, so the store's overlap-limited search must
+// reach the same fixed point; float addition is monotone, so any relaxation order does.) Records in
+// clusters of very different sizes, radii over five decades: every radius class, grid level and
+// the search's whole-class fallback are exercised.
+TEST(RecordStore, InsertionReachesTheBruteForceFixedPointBitForBit) {
+    std::mt19937 rng(41);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    RecordStore store(0.35f, sizeof(DummyPayload));
+    std::vector<glm::vec3> positions;
+    std::vector<float> radii;
+    size_t lowered = 0;
+    for (int i = 0; i < 2500; ++i) {
+        const float scale = std::pow(10.0f, -2.0f + 3.0f * static_cast<float>(i % 4) / 3.0f);
+        const glm::vec3 centre = 20.0f * glm::vec3(i % 3, (i / 3) % 2, 0.5f);
+        shared::Record record = make_record(
+            centre + scale * glm::vec3(unit(rng), unit(rng), unit(rng)), glm::vec3(0, 0, 1));
+        RecordHostData host;
+        host.harmonic_distance =
+            i % 97 == 0 ? INFINITY : scale * std::pow(10.0f, -1.0f + 2.0f * unit(rng));
+        host.r_min = 0.0f;
+        host.r_max = 1e30f;
+        const float limit = i % 7 == 0 ? 0.5f * scale : INFINITY;
+        store.insert(record, host, dummy_payload(rng), limit);
+        positions.push_back(record_position(record));
+        radii.push_back(std::min(host.harmonic_distance, limit));
+        const size_t count = positions.size();
+        if (count % 50 == 0 && (count <= 400 || count % 500 == 0)) {
+            const std::vector<float> expected = brute_force_radii(positions, radii, count);
+            lowered = 0;
+            for (size_t k = 0; k < count; ++k) {
+                ASSERT_EQ(store.host_data()[k].radius, expected[k])
+                    << "record " << k << " after " << count << " insertions";
+                lowered += expected[k] < radii[k] ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_GT(lowered, 500u);  // clamping did most of the work
+}
+
 // Restoring a store's records gives the same shared parts, host data, payloads and neighbor
 // search: a record inserted next is clamped as in the original.
 TEST(RecordStore, RestoredStoreClampsTheNextRecordAsTheOriginal) {

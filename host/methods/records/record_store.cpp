@@ -44,54 +44,6 @@ float RecordStore::gradient_scale(size_t i) const {
     return radius < clamped ? radius / clamped : 1.0f;
 }
 
-size_t RecordStore::insert_bytes(const shared::Record& record, const RecordHostData& host,
-                                 const void* payload, size_t bytes, float radius_limit) {
-    check_payload_size(bytes);
-    // R from the harmonic mean distance (infinite where no ray hit), limited by the method's
-    // limit (irradiance caching: the translational gradient, course "Gradient Limit on Record
-    // Spacing"). Neighbor clamping works on this unclamped R; the [r_min, r_max] clamp comes after
-    // it (course, "Summary of Implementation Details": "it is essential to use the original,
-    // unclamped value of R").
-    float radius = std::min(host.harmonic_distance, radius_limit);
-
-    // Neighbor clamping: first the new record by every record it overlaps, then the others by it,
-    // and on from every record that changed. (The course clamps one ring of neighbors; the
-    // relaxation only goes further if a neighbor's R had been loaded from elsewhere. The result,
-    // R_j <= R_k + |p_j - p_k| for every pair, does not depend on the visiting order: a record
-    // that lowers R_j always overlaps it.)
-    const glm::vec3 p = record_position(record);
-    for (uint32_t k : overlapping(p, radius)) {
-        const float d = glm::length(p - record_position(records_[k]));
-        if (d < radius + host_[k].radius) {
-            radius = std::min(radius, host_[k].radius + d);
-        }
-    }
-    const size_t j = records_.size();
-    records_.push_back(record);
-    host_.push_back(host);
-    const std::byte* data = static_cast<const std::byte*>(payload);
-    payloads_.insert(payloads_.end(), data, data + payload_bytes_);
-    set_radius(j, radius);
-    index_record(static_cast<uint32_t>(j));
-    std::vector<size_t> changed = {j};
-    while (!changed.empty()) {
-        const size_t a = changed.back();
-        changed.pop_back();
-        const glm::vec3 pa = record_position(records_[a]);
-        for (uint32_t b : overlapping(pa, host_[a].radius)) {
-            if (b == a) {
-                continue;
-            }
-            const float d = glm::length(pa - record_position(records_[b]));
-            if (d < host_[a].radius + host_[b].radius && host_[b].radius > host_[a].radius + d) {
-                set_radius(b, host_[a].radius + d);
-                changed.push_back(b);
-            }
-        }
-    }
-    return j;
-}
-
 namespace {
 
 // The radius class of R: the smallest L with R <= 2^L.
@@ -121,31 +73,90 @@ uint64_t cell_key(glm::ivec3 c) {
 
 }  // namespace
 
-std::vector<uint32_t> RecordStore::overlapping(glm::vec3 p, float radius) const {
-    std::vector<uint32_t> found;
+float RecordStore::grid_cell(int level, int grid) {
+    return std::ldexp(1.0f, level + kGridOffset + grid);
+}
+
+template <class Visit>
+void RecordStore::visit_overlapping(glm::vec3 p, float radius, Visit&& visit) const {
     for (const auto& [level, radius_class] : classes_) {
-        // Class members have R_k <= cell, so overlapping ones lie within radius + cell of p.
-        const float cell = std::ldexp(1.0f, level);
-        const float reach = radius + cell;
+        // Class members have R_k <= 2^level, so overlapping ones lie within reach of p. The grid
+        // taken: the coarsest whose cells are at most kCellPerReach reaches (or the finest).
+        const float reach = radius + std::ldexp(1.0f, level);
+        int grid = 0;
+        while (grid + 1 < kGrids && grid_cell(level, grid + 1) <= kCellPerReach * reach) {
+            ++grid;
+        }
+        const float cell = grid_cell(level, grid);
         const glm::ivec3 from = cell_of(p - glm::vec3(reach), cell);
         const glm::ivec3 to = cell_of(p + glm::vec3(reach), cell);
         const glm::dvec3 span = glm::dvec3(to - from) + 1.0;
         if (!std::isfinite(reach) || span.x * span.y * span.z > radius_class.records.size()) {
-            found.insert(found.end(), radius_class.records.begin(), radius_class.records.end());
+            for (uint32_t k : radius_class.records) {
+                visit(k);
+            }
             continue;
         }
+        const auto& cells = radius_class.cells[grid];
         for (int z = from.z; z <= to.z; ++z) {
             for (int y = from.y; y <= to.y; ++y) {
                 for (int x = from.x; x <= to.x; ++x) {
-                    const auto it = radius_class.cells.find(cell_key({x, y, z}));
-                    if (it != radius_class.cells.end()) {
-                        found.insert(found.end(), it->second.begin(), it->second.end());
+                    const auto it = cells.find(cell_key({x, y, z}));
+                    if (it != cells.end()) {
+                        for (uint32_t k : it->second) {
+                            visit(k);
+                        }
                     }
                 }
             }
         }
     }
-    return found;
+}
+
+size_t RecordStore::insert_bytes(const shared::Record& record, const RecordHostData& host,
+                                 const void* payload, size_t bytes, float radius_limit) {
+    check_payload_size(bytes);
+    // R from the harmonic mean distance (infinite where no ray hit), limited by the method's
+    // limit (irradiance caching: the translational gradient, course "Gradient Limit on Record
+    // Spacing"). Neighbor clamping works on this unclamped R; the [r_min, r_max] clamp comes after
+    // it (course, "Summary of Implementation Details": "it is essential to use the original,
+    // unclamped value of R").
+    float radius = std::min(host.harmonic_distance, radius_limit);
+
+    // Neighbor clamping: first the new record by every record it overlaps, then the others by it,
+    // and on from every record that changed. (The course clamps one ring of neighbors; the
+    // relaxation only goes further if a neighbor's R had been loaded from elsewhere. The result,
+    // R_j <= R_k + |p_j - p_k| for every pair, does not depend on the visiting order: a record
+    // that lowers R_j always overlaps it.)
+    const glm::vec3 p = record_position(record);
+    visit_overlapping(p, radius, [&](uint32_t k) {
+        const float d = glm::length(p - record_position(records_[k]));
+        if (d < radius + host_[k].radius) {
+            radius = std::min(radius, host_[k].radius + d);
+        }
+    });
+    const size_t j = records_.size();
+    records_.push_back(record);
+    host_.push_back(host);
+    const std::byte* data = static_cast<const std::byte*>(payload);
+    payloads_.insert(payloads_.end(), data, data + payload_bytes_);
+    set_radius(j, radius);
+    index_record(static_cast<uint32_t>(j));
+    std::vector<size_t> changed = {j};
+    while (!changed.empty()) {
+        const size_t a = changed.back();
+        changed.pop_back();
+        const glm::vec3 pa = record_position(records_[a]);
+        visit_overlapping(pa, host_[a].radius, [&](uint32_t b) {
+            const float d = glm::length(pa - record_position(records_[b]));
+            if (b != a && d < host_[a].radius + host_[b].radius &&
+                host_[b].radius > host_[a].radius + d) {
+                set_radius(b, host_[a].radius + d);
+                changed.push_back(b);
+            }
+        });
+    }
+    return j;
 }
 
 void RecordStore::index_record(uint32_t index) {
@@ -153,8 +164,10 @@ void RecordStore::index_record(uint32_t index) {
     const int level = radius_class(host_[index].radius);
     RadiusClass& radius_class = classes_[level];
     radius_class.records.push_back(index);
-    radius_class.cells[cell_key(cell_of(record_position(records_[index]), std::ldexp(1.0f, level)))]
-        .push_back(index);
+    const glm::vec3 p = record_position(records_[index]);
+    for (int grid = 0; grid < kGrids; ++grid) {
+        radius_class.cells[grid][cell_key(cell_of(p, grid_cell(level, grid)))].push_back(index);
+    }
 }
 
 void RecordStore::restore(std::vector<shared::Record> records, std::vector<RecordHostData> host,

@@ -85,17 +85,26 @@ class RecordStore {
     size_t payload_bytes() const { return payload_bytes_; }
 
    private:
-    // Records hashed by position, one grid per radius class: the records of class L have
-    // R <= 2^L and sit in cells of size 2^L.
+    // Records hashed by position, a pyramid of grids per radius class: the records of class L
+    // have R <= 2^L and sit in cells of size grid_cell(L, g) of grid g. A query takes the
+    // coarsest grid whose cells are at most kCellPerReach times its reach: a few cells to look
+    // up whatever its radius (hash lookups, not distance tests, were the cost of insertion).
+    static constexpr int kGrids = 6;
+    static constexpr int kGridOffset = 2;
+    static constexpr float kCellPerReach = 4.0f;
+    // The cell size of grid g of class L: 2^(L + kGridOffset + g).
+    static float grid_cell(int level, int grid);
     struct RadiusClass {
         std::vector<uint32_t> records;
-        std::unordered_map<uint64_t, std::vector<uint32_t>> cells;
+        std::unordered_map<uint64_t, std::vector<uint32_t>> cells[kGrids];
     };
     void check_payload_size(size_t bytes) const;
     // Sets the unclamped R of record i and its shared part's clamped radius.
     void set_radius(size_t i, float radius);
-    // Indices of every record k with |p - p_k| < radius + R_k, and maybe a few more.
-    std::vector<uint32_t> overlapping(glm::vec3 p, float radius) const;
+    // Calls visit(k) for every record k with |p - p_k| < radius + R_k, and maybe a few more
+    // (each once; in no particular order: neighbor clamping's result does not depend on it).
+    template <class Visit>
+    void visit_overlapping(glm::vec3 p, float radius, Visit&& visit) const;
     void index_record(uint32_t index);
 
     float accuracy_;
