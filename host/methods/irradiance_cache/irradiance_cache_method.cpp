@@ -2,6 +2,7 @@
 // statistics per frame, and (with --ic-ivg) the irradiance vector grid as the radiance its
 // hemisphere rays read beyond their hits.
 #include <memory>
+#include <string>
 
 #include "methods/irradiance_cache/ic_memory.h"
 #include "methods/irradiance_cache/ic_options.h"
@@ -45,6 +46,11 @@ class IrradianceCaching final : public Method {
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         if (temporal_) {
+            if (frame.peers != nullptr && !frame.peers->empty()) {
+                throw Error("--temporal renders on one device; --device names " +
+                                std::to_string(frame.peers->size() + 1),
+                            kExitUsage);
+            }
             FrameResult result = temporal_->render_frame(frame, hooks);
             const nlohmann::json& t = result.stats["temporal"];
             log_note(t["records"].dump() + " irradiance records (" + t["created"].dump() +
@@ -70,6 +76,11 @@ class IrradianceCaching final : public Method {
         log_note(std::to_string(stats.records) + " irradiance records");
         return result;
     }
+
+    // The record batches and the final pass; placement and insertion stay on the first device
+    // and the host, and --ic-ivg's hemisphere rays on the first device (where its grid is).
+    // Temporal caching renders on one device.
+    bool splits_across_devices() const override { return true; }
 
     std::vector<ProgramRequest> programs() const override {
         std::vector<ProgramRequest> programs =
