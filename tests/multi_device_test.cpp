@@ -291,9 +291,10 @@ uint64_t kernel_launches(const std::vector<std::string>& options) {
     return launches;
 }
 
-// In this process (the fault injection is in-process): the path tracer's 20th kernel launch, and
-// the irradiance cache's last (its final pass's, shared by the devices; the placement before it
-// runs on the first device alone, where a failure names no device).
+// In this process (the fault injection is in-process): the path tracer's 20th kernel launch; the
+// irradiance cache's 5th with one cache level (after the G-buffer, its tile depths, the first
+// placement pass's coverage query and selection on the first device: the first record range's
+// hemisphere cells, in the split) and its last (the final pass's, shared by the devices).
 TEST(MultiDevice, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {
     setenv("POCL_DEVICES", "pthread pthread", 1);  // before this process's first OpenCL call
     if (!two_devices()) {
@@ -304,6 +305,9 @@ TEST(MultiDevice, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {
     const uint64_t launches = kernel_launches(ic);
     ASSERT_GT(launches, 2u);
     expect_failing_device_named("multi_device_fault_ic_final", ic, launches);
+    std::vector<std::string> one_level = ic;
+    one_level.insert(one_level.end(), {"--ic-bounces", "1"});
+    expect_failing_device_named("multi_device_fault_ic_records", one_level, 5);
 }
 
 }  // namespace

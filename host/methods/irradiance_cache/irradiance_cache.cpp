@@ -171,27 +171,29 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
                                            static_cast<unsigned>(begin + b);
         }
         const RecordBatchInput batch{params, records, origins, streams};
-        if (cached) {
-            // The next level must cover every hit of these rays before they read it.
-            const Buffer<shared::Record> record_buffer(context_, records, "ic_batch_records");
-            const Buffer<shared::float4> origin_buffer(context_, origins, "ic_batch_origins");
-            const Buffer<unsigned> stream_buffer(context_, streams, "ic_batch_streams");
-            Buffer<shared::GBufferSample> hits(context_, count * per_record, "ic_record_hits");
-            context_.launch(hits_kernel_, count * per_record, params,
-                            SceneArguments(bvh_, device_scene_), record_buffer, origin_buffer,
-                            stream_buffer, hits);
-            cover(level + 1, hits, {0, 1, 1}, count * per_record, true);
-        }
         const RecordStore* next = cached ? &stores_[static_cast<size_t>(level) + 1] : nullptr;
         const bool shared_batch =
             split_ && observer_ == nullptr && (next != nullptr || sampling_.source == nullptr);
+        // The batch on the first device: for its hits, or for all of it.
+        std::optional<BatchBuffers> here;
+        if (cached || !shared_batch) {
+            here.emplace(context_, batch);
+        }
+        if (cached) {
+            // The next level must cover every hit of these rays before they read it.
+            Buffer<shared::GBufferSample> hits(context_, count * per_record, "ic_record_hits");
+            context_.launch(hits_kernel_, count * per_record, params,
+                            SceneArguments(bvh_, device_scene_), here->records, here->origins,
+                            here->streams, hits);
+            cover(level + 1, hits, {0, 1, 1}, count * per_record, true);
+        }
         RecordBatchOutput out;
         if (shared_batch) {
             const std::optional<HostRecords> below =
                 next != nullptr ? std::optional<HostRecords>(*next) : std::nullopt;
             out = split_->compute_batch(batch, below ? &*below : nullptr);
         } else {
-            out = compute_batch(batch, next, sites.data() + begin);
+            out = compute_batch(batch, *here, next, sites.data() + begin);
         }
         stats_.record_rays += out.rays;
         for (size_t b = 0; b < count; ++b) {
@@ -212,13 +214,19 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
     return computed;
 }
 
+IrradianceCache::BatchBuffers::BatchBuffers(Context& context, const RecordBatchInput& batch)
+    : records(context, batch.records, "ic_batch_records"),
+      origins(context, batch.origins, "ic_batch_origins"),
+      streams(context, batch.streams, "ic_batch_streams") {}
+
 RecordBatchOutput IrradianceCache::compute_batch(const RecordBatchInput& batch,
+                                                 const BatchBuffers& buffers,
                                                  const RecordStore* next, const RecordSite* sites) {
     const size_t count = batch.records.size();
     const size_t per_record = static_cast<size_t>(batch.params.strata_m) * batch.params.strata_n;
-    const Buffer<shared::Record> record_buffer(context_, batch.records, "ic_batch_records");
-    const Buffer<shared::float4> origin_buffer(context_, batch.origins, "ic_batch_origins");
-    const Buffer<unsigned> stream_buffer(context_, batch.streams, "ic_batch_streams");
+    const Buffer<shared::Record>& record_buffer = buffers.records;
+    const Buffer<shared::float4>& origin_buffer = buffers.origins;
+    const Buffer<unsigned>& stream_buffer = buffers.streams;
     Buffer<shared::IrradiancePayload> payload_buffer(context_, count, "ic_batch_payloads");
     Buffer<shared::float4> cells(context_, count * per_record, "ic_cells");
     Buffer<shared::float4> distances(context_, count, "ic_distances");

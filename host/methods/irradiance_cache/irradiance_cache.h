@@ -284,11 +284,18 @@ class IrradianceCache : private FrameBound {
                                       const Buffer<shared::RcGlossySample>& glossy);
     // The same on every device of split_ (no glossy buffer).
     std::vector<shared::float4> shade_split(const shared::IcParams& params, bool records_overlay);
-    // A batch's payloads and distances computed on the first device (shown to observer_ with
-    // its `sites`); `next`: the level below, read at the hits (null: sampling_.source or
-    // path-traced continuation).
-    RecordBatchOutput compute_batch(const RecordBatchInput& batch, const RecordStore* next,
-                                    const RecordSite* sites);
+    // A batch's records, origins and random streams on the first device.
+    struct BatchBuffers {
+        BatchBuffers(Context& context, const RecordBatchInput& batch);
+        Buffer<shared::Record> records;
+        Buffer<shared::float4> origins;
+        Buffer<unsigned> streams;
+    };
+    // A batch's payloads and distances computed on the first device (`buffers`: the batch
+    // there; shown to observer_ with its `sites`); `next`: the level below, read at the hits
+    // (null: sampling_.source or path-traced continuation).
+    RecordBatchOutput compute_batch(const RecordBatchInput& batch, const BatchBuffers& buffers,
+                                    const RecordStore* next, const RecordSite* sites);
     shared::IcParams level_params(int level) const;
     // ic_record_cells built for `source` (one program per source kind).
     Kernel& cells_kernel(const RadianceSource& source);
