@@ -2,11 +2,12 @@
 // exposing two CPU devices (POCL_DEVICES="pthread pthread"), the path tracer's image is bitwise
 // the single-device image whatever the devices' order, chunking and work-group size, both devices
 // render a share that adds up to the image (stats); so are the grid methods' images, their
-// photons shared, irradiance caching's (record batches and final pass shared) and the normals
-// preview's; methods that render on one device, temporal caching, a device named twice, an empty
-// entry, --time and intermediate images are refused with exit status 2 and no output; a device
-// that fails mid-render (pt, ic) stops the render with one line naming that device and the call,
-// and no output file. Skipped where PoCL does not give two devices.
+// photons shared, irradiance caching's, radiance caching's and SDRC's (diffuse record batches and
+// final pass shared) and the normals preview's; the method that renders on one device, temporal
+// caching, a device named twice, an empty entry, --time and intermediate images are refused with
+// exit status 2 and no output; a device that fails mid-render (pt, ic) stops the render with one
+// line naming that device and the call, and no output file. Skipped where PoCL does not give two
+// devices.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -42,11 +43,12 @@ bool same_pixels(const Image& a, const Image& b) {
            std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
 }
 
-// `radcache render` of the Cornell box at 40 x 36, 8 spp with `options` into dir/name.exr
-// (every layer) and its stats; exit status 0 expected.
+// `radcache render` of `scene` (the Cornell box) at 40 x 36, 8 spp with `options` into
+// dir/name.exr (every layer) and its stats; exit status 0 expected.
 nlohmann::json render(const std::filesystem::path& dir, const std::string& name,
-                      const std::vector<std::string>& options) {
-    std::vector<std::string> args = {"render",   cornell(),
+                      const std::vector<std::string>& options,
+                      const std::string& scene = cornell()) {
+    std::vector<std::string> args = {"render",   scene,
                                      "--width",  "40",
                                      "--height", "36",
                                      "--spp",    "8",
@@ -171,6 +173,37 @@ TEST(MultiDevice, IrradianceCacheImageIsTheOneDeviceImageWhateverTheSplit) {
     }
 }
 
+// Radiance caching and SDRC on glossy-box: their diffuse records' batches and the final pass
+// shared (the glossy buffer copied from the first device), their own records on the first
+// device, so every layer (the glossy caches' own included) is bitwise the one-device image; both
+// devices computed diffuse records and rendered chunks.
+TEST(MultiDevice, GlossyCachesImageIsTheOneDeviceImage) {
+    if (!two_devices()) {
+        GTEST_SKIP() << "PoCL does not expose two devices here";
+    }
+    const auto dir = test::scratch_dir("multi_device_glossy");
+    const std::string glossy_box =
+        (test::source_dir() / "scenes" / "glossy-box" / "scene.json").string();
+    for (const std::string method : {"rc", "sdrc"}) {
+        const std::vector<std::string> options = {"--method", method, "--ic-rays", "256"};
+        std::vector<std::string> one = options;
+        one.insert(one.end(), {"--device", "0:0"});
+        render(dir, method + "_one", one, glossy_box);
+        std::vector<std::string> two = options;
+        two.insert(two.end(), {"--device", "0:1,0:0"});
+        const nlohmann::json stats = render(dir, method + "_two", two, glossy_box);
+        EXPECT_TRUE(same_pixels(read_image(dir / (method + "_two.exr")),
+                                read_image(dir / (method + "_one.exr"))))
+            << method;
+        const nlohmann::json& devices = stats.at("devices");
+        ASSERT_EQ(devices.size(), 2u) << method;
+        for (const nlohmann::json& d : devices) {
+            EXPECT_GT(d.at("records").get<size_t>(), 0u) << method;
+            EXPECT_GT(d.at("chunks").get<size_t>(), 0u) << method;
+        }
+    }
+}
+
 // The geometry preview's rows shared by the two devices: bitwise the one-device image.
 TEST(MultiDevice, NormalsImageIsTheOneDeviceImage) {
     if (!two_devices()) {
@@ -201,15 +234,18 @@ TEST(MultiDevice, WhatRendersOnOneDeviceIsRefusedByName) {
         std::vector<std::string> options;
         std::string names;
     };
-    for (const Case& c : std::vector<Case>{
-             {{"--method", "ic", "--temporal", "--device", "all"},
-              "--temporal renders on one device"},
-             {{"--method", "rc", "--device", "0:0,0:1"}, "--method rc renders on one"},
-             {{"--device", "0:0,0:0"}, "twice"},
-             {{"--device", "0:0,"}, "empty entry"},
-             {{"--device", "0:0,7:7"}, "7:7"},
-             {{"--device", "all", "--time", "1"}, "--time"},
-             {{"--device", "all", "--save-every-pow2"}, "--save-every-pow2"}}) {
+    for (const Case& c :
+         std::vector<Case>{{{"--method", "ic", "--temporal", "--device", "all"},
+                            "--temporal renders on one device"},
+                           {{"--method", "rc", "--temporal", "--device", "0:0,0:1"},
+                            "--temporal renders on one device"},
+                           {{"--method", "decomposition", "--device", "0:0,0:1"},
+                            "--method decomposition renders on one"},
+                           {{"--device", "0:0,0:0"}, "twice"},
+                           {{"--device", "0:0,"}, "empty entry"},
+                           {{"--device", "0:0,7:7"}, "7:7"},
+                           {{"--device", "all", "--time", "1"}, "--time"},
+                           {{"--device", "all", "--save-every-pow2"}, "--save-every-pow2"}}) {
         std::vector<std::string> args = {"render",   cornell(), "--width", "8",
                                          "--height", "8",       "-o",      out};
         args.insert(args.end(), c.options.begin(), c.options.end());

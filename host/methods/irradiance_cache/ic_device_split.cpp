@@ -22,33 +22,46 @@ constexpr size_t kRangesPerDevice = 4;
 constexpr size_t kSmallestRangeCells = size_t{1} << 15;
 constexpr int kChunksPerDevice = 16;
 
+// A buffer the final pass reads: the first device's own, or a peer's copy of it (`copy`: its
+// values, downloaded once; null on the first device).
+template <class T>
+struct FirstDeviceBuffer {
+    FirstDeviceBuffer(Context& context, const Buffer<T>& first, const std::vector<T>* copy,
+                      const char* name)
+        : own(copy != nullptr ? Buffer<T>(context, *copy, name) : Buffer<T>()),
+          buffer(copy != nullptr ? own : first) {}
+
+    Buffer<T> own;
+    const Buffer<T>& buffer;
+};
+
+// The first device's camera samples and glossy buffer as the host downloaded them for the peers.
+struct FirstDeviceValues {
+    std::vector<shared::GBufferSample> gbuffer;
+    std::vector<shared::RcGlossySample> glossy;
+};
+
 // What one device holds for the final pass: the records, grid and splat tiles, the camera
-// samples (its own copy on a peer), the splat buffer and film of the whole image (only its
-// chunks written) and the render pass's counters.
+// samples and glossy buffer (the first device's; copies on a peer), the splat buffer and film of
+// the whole image (only its chunks written) and the render pass's counters.
 struct FinalPassBuffers {
-    FinalPassBuffers(Context& context, const FinalPassInput& input,
-                     const std::vector<shared::GBufferSample>* samples)
+    FinalPassBuffers(Context& context, const FinalPassInput& input, const FirstDeviceValues* copy)
         : records(context, input.records),
           splat(context, input.tiles),
-          own_gbuffer(samples != nullptr
-                          ? Buffer<shared::GBufferSample>(context, *samples, "ic_gbuffer")
-                          : Buffer<shared::GBufferSample>()),
-          gbuffer(samples != nullptr ? own_gbuffer : input.gbuffer),
+          gbuffer(context, input.gbuffer, copy != nullptr ? &copy->gbuffer : nullptr, "ic_gbuffer"),
+          glossy(context, input.glossy, copy != nullptr ? &copy->glossy : nullptr, "ic_glossy"),
           sums(context, input.gbuffer.size(), "ic_sums"),
-          glossy(context, 1, "ic_no_glossy"),
           film(context, static_cast<size_t>(input.width) * input.height * RC_CACHED_FILM_SLOTS,
                "ic_film"),
           counters(context, std::vector<unsigned>{0u, 0u, 0xffffffffu}, "ic_counters") {
-        glossy.fill_zero();
         film.fill_zero();
     }
 
     DeviceRecords records;
     DeviceSplat splat;
-    Buffer<shared::GBufferSample> own_gbuffer;
-    const Buffer<shared::GBufferSample>& gbuffer;
+    FirstDeviceBuffer<shared::GBufferSample> gbuffer;
+    FirstDeviceBuffer<shared::RcGlossySample> glossy;
     Buffer<shared::float4> sums;
-    Buffer<shared::RcGlossySample> glossy;
     Buffer<shared::float4> film;
     Buffer<unsigned> counters;
 };
@@ -177,8 +190,8 @@ RecordBatchOutput IcDeviceSplit::compute_batch(const RecordBatchInput& batch,
 FinalPassOutput IcDeviceSplit::final_pass(const FinalPassInput& input) {
     const size_t pixels = static_cast<size_t>(input.width) * input.height;
     const size_t spp = static_cast<size_t>(input.spp);
-    // The camera samples go to the peers from the first device.
-    const std::vector<shared::GBufferSample> samples = input.gbuffer.download();
+    // The camera samples and the glossy buffer go to the peers from the first device.
+    const FirstDeviceValues copy{input.gbuffer.download(), input.glossy.download()};
     const PixelChunks chunks(input.width, input.height, devices_.size(), kChunksPerDevice);
     std::vector<Context*> contexts;
     for (const auto& device : devices_) {
@@ -191,18 +204,18 @@ FinalPassOutput IcDeviceSplit::final_pass(const FinalPassInput& input) {
             Context& context = device.frame.context;
             if (!device.final_pass) {
                 device.final_pass =
-                    std::make_unique<FinalPassBuffers>(context, input, d == 0 ? nullptr : &samples);
+                    std::make_unique<FinalPassBuffers>(context, input, d == 0 ? nullptr : &copy);
             }
             FinalPassBuffers& b = *device.final_pass;
             const auto [begin, end] = chunks.range(chunk);
             // Radiance cache splatting over the chunk's camera samples, then its render pass.
             context.launch_range(device.splat, begin * spp, end * spp, input.splat_params,
                                  b.splat.tiles, b.splat.tile_start, b.splat.tile_records,
-                                 b.records.records, b.records.payloads, b.gbuffer, b.sums);
+                                 b.records.records, b.records.payloads, b.gbuffer.buffer, b.sums);
             context.launch_range(device.shade, begin, end, input.shade_params, input.camera,
                                  device.scene(), b.records.grid, b.records.cell_start,
                                  b.records.cell_records, b.records.records, b.records.payloads,
-                                 b.sums, b.glossy, b.film, b.counters);
+                                 b.sums, b.glossy.buffer, b.film, b.counters);
         },
         {});
     FinalPassOutput out;

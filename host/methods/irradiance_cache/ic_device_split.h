@@ -17,6 +17,7 @@
 #include "methods/frame_scene.h"
 #include "methods/irradiance_cache/record_level_source.h"
 #include "methods/irradiance_cache/splat_tiles.h"
+#include "shared/radiance_cache.h"
 #include "shared/types.h"
 
 namespace rc {
@@ -55,6 +56,9 @@ struct FinalPassInput {
     const HostRecords& records;  // with the grid when the records overlay is drawn
     const SplatTiles& tiles;
     const Buffer<shared::GBufferSample>& gbuffer;  // the camera samples, on the first device
+    // The glossy lobes' cache at the camera samples (radiance caching), on the first device; one
+    // zero entry when none serves them.
+    const Buffer<shared::RcGlossySample>& glossy;
     int width = 0;
     int height = 0;
     int spp = 1;

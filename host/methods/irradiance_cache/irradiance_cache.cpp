@@ -591,8 +591,9 @@ std::vector<shared::float4> IrradianceCache::shade(const shared::IcParams& param
     return sums;
 }
 
-std::vector<shared::float4> IrradianceCache::shade_split(const shared::IcParams& params,
-                                                         bool records_overlay) {
+std::vector<shared::float4> IrradianceCache::shade_split(
+    const shared::IcParams& params, bool records_overlay,
+    const Buffer<shared::RcGlossySample>& glossy) {
     // The records, grid and splat tiles made once on the host for every device.
     auto start = SteadyClock::now();
     const HostRecords records(stores_[0], records_overlay);
@@ -601,7 +602,7 @@ std::vector<shared::float4> IrradianceCache::shade_split(const shared::IcParams&
     start = SteadyClock::now();
     const FinalPassOutput out =
         split_->final_pass({candidate_params(0, {1, camera_spp_, width_}), params, camera_, records,
-                            tiles, gbuffer_, width_, height_, camera_spp_});
+                            tiles, gbuffer_, glossy, width_, height_, camera_spp_});
     stats_.cache_bytes = out.cache_bytes;
     stats_.shading_rays = out.rays;
     stats_.nonfinite_samples = out.nonfinite_samples;
@@ -657,9 +658,9 @@ Image IrradianceCache::finish(IrradianceCacheOptions options, IrradianceCacheSta
         params.glossy_cache = 1;
     }
     // 5.-6. Splatting and the render pass.
-    const std::vector<shared::float4> sums = split_ && options.glossy == nullptr
-                                                 ? shade_split(params, options.records_overlay)
-                                                 : shade(params, options.records_overlay, glossy);
+    const std::vector<shared::float4> sums =
+        split_ ? shade_split(params, options.records_overlay, glossy)
+               : shade(params, options.records_overlay, glossy);
 
     std::vector<FilmLayer> layers = {
         {"beauty", RC_CACHED_FILM_BEAUTY},     {"direct", RC_CACHED_FILM_DIRECT},

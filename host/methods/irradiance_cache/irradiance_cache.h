@@ -282,8 +282,9 @@ class IrradianceCache : private FrameBound {
     // `glossy`: the glossy buffer the pass reads when params.glossy_cache.
     std::vector<shared::float4> shade(const shared::IcParams& params, bool records_overlay,
                                       const Buffer<shared::RcGlossySample>& glossy);
-    // The same on every device of split_ (no glossy buffer).
-    std::vector<shared::float4> shade_split(const shared::IcParams& params, bool records_overlay);
+    // The same on every device of split_ (the glossy buffer copied to every device).
+    std::vector<shared::float4> shade_split(const shared::IcParams& params, bool records_overlay,
+                                            const Buffer<shared::RcGlossySample>& glossy);
     // A batch's records, origins and random streams on the first device.
     struct BatchBuffers {
         BatchBuffers(Context& context, const RecordBatchInput& batch);

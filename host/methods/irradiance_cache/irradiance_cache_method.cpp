@@ -2,7 +2,6 @@
 // statistics per frame, and (with --ic-ivg) the irradiance vector grid as the radiance its
 // hemisphere rays read beyond their hits.
 #include <memory>
-#include <string>
 
 #include "methods/irradiance_cache/ic_memory.h"
 #include "methods/irradiance_cache/ic_options.h"
@@ -46,11 +45,7 @@ class IrradianceCaching final : public Method {
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         if (temporal_) {
-            if (frame.peers != nullptr && !frame.peers->empty()) {
-                throw Error("--temporal renders on one device; --device names " +
-                                std::to_string(frame.peers->size() + 1),
-                            kExitUsage);
-            }
+            refuse_temporal_on_several_devices(frame_devices(frame));
             FrameResult result = temporal_->render_frame(frame, hooks);
             const nlohmann::json& t = result.stats["temporal"];
             log_note(t["records"].dump() + " irradiance records (" + t["created"].dump() +
