@@ -2,10 +2,12 @@
 // exposing two CPU devices (POCL_DEVICES="pthread pthread"), the path tracer's image is bitwise
 // the single-device image whatever the devices' order, chunking and work-group size, both devices
 // render a share that adds up to the image (stats); so are the grid methods' images, their
-// photons shared; methods that render on one device, a device
-// named twice, an empty entry, --time and intermediate images are refused with exit status 2 and
-// no output; a device that fails mid-render stops the render with one line naming that device and
-// the call, and no output file. Skipped where PoCL does not give two devices.
+// photons shared, irradiance caching's, radiance caching's and SDRC's (diffuse record batches and
+// final pass shared) and the normals preview's; the method that renders on one device, temporal
+// caching, a device named twice, an empty entry, --time and intermediate images are refused with
+// exit status 2 and no output; a device that fails mid-render (pt, ic) stops the render with one
+// line naming that device and the call, and no output file. Skipped where PoCL does not give two
+// devices.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -41,11 +43,12 @@ bool same_pixels(const Image& a, const Image& b) {
            std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
 }
 
-// `radcache render` of the Cornell box at 40 x 36, 8 spp with `options` into dir/name.exr
-// (every layer) and its stats; exit status 0 expected.
+// `radcache render` of `scene` (the Cornell box) at 40 x 36, 8 spp with `options` into
+// dir/name.exr (every layer) and its stats; exit status 0 expected.
 nlohmann::json render(const std::filesystem::path& dir, const std::string& name,
-                      const std::vector<std::string>& options) {
-    std::vector<std::string> args = {"render",   cornell(),
+                      const std::vector<std::string>& options,
+                      const std::string& scene = cornell()) {
+    std::vector<std::string> args = {"render",   scene,
                                      "--width",  "40",
                                      "--height", "36",
                                      "--spp",    "8",
@@ -111,6 +114,116 @@ TEST(MultiDevice, GridMethodsImageIsTheOneDeviceImage) {
     }
 }
 
+// Irradiance caching on two devices: the record batches' hemisphere sampling in record ranges
+// and the final pass in chunks of rows, so every layer is bitwise the one-device image whatever
+// the devices' order, chunking and work-group size, with one or two cache levels and with the
+// grid read beyond the hemisphere hits (--ic-ivg: its records on the first device); both devices
+// computed records (adding up to the cache's) and rendered chunks (adding up to the image).
+TEST(MultiDevice, IrradianceCacheImageIsTheOneDeviceImageWhateverTheSplit) {
+    if (!two_devices()) {
+        GTEST_SKIP() << "PoCL does not expose two devices here";
+    }
+    const auto dir = test::scratch_dir("multi_device_ic");
+    struct Case {
+        std::string name;
+        std::vector<std::string> method;  // the same on one and two devices
+        std::vector<std::string> devices;
+        bool records_split;
+    };
+    const std::vector<std::string> ic = {"--method", "ic", "--ic-rays", "256"};
+    auto with = [&](std::vector<std::string> more) {
+        more.insert(more.begin(), ic.begin(), ic.end());
+        return more;
+    };
+    for (const Case& c : std::vector<Case>{
+             {"two_levels", ic, {"--device", "0:0,0:1"}, true},
+             {"swapped",
+              ic,
+              {"--device", "0:1, 0:0", "--max-chunk", "100", "--local-size", "8"},
+              true},
+             {"one_level", with({"--ic-bounces", "1"}), {"--device", "all"}, true},
+             {"grid", with({"--ic-bounces", "1", "--ic-ivg"}), {"--device", "all"}, false}}) {
+        std::vector<std::string> one = c.method;
+        one.insert(one.end(), {"--device", "0:0"});
+        const nlohmann::json single = render(dir, c.name + "_one", one);
+        std::vector<std::string> two = c.method;
+        two.insert(two.end(), c.devices.begin(), c.devices.end());
+        const nlohmann::json stats = render(dir, c.name + "_two", two);
+        EXPECT_TRUE(same_pixels(read_image(dir / (c.name + "_two.exr")),
+                                read_image(dir / (c.name + "_one.exr"))))
+            << c.name;
+        EXPECT_EQ(stats.at("level_records"), single.at("level_records")) << c.name;
+        EXPECT_EQ(stats.at("record_rays"), single.at("record_rays")) << c.name;
+        const nlohmann::json& devices = stats.at("devices");
+        ASSERT_EQ(devices.size(), 2u) << c.name;
+        size_t records = 0;
+        size_t pixels = 0;
+        for (const nlohmann::json& d : devices) {
+            EXPECT_GT(d.at("chunks").get<size_t>(), 0u) << c.name;
+            EXPECT_EQ(d.at("records").get<size_t>() > 0, c.records_split) << c.name;
+            records += d.at("records").get<size_t>();
+            pixels += d.at("pixels").get<size_t>();
+        }
+        size_t computed = 0;
+        for (const nlohmann::json& level : stats.at("level_records")) {
+            computed += level.get<size_t>();
+        }
+        EXPECT_EQ(records, c.records_split ? computed : 0u) << c.name;
+        EXPECT_EQ(pixels, 40u * 36u) << c.name;
+    }
+}
+
+// Radiance caching and SDRC on glossy-box: their diffuse records' batches and the final pass
+// shared (the glossy buffer copied from the first device), their own records on the first
+// device, so every layer (the glossy caches' own included) is bitwise the one-device image; both
+// devices computed diffuse records and rendered chunks.
+TEST(MultiDevice, GlossyCachesImageIsTheOneDeviceImage) {
+    if (!two_devices()) {
+        GTEST_SKIP() << "PoCL does not expose two devices here";
+    }
+    const auto dir = test::scratch_dir("multi_device_glossy");
+    const std::string glossy_box =
+        (test::source_dir() / "scenes" / "glossy-box" / "scene.json").string();
+    for (const std::string method : {"rc", "sdrc"}) {
+        const std::vector<std::string> options = {"--method", method, "--ic-rays", "256"};
+        std::vector<std::string> one = options;
+        one.insert(one.end(), {"--device", "0:0"});
+        render(dir, method + "_one", one, glossy_box);
+        std::vector<std::string> two = options;
+        two.insert(two.end(), {"--device", "0:1,0:0"});
+        const nlohmann::json stats = render(dir, method + "_two", two, glossy_box);
+        EXPECT_TRUE(same_pixels(read_image(dir / (method + "_two.exr")),
+                                read_image(dir / (method + "_one.exr"))))
+            << method;
+        const nlohmann::json& devices = stats.at("devices");
+        ASSERT_EQ(devices.size(), 2u) << method;
+        for (const nlohmann::json& d : devices) {
+            EXPECT_GT(d.at("records").get<size_t>(), 0u) << method;
+            EXPECT_GT(d.at("chunks").get<size_t>(), 0u) << method;
+        }
+    }
+}
+
+// The geometry preview's rows shared by the two devices: bitwise the one-device image.
+TEST(MultiDevice, NormalsImageIsTheOneDeviceImage) {
+    if (!two_devices()) {
+        GTEST_SKIP() << "PoCL does not expose two devices here";
+    }
+    const auto dir = test::scratch_dir("multi_device_normals");
+    render(dir, "one", {"--method", "normals", "--device", "0:0"});
+    const nlohmann::json stats =
+        render(dir, "two", {"--method", "normals", "--device", "0:1,0:0", "--max-chunk", "64"});
+    EXPECT_TRUE(same_pixels(read_image(dir / "two.exr"), read_image(dir / "one.exr")));
+    const nlohmann::json& devices = stats.at("devices");
+    ASSERT_EQ(devices.size(), 2u);
+    size_t pixels = 0;
+    for (const nlohmann::json& d : devices) {
+        EXPECT_GT(d.at("chunks").get<size_t>(), 0u);
+        pixels += d.at("pixels").get<size_t>();
+    }
+    EXPECT_EQ(pixels, 40u * 36u);
+}
+
 TEST(MultiDevice, WhatRendersOnOneDeviceIsRefusedByName) {
     if (!two_devices()) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
@@ -121,14 +234,18 @@ TEST(MultiDevice, WhatRendersOnOneDeviceIsRefusedByName) {
         std::vector<std::string> options;
         std::string names;
     };
-    for (const Case& c : std::vector<Case>{
-             {{"--method", "ic", "--device", "all"}, "--method ic renders on one"},
-             {{"--method", "rc", "--device", "0:0,0:1"}, "--method rc renders on one"},
-             {{"--device", "0:0,0:0"}, "twice"},
-             {{"--device", "0:0,"}, "empty entry"},
-             {{"--device", "0:0,7:7"}, "7:7"},
-             {{"--device", "all", "--time", "1"}, "--time"},
-             {{"--device", "all", "--save-every-pow2"}, "--save-every-pow2"}}) {
+    for (const Case& c :
+         std::vector<Case>{{{"--method", "ic", "--temporal", "--device", "all"},
+                            "--temporal renders on one device"},
+                           {{"--method", "rc", "--temporal", "--device", "0:0,0:1"},
+                            "--temporal renders on one device"},
+                           {{"--method", "decomposition", "--device", "0:0,0:1"},
+                            "--method decomposition renders on one"},
+                           {{"--device", "0:0,0:0"}, "twice"},
+                           {{"--device", "0:0,"}, "empty entry"},
+                           {{"--device", "0:0,7:7"}, "7:7"},
+                           {{"--device", "all", "--time", "1"}, "--time"},
+                           {{"--device", "all", "--save-every-pow2"}, "--save-every-pow2"}}) {
         std::vector<std::string> args = {"render",   cornell(), "--width", "8",
                                          "--height", "8",       "-o",      out};
         args.insert(args.end(), c.options.begin(), c.options.end());
@@ -149,37 +266,84 @@ TEST(MultiDevice, OtherCommandsRefuseSeveralDevices) {
     }
 }
 
-// In this process (the fault injection is in-process): the 20th kernel launch of the render
-// fails, on whichever device made it.
-TEST(MultiDevice, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {
-    setenv("POCL_DEVICES", "pthread pthread", 1);  // before this process's first OpenCL call
-    if (!two_devices()) {
-        GTEST_SKIP() << "PoCL does not expose two devices here";
-    }
-    const auto dir = test::scratch_dir("multi_device_fault");
+// The render of `options` on both devices in this process with the `nth` kernel launch failing
+// (CL_OUT_OF_RESOURCES), on whichever device made it: exit status 1, one line naming that device
+// and the call, nothing left in the output's directory.
+void expect_failing_device_named(const std::string& name, const std::vector<std::string>& options,
+                                 uint64_t nth) {
+    const auto dir = test::scratch_dir(name);
     const auto out = dir / "x.exr";
-    arm_device_fault("clEnqueueNDRangeKernel", 20, -5);  // CL_OUT_OF_RESOURCES
+    std::vector<std::string> args = {cornell(), "--width", "40",         "--height",
+                                     "36",      "--spp",   "8",          "--device",
+                                     "0:0,0:1", "-o",      out.string(), "--quiet"};
+    args.insert(args.end(), options.begin(), options.end());
+    arm_device_fault("clEnqueueNDRangeKernel", nth, -5);
     int exit_code = 0;
     std::string message;
     try {
-        exit_code = run_render_command({cornell(), "--width", "40", "--height", "36", "--spp", "8",
-                                        "--device", "0:0,0:1", "-o", out.string(), "--quiet"});
+        exit_code = run_render_command(args);
     } catch (const Error& error) {
         exit_code = error.exit_code();
         message = error.what();
     }
     const bool fired = device_fault_fired();
     disarm_device_fault();
-    ASSERT_TRUE(fired);
-    EXPECT_EQ(exit_code, 1);
+    ASSERT_TRUE(fired) << name;
+    EXPECT_EQ(exit_code, 1) << name;
     EXPECT_TRUE(message.rfind("device 0:0 (", 0) == 0 || message.rfind("device 0:1 (", 0) == 0)
         << message;
     EXPECT_NE(message.find("clEnqueueNDRangeKernel"), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    EXPECT_FALSE(std::filesystem::exists(out));
+    EXPECT_FALSE(std::filesystem::exists(out)) << name;
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
         ADD_FAILURE() << "left behind: " << entry.path();
     }
+}
+
+// Kernel launches of a render of `options` on both devices, counted in this process.
+uint64_t kernel_launches(const std::vector<std::string>& options) {
+    const auto dir = test::scratch_dir("multi_device_launches");
+    std::vector<std::string> args = {cornell(),
+                                     "--width",
+                                     "40",
+                                     "--height",
+                                     "36",
+                                     "--spp",
+                                     "8",
+                                     "--device",
+                                     "0:0,0:1",
+                                     "-o",
+                                     (dir / "x.exr").string(),
+                                     "--quiet"};
+    args.insert(args.end(), options.begin(), options.end());
+    reset_device_call_counts();
+    EXPECT_EQ(run_render_command(args), 0);
+    uint64_t launches = 0;
+    for (const auto& [name, site] : device_call_sites()) {
+        if (site.api == "clEnqueueNDRangeKernel") {
+            launches += site.calls;
+        }
+    }
+    return launches;
+}
+
+// In this process (the fault injection is in-process): the path tracer's 20th kernel launch; the
+// irradiance cache's 5th with one cache level (after the G-buffer, its tile depths, the first
+// placement pass's coverage query and selection on the first device: the first record range's
+// hemisphere cells, in the split) and its last (the final pass's, shared by the devices).
+TEST(MultiDevice, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {
+    setenv("POCL_DEVICES", "pthread pthread", 1);  // before this process's first OpenCL call
+    if (!two_devices()) {
+        GTEST_SKIP() << "PoCL does not expose two devices here";
+    }
+    expect_failing_device_named("multi_device_fault", {}, 20);
+    const std::vector<std::string> ic = {"--method", "ic", "--ic-rays", "256"};
+    const uint64_t launches = kernel_launches(ic);
+    ASSERT_GT(launches, 2u);
+    expect_failing_device_named("multi_device_fault_ic_final", ic, launches);
+    std::vector<std::string> one_level = ic;
+    one_level.insert(one_level.end(), {"--ic-bounces", "1"});
+    expect_failing_device_named("multi_device_fault_ic_records", one_level, 5);
 }
 
 }  // namespace

@@ -12,7 +12,7 @@ std::vector<std::unique_ptr<Context>> open_render_devices(const ContextOptions& 
     if (devices.size() > 1 && !method.splits_across_devices()) {
         throw Error("--device names " + std::to_string(devices.size()) + " devices; --method " +
                         name +
-                        " renders on one (pt and the grid methods split their work across devices)",
+                        " renders on one (the other methods split their work across devices)",
                     kExitUsage);
     }
     std::vector<std::unique_ptr<Context>> contexts;

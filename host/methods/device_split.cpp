@@ -1,6 +1,7 @@
 #include "methods/device_split.h"
 
 #include <chrono>
+#include <condition_variable>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -18,6 +19,7 @@ struct SplitQueue {
     std::atomic<size_t> done{0};
     std::atomic<bool> failed{false};
     std::mutex mutex;
+    std::condition_variable changed;  // an item done or failed
     std::string error;
     int exit_code = kExitFailure;
 };
@@ -33,7 +35,12 @@ void run_device(size_t index, const Context& context, SplitQueue& queue,
                 break;
             }
             items.push_back(item);
-            ++queue.done;
+            {
+                // Through the mutex, so that the waiting thread cannot miss the notification.
+                const std::lock_guard<std::mutex> lock(queue.mutex);
+                ++queue.done;
+            }
+            queue.changed.notify_one();
         }
     } catch (const std::exception& e) {
         const std::lock_guard<std::mutex> lock(queue.mutex);
@@ -43,11 +50,23 @@ void run_device(size_t index, const Context& context, SplitQueue& queue,
             const auto* error = dynamic_cast<const Error*>(&e);
             queue.exit_code = error != nullptr ? error->exit_code() : kExitFailure;
         }
+        queue.changed.notify_one();
     }
     seconds = seconds_since(start);
 }
 
 }  // namespace
+
+PixelChunks::PixelChunks(int width, int height, size_t devices, int per_device)
+    : pixels(static_cast<size_t>(width) * static_cast<size_t>(height)) {
+    const int rows = std::max(1, height / std::max(1, per_device * static_cast<int>(devices)));
+    chunk_pixels = std::max<size_t>(1, static_cast<size_t>(rows) * static_cast<size_t>(width));
+    count = (pixels + chunk_pixels - 1) / chunk_pixels;
+}
+
+std::pair<size_t, size_t> PixelChunks::range(size_t chunk) const {
+    return {chunk * chunk_pixels, std::min(pixels, (chunk + 1) * chunk_pixels)};
+}
 
 DeviceSplit run_device_split(
     const std::vector<Context*>& devices, size_t count,
@@ -64,11 +83,15 @@ DeviceSplit run_device_split(
         threads.emplace_back(run_device, i, std::cref(*devices[i]), std::ref(queue),
                              std::cref(work), std::ref(split.items[i]), std::ref(split.seconds[i]));
     }
-    while (queue.done < count && !queue.failed) {
+    // Progress every 50 ms until the last item is done (woken at once then: short splits
+    // return as soon as their items are).
+    const auto finished = [&] { return queue.done >= count || queue.failed; };
+    while (!finished()) {
         if (progress) {
             progress(static_cast<double>(queue.done) / static_cast<double>(count));
         }
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::unique_lock<std::mutex> lock(queue.mutex);
+        queue.changed.wait_for(lock, std::chrono::milliseconds(50), finished);
     }
     for (std::thread& thread : threads) {
         thread.join();

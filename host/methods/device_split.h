@@ -5,9 +5,11 @@
 // merges the devices' results by item (or, for sums exact in any order, as they come).
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "device/context.h"
@@ -18,6 +20,34 @@ struct DeviceSplit {
     std::vector<std::vector<size_t>> items;  // per device, in the order it took them
     std::vector<double> seconds;             // per device: its thread's time
 };
+
+// An image's pixels [0, width x height) in chunks of whole rows, about `per_device` chunks for
+// each of `devices` (the work items of a split over pixels).
+struct PixelChunks {
+    PixelChunks(int width, int height, size_t devices, int per_device = 16);
+    // Pixels [first, second) of chunk `chunk`.
+    std::pair<size_t, size_t> range(size_t chunk) const;
+
+    size_t pixels = 0;
+    size_t chunk_pixels = 1;
+    size_t count = 0;
+};
+
+// Copies the pixels (`slots` values each) of `chunks` from `film`, a device's film of the whole
+// image, into the same place of `image`; returns how many pixels that is.
+template <class T>
+size_t copy_chunks(const PixelChunks& pixels, const std::vector<size_t>& chunks,
+                   const std::vector<T>& film, size_t slots, std::vector<T>& image) {
+    size_t copied = 0;
+    for (size_t chunk : chunks) {
+        const auto [begin, end] = pixels.range(chunk);
+        std::copy(film.begin() + static_cast<long>(begin * slots),
+                  film.begin() + static_cast<long>(end * slots),
+                  image.begin() + static_cast<long>(begin * slots));
+        copied += end - begin;
+    }
+    return copied;
+}
 
 // Runs `work(device, item, stop)` for every item over `devices` (one thread each); `progress`
 // (may be empty) is called on this thread with the fraction done while they run. `stop` turns

@@ -24,6 +24,11 @@ struct FrameScene {
     const std::vector<FrameScene>* peers = nullptr;
 };
 
+// The devices `frame` renders on: its own and its peers.
+inline size_t frame_devices(const FrameScene& frame) {
+    return 1 + (frame.peers != nullptr ? frame.peers->size() : 0);
+}
+
 class FrameBound {
    protected:
     explicit FrameBound(const FrameScene& frame)

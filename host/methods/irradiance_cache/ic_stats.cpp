@@ -35,6 +35,19 @@ void add_irradiance_cache_stats(const IrradianceCacheStats& stats,
     s["seconds"] = {{"gbuffer", stats.gbuffer_seconds},     {"placement", stats.placement_seconds},
                     {"records", stats.record_seconds},      {"insertion", stats.insertion_seconds},
                     {"splatting", stats.splatting_seconds}, {"shading", stats.shading_seconds}};
+    if (!stats.devices.empty()) {
+        nlohmann::json devices = nlohmann::json::array();
+        for (const IcDeviceShare& d : stats.devices) {
+            devices.push_back({{"device", d.device},
+                               {"record_ranges", d.record_ranges},
+                               {"records", d.records},
+                               {"record_seconds", d.record_seconds},
+                               {"chunks", d.chunks},
+                               {"pixels", d.pixels},
+                               {"final_seconds", d.final_seconds}});
+        }
+        s["devices"] = devices;
+    }
 }
 
 }  // namespace rc

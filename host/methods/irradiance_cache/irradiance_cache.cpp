@@ -4,9 +4,11 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <optional>
 #include <regex>
 
 #include "image/film.h"
+#include "methods/irradiance_cache/device_splat.h"
 #include "methods/irradiance_cache/record_level_source.h"
 #include "methods/irradiance_cache/splat_tiles.h"
 #include "methods/records/cache_file.h"
@@ -26,28 +28,6 @@ const char* const kIrradianceCacheAovs[7] = {"beauty", "direct",   "indirect", "
 namespace {
 
 constexpr size_t kMaxBatchCells = size_t{1} << 23;  // hemisphere cells per record launch
-
-// The device copy of a record store's splat into the tiles of a camera's image (splat_tiles.h).
-struct DeviceSplat {
-    DeviceSplat(Context& context, const RecordStore& store, const shared::CameraParams& camera,
-                const std::vector<shared::TileDepths>* tile_depths) {
-        std::vector<glm::vec3> centres;
-        std::vector<float> influence;
-        for (const shared::Record& record : store.records()) {
-            centres.push_back(record_position(record));
-            influence.push_back(store.accuracy() * record.radius);
-        }
-        const SplatTiles splat =
-            splat_tiles(camera, centres, influence, RC_SPLAT_TILE_SIZE, tile_depths);
-        tiles = {splat.tile_size, splat.tiles_x, splat.tiles_y, 0};
-        tile_start = Buffer<int>(context, splat.tile_start, "ic_tile_start");
-        tile_records = Buffer<int>(context, splat.tile_records, "ic_tile_records");
-    }
-
-    shared::SplatTileGrid tiles{};
-    Buffer<int> tile_start;
-    Buffer<int> tile_records;
-};
 
 }  // namespace
 
@@ -100,7 +80,11 @@ IrradianceCache::IrradianceCache(const FrameScene& frame)
           frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_gbuffer_select")),
       shade_kernel_(frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_shade")),
       records_used_kernel_(
-          frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_records_used")) {}
+          frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_records_used")) {
+    if (frame.peers != nullptr && !frame.peers->empty()) {
+        split_ = std::make_unique<IcDeviceSplit>(frame);
+    }
+}
 
 void IrradianceCache::reset(const RecordSampling& sampling) {
     if (sampling.levels < 1 || sampling.m < 1 || sampling.n < 1 || sampling.deeper_m < 1 ||
@@ -171,8 +155,6 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
     // Reading a deeper level needs the hemisphere hits on the host side too: smaller batches.
     const size_t cells_limit = cached ? kMaxBatchCells / 8 : kMaxBatchCells;
     const size_t batch_limit = std::max<size_t>(1, cells_limit / per_record);
-    const SceneArguments scene(bvh_, device_scene_);
-    Buffer<unsigned> counters(context_, 1, "ic_record_counters");
     // Random streams: a site's own (all sites have one or none do), else the level's next ones.
     const bool own_streams = !sites.empty() && sites.front().stream >= 0;
     for (size_t begin = 0, count = 0; begin < sites.size(); begin += count) {
@@ -188,44 +170,39 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
                                      : next_streams_[static_cast<size_t>(level)] +
                                            static_cast<unsigned>(begin + b);
         }
-        const Buffer<shared::Record> record_buffer(context_, records, "ic_batch_records");
-        const Buffer<shared::float4> origin_buffer(context_, origins, "ic_batch_origins");
-        const Buffer<unsigned> stream_buffer(context_, streams, "ic_batch_streams");
-        Buffer<shared::IrradiancePayload> payload_buffer(context_, count, "ic_batch_payloads");
-        Buffer<shared::float4> cells(context_, count * per_record, "ic_cells");
-        Buffer<shared::float4> distances(context_, count, "ic_distances");
-        counters.fill_zero();
+        const RecordBatchInput batch{params, records, origins, streams};
+        const RecordStore* next = cached ? &stores_[static_cast<size_t>(level) + 1] : nullptr;
+        const bool shared_batch =
+            split_ && observer_ == nullptr && (next != nullptr || sampling_.source == nullptr);
+        // The batch on the first device: for its hits, or for all of it.
+        std::optional<BatchBuffers> here;
+        if (cached || !shared_batch) {
+            here.emplace(context_, batch);
+        }
         if (cached) {
             // The next level must cover every hit of these rays before they read it.
             Buffer<shared::GBufferSample> hits(context_, count * per_record, "ic_record_hits");
-            context_.launch(hits_kernel_, count * per_record, params, scene, record_buffer,
-                            origin_buffer, stream_buffer, hits);
+            context_.launch(hits_kernel_, count * per_record, params,
+                            SceneArguments(bvh_, device_scene_), here->records, here->origins,
+                            here->streams, hits);
             cover(level + 1, hits, {0, 1, 1}, count * per_record, true);
-            const RecordLevelSource next(context_, stores_[level + 1], kIrradianceCacheMaxWeight);
-            context_.launch(cells_kernel(next), count * per_record, params, scene, record_buffer,
-                            origin_buffer, stream_buffer, next, cells, counters);
+        }
+        RecordBatchOutput out;
+        if (shared_batch) {
+            const std::optional<HostRecords> below =
+                next != nullptr ? std::optional<HostRecords>(*next) : std::nullopt;
+            out = split_->compute_batch(batch, below ? &*below : nullptr);
         } else {
-            const RadianceSource& source =
-                sampling_.source != nullptr ? *sampling_.source : path_continuation_;
-            context_.launch(cells_kernel(source), count * per_record, params, scene, record_buffer,
-                            origin_buffer, stream_buffer, source, cells, counters);
+            out = compute_batch(batch, *here, next, sites.data() + begin);
         }
-        context_.launch(reduce_kernel_, count, params, cells, record_buffer, stream_buffer,
-                        payload_buffer, distances);
-        if (observer_ != nullptr) {
-            observer_->observe({params, record_buffer, origin_buffer, stream_buffer, streams.data(),
-                                cells, sites.data() + begin, count});
-        }
-        const std::vector<shared::IrradiancePayload> payloads = payload_buffer.download();
-        const std::vector<shared::float4> distance = distances.download();
-        stats_.record_rays += counters.download()[0];
+        stats_.record_rays += out.rays;
         for (size_t b = 0; b < count; ++b) {
             const RecordSite& site = sites[begin + b];
             ComputedRecord r;
             r.record = records[b];
-            r.payload = payloads[b];
-            r.host.harmonic_distance = distance[b].x;
-            r.host.min_distance = distance[b].y;
+            r.payload = out.payloads[b];
+            r.host.harmonic_distance = out.distances[b].x;
+            r.host.min_distance = out.distances[b].y;
             r.host.r_min = site.r_min;
             r.host.r_max = site.r_max;
             computed.push_back(r);
@@ -235,6 +212,48 @@ std::vector<ComputedRecord> IrradianceCache::compute_level(int level,
         next_streams_[static_cast<size_t>(level)] += static_cast<uint32_t>(sites.size());
     }
     return computed;
+}
+
+IrradianceCache::BatchBuffers::BatchBuffers(Context& context, const RecordBatchInput& batch)
+    : records(context, batch.records, "ic_batch_records"),
+      origins(context, batch.origins, "ic_batch_origins"),
+      streams(context, batch.streams, "ic_batch_streams") {}
+
+RecordBatchOutput IrradianceCache::compute_batch(const RecordBatchInput& batch,
+                                                 const BatchBuffers& buffers,
+                                                 const RecordStore* next, const RecordSite* sites) {
+    const size_t count = batch.records.size();
+    const size_t per_record = static_cast<size_t>(batch.params.strata_m) * batch.params.strata_n;
+    const Buffer<shared::Record>& record_buffer = buffers.records;
+    const Buffer<shared::float4>& origin_buffer = buffers.origins;
+    const Buffer<unsigned>& stream_buffer = buffers.streams;
+    Buffer<shared::IrradiancePayload> payload_buffer(context_, count, "ic_batch_payloads");
+    Buffer<shared::float4> cells(context_, count * per_record, "ic_cells");
+    Buffer<shared::float4> distances(context_, count, "ic_distances");
+    Buffer<unsigned> counters(context_, 1, "ic_record_counters");
+    counters.fill_zero();
+    const SceneArguments scene(bvh_, device_scene_);
+    if (next != nullptr) {
+        const RecordLevelSource source(context_, *next, kIrradianceCacheMaxWeight);
+        context_.launch(cells_kernel(source), count * per_record, batch.params, scene,
+                        record_buffer, origin_buffer, stream_buffer, source, cells, counters);
+    } else {
+        const RadianceSource& source =
+            sampling_.source != nullptr ? *sampling_.source : path_continuation_;
+        context_.launch(cells_kernel(source), count * per_record, batch.params, scene,
+                        record_buffer, origin_buffer, stream_buffer, source, cells, counters);
+    }
+    context_.launch(reduce_kernel_, count, batch.params, cells, record_buffer, stream_buffer,
+                    payload_buffer, distances);
+    if (observer_ != nullptr) {
+        observer_->observe({batch.params, record_buffer, origin_buffer, stream_buffer,
+                            batch.streams.data(), cells, sites, count});
+    }
+    RecordBatchOutput out;
+    out.payloads = payload_buffer.download();
+    out.distances = distances.download();
+    out.rays = counters.download()[0];
+    return out;
 }
 
 shared::IcParams IrradianceCache::candidate_params(int level, Candidates placement) const {
@@ -572,6 +591,26 @@ std::vector<shared::float4> IrradianceCache::shade(const shared::IcParams& param
     return sums;
 }
 
+std::vector<shared::float4> IrradianceCache::shade_split(
+    const shared::IcParams& params, bool records_overlay,
+    const Buffer<shared::RcGlossySample>& glossy) {
+    // The records, grid and splat tiles made once on the host for every device.
+    auto start = SteadyClock::now();
+    const HostRecords records(stores_[0], records_overlay);
+    const SplatTiles tiles = store_splat_tiles(stores_[0], camera_, &tile_depths_);
+    stats_.splatting_seconds = seconds_since(start);
+    start = SteadyClock::now();
+    const FinalPassOutput out =
+        split_->final_pass({candidate_params(0, {1, camera_spp_, width_}), params, camera_, records,
+                            tiles, gbuffer_, glossy, width_, height_, camera_spp_});
+    stats_.cache_bytes = out.cache_bytes;
+    stats_.shading_rays = out.rays;
+    stats_.nonfinite_samples = out.nonfinite_samples;
+    stats_.first_nonfinite_pixel = out.first_nonfinite_pixel;
+    stats_.shading_seconds = seconds_since(start);
+    return out.film;
+}
+
 void IrradianceCache::begin(const IrradianceCacheOptions& options) {
     width_ = options.width > 0 ? options.width : scene_.camera.width;
     height_ = options.height > 0 ? options.height : scene_.camera.height;
@@ -595,6 +634,9 @@ void IrradianceCache::begin(const IrradianceCacheOptions& options) {
 
 IrradianceCacheStats IrradianceCache::current_stats() const {
     IrradianceCacheStats stats = stats_;
+    if (split_) {
+        stats.devices = split_->shares();
+    }
     stats.level_records.clear();
     for (const RecordStore& store : stores_) {
         stats.level_records.push_back(store.size());
@@ -616,7 +658,9 @@ Image IrradianceCache::finish(IrradianceCacheOptions options, IrradianceCacheSta
         params.glossy_cache = 1;
     }
     // 5.-6. Splatting and the render pass.
-    const std::vector<shared::float4> sums = shade(params, options.records_overlay, glossy);
+    const std::vector<shared::float4> sums =
+        split_ ? shade_split(params, options.records_overlay, glossy)
+               : shade(params, options.records_overlay, glossy);
 
     std::vector<FilmLayer> layers = {
         {"beauty", RC_CACHED_FILM_BEAUTY},     {"direct", RC_CACHED_FILM_DIRECT},

@@ -8,12 +8,14 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "image/image.h"
 #include "methods/frame_scene.h"
 #include "methods/glossy_cache.h"
+#include "methods/irradiance_cache/ic_device_split.h"
 #include "methods/irradiance_cache/irradiance_records.h"
 #include "methods/radiance_source.h"
 
@@ -81,9 +83,10 @@ struct PlacementPass {
 
 struct IrradianceCacheStats {
     std::vector<PlacementPass> passes;
-    std::vector<size_t> level_records;  // in each level's cache at the end (loaded ones included)
-    size_t records = 0;                 // in the first level at the end
-    size_t loaded_records = 0;          // all levels
+    std::vector<IcDeviceShare> devices;  // with peers: per device, its share of the work
+    std::vector<size_t> level_records;   // in each level's cache at the end (loaded ones included)
+    size_t records = 0;                  // in the first level at the end
+    size_t loaded_records = 0;           // all levels
     int strata_m = 0;
     int strata_n = 0;
     int deeper_strata_m = 0;  // of the deeper levels' records
@@ -94,8 +97,12 @@ struct IrradianceCacheStats {
     double placement_seconds = 0.0;  // coverage queries and candidate selection, first level
     double record_seconds = 0.0;     // record computation, deeper levels' placement included
     double insertion_seconds = 0.0;  // host insertion and the device records and grid
-    double splatting_seconds = 0.0;  // the final splat of every record over every camera sample
-    double shading_seconds = 0.0;    // the render pass: direct light, the splat buffer, lobes
+    // The final splat of every record over every camera sample; with peers, the host's part of
+    // it (records, grid and splat tiles), the splat itself being shared with the render pass.
+    double splatting_seconds = 0.0;
+    // The render pass: direct light, the splat buffer, lobes; with peers, the splat and the
+    // render pass of every chunk on every device.
+    double shading_seconds = 0.0;
     size_t cache_bytes = 0;  // the first level on the device: records, payloads, splat buffer
     uint64_t nonfinite_samples = 0;
     int64_t first_nonfinite_pixel = -1;
@@ -176,6 +183,11 @@ struct DeviceRecords;  // record_level_source.h
 
 class IrradianceCache : private FrameBound {
    public:
+    // With the frame's peers (several devices), the record batches' hemisphere sampling (but
+    // where the hemisphere rays read IrradianceCacheOptions::source, or an observer sees the
+    // batches) and the final pass are shared among the devices (ic_device_split.h); placement and
+    // insertion stay on the first device and the host. The image is bitwise the one-device image
+    // on identical devices.
     explicit IrradianceCache(const FrameScene& frame);
 
     // begin(), the placement (from options.cache_in's records when given; saved to
@@ -270,6 +282,21 @@ class IrradianceCache : private FrameBound {
     // `glossy`: the glossy buffer the pass reads when params.glossy_cache.
     std::vector<shared::float4> shade(const shared::IcParams& params, bool records_overlay,
                                       const Buffer<shared::RcGlossySample>& glossy);
+    // The same on every device of split_ (the glossy buffer copied to every device).
+    std::vector<shared::float4> shade_split(const shared::IcParams& params, bool records_overlay,
+                                            const Buffer<shared::RcGlossySample>& glossy);
+    // A batch's records, origins and random streams on the first device.
+    struct BatchBuffers {
+        BatchBuffers(Context& context, const RecordBatchInput& batch);
+        Buffer<shared::Record> records;
+        Buffer<shared::float4> origins;
+        Buffer<unsigned> streams;
+    };
+    // A batch's payloads and distances computed on the first device (`buffers`: the batch
+    // there; shown to observer_ with its `sites`); `next`: the level below, read at the hits
+    // (null: sampling_.source or path-traced continuation).
+    RecordBatchOutput compute_batch(const RecordBatchInput& batch, const BatchBuffers& buffers,
+                                    const RecordStore* next, const RecordSite* sites);
     shared::IcParams level_params(int level) const;
     // ic_record_cells built for `source` (one program per source kind).
     Kernel& cells_kernel(const RadianceSource& source);
@@ -298,6 +325,7 @@ class IrradianceCache : private FrameBound {
     std::vector<uint8_t> uncached_primitives_;
     std::vector<RecordStore> stores_;
     IrradianceCacheStats stats_;
+    std::unique_ptr<IcDeviceSplit> split_;  // with the frame's peers
 };
 
 }  // namespace rc

@@ -45,6 +45,7 @@ class IrradianceCaching final : public Method {
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         if (temporal_) {
+            refuse_temporal_on_several_devices(frame_devices(frame));
             FrameResult result = temporal_->render_frame(frame, hooks);
             const nlohmann::json& t = result.stats["temporal"];
             log_note(t["records"].dump() + " irradiance records (" + t["created"].dump() +
@@ -70,6 +71,11 @@ class IrradianceCaching final : public Method {
         log_note(std::to_string(stats.records) + " irradiance records");
         return result;
     }
+
+    // The record batches and the final pass; placement and insertion stay on the first device
+    // and the host, and --ic-ivg's hemisphere rays on the first device (where its grid is).
+    // Temporal caching renders on one device.
+    bool splits_across_devices() const override { return true; }
 
     std::vector<ProgramRequest> programs() const override {
         std::vector<ProgramRequest> programs =

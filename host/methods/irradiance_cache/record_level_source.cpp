@@ -1,21 +1,29 @@
 #include "methods/irradiance_cache/record_level_source.h"
 
-#include "methods/records/record_grid.h"
-
 namespace rc {
 
-DeviceRecords::DeviceRecords(Context& context, const RecordStore& store, bool with_grid) {
-    const RecordGridData data = build_record_grid(
-        with_grid ? store.records() : std::vector<shared::Record>{}, store.accuracy());
-    grid = data.grid;
-    records = Buffer<shared::Record>(context, store.records(), "ic_records");
-    payloads = Buffer<shared::IrradiancePayload>(context, device_payloads(store), "ic_payloads");
-    cell_start = Buffer<int>(context, data.cell_start, "ic_cell_start");
-    cell_records = Buffer<int>(context, data.cell_records, "ic_cell_records");
-}
+HostRecords::HostRecords(const RecordStore& store, bool with_grid)
+    : accuracy(store.accuracy()),
+      records(store.records()),
+      payloads(device_payloads(store)),
+      grid(build_record_grid(with_grid ? store.records() : std::vector<shared::Record>{},
+                             store.accuracy())) {}
+
+DeviceRecords::DeviceRecords(Context& context, const RecordStore& store, bool with_grid)
+    : DeviceRecords(context, HostRecords(store, with_grid)) {}
+
+DeviceRecords::DeviceRecords(Context& context, const HostRecords& host)
+    : grid(host.grid.grid),
+      records(context, host.records, "ic_records"),
+      payloads(context, host.payloads, "ic_payloads"),
+      cell_start(context, host.grid.cell_start, "ic_cell_start"),
+      cell_records(context, host.grid.cell_records, "ic_cell_records") {}
 
 RecordLevelSource::RecordLevelSource(Context& context, const RecordStore& store, float max_weight)
-    : records_(context, store), accuracy_(store.accuracy()), max_weight_(max_weight) {}
+    : RecordLevelSource(context, HostRecords(store), max_weight) {}
+
+RecordLevelSource::RecordLevelSource(Context& context, const HostRecords& records, float max_weight)
+    : records_(context, records), accuracy_(records.accuracy), max_weight_(max_weight) {}
 
 unsigned RecordLevelSource::set_kernel_args(Kernel& kernel, unsigned first) const {
     kernel.set_arg(first, sizeof records_.grid, &records_.grid);

@@ -7,15 +7,28 @@
 #include "device/context.h"
 #include "methods/irradiance_cache/irradiance_records.h"
 #include "methods/radiance_source.h"
+#include "methods/records/record_grid.h"
 #include "shared/types.h"
 
 namespace rc {
 
-// The device copy of a record store: records, their payloads (gradients scaled for the clamped
-// radius) and the world-space grid over them. With `with_grid` false the grid is empty (one
-// cell, no records): for splatting alone.
+// What the device copy of a record store holds, made once on the host (several devices upload
+// the same): records, their payloads (gradients scaled for the clamped radius) and the
+// world-space grid over them. With `with_grid` false the grid is empty (one cell, no records):
+// for splatting alone.
+struct HostRecords {
+    HostRecords(const RecordStore& store, bool with_grid = true);
+
+    float accuracy = 0.0f;
+    std::vector<shared::Record> records;
+    std::vector<shared::IrradiancePayload> payloads;
+    RecordGridData grid;
+};
+
+// The device copy of a record store (HostRecords).
 struct DeviceRecords {
     DeviceRecords(Context& context, const RecordStore& store, bool with_grid = true);
+    DeviceRecords(Context& context, const HostRecords& host);
     size_t bytes() const {
         return records.bytes() + payloads.bytes() + cell_start.bytes() + cell_records.bytes();
     }
@@ -31,6 +44,7 @@ class RecordLevelSource final : public RadianceSource {
    public:
     // The store's records, weighted with its accuracy and at most `max_weight`.
     RecordLevelSource(Context& context, const RecordStore& store, float max_weight);
+    RecordLevelSource(Context& context, const HostRecords& records, float max_weight);
 
     std::string build_options() const override {
         return radiance_source_define(RC_RADIANCE_RECORDS);

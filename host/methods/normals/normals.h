@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "image/image.h"
 #include "methods/frame_scene.h"
@@ -16,13 +18,29 @@ struct NormalsOptions {
     uint64_t seed = 0;
 };
 
+// One device's share of a preview on several devices.
+struct NormalsDeviceShare {
+    std::string device;  // "P:D name"
+    size_t chunks = 0;   // chunks of rows it drew
+    size_t pixels = 0;
+    double seconds = 0.0;  // its thread's time
+};
+
 class NormalsMethod : private FrameBound {
    public:
+    // With the frame's peers (several devices), the image's rows are drawn in chunks shared
+    // among the devices (methods/device_split.h) and merged by chunk: bitwise the one-device
+    // image on identical devices.
     explicit NormalsMethod(const FrameScene& frame);
 
-    Image render(const NormalsOptions& options);
+    // `devices` (may be null): with peers, each device's share.
+    Image render(const NormalsOptions& options, std::vector<NormalsDeviceShare>* devices = nullptr);
 
    private:
+    std::vector<shared::float4> render_split(const NormalsOptions& options, int width, int height,
+                                             std::vector<NormalsDeviceShare>* devices);
+
+    const FrameScene& frame_;
     Kernel kernel_;
 };
 

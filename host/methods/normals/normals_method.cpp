@@ -19,10 +19,23 @@ class NormalsPreview final : public Method {
         options.samples_per_pixel = static_cast<unsigned>(settings_.spp);
         options.seed = settings_.seed;
         FrameResult result;
-        result.image = method.render(options);
+        std::vector<NormalsDeviceShare> devices;
+        result.image = method.render(options, &devices);
         result.spp = settings_.spp;
+        if (!devices.empty()) {
+            nlohmann::json shares = nlohmann::json::array();
+            for (const NormalsDeviceShare& d : devices) {
+                shares.push_back({{"device", d.device},
+                                  {"chunks", d.chunks},
+                                  {"pixels", d.pixels},
+                                  {"seconds", d.seconds}});
+            }
+            result.stats["devices"] = shares;
+        }
         return result;
     }
+
+    bool splits_across_devices() const override { return true; }
 
     std::vector<ProgramRequest> programs() const override { return {{"normals/normals.cl", ""}}; }
 

@@ -79,19 +79,14 @@ Image PathTracer::render_split(const PathTracerOptions& options, int width, int 
     for (const auto& work : works) {
         contexts.push_back(&work->frame.context);
     }
-    const int rows = std::max(1, height / (kChunksPerDevice * static_cast<int>(works.size())));
-    const size_t chunk_pixels = static_cast<size_t>(rows) * static_cast<size_t>(width);
-    const size_t chunks = (pixels + chunk_pixels - 1) / chunk_pixels;
-    const auto pixel_range = [&](size_t chunk) {
-        return std::make_pair(chunk * chunk_pixels, std::min(pixels, (chunk + 1) * chunk_pixels));
-    };
+    const PixelChunks chunks(width, height, works.size(), kChunksPerDevice);
     const shared::PathTracerParams params = pass_params(options, width, height);
     const shared::CameraParams camera = camera_params(scene_.camera, width, height);
     const auto start = SteadyClock::now();
     const DeviceSplit split = run_device_split(
-        contexts, chunks,
+        contexts, chunks.count,
         [&](size_t device, size_t chunk, const std::atomic<bool>& stop) {
-            const auto [begin, end] = pixel_range(chunk);
+            const auto [begin, end] = chunks.range(chunk);
             render_chunk(*works[device], begin, end, params, camera, options.spp, stop);
         },
         [&](double fraction) {
@@ -108,13 +103,7 @@ Image PathTracer::render_split(const PathTracerOptions& options, int width, int 
         const std::vector<shared::float4> film = work.film.download();
         PathTracerDeviceShare share;
         share.device = work.frame.context.device().spec() + " " + work.frame.context.device().name;
-        for (size_t chunk : split.items[d]) {
-            const auto [begin, end] = pixel_range(chunk);
-            std::copy(film.begin() + static_cast<long>(begin * RC_PT_FILM_SLOTS),
-                      film.begin() + static_cast<long>(end * RC_PT_FILM_SLOTS),
-                      sums.begin() + static_cast<long>(begin * RC_PT_FILM_SLOTS));
-            share.pixels += end - begin;
-        }
+        share.pixels = copy_chunks(chunks, split.items[d], film, RC_PT_FILM_SLOTS, sums);
         share.chunks = split.items[d].size();
         share.rays = work.rays;
         share.seconds = split.seconds[d];

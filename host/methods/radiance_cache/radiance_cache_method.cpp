@@ -105,6 +105,7 @@ class RadianceCaching final : public Method {
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         if (temporal_) {
+            refuse_temporal_on_several_devices(frame_devices(frame));
             FrameResult result = temporal_->render_frame(frame, hooks);
             const nlohmann::json& t = result.stats["temporal"];
             const nlohmann::json& r = t["radiance"];
@@ -127,6 +128,10 @@ class RadianceCaching final : public Method {
                  std::to_string(rc.order) + ")");
         return result;
     }
+
+    // The diffuse records' batches and the final pass (irradiance_cache.h); the radiance
+    // records and the glossy buffer stay on the first device. Temporal caching renders on one.
+    bool splits_across_devices() const override { return true; }
 
     std::vector<ProgramRequest> programs() const override {
         std::vector<ProgramRequest> programs = irradiance_cache_programs(ic_, RC_RADIANCE_PATH);

@@ -118,6 +118,10 @@ class SpatialDirectionalRadianceCaching final : public Method {
         return result;
     }
 
+    // The diffuse records' batches and the final pass (irradiance_cache.h); the SDRC records,
+    // L-trees and the glossy buffer stay on the first device.
+    bool splits_across_devices() const override { return true; }
+
     std::vector<ProgramRequest> programs() const override {
         std::vector<ProgramRequest> programs = irradiance_cache_programs(ic_, RC_RADIANCE_PATH);
         programs.push_back({"sdrc/sdrc.cl", ""});

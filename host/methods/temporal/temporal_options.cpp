@@ -90,4 +90,11 @@ void refuse_cache_files_with_temporal(bool given, const std::string& options) {
     }
 }
 
+void refuse_temporal_on_several_devices(size_t devices) {
+    if (devices > 1) {
+        throw Error("--temporal renders on one device; --device names " + std::to_string(devices),
+                    kExitUsage);
+    }
+}
+
 }  // namespace rc

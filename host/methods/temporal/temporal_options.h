@@ -1,6 +1,7 @@
 // Temporal caching's command-line options (`--method ic --temporal`; docs/temporal-caching.md).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -35,5 +36,8 @@ std::string temporal_gradients_name(TemporalGradients gradients);
 // With --temporal the records live across frames, not in cache files: Error (exit status 2)
 // naming `options` (the cache-file options of the method) when `given`.
 void refuse_cache_files_with_temporal(bool given, const std::string& options);
+
+// Temporal caching renders on one device: Error (exit status 2) when a frame has `devices` > 1.
+void refuse_temporal_on_several_devices(size_t devices);
 
 }  // namespace rc
