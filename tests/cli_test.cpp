@@ -547,7 +547,7 @@ TEST(Cli, BenchAllMeasuresEveryFamilyOnTheDevice) {
 }
 
 // With two devices (PoCL's POCL_DEVICES="pthread pthread"; skipped where PoCL gives one), bench
-// all measures each device, then whole pt renders and grid builds on each alone and on both
+// all measures each device, then whole pt and ic renders and grid builds on each alone and on both
 // together, and reports the ratios of the medians it prints.
 TEST(Cli, BenchAllTimesSeveralDevicesTogether) {
     const std::string two = "POCL_DEVICES=pthread pthread";
@@ -567,7 +567,8 @@ TEST(Cli, BenchAllTimesSeveralDevicesTogether) {
     ASSERT_TRUE(report.contains("together"));
     const nlohmann::json& together = report["together"];
     EXPECT_EQ(together["devices"], nlohmann::json({"0:0", "0:1"}));
-    for (const char* key : {"path_samples_per_second", "photons_per_second"}) {
+    for (const char* key :
+         {"path_samples_per_second", "ic_samples_per_second", "photons_per_second"}) {
         ASSERT_TRUE(together.contains(key)) << key;
         const nlohmann::json& f = together[key];
         ASSERT_EQ(f["alone"].size(), 2u) << key;

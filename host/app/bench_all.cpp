@@ -428,7 +428,8 @@ CommandSpec bench_all_command() {
             "glossy-box). Device\n"
             "kernel time from profiling events; kernels are built and warmed up first. With "
             "several devices,\n"
-            "whole pt renders and grid builds are also timed on the wall clock on each device "
+            "whole pt and ic renders and grid builds are also timed on the wall clock on each "
+            "device "
             "alone and on all\n"
             "of them together (their work split as render --device all splits it).",
         .options = bench_all_options(),

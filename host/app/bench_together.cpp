@@ -8,6 +8,7 @@
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "methods/frame_scene.h"
+#include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
 #include "methods/path_tracer/path_tracer.h"
 #include "scene/device_scene.h"
@@ -49,6 +50,18 @@ std::vector<TogetherCase> together_cases(const Scene& scene, const TogetherSetti
              pt.rr_depth = scene.render.rr_depth;
              PathTracer(frame).render(pt);
              return static_cast<double>(pt.width) * pt.height * pt.spp;
+         }},
+        {"ic_samples_per_second", "ic render (1 spp), camera samples/s (M)",
+         [&scene, settings](const FrameScene& frame, bool warm_up) {
+             IrradianceCacheOptions ic;
+             ic.width = warm_up ? 16 : settings.width;
+             ic.height = warm_up ? 16 : settings.height;
+             ic.spp = 1;
+             ic.max_depth = scene.render.max_depth;
+             ic.rr_depth = scene.render.rr_depth;
+             ic.records_overlay = false;
+             IrradianceCache(frame).render(ic);
+             return static_cast<double>(ic.width) * ic.height;
          }},
         {"photons_per_second", "grid build, photons/s (M)",
          [&scene, settings](const FrameScene& frame, bool warm_up) {
