@@ -49,7 +49,7 @@ void check_options(const DecompositionOptions& options, size_t samples) {
         throw Error("--alpha must be a finite length >= 0", kExitUsage);
     }
     if (options.cluster_rays < 1 || options.min_cluster < 1 || options.light_samples < 1 ||
-        options.radiosity_samples < 1) {
+        options.radiosity_samples < 1 || options.radiosity_passes < 0) {
         throw Error("--decomp-rays and --light-samples must be at least 1", kExitUsage);
     }
     if (!(options.split_factor >= 1.0f) || !std::isfinite(options.split_factor)) {
@@ -109,8 +109,8 @@ void IrradianceDecomposition::compute_gbuffer() {
     samples_ = gbuffer_.download();
 }
 
-// §5 and §6 pass 1: the scene's triangles split to alpha, B(t) / pi of each one's front from the
-// coarse solution, and the grid that finds the ones within alpha of a point.
+// §5 and §6 pass 1: the scene's triangles split to alpha and the grid that finds the ones within
+// alpha of a point (their radiosity: coarse_radiosity or gather_radiosity).
 void IrradianceDecomposition::build_near_field(const DecompositionOptions& options) {
     triangles_.clear();
     if (options.alpha > 0.0f) {
@@ -120,14 +120,7 @@ void IrradianceDecomposition::build_near_field(const DecompositionOptions& optio
     stats_.near_triangles = triangles_.size();
     triangle_buffer_ = Buffer<shared::NearTriangle>(context_, triangles_, "decomp_triangles");
     radiance_buffer_ = Buffer<shared::float4>(context_, triangles_.size(), "decomp_radiance");
-    if (!triangles_.empty()) {
-        Buffer<unsigned> counters(context_, 1, "decomp_radiosity_counters");
-        counters.fill_zero();
-        context_.launch(kernel("decomp_radiosity"), triangles_.size(), params_,
-                        SceneArguments(bvh_, device_scene_), *source_, triangle_buffer_,
-                        radiance_buffer_, counters);
-        stats_.radiosity_rays = counters.download()[0];
-    }
+    radiance_buffer_.fill_zero();
     std::vector<glm::vec3> centroids;
     centroids.reserve(triangles_.size());
     for (const shared::NearTriangle& t : triangles_) {
@@ -139,6 +132,49 @@ void IrradianceDecomposition::build_near_field(const DecompositionOptions& optio
         1.0f);
     near_start_ = Buffer<int>(context_, near_grid_.cell_start, "decomp_near_start");
     near_list_ = Buffer<int>(context_, near_grid_.cell_records, "decomp_near_list");
+}
+
+// §6 pass 1, "the average radiosity value over all visible triangles", from the coarse solution.
+void IrradianceDecomposition::coarse_radiosity() {
+    if (triangles_.empty()) {
+        return;
+    }
+    Buffer<unsigned> counters(context_, 1, "decomp_radiosity_counters");
+    counters.fill_zero();
+    context_.launch(kernel("decomp_radiosity"), triangles_.size(), params_,
+                    SceneArguments(bvh_, device_scene_), *source_, triangle_buffer_,
+                    radiance_buffer_, counters);
+    stats_.radiosity_rays = counters.download()[0];
+}
+
+// The same radiosity gathered from the decomposition's own terms at the triangles (after the far
+// field): once what each sends besides its diffuse indirect light (rays), then `passes` passes
+// with no ray (but --decomp-visibility's): the first with I_N = 0, pass k reading pass k - 1's
+// B(t) in eq. 4.
+void IrradianceDecomposition::gather_radiosity(int passes) {
+    stats_.radiosity_passes = passes;
+    if (triangles_.empty()) {
+        return;
+    }
+    const size_t count = triangles_.size();
+    Buffer<shared::float4> direct(context_, count, "decomp_radiosity_direct");
+    Buffer<shared::float4> reflectance(context_, count, "decomp_reflectance");
+    Buffer<shared::float4> previous(context_, count, "decomp_radiance_previous");
+    Buffer<unsigned> counters(context_, 1, "decomp_radiosity_counters");
+    counters.fill_zero();
+    context_.launch(kernel("decomp_radiosity_direct"), count, params_,
+                    SceneArguments(bvh_, device_scene_), triangle_buffer_, direct, reflectance,
+                    counters);
+    for (int pass = 0; pass < passes; ++pass) {
+        std::swap(previous, radiance_buffer_);
+        const unsigned with_near = pass > 0 ? 1u : 0u;
+        context_.launch(kernel("decomp_radiosity_gather"), count, params_,
+                        SceneArguments(bvh_, device_scene_), far_grid_.grid, far_start_, far_list_,
+                        far_records_, far_coefficients_, near_grid_.grid, near_start_, near_list_,
+                        triangle_buffer_, direct, reflectance, previous, with_near,
+                        radiance_buffer_, counters);
+    }
+    stats_.radiosity_rays = counters.download()[0];
 }
 
 std::vector<shared::ClusterFit> IrradianceDecomposition::fit_batch(
@@ -342,11 +378,20 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
     // Pass 1 (§6): the near field's triangles and radiosity, the far field's samples.
     start = SteadyClock::now();
     build_near_field(options);
+    if (options.radiosity_passes == 0) {
+        coarse_radiosity();
+    }
     context_.finish();
     stats_.near_seconds = seconds_since(start);
     start = SteadyClock::now();
     sample_far_field(options);
     stats_.far_seconds = seconds_since(start);
+    if (options.radiosity_passes > 0) {
+        start = SteadyClock::now();
+        gather_radiosity(options.radiosity_passes);
+        context_.finish();
+        stats_.near_seconds += seconds_since(start);
+    }
     // Pass 2: both terms at every camera sample, then the render pass.
     start = SteadyClock::now();
     const Buffer<shared::DecompIrradiance> terms = evaluate(gbuffer_, samples);

@@ -44,9 +44,14 @@ struct DecompositionOptions {
     // §4.1's split test looks for hits inside the cluster's bounding sphere scaled by this
     // (--decomp-split; the paper's test: 1).
     float split_factor = 4.0f;
-    int min_cluster = 16;         // a cluster of fewer than 2 min_cluster points is not split
-    int light_samples = 4;        // the render pass's light samples per camera hit
-    int radiosity_samples = 4;    // points per split triangle of its radiosity
+    int min_cluster = 16;       // a cluster of fewer than 2 min_cluster points is not split
+    int light_samples = 4;      // the render pass's light samples per camera hit
+    int radiosity_samples = 4;  // points per split triangle of its radiosity
+    // B(t) gathered from the decomposition's own two terms at the split triangles
+    // (--decomp-radiosity gathered, the default; decomp_radiosity.h) in this many passes, the
+    // first with I_N = 0, each further one a Jacobi step of the near triangles' exchange; 0: read
+    // from the coarse solution (--decomp-radiosity coarse).
+    int radiosity_passes = 3;
     bool count_emission = false;  // rays count the emission they see (tests)
     // Test each near triangle that passes the paper's heuristic with a shadow ray to its centroid
     // (--decomp-visibility rays) instead of taking it as visible.
@@ -78,12 +83,13 @@ struct DecompositionStats {
     uint32_t near_max = 0;
     double far_mean = 0.0;        // far-field samples with a positive weight per served sample
     size_t far_uncovered = 0;     // served samples no far-field sample reached (nearest used)
-    uint64_t radiosity_rays = 0;  // the split triangles' radiosity
+    uint64_t radiosity_rays = 0;  // the split triangles' radiosity (every pass)
+    int radiosity_passes = 0;     // gathered passes (0: from the coarse solution)
     uint64_t cluster_rays = 0;    // the clusters' fits (and the source's rays for them)
     uint64_t near_rays = 0;       // shadow rays of the near field (--decomp-visibility rays)
     uint64_t shading_rays = 0;    // the G-buffer and the render pass
     double gbuffer_seconds = 0.0;
-    double near_seconds = 0.0;        // splitting, radiosity, the near triangles' grid
+    double near_seconds = 0.0;        // splitting, the near triangles' grid, their radiosity
     double far_seconds = 0.0;         // clusters, their rays and fits, the samples' grid
     double evaluation_seconds = 0.0;  // both terms at every camera sample
     double shading_seconds = 0.0;     // the render pass
@@ -122,6 +128,9 @@ class IrradianceDecomposition : private FrameBound {
     void compute_gbuffer();
     void build_near_field(const DecompositionOptions& options);
     void sample_far_field(const DecompositionOptions& options);
+    // B(t) / pi of the split triangles from the source (coarse) or gathered in `passes` passes.
+    void coarse_radiosity();
+    void gather_radiosity(int passes);
     // Rays and fits of a batch of clusters (their rays in *rays when given).
     std::vector<shared::ClusterFit> fit_batch(const std::vector<PendingCluster>& batch,
                                               std::vector<shared::ClusterRay>* rays = nullptr);
