@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 #include <random>
 
 #include "glossy_scenes.h"  // test::bitwise_equal
@@ -731,6 +732,32 @@ TEST(DecompositionDeterminism, ImageIsBitwiseIdenticalAcrossRunsChunksAndWorkGro
     EXPECT_TRUE(test::bitwise_equal(reference, render_with(8, 1000))) << "local 8, chunk 1000";
     EXPECT_TRUE(test::bitwise_equal(reference, render_with(32, 333))) << "local 32, chunk 333";
     EXPECT_FALSE(all_zero(reference, "near-field"));
+}
+
+// The near triangles' radiosity by default: gathered over the grid, read from the source (path
+// traced) with --decomp-source path; --decomp-radiosity overrides either (--stats names it).
+TEST(DecompositionOptions, RadiosityDefaultFollowsTheSource) {
+    const auto dir = test::scratch_dir("decomposition_radiosity");
+    const std::string out = (dir / "out.exr").string();
+    const std::string stats = (dir / "stats.json").string();
+    const std::string scene = (test::source_dir() / "scenes/cornell-box/scene.json").string();
+    const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+        {{}, "gathered"},
+        {{"--decomp-source", "path"}, "coarse"},
+        {{"--decomp-radiosity", "coarse"}, "coarse"},
+        {{"--decomp-source", "path", "--decomp-radiosity", "gathered"}, "gathered"},
+    };
+    for (const auto& [options, expected] : cases) {
+        std::vector<std::string> args = {"render",   scene,           "-o",      out,     "--width",
+                                         "8",        "--height",      "8",       "--spp", "1",
+                                         "--method", "decomposition", "--stats", stats};
+        args.insert(args.end(), options.begin(), options.end());
+        const test::CommandResult r = test::run_radcache(args);
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        const nlohmann::json frame = nlohmann::json::parse(std::ifstream(stats))["frames"][0];
+        EXPECT_EQ(frame["radiosity"], expected);
+        EXPECT_EQ(frame["radiosity_passes"], expected == "gathered" ? 3 : 0);
+    }
 }
 
 // Bad options: exit status 2, one line naming the option, no output file.

@@ -126,7 +126,10 @@ class Decomposition final : public Method {
             throw Error("--decomp-source: expected grid or path, got '" + source + "'", kExitUsage);
         }
         with_grid_ = source == "grid";
-        const std::string radiosity = arguments.value("--decomp-radiosity", "gathered");
+        // The gathered radiosity beats the grid's B(t) but not path-traced B(t) (the relief:
+        // docs/decomposition.md), so each source has its own default.
+        const std::string radiosity =
+            arguments.value("--decomp-radiosity", with_grid_ ? "gathered" : "coarse");
         if (radiosity != "gathered" && radiosity != "coarse") {
             throw Error("--decomp-radiosity: expected gathered or coarse, got '" + radiosity + "'",
                         kExitUsage);
@@ -239,8 +242,9 @@ std::vector<OptionSpec> decomposition_option_specs() {
             .one_of({"heuristic", "rays"}),
         OptionSpec{"--decomp-radiosity", "", "NAME",
                    "decomposition: the near triangles' radiosity B(t): gathered (from the "
-                   "decomposition's own far field and near field at the triangles, default) or "
-                   "coarse (read from the coarse solution, the paper's)"}
+                   "decomposition's own far field and near field at the triangles; default with "
+                   "--decomp-source grid) or coarse (read from the coarse solution, the paper's; "
+                   "default with --decomp-source path)"}
             .one_of({"gathered", "coarse"}),
         OptionSpec{"--decomp-source", "", "NAME",
                    "decomposition: the coarse solution the rays read at their hits and the near "
