@@ -77,13 +77,8 @@ __kernel void decomp_radiosity_gather(
     }
     const SceneData scene = RC_SCENE_DATA();
     const FarField far = {far_grid, far_start, far_samples, samples, coefficients};
-    const NearField near = {near_grid,
-                            near_start,
-                            near_list,
-                            near_triangles,
-                            previous,
-                            params.alpha,
-                            params.near_visibility != 0 ? &scene : 0};
+    const NearField near = rc_decomp_near_field(near_grid, near_start, near_list, near_triangles,
+                                                previous, &params, &scene);
     uint rays = 0;
     radiance[t] =
         (float4)(rc_decomp_gathered_radiance(&far, &near, near_triangles + t, direct[t].xyz,
@@ -140,13 +135,8 @@ __kernel void decomp_irradiance(uint begin, uint end, DecompParams params, RC_SC
     }
     const SceneData scene = RC_SCENE_DATA();
     const FarField far = {far_grid, far_start, far_samples, samples, coefficients};
-    const NearField near = {near_grid,
-                            near_start,
-                            near_list,
-                            near_triangles,
-                            radiance,
-                            params.alpha,
-                            params.near_visibility != 0 ? &scene : 0};
+    const NearField near = rc_decomp_near_field(near_grid, near_start, near_list, near_triangles,
+                                                radiance, &params, &scene);
     const GBufferSample g = gbuffer[i];
     irradiance[i] = rc_decomp_irradiance(&far, &near, &g);
 }
