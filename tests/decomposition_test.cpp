@@ -535,13 +535,15 @@ Scene furnace_box() {
 // The gathered radiosity (--decomp-radiosity gathered; decomp_radiosity.h) in the furnace: every
 // split triangle's B(t) / pi, direct light plus rho_d / pi (I_D + I_N) gathered at it, is L*
 // (the first pass's I_D alone gives it; the second's I_N, read against the first's B(t), must
-// keep it: B(t) - pi L_D* vanishes), within 5 % (measured: 3.2 %; the direct light's 256 points
+// keep it: B(t) - pi L_D* vanishes), within 5 % (measured: 3.1 %; the direct light's 256 points
 // and the far field's 16384 path-traced rays are Monte Carlo estimates); and the
 // decomposition's indirect light at the camera samples is rho L*, within 4 % per pixel and 2 %
 // on average, also along the block's edges where I_N sums many near triangles. A formula that
 // dropped the direct light, the reflectance or the distant term would be off by 40 % or more.
-// The triangles checked lie within the single far-field sample's reach by at least alpha
-// (beyond it a triangle has no distant light to gather).
+// The triangles the single far-field sample does not cover (those facing away from the
+// camera's) are path traced instead (256 paths each): their mean is L* within 3 % (measured
+// 0.2 %); one triangle's estimate is far noisier in a furnace whose every surface emits (up to
+// 23 % off, the path tracer's own variance: it is not the gather's).
 TEST(DecompositionNearField, GatheredRadiosityInAFurnaceIsTheAnalyticRadiance) {
     test::DeviceFrame device(furnace_box());
     PathContinuation path;
@@ -550,31 +552,39 @@ TEST(DecompositionNearField, GatheredRadiosityInAFurnaceIsTheAnalyticRadiance) {
     options.min_cluster_size = 1e5f;  // one cluster: one far-field sample
     options.cluster_rays = 16384;
     options.radiosity_samples = 256;
+    options.traced_samples = 256;
     options.radiosity_passes = 2;
     DecompositionStats stats;
     const Image image = decomposition.render(options, &stats);
     ASSERT_EQ(decomposition.far_samples().size(), 1u);
-    const FarSample& far = decomposition.far_samples()[0];
     const double expected = kFurnaceReflectance * kFurnaceEmission / (1 - kFurnaceReflectance);
     const std::vector<glm::vec3> radiance = decomposition.near_radiance();
     const std::vector<shared::NearTriangle>& triangles = decomposition.near_triangles();
-    int checked = 0;
+    std::vector<bool> traced(triangles.size(), false);
+    for (uint32_t t : decomposition.uncovered_triangles()) {
+        traced[t] = true;
+    }
     double worst = 0.0;
+    double traced_sum = 0.0;
     for (size_t t = 0; t < triangles.size(); ++t) {
-        const glm::vec3 centroid =
-            (vec3_of(triangles[t].v0) + vec3_of(triangles[t].v1) + vec3_of(triangles[t].v2)) / 3.0f;
-        if (glm::length(centroid - far.centre) > far.reach - options.alpha) {
-            continue;
-        }
-        ++checked;
         for (int c = 0; c < 3; ++c) {
+            if (traced[t]) {
+                traced_sum += radiance[t][c];
+                continue;
+            }
             worst = std::max(worst, std::abs(radiance[t][c] - expected) / expected);
             EXPECT_NEAR(radiance[t][c], expected, 0.05 * expected) << "triangle " << t;
         }
     }
-    std::printf("furnace: %d of %zu triangles checked, worst B(t) / pi %.3f off; %zu rays\n",
-                checked, triangles.size(), worst, static_cast<size_t>(stats.radiosity_rays));
-    EXPECT_GT(checked, static_cast<int>(triangles.size() / 3));
+    const double traced_mean = traced_sum / (3.0 * stats.uncovered_triangles);
+    EXPECT_NEAR(traced_mean, expected, 0.03 * expected);
+    std::printf(
+        "furnace: %zu triangles, %zu of them not covered by the far field; worst gathered B(t) / "
+        "pi %.3f off; traced ones' mean %.4f (L* = %.4f); %zu rays\n",
+        triangles.size(), stats.uncovered_triangles, worst, traced_mean, expected,
+        static_cast<size_t>(stats.radiosity_rays));
+    EXPECT_GT(stats.uncovered_triangles, 0u);
+    EXPECT_LT(stats.uncovered_triangles, triangles.size());
     EXPECT_EQ(stats.radiosity_passes, 2);
     const Image indirect = select_layers(image, {"indirect"});
     const double reflected = kFurnaceReflectance * expected;

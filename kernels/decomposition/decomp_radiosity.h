@@ -6,6 +6,7 @@
 #pragma once
 
 #include "common/cached_radiance.h"
+#include "common/path_radiance.h"
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_shading.h"
 
@@ -71,6 +72,49 @@ RC_FUNC float3 rc_decomp_triangle_direct(const DecompParams* params, const Scene
     }
     *reflectance /= (float)count;
     return sum / (float)count;
+}
+
+// B(t) / pi of a split triangle's front path traced (emission left out): the mean over `count`
+// stratified points of it of the path tracer's estimate along a ray arriving along its normal;
+// for the triangles no far-field sample covers. *rays counts the rays traced.
+RC_FUNC float3 rc_decomp_triangle_traced(const DecompParams* params, const SceneData* scene,
+                                         RC_GLOBAL const NearTriangle* triangle, uint t, int count,
+                                         uint* rays) {
+    float3 sum = (float3)(0.0f);
+    for (int k = 0; k < count; ++k) {
+        RngStream rng;
+        const Ray ray = rc_decomp_triangle_ray(params, triangle, t, (uint)k, count, &rng);
+        const PathSample s = rc_path_radiance(scene, ray, &rng, 1, params->max_depth,
+                                              params->rr_depth, params->count_emission != 0);
+        *rays += s.rays;
+        if (all(isfinite(s.radiance))) {
+            sum += s.radiance;
+        }
+    }
+    return sum / (float)max(count, 1);
+}
+
+// Whether some far-field sample reaches a split triangle's centroid with a positive weight about
+// its front's normal (rc_decomp_sample_weight). Where none does (a face the camera does not see,
+// in an orientation no cluster's rays came from), the gather would read a fit made for other
+// orientations; B(t) is path traced there instead (rc_decomp_triangle_traced).
+RC_FUNC uint rc_decomp_triangle_covered(const FarField* far,
+                                        RC_GLOBAL const NearTriangle* triangle) {
+    const float3 v0 = triangle->v0.xyz;
+    const float3 v1 = triangle->v1.xyz;
+    const float3 v2 = triangle->v2.xyz;
+    const float3 normal = normalize(cross(v1 - v0, v2 - v0));
+    const float3 centroid = (v0 + v1 + v2) * (1.0f / 3.0f);
+    const int cell = rc_ic_grid_cell(&far->grid, centroid);
+    if (cell < 0 || !all(isfinite(normal))) {
+        return 0;
+    }
+    for (int k = far->cell_start[cell]; k < far->cell_start[cell + 1]; ++k) {
+        if (rc_decomp_sample_weight(far->samples + far->cell_samples[k], centroid, normal) > 0.0f) {
+            return 1;
+        }
+    }
+    return 0;
 }
 
 // B(t) / pi of a split triangle's front gathered from the decomposition (eq. 3 at its centroid

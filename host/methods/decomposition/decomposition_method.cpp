@@ -88,6 +88,7 @@ nlohmann::json stats_json(const DecompositionStats& s, const DecompositionOption
             {"source", options.source->source_name()},
             {"radiosity", options.radiosity_passes > 0 ? "gathered" : "coarse"},
             {"radiosity_passes", s.radiosity_passes},
+            {"uncovered_triangles", s.uncovered_triangles},
             {"records", s.sh_samples},
             {"sh_samples", s.sh_samples},
             {"clusters_sampled", s.clusters_sampled},
