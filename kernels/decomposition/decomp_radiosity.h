@@ -94,10 +94,13 @@ RC_FUNC float3 rc_decomp_triangle_traced(const DecompParams* params, const Scene
     return sum / (float)max(count, 1);
 }
 
-// Whether some far-field sample reaches a split triangle's centroid with a positive weight about
-// its front's normal (rc_decomp_sample_weight). Where none does (a face the camera does not see,
-// in an orientation no cluster's rays came from), the gather would read a fit made for other
-// orientations; B(t) is path traced there instead (rc_decomp_triangle_traced).
+// Whether the far field covers a split triangle: 0 when some far-field sample's reach holds its
+// centroid but none weighs it positively about its front's normal (rc_decomp_sample_weight: a
+// face the camera does not see, in an orientation no cluster's rays came from, such as the
+// bricks' undersides), where the gather would read a fit made for other orientations and B(t) is
+// path traced instead (rc_decomp_triangle_traced); 1 otherwise (covered, or beyond every
+// sample's reach: then no camera sample lies within alpha of it and its B(t) does not reach the
+// image; the gather's fallback serves).
 RC_FUNC uint rc_decomp_triangle_covered(const FarField* far,
                                         RC_GLOBAL const NearTriangle* triangle) {
     const float3 v0 = triangle->v0.xyz;
@@ -107,14 +110,17 @@ RC_FUNC uint rc_decomp_triangle_covered(const FarField* far,
     const float3 centroid = (v0 + v1 + v2) * (1.0f / 3.0f);
     const int cell = rc_ic_grid_cell(&far->grid, centroid);
     if (cell < 0 || !all(isfinite(normal))) {
-        return 0;
+        return 1;
     }
+    uint reached = 0;
     for (int k = far->cell_start[cell]; k < far->cell_start[cell + 1]; ++k) {
-        if (rc_decomp_sample_weight(far->samples + far->cell_samples[k], centroid, normal) > 0.0f) {
+        RC_GLOBAL const Record* sample = far->samples + far->cell_samples[k];
+        if (rc_decomp_sample_weight(sample, centroid, normal) > 0.0f) {
             return 1;
         }
+        reached |= length(centroid - sample->position.xyz) < sample->radius ? 1u : 0u;
     }
-    return 0;
+    return reached != 0 ? 0u : 1u;
 }
 
 // B(t) / pi of a split triangle's front gathered from the decomposition (eq. 3 at its centroid

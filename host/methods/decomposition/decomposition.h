@@ -88,7 +88,7 @@ struct DecompositionStats {
     size_t far_uncovered = 0;        // served samples no far-field sample reached (nearest used)
     uint64_t radiosity_rays = 0;     // the split triangles' radiosity (every pass)
     int radiosity_passes = 0;        // gathered passes (0: from the coarse solution)
-    size_t uncovered_triangles = 0;  // gathered: no far-field sample covers them (coarse B(t))
+    size_t uncovered_triangles = 0;  // gathered: facing away from the far field (B(t) traced)
     uint64_t cluster_rays = 0;       // the clusters' fits (and the source's rays for them)
     uint64_t near_rays = 0;          // shadow rays of the near field (--decomp-visibility rays)
     uint64_t shading_rays = 0;       // the G-buffer and the render pass
@@ -118,7 +118,7 @@ class IrradianceDecomposition : private FrameBound {
     const std::vector<FarSample>& far_samples() const { return far_; }
     const std::vector<shared::NearTriangle>& near_triangles() const { return triangles_; }
     std::vector<glm::vec3> near_radiance() const;
-    // After a gathered render(): the split triangles no far-field sample covers (B(t) traced).
+    // After a gathered render(): the split triangles whose B(t) was path traced.
     const std::vector<uint32_t>& uncovered_triangles() const { return uncovered_; }
 
     // After render(): I_D and I_N at G-buffer-like points from its far and near fields.
