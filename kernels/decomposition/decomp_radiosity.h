@@ -99,8 +99,8 @@ RC_FUNC float3 rc_decomp_triangle_traced(const DecompParams* params, const Scene
 // face the camera does not see, in an orientation no cluster's rays came from, such as the
 // bricks' undersides), where the gather would read a fit made for other orientations and B(t) is
 // path traced instead (rc_decomp_triangle_traced); 1 otherwise (covered, or beyond every
-// sample's reach: then no camera sample lies within alpha of it and its B(t) does not reach the
-// image; the gather's fallback serves).
+// sample's reach: then no camera sample lies within alpha of it, but beside clusters less than
+// 4 alpha across, and its B(t) does not reach the image; the gather's fallback serves).
 RC_FUNC uint rc_decomp_triangle_covered(const FarField* far,
                                         RC_GLOBAL const NearTriangle* triangle) {
     const float3 v0 = triangle->v0.xyz;
