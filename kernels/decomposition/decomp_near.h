@@ -24,6 +24,23 @@ typedef struct NearField {
     const SceneData* visibility;  // 0: the paper's heuristic alone
 } NearField;
 
+// The near field of a kernel's arguments: B(t) / pi in `radiance`, alpha and the visibility test
+// from params (a shadow ray through `scene` with --decomp-visibility rays).
+RC_FUNC NearField rc_decomp_near_field(RecordGrid grid, RC_GLOBAL const int* cell_start,
+                                       RC_GLOBAL const int* cell_triangles,
+                                       RC_GLOBAL const NearTriangle* triangles,
+                                       RC_GLOBAL const float4* radiance, const DecompParams* params,
+                                       const SceneData* scene) {
+    const NearField near = {grid,
+                            cell_start,
+                            cell_triangles,
+                            triangles,
+                            radiance,
+                            params->alpha,
+                            params->near_visibility != 0 ? scene : 0};
+    return near;
+}
+
 // Whether a shadow ray from `origin` (the shading point's ray origin) reaches just short of the
 // centroid of a near triangle; counted in *rays.
 RC_FUNC bool rc_decomp_reaches(const SceneData* scene, float3 origin, float3 centroid, uint* rays) {

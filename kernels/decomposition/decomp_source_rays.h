@@ -7,6 +7,7 @@
 
 #include "common/radiance_source.h"
 #include "decomposition/decomp_far.h"
+#include "decomposition/decomp_radiosity.h"
 
 // Ray r of a cluster: its direction, whether it enters the fit, whether its hit lies inside the
 // cluster's bounding sphere, and the radiance it brings back when kept (the source's: direct
@@ -44,40 +45,22 @@ RC_FUNC ClusterRay rc_decomp_trace_cluster_ray(const DecompParams* params, const
     return out;
 }
 
-// B(t) / pi of a split triangle's front (the paper, §6 pass 1: "we also compute the average
-// radiosity value over all visible triangles"): the mean over params->radiosity_samples points
-// of it, stratified over the triangle, of the radiance a ray arriving along its normal brings
-// back from the source (emission left out: light the emitters send to a shading point is its
-// direct light). For a diffuse surface that radiance is its radiosity over pi; other lobes are
-// read in the normal's mirror direction. *rays counts the rays traced.
+// B(t) / pi of a split triangle's front from the coarse solution (--decomp-radiosity coarse; the
+// paper, §6 pass 1: "we also compute the average radiosity value over all visible triangles"):
+// the mean over params->radiosity_samples points of it (rc_decomp_triangle_ray) of the radiance a
+// ray arriving along its normal brings back from the source (emission left out: light the
+// emitters send to a shading point is its direct light). For a diffuse surface that radiance is
+// its radiosity over pi; other lobes are read in the normal's mirror direction. *rays counts the
+// rays traced.
 RC_FUNC float3 rc_decomp_triangle_radiance(const DecompParams* params, const SceneData* scene,
                                            const RadianceSource* source,
                                            RC_GLOBAL const NearTriangle* triangle, uint t,
                                            uint* rays) {
-    const float3 v0 = triangle->v0.xyz;
-    const float3 e1 = triangle->v1.xyz - v0;
-    const float3 e2 = triangle->v2.xyz - v0;
-    const float3 normal = normalize(cross(e1, e2));
-    // The ray starts a little above the point: a thousandth of the triangle's size, and enough
-    // for the coordinates' float precision.
-    const float lift = 1e-3f * fmax(length(e1), length(e2)) +
-                       1e-5f * fmax(fabs(v0.x), fmax(fabs(v0.y), fabs(v0.z)));
     const int count = max(params->radiosity_samples, 1);
     float3 sum = (float3)(0.0f);
     for (int k = 0; k < count; ++k) {
-        RngStream rng =
-            rc_rng_stream(params->seed_lo ^ RC_DECOMP_RNG_DOMAIN, ~params->seed_hi, t, (uint)k);
-        // A stratified point of the triangle: Hammersley in the unit square, folded.
-        float a = ((float)k + rc_rng_next_float(&rng)) / (float)count;
-        float b = rc_decomp_radical_inverse((uint)k);
-        if (a + b > 1.0f) {
-            a = 1.0f - a;
-            b = 1.0f - b;
-        }
-        const float3 point = v0 + a * e1 + b * e2;
-        Ray ray;
-        ray.origin = (float4)(point + lift * normal, 0.0f);
-        ray.direction = (float4)(-normal, 2.0f * lift);
+        RngStream rng;
+        const Ray ray = rc_decomp_triangle_ray(params, triangle, t, (uint)k, count, &rng);
         const SourceSample s =
             rc_source_radiance(scene, source, ray, &rng, params->count_emission != 0, 1,
                                params->max_depth, params->rr_depth);

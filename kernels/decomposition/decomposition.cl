@@ -2,6 +2,7 @@
 // paper: Arikan, Forsyth and O'Brien 2005): the G-buffer, the split triangles' radiosity, a
 // cluster's far-field rays and their least-squares fit, the two terms of eq. 3 per camera sample,
 // and the render pass. Built for the radiance source the rays read (the irradiance vector grid).
+#include "decomposition/decomp_radiosity.h"
 #include "decomposition/decomp_shading.h"
 #include "scene_arguments.h"
 // The source after the method's own headers (see common/radiance_source.h).
@@ -19,21 +20,114 @@ __kernel void decomp_gbuffer(uint begin, uint end, DecompParams params, CameraPa
     gbuffer[i] = rc_decomp_gbuffer_sample(&params, &scene, &camera, i / spp, i % spp);
 }
 
-// Item t: B(t) / pi of split triangle t into radiance[t]. counters[0] counts the rays.
+// Item i: B(t) / pi of split triangle t = listed[i] from the coarse solution into radiance[t]
+// (every triangle with --decomp-radiosity coarse; those no far-field sample covers when
+// gathered). counters[0] counts the rays.
 __kernel void decomp_radiosity(
     uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
     RC_RADIANCE_SOURCE_PARAMETERS __global const NearTriangle* near_triangles,
-    __global float4* radiance, __global uint* counters) {
-    const uint t = begin + (uint)get_global_id(0);
-    if (t >= end) {
+    __global const uint* listed, __global float4* radiance, __global uint* counters) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
         return;
     }
+    const uint t = listed[i];
     const SceneData scene = RC_SCENE_DATA();
     const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
     uint rays = 0;
     radiance[t] = (float4)(rc_decomp_triangle_radiance(&params, &scene, &source, near_triangles + t,
                                                        t, &rays),
                            0.0f);
+    atomic_add(&counters[0], rays);
+}
+
+// Item t: what split triangle t sends back besides its diffuse lobe's indirect light, into
+// direct[t], and its diffuse reflectance, into reflectance[t]. counters[0] counts the rays.
+__kernel void decomp_radiosity_direct(uint begin, uint end, DecompParams params,
+                                      RC_SCENE_PARAMETERS,
+                                      __global const NearTriangle* near_triangles,
+                                      __global float4* direct, __global float4* reflectance,
+                                      __global uint* counters) {
+    const uint t = begin + (uint)get_global_id(0);
+    if (t >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    uint rays = 0;
+    float3 rho;
+    direct[t] =
+        (float4)(rc_decomp_triangle_direct(&params, &scene, near_triangles + t, t, &rho, &rays),
+                 0.0f);
+    reflectance[t] = (float4)(rho, 0.0f);
+    atomic_add(&counters[0], rays);
+}
+
+// Item i: B(t) / pi of split triangle t = listed[i] path traced at `count` points
+// (rc_decomp_triangle_traced) into radiance[t]. counters[0] counts the rays.
+__kernel void decomp_radiosity_traced(uint begin, uint end, DecompParams params,
+                                      RC_SCENE_PARAMETERS,
+                                      __global const NearTriangle* near_triangles,
+                                      __global const uint* listed, int count,
+                                      __global float4* radiance, __global uint* counters) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const uint t = listed[i];
+    const SceneData scene = RC_SCENE_DATA();
+    uint rays = 0;
+    radiance[t] =
+        (float4)(rc_decomp_triangle_traced(&params, &scene, near_triangles + t, t, count, &rays),
+                 0.0f);
+    atomic_add(&counters[0], rays);
+}
+
+// Item t: whether a far-field sample covers split triangle t (rc_decomp_triangle_covered) into
+// covered[t].
+__kernel void decomp_radiosity_coverage(uint begin, uint end, RecordGrid far_grid,
+                                        __global const int* far_start,
+                                        __global const int* far_samples,
+                                        __global const Record* samples,
+                                        __global const ShSample* coefficients,
+                                        __global const NearTriangle* near_triangles,
+                                        __global uint* covered) {
+    const uint t = begin + (uint)get_global_id(0);
+    if (t >= end) {
+        return;
+    }
+    const FarField far = {far_grid, far_start, far_samples, samples, coefficients};
+    covered[t] = rc_decomp_triangle_covered(&far, near_triangles + t);
+}
+
+// Item t: B(t) / pi of split triangle t gathered from the decomposition's two terms into
+// radiance[t], the near triangles' radiosities read from `previous` (the last pass's) when
+// with_near, I_N taken as 0 otherwise (the first pass); where covered[t] is 0, traced[t] (path
+// traced) instead. counters[0] counts the rays.
+__kernel void decomp_radiosity_gather(
+    uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS, RecordGrid far_grid,
+    __global const int* far_start, __global const int* far_samples, __global const Record* samples,
+    __global const ShSample* coefficients, RecordGrid near_grid, __global const int* near_start,
+    __global const int* near_list, __global const NearTriangle* near_triangles,
+    __global const float4* direct, __global const float4* reflectance, __global const uint* covered,
+    __global const float4* traced, __global const float4* previous, uint with_near,
+    __global float4* radiance, __global uint* counters) {
+    const uint t = begin + (uint)get_global_id(0);
+    if (t >= end) {
+        return;
+    }
+    if (covered[t] == 0) {
+        radiance[t] = traced[t];
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const FarField far = {far_grid, far_start, far_samples, samples, coefficients};
+    const NearField near = rc_decomp_near_field(near_grid, near_start, near_list, near_triangles,
+                                                previous, &params, &scene);
+    uint rays = 0;
+    radiance[t] =
+        (float4)(rc_decomp_gathered_radiance(&far, &near, near_triangles + t, direct[t].xyz,
+                                             reflectance[t].xyz, with_near != 0, &rays),
+                 0.0f);
     atomic_add(&counters[0], rays);
 }
 
@@ -85,13 +179,8 @@ __kernel void decomp_irradiance(uint begin, uint end, DecompParams params, RC_SC
     }
     const SceneData scene = RC_SCENE_DATA();
     const FarField far = {far_grid, far_start, far_samples, samples, coefficients};
-    const NearField near = {near_grid,
-                            near_start,
-                            near_list,
-                            near_triangles,
-                            radiance,
-                            params.alpha,
-                            params.near_visibility != 0 ? &scene : 0};
+    const NearField near = rc_decomp_near_field(near_grid, near_start, near_list, near_triangles,
+                                                radiance, &params, &scene);
     const GBufferSample g = gbuffer[i];
     irradiance[i] = rc_decomp_irradiance(&far, &near, &g);
 }

@@ -49,7 +49,8 @@ void check_options(const DecompositionOptions& options, size_t samples) {
         throw Error("--alpha must be a finite length >= 0", kExitUsage);
     }
     if (options.cluster_rays < 1 || options.min_cluster < 1 || options.light_samples < 1 ||
-        options.radiosity_samples < 1) {
+        options.radiosity_samples < 1 || options.radiosity_passes < 0 ||
+        options.traced_samples < 1) {
         throw Error("--decomp-rays and --light-samples must be at least 1", kExitUsage);
     }
     if (!(options.split_factor >= 1.0f) || !std::isfinite(options.split_factor)) {
@@ -109,10 +110,11 @@ void IrradianceDecomposition::compute_gbuffer() {
     samples_ = gbuffer_.download();
 }
 
-// §5 and §6 pass 1: the scene's triangles split to alpha, B(t) / pi of each one's front from the
-// coarse solution, and the grid that finds the ones within alpha of a point.
+// §5 and §6 pass 1: the scene's triangles split to alpha and the grid that finds the ones within
+// alpha of a point (their radiosity: coarse_radiosity or gather_radiosity).
 void IrradianceDecomposition::build_near_field(const DecompositionOptions& options) {
     triangles_.clear();
+    uncovered_.clear();
     if (options.alpha > 0.0f) {
         triangles_ = split_triangles(scene_.mesh, options.alpha, kMaxNearTriangles);
     }
@@ -120,14 +122,7 @@ void IrradianceDecomposition::build_near_field(const DecompositionOptions& optio
     stats_.near_triangles = triangles_.size();
     triangle_buffer_ = Buffer<shared::NearTriangle>(context_, triangles_, "decomp_triangles");
     radiance_buffer_ = Buffer<shared::float4>(context_, triangles_.size(), "decomp_radiance");
-    if (!triangles_.empty()) {
-        Buffer<unsigned> counters(context_, 1, "decomp_radiosity_counters");
-        counters.fill_zero();
-        context_.launch(kernel("decomp_radiosity"), triangles_.size(), params_,
-                        SceneArguments(bvh_, device_scene_), *source_, triangle_buffer_,
-                        radiance_buffer_, counters);
-        stats_.radiosity_rays = counters.download()[0];
-    }
+    radiance_buffer_.fill_zero();
     std::vector<glm::vec3> centroids;
     centroids.reserve(triangles_.size());
     for (const shared::NearTriangle& t : triangles_) {
@@ -139,6 +134,71 @@ void IrradianceDecomposition::build_near_field(const DecompositionOptions& optio
         1.0f);
     near_start_ = Buffer<int>(context_, near_grid_.cell_start, "decomp_near_start");
     near_list_ = Buffer<int>(context_, near_grid_.cell_records, "decomp_near_list");
+}
+
+// §6 pass 1, "the average radiosity value over all visible triangles", from the coarse solution:
+// B(t) / pi of the triangles `listed` into `radiance` (its other entries untouched).
+void IrradianceDecomposition::coarse_radiosity(const std::vector<uint32_t>& listed,
+                                               Buffer<shared::float4>& radiance) {
+    if (listed.empty()) {
+        return;
+    }
+    const Buffer<uint32_t> list(context_, listed, "decomp_radiosity_list");
+    Buffer<unsigned> counters(context_, 1, "decomp_radiosity_counters");
+    counters.fill_zero();
+    context_.launch(kernel("decomp_radiosity"), listed.size(), params_,
+                    SceneArguments(bvh_, device_scene_), *source_, triangle_buffer_, list, radiance,
+                    counters);
+    stats_.radiosity_rays += counters.download()[0];
+}
+
+// The same radiosity gathered from the decomposition's own terms at the triangles (after the far
+// field): once what each sends besides its diffuse indirect light (rays), and which ones a
+// far-field sample covers; B(t) path traced for the others; then `passes` passes with
+// no ray (but --decomp-visibility's): the first with I_N = 0, pass k reading pass k - 1's B(t) in
+// eq. 4.
+void IrradianceDecomposition::gather_radiosity(int passes, int traced_samples) {
+    stats_.radiosity_passes = passes;
+    if (triangles_.empty()) {
+        return;
+    }
+    const size_t count = triangles_.size();
+    Buffer<shared::float4> direct(context_, count, "decomp_radiosity_direct");
+    Buffer<shared::float4> reflectance(context_, count, "decomp_reflectance");
+    Buffer<shared::float4> previous(context_, count, "decomp_radiance_previous");
+    Buffer<shared::float4> traced(context_, count, "decomp_radiance_traced");
+    Buffer<uint32_t> covered(context_, count, "decomp_covered");
+    Buffer<unsigned> counters(context_, 1, "decomp_radiosity_counters");
+    counters.fill_zero();
+    traced.fill_zero();
+    context_.launch(kernel("decomp_radiosity_direct"), count, params_,
+                    SceneArguments(bvh_, device_scene_), triangle_buffer_, direct, reflectance,
+                    counters);
+    context_.launch(kernel("decomp_radiosity_coverage"), count, far_grid_.grid, far_start_,
+                    far_list_, far_records_, far_coefficients_, triangle_buffer_, covered);
+    const std::vector<uint32_t> flags = covered.download();
+    for (size_t t = 0; t < count; ++t) {
+        if (flags[t] == 0) {
+            uncovered_.push_back(static_cast<uint32_t>(t));
+        }
+    }
+    stats_.uncovered_triangles = uncovered_.size();
+    if (!uncovered_.empty()) {
+        const Buffer<uint32_t> list(context_, uncovered_, "decomp_uncovered");
+        context_.launch(kernel("decomp_radiosity_traced"), uncovered_.size(), params_,
+                        SceneArguments(bvh_, device_scene_), triangle_buffer_, list, traced_samples,
+                        traced, counters);
+    }
+    for (int pass = 0; pass < passes; ++pass) {
+        std::swap(previous, radiance_buffer_);
+        const unsigned with_near = pass > 0 ? 1u : 0u;
+        context_.launch(kernel("decomp_radiosity_gather"), count, params_,
+                        SceneArguments(bvh_, device_scene_), far_grid_.grid, far_start_, far_list_,
+                        far_records_, far_coefficients_, near_grid_.grid, near_start_, near_list_,
+                        triangle_buffer_, direct, reflectance, covered, traced, previous, with_near,
+                        radiance_buffer_, counters);
+    }
+    stats_.radiosity_rays += counters.download()[0];
 }
 
 std::vector<shared::ClusterFit> IrradianceDecomposition::fit_batch(
@@ -342,11 +402,24 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
     // Pass 1 (§6): the near field's triangles and radiosity, the far field's samples.
     start = SteadyClock::now();
     build_near_field(options);
+    if (options.radiosity_passes == 0) {
+        std::vector<uint32_t> every(triangles_.size());
+        for (size_t t = 0; t < every.size(); ++t) {
+            every[t] = static_cast<uint32_t>(t);
+        }
+        coarse_radiosity(every, radiance_buffer_);
+    }
     context_.finish();
     stats_.near_seconds = seconds_since(start);
     start = SteadyClock::now();
     sample_far_field(options);
     stats_.far_seconds = seconds_since(start);
+    if (options.radiosity_passes > 0) {
+        start = SteadyClock::now();
+        gather_radiosity(options.radiosity_passes, options.traced_samples);
+        context_.finish();
+        stats_.near_seconds += seconds_since(start);
+    }
     // Pass 2: both terms at every camera sample, then the render pass.
     start = SteadyClock::now();
     const Buffer<shared::DecompIrradiance> terms = evaluate(gbuffer_, samples);

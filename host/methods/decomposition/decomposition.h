@@ -44,9 +44,17 @@ struct DecompositionOptions {
     // §4.1's split test looks for hits inside the cluster's bounding sphere scaled by this
     // (--decomp-split; the paper's test: 1).
     float split_factor = 4.0f;
-    int min_cluster = 16;         // a cluster of fewer than 2 min_cluster points is not split
-    int light_samples = 4;        // the render pass's light samples per camera hit
-    int radiosity_samples = 4;    // points per split triangle of its radiosity
+    int min_cluster = 16;       // a cluster of fewer than 2 min_cluster points is not split
+    int light_samples = 4;      // the render pass's light samples per camera hit
+    int radiosity_samples = 4;  // points per split triangle of its radiosity
+    // B(t) gathered from the decomposition's own two terms at the split triangles
+    // (--decomp-radiosity gathered, the default; decomp_radiosity.h) in this many passes, the
+    // first with I_N = 0, each further one a Jacobi step of the near triangles' exchange; 0: read
+    // from the coarse solution (--decomp-radiosity coarse).
+    int radiosity_passes = 3;
+    // Gathered: points per split triangle of the path-traced B(t) of those no far-field sample
+    // covers.
+    int traced_samples = 16;
     bool count_emission = false;  // rays count the emission they see (tests)
     // Test each near triangle that passes the paper's heuristic with a shadow ray to its centroid
     // (--decomp-visibility rays) instead of taking it as visible.
@@ -76,14 +84,16 @@ struct DecompositionStats {
     size_t served_samples = 0;    // camera samples whose diffuse lobe the decomposition serves
     double near_mean = 0.0;       // near triangles per served camera sample
     uint32_t near_max = 0;
-    double far_mean = 0.0;        // far-field samples with a positive weight per served sample
-    size_t far_uncovered = 0;     // served samples no far-field sample reached (nearest used)
-    uint64_t radiosity_rays = 0;  // the split triangles' radiosity
-    uint64_t cluster_rays = 0;    // the clusters' fits (and the source's rays for them)
-    uint64_t near_rays = 0;       // shadow rays of the near field (--decomp-visibility rays)
-    uint64_t shading_rays = 0;    // the G-buffer and the render pass
+    double far_mean = 0.0;           // far-field samples with a positive weight per served sample
+    size_t far_uncovered = 0;        // served samples no far-field sample reached (nearest used)
+    uint64_t radiosity_rays = 0;     // the split triangles' radiosity (every pass)
+    int radiosity_passes = 0;        // gathered passes (0: from the coarse solution)
+    size_t uncovered_triangles = 0;  // gathered: facing away from the far field (B(t) traced)
+    uint64_t cluster_rays = 0;       // the clusters' fits (and the source's rays for them)
+    uint64_t near_rays = 0;          // shadow rays of the near field (--decomp-visibility rays)
+    uint64_t shading_rays = 0;       // the G-buffer and the render pass
     double gbuffer_seconds = 0.0;
-    double near_seconds = 0.0;        // splitting, radiosity, the near triangles' grid
+    double near_seconds = 0.0;        // splitting, the near triangles' grid, their radiosity
     double far_seconds = 0.0;         // clusters, their rays and fits, the samples' grid
     double evaluation_seconds = 0.0;  // both terms at every camera sample
     double shading_seconds = 0.0;     // the render pass
@@ -108,6 +118,8 @@ class IrradianceDecomposition : private FrameBound {
     const std::vector<FarSample>& far_samples() const { return far_; }
     const std::vector<shared::NearTriangle>& near_triangles() const { return triangles_; }
     std::vector<glm::vec3> near_radiance() const;
+    // After a gathered render(): the split triangles whose B(t) was path traced.
+    const std::vector<uint32_t>& uncovered_triangles() const { return uncovered_; }
 
     // After render(): I_D and I_N at G-buffer-like points from its far and near fields.
     std::vector<shared::DecompIrradiance> irradiance_at(
@@ -122,6 +134,11 @@ class IrradianceDecomposition : private FrameBound {
     void compute_gbuffer();
     void build_near_field(const DecompositionOptions& options);
     void sample_far_field(const DecompositionOptions& options);
+    // B(t) / pi of the split triangles from the source (coarse; of those listed, into
+    // `radiance`) or gathered in `passes` passes (those no far-field sample covers path traced
+    // at `traced_samples` points).
+    void coarse_radiosity(const std::vector<uint32_t>& listed, Buffer<shared::float4>& radiance);
+    void gather_radiosity(int passes, int traced_samples);
     // Rays and fits of a batch of clusters (their rays in *rays when given).
     std::vector<shared::ClusterFit> fit_batch(const std::vector<PendingCluster>& batch,
                                               std::vector<shared::ClusterRay>* rays = nullptr);
@@ -138,6 +155,7 @@ class IrradianceDecomposition : private FrameBound {
     Buffer<shared::GBufferSample> gbuffer_;
     std::vector<shared::GBufferSample> samples_;
     std::vector<shared::NearTriangle> triangles_;
+    std::vector<uint32_t> uncovered_;
     Buffer<shared::NearTriangle> triangle_buffer_;
     Buffer<shared::float4> radiance_buffer_;
     RecordGridData near_grid_;

@@ -32,6 +32,9 @@ const char* const kDefaultMinCluster = "5%";
 // 1 %); path-traced, 16 (4 raised it by 11 %; docs/decomposition.md).
 constexpr int kRadiositySamplesGrid = 4;
 constexpr int kRadiositySamplesPath = 16;
+// Gathered radiosity (--decomp-radiosity gathered): direct light at 4 points per split triangle,
+// DecompositionOptions' passes (docs/decomposition.md).
+constexpr int kRadiositySamplesGathered = 4;
 
 // A length option (--alpha, --decomp-cluster): in scene units ("0.2", "0.2u") or a percentage of
 // the diagonal of the scene's bounding box ("5%").
@@ -83,6 +86,9 @@ nlohmann::json stats_json(const DecompositionStats& s, const DecompositionOption
             {"min_cluster_size", options.min_cluster_size},
             {"split_factor", options.split_factor},
             {"source", options.source->source_name()},
+            {"radiosity", options.radiosity_passes > 0 ? "gathered" : "coarse"},
+            {"radiosity_passes", s.radiosity_passes},
+            {"uncovered_triangles", s.uncovered_triangles},
             {"records", s.sh_samples},
             {"sh_samples", s.sh_samples},
             {"clusters_sampled", s.clusters_sampled},
@@ -121,7 +127,20 @@ class Decomposition final : public Method {
             throw Error("--decomp-source: expected grid or path, got '" + source + "'", kExitUsage);
         }
         with_grid_ = source == "grid";
-        options_.radiosity_samples = with_grid_ ? kRadiositySamplesGrid : kRadiositySamplesPath;
+        // The gathered radiosity beats the grid's B(t) but not path-traced B(t) (the relief:
+        // docs/decomposition.md), so each source has its own default.
+        const std::string radiosity =
+            arguments.value("--decomp-radiosity", with_grid_ ? "gathered" : "coarse");
+        if (radiosity != "gathered" && radiosity != "coarse") {
+            throw Error("--decomp-radiosity: expected gathered or coarse, got '" + radiosity + "'",
+                        kExitUsage);
+        }
+        if (radiosity == "gathered") {
+            options_.radiosity_samples = kRadiositySamplesGathered;
+        } else {
+            options_.radiosity_passes = 0;
+            options_.radiosity_samples = with_grid_ ? kRadiositySamplesGrid : kRadiositySamplesPath;
+        }
         settings.apply_to(options_);
         options_.cluster_rays =
             static_cast<int>(arguments.integer("--decomp-rays", kDefaultClusterRays));
@@ -222,6 +241,12 @@ std::vector<OptionSpec> decomposition_option_specs() {
                    "the back-facing and those below the horizon; default) or rays (of those, the "
                    "ones a shadow ray to the centroid reaches)"}
             .one_of({"heuristic", "rays"}),
+        OptionSpec{"--decomp-radiosity", "", "NAME",
+                   "decomposition: the near triangles' radiosity B(t): gathered (from the "
+                   "decomposition's own far field and near field at the triangles; default with "
+                   "--decomp-source grid) or coarse (read from the coarse solution, the paper's; "
+                   "default with --decomp-source path)"}
+            .one_of({"gathered", "coarse"}),
         OptionSpec{"--decomp-source", "", "NAME",
                    "decomposition: the coarse solution the rays read at their hits and the near "
                    "triangles' radiosity comes from: grid (the irradiance vector grid, default; "
