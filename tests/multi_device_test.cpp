@@ -225,11 +225,12 @@ TEST(MultiDevice, NormalsImageIsTheOneDeviceImage) {
 }
 
 // Irradiance decomposition on two devices: the grid's photons, pass 2 (both terms at the camera
-// samples and the render pass, in chunks of rows) and, with path-traced continuation, the
-// clusters' batches shared, so every layer (far and near field included) is bitwise the
-// one-device image whatever the devices' order, chunking and work-group size, with the grid and
-// with path-traced continuation as the coarse solution; the far field is the same, both devices
-// rendered chunks that add up to the image and (path) fitted clusters that add up to the frame's.
+// samples and the render pass, in chunks of rows) and, with path-traced continuation, the split
+// triangles' coarse radiosity and the clusters' batches shared, so every layer (far and near field
+// included) is bitwise the one-device image whatever the devices' order, chunking and work-group
+// size, with the grid and with path-traced continuation as the coarse solution; the far field is
+// the same, both devices rendered chunks that add up to the image and (path) computed radiosities
+// and fitted clusters that add up to the frame's.
 TEST(MultiDevice, DecompositionImageIsTheOneDeviceImageWhateverTheSplit) {
     if (!two_devices()) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
@@ -239,7 +240,8 @@ TEST(MultiDevice, DecompositionImageIsTheOneDeviceImageWhateverTheSplit) {
         std::string name;
         std::vector<std::string> method;  // the same on one and two devices
         std::vector<std::string> devices;
-        bool clusters_split;  // path-traced continuation: the cluster batches shared
+        // Path-traced continuation: the coarse radiosity and the cluster batches shared.
+        bool path_split;
     };
     const std::vector<std::string> grid = {"--method", "decomposition"};
     // Fewer split triangles: their path-traced radiosity is most of the render.
@@ -270,19 +272,28 @@ TEST(MultiDevice, DecompositionImageIsTheOneDeviceImageWhateverTheSplit) {
         size_t pixels = 0;
         size_t clusters = 0;
         uint64_t cluster_rays = 0;
+        size_t triangles = 0;
+        uint64_t radiosity_rays = 0;
         for (const nlohmann::json& d : devices) {
             EXPECT_GT(d.at("chunks").get<size_t>(), 0u) << c.name;
             EXPECT_GT(d.at("shading_rays").get<uint64_t>(), 0u) << c.name;
-            EXPECT_EQ(d.at("clusters").get<size_t>() > 0, c.clusters_split) << c.name;
+            EXPECT_EQ(d.at("clusters").get<size_t>() > 0, c.path_split) << c.name;
             pixels += d.at("pixels").get<size_t>();
             clusters += d.at("clusters").get<size_t>();
             cluster_rays += d.at("cluster_rays").get<uint64_t>();
+            EXPECT_EQ(d.at("radiosity_triangles").get<size_t>() > 0, c.path_split) << c.name;
+            triangles += d.at("radiosity_triangles").get<size_t>();
+            radiosity_rays += d.at("radiosity_rays").get<uint64_t>();
         }
-        EXPECT_EQ(pixels, 40u * 36u) << c.name;
-        EXPECT_EQ(clusters, c.clusters_split ? stats.at("clusters_sampled").get<size_t>() : 0u)
+        EXPECT_EQ(stats.at("radiosity_rays"), single.at("radiosity_rays")) << c.name;
+        EXPECT_EQ(triangles, c.path_split ? stats["triangles"].at("near").get<size_t>() : 0u)
             << c.name;
-        EXPECT_EQ(cluster_rays,
-                  c.clusters_split ? stats.at("cluster_rays_traced").get<uint64_t>() : 0u)
+        EXPECT_EQ(radiosity_rays, c.path_split ? stats.at("radiosity_rays").get<uint64_t>() : 0u)
+            << c.name;
+        EXPECT_EQ(pixels, 40u * 36u) << c.name;
+        EXPECT_EQ(clusters, c.path_split ? stats.at("clusters_sampled").get<size_t>() : 0u)
+            << c.name;
+        EXPECT_EQ(cluster_rays, c.path_split ? stats.at("cluster_rays_traced").get<uint64_t>() : 0u)
             << c.name;
     }
 }

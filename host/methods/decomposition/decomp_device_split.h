@@ -26,6 +26,11 @@ struct DecompDeviceShare {
     std::string device;  // "P:D name"
     // The cluster batches (--decomp-source path; decomp_cluster_split.h): cluster ranges, their
     // clusters and rays, and its threads' time over the batches.
+    // The coarse radiosity (--decomp-source path, --decomp-radiosity coarse;
+    // decomp_radiosity_split.h): split triangles, their rays, its thread's time.
+    size_t radiosity_triangles = 0;
+    uint64_t radiosity_rays = 0;
+    double radiosity_seconds = 0.0;
     size_t cluster_ranges = 0;
     size_t clusters = 0;
     uint64_t cluster_rays = 0;

@@ -10,6 +10,7 @@
 #include "methods/decomposition/clusters.h"
 #include "methods/decomposition/decomp_cluster_split.h"
 #include "methods/decomposition/decomp_device_split.h"
+#include "methods/decomposition/decomp_radiosity_split.h"
 #include "methods/decomposition/triangle_split.h"
 #include "methods/records/record_store.h"
 #include "methods/scene_arguments.h"
@@ -146,6 +147,12 @@ void IrradianceDecomposition::build_near_field(const DecompositionOptions& optio
 void IrradianceDecomposition::coarse_radiosity(const std::vector<uint32_t>& listed,
                                                Buffer<shared::float4>& radiance) {
     if (listed.empty()) {
+        return;
+    }
+    if (frame_devices(frame_) > 1 && dynamic_cast<const PathContinuation*>(source_) != nullptr) {
+        stats_.radiosity_rays +=
+            split_coarse_radiosity(frame_, params_, source_->build_options(), triangles_,
+                                   triangle_buffer_, listed, radiance, &radiosity_shares_);
         return;
     }
     const Buffer<uint32_t> list(context_, listed, "decomp_radiosity_list");
@@ -402,6 +409,11 @@ std::vector<shared::float4> IrradianceDecomposition::pass_two(size_t samples) {
         stats_.nonfinite_samples = out.nonfinite_samples;
         stats_.first_nonfinite_pixel = out.first_nonfinite_pixel;
         stats_.devices = std::move(out.shares);
+        for (size_t d = 0; d < radiosity_shares_.size() && d < stats_.devices.size(); ++d) {
+            stats_.devices[d].radiosity_triangles = radiosity_shares_[d].triangles;
+            stats_.devices[d].radiosity_rays = radiosity_shares_[d].rays;
+            stats_.devices[d].radiosity_seconds = radiosity_shares_[d].seconds;
+        }
         for (size_t d = 0; cluster_split_ && d < stats_.devices.size(); ++d) {
             const DecompClusterShare& share = cluster_split_->shares()[d];
             stats_.devices[d].cluster_ranges = share.cluster_ranges;
@@ -430,6 +442,7 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
     source_ = options.source;
     split_factor_ = options.split_factor;
     stats_ = DecompositionStats{};
+    radiosity_shares_.clear();
     params_ = shared::DecompParams{};
     params_.width = width;
     params_.height = height;

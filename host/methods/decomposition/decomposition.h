@@ -23,6 +23,7 @@
 #include "device/buffer.h"
 #include "image/image.h"
 #include "methods/decomposition/decomp_device_split.h"
+#include "methods/decomposition/decomp_radiosity_split.h"
 #include "methods/frame_scene.h"
 #include "methods/radiance_source.h"
 #include "methods/records/record_grid.h"
@@ -160,6 +161,8 @@ class IrradianceDecomposition : private FrameBound {
     FrameScene frame_;  // with its peers (several devices: pass 2 shared)
     // Several devices and path-traced continuation: the cluster batches shared.
     std::unique_ptr<DecompClusterSplit> cluster_split_;
+    // The same: each device's share of the coarse radiosity (decomp_radiosity_split.h).
+    std::vector<DecompRadiosityShare> radiosity_shares_;
     const RadianceSource* source_ = nullptr;
     float split_factor_ = 1.0f;
     shared::DecompParams params_{};

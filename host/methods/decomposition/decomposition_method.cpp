@@ -117,6 +117,9 @@ nlohmann::json devices_json(const std::vector<DecompDeviceShare>& shares) {
     nlohmann::json devices = nlohmann::json::array();
     for (const DecompDeviceShare& d : shares) {
         devices.push_back({{"device", d.device},
+                           {"radiosity_triangles", d.radiosity_triangles},
+                           {"radiosity_rays", d.radiosity_rays},
+                           {"radiosity_seconds", d.radiosity_seconds},
                            {"cluster_ranges", d.cluster_ranges},
                            {"clusters", d.clusters},
                            {"cluster_rays", d.cluster_rays},
@@ -204,8 +207,8 @@ class Decomposition final : public Method {
     }
 
     // Several devices: the grid's photons, pass 2 (both terms and the render pass) and, with
-    // path-traced continuation, the cluster batches shared; the G-buffer and the near field on
-    // the first device.
+    // path-traced continuation, the coarse radiosity and the cluster batches shared; the G-buffer,
+    // the near field's split and the gathered radiosity on the first device.
     bool splits_across_devices() const override { return true; }
 
     std::vector<ProgramRequest> programs() const override {
