@@ -3,11 +3,11 @@
 // the single-device image whatever the devices' order, chunking and work-group size, both devices
 // render a share that adds up to the image (stats); so are the grid methods' images, their
 // photons shared, irradiance caching's, radiance caching's and SDRC's (diffuse record batches and
-// final pass shared) and the normals preview's; the method that renders on one device, temporal
-// caching, a device named twice, an empty entry, --time and intermediate images are refused with
-// exit status 2 and no output; a device that fails mid-render (pt, ic) stops the render with one
-// line naming that device and the call, and no output file. Skipped where PoCL does not give two
-// devices.
+// final pass shared), irradiance decomposition's (its pass 2 shared) and the normals preview's;
+// temporal caching (which renders on one device), a device named twice, an empty entry, --time
+// and intermediate images are refused with exit status 2 and no output; a device that fails
+// mid-render (pt, ic) stops the render with one line naming that device and the call, and no
+// output file. Skipped where PoCL does not give two devices.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -224,6 +224,80 @@ TEST(MultiDevice, NormalsImageIsTheOneDeviceImage) {
     EXPECT_EQ(pixels, 40u * 36u);
 }
 
+// Irradiance decomposition on two devices: the grid's photons, pass 2 (both terms at the camera
+// samples and the render pass, in chunks of rows) and, with path-traced continuation, the split
+// triangles' coarse radiosity and the clusters' batches shared, so every layer (far and near field
+// included) is bitwise the one-device image whatever the devices' order, chunking and work-group
+// size, with the grid and with path-traced continuation as the coarse solution; the far field is
+// the same, both devices rendered chunks that add up to the image and (path) computed radiosities
+// and fitted clusters that add up to the frame's.
+TEST(MultiDevice, DecompositionImageIsTheOneDeviceImageWhateverTheSplit) {
+    if (!two_devices()) {
+        GTEST_SKIP() << "PoCL does not expose two devices here";
+    }
+    const auto dir = test::scratch_dir("multi_device_decomposition");
+    struct Case {
+        std::string name;
+        std::vector<std::string> method;  // the same on one and two devices
+        std::vector<std::string> devices;
+        // Path-traced continuation: the coarse radiosity and the cluster batches shared.
+        bool path_split;
+    };
+    const std::vector<std::string> grid = {"--method", "decomposition"};
+    // Fewer split triangles: their path-traced radiosity is most of the render.
+    const std::vector<std::string> path = {"--method", "decomposition", "--decomp-source",
+                                           "path",     "--alpha",       "3%"};
+    for (const Case& c :
+         std::vector<Case>{{"grid", grid, {"--device", "0:0,0:1"}, false},
+                           {"path", path, {"--device", "all"}, true},
+                           {"swapped",
+                            path,
+                            {"--device", "0:1, 0:0", "--max-chunk", "100", "--local-size", "8"},
+                            true}}) {
+        std::vector<std::string> one = c.method;
+        one.insert(one.end(), {"--device", "0:0"});
+        const nlohmann::json single = render(dir, c.name + "_one", one);
+        std::vector<std::string> two = c.method;
+        two.insert(two.end(), c.devices.begin(), c.devices.end());
+        const nlohmann::json stats = render(dir, c.name + "_two", two);
+        EXPECT_TRUE(same_pixels(read_image(dir / (c.name + "_two.exr")),
+                                read_image(dir / (c.name + "_one.exr"))))
+            << c.name;
+        EXPECT_EQ(stats.at("sh_samples"), single.at("sh_samples")) << c.name;
+        EXPECT_EQ(stats.at("shading_rays"), single.at("shading_rays")) << c.name;
+        EXPECT_EQ(stats.at("cluster_rays_traced"), single.at("cluster_rays_traced")) << c.name;
+        EXPECT_FALSE(single.contains("devices")) << c.name;
+        const nlohmann::json& devices = stats.at("devices");
+        ASSERT_EQ(devices.size(), 2u) << c.name;
+        size_t pixels = 0;
+        size_t clusters = 0;
+        uint64_t cluster_rays = 0;
+        size_t triangles = 0;
+        uint64_t radiosity_rays = 0;
+        for (const nlohmann::json& d : devices) {
+            EXPECT_GT(d.at("chunks").get<size_t>(), 0u) << c.name;
+            EXPECT_GT(d.at("shading_rays").get<uint64_t>(), 0u) << c.name;
+            EXPECT_EQ(d.at("clusters").get<size_t>() > 0, c.path_split) << c.name;
+            pixels += d.at("pixels").get<size_t>();
+            clusters += d.at("clusters").get<size_t>();
+            cluster_rays += d.at("cluster_rays").get<uint64_t>();
+            EXPECT_EQ(d.at("radiosity_triangles").get<size_t>() > 0, c.path_split) << c.name;
+            triangles += d.at("radiosity_triangles").get<size_t>();
+            radiosity_rays += d.at("radiosity_rays").get<uint64_t>();
+        }
+        EXPECT_EQ(stats.at("radiosity_rays"), single.at("radiosity_rays")) << c.name;
+        EXPECT_EQ(triangles, c.path_split ? stats["triangles"].at("near").get<size_t>() : 0u)
+            << c.name;
+        EXPECT_EQ(radiosity_rays, c.path_split ? stats.at("radiosity_rays").get<uint64_t>() : 0u)
+            << c.name;
+        EXPECT_EQ(pixels, 40u * 36u) << c.name;
+        EXPECT_EQ(clusters, c.path_split ? stats.at("clusters_sampled").get<size_t>() : 0u)
+            << c.name;
+        EXPECT_EQ(cluster_rays, c.path_split ? stats.at("cluster_rays_traced").get<uint64_t>() : 0u)
+            << c.name;
+    }
+}
+
 TEST(MultiDevice, WhatRendersOnOneDeviceIsRefusedByName) {
     if (!two_devices()) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
@@ -239,8 +313,6 @@ TEST(MultiDevice, WhatRendersOnOneDeviceIsRefusedByName) {
                             "--temporal renders on one device"},
                            {{"--method", "rc", "--temporal", "--device", "0:0,0:1"},
                             "--temporal renders on one device"},
-                           {{"--method", "decomposition", "--device", "0:0,0:1"},
-                            "--method decomposition renders on one"},
                            {{"--device", "0:0,0:0"}, "twice"},
                            {{"--device", "0:0,"}, "empty entry"},
                            {{"--device", "0:0,7:7"}, "7:7"},

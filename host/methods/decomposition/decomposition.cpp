@@ -8,6 +8,9 @@
 
 #include "image/film.h"
 #include "methods/decomposition/clusters.h"
+#include "methods/decomposition/decomp_cluster_split.h"
+#include "methods/decomposition/decomp_device_split.h"
+#include "methods/decomposition/decomp_radiosity_split.h"
 #include "methods/decomposition/triangle_split.h"
 #include "methods/records/record_store.h"
 #include "methods/scene_arguments.h"
@@ -89,7 +92,10 @@ struct IrradianceDecomposition::PendingCluster {
     uint32_t stream = 0;
 };
 
-IrradianceDecomposition::IrradianceDecomposition(const FrameScene& frame) : FrameBound(frame) {}
+IrradianceDecomposition::IrradianceDecomposition(const FrameScene& frame)
+    : FrameBound(frame), frame_(frame) {}
+
+IrradianceDecomposition::~IrradianceDecomposition() = default;
 
 Kernel& IrradianceDecomposition::kernel(const char* name) {
     auto found = kernels_.find(name);
@@ -141,6 +147,12 @@ void IrradianceDecomposition::build_near_field(const DecompositionOptions& optio
 void IrradianceDecomposition::coarse_radiosity(const std::vector<uint32_t>& listed,
                                                Buffer<shared::float4>& radiance) {
     if (listed.empty()) {
+        return;
+    }
+    if (frame_devices(frame_) > 1 && dynamic_cast<const PathContinuation*>(source_) != nullptr) {
+        stats_.radiosity_rays +=
+            split_coarse_radiosity(frame_, params_, source_->build_options(), triangles_,
+                                   triangle_buffer_, listed, radiance, &radiosity_shares_);
         return;
     }
     const Buffer<uint32_t> list(context_, listed, "decomp_radiosity_list");
@@ -215,6 +227,13 @@ std::vector<shared::ClusterFit> IrradianceDecomposition::fit_batch(
         clusters.push_back(c);
         members.insert(members.end(), p.cluster.members.begin(), p.cluster.members.end());
     }
+    if (cluster_split_ && rays == nullptr) {
+        uint64_t traced = 0;
+        std::vector<shared::ClusterFit> fits =
+            cluster_split_->fit_batch(params_, clusters, members, &traced);
+        stats_.cluster_rays += traced;
+        return fits;
+    }
     const size_t ray_count = batch.size() * static_cast<size_t>(params_.cluster_rays);
     const Buffer<shared::DecompCluster> cluster_buffer(context_, clusters, "decomp_clusters");
     const Buffer<uint32_t> member_buffer(context_, members, "decomp_members");
@@ -238,6 +257,11 @@ std::vector<shared::ClusterFit> IrradianceDecomposition::fit_batch(
 // that stays whole gives a far-field sample.
 void IrradianceDecomposition::sample_far_field(const DecompositionOptions& options) {
     far_.clear();
+    cluster_split_.reset();
+    if (frame_devices(frame_) > 1 && dynamic_cast<const PathContinuation*>(source_) != nullptr) {
+        cluster_split_ = std::make_unique<DecompClusterSplit>(frame_, gbuffer_, samples_,
+                                                              source_->build_options());
+    }
     ShadingPoints points;
     std::vector<uint32_t> members;
     for (size_t i = 0; i < samples_.size(); ++i) {
@@ -369,6 +393,45 @@ void add_evaluation_stats(const std::vector<shared::DecompIrradiance>& terms,
 
 }  // namespace
 
+// Pass 2 (§6): both terms at every camera sample, then the render pass; with several devices in
+// chunks of rows shared among them (decomp_device_split.h). The film's sums.
+std::vector<shared::float4> IrradianceDecomposition::pass_two(size_t samples) {
+    auto start = SteadyClock::now();
+    if (frame_devices(frame_) > 1) {
+        const DecompFields fields{far_grid_,         far_start_,      far_list_,   far_records_,
+                                  far_coefficients_, near_grid_,      near_start_, near_list_,
+                                  triangle_buffer_,  radiance_buffer_};
+        DecompPassOutput out = decomp_device_pass(
+            frame_, {params_, camera_, source_->build_options(), gbuffer_, samples_, fields});
+        add_evaluation_stats(out.terms, samples_, &stats_);
+        stats_.evaluation_seconds = seconds_since(start);
+        stats_.shading_rays += out.shading_rays;
+        stats_.nonfinite_samples = out.nonfinite_samples;
+        stats_.first_nonfinite_pixel = out.first_nonfinite_pixel;
+        stats_.devices = std::move(out.shares);
+        for (size_t d = 0; d < radiosity_shares_.size() && d < stats_.devices.size(); ++d) {
+            stats_.devices[d].radiosity_triangles = radiosity_shares_[d].triangles;
+            stats_.devices[d].radiosity_rays = radiosity_shares_[d].rays;
+            stats_.devices[d].radiosity_seconds = radiosity_shares_[d].seconds;
+        }
+        for (size_t d = 0; cluster_split_ && d < stats_.devices.size(); ++d) {
+            const DecompClusterShare& share = cluster_split_->shares()[d];
+            stats_.devices[d].cluster_ranges = share.cluster_ranges;
+            stats_.devices[d].clusters = share.clusters;
+            stats_.devices[d].cluster_rays = share.cluster_rays;
+            stats_.devices[d].cluster_seconds = share.seconds;
+        }
+        return std::move(out.film);
+    }
+    const Buffer<shared::DecompIrradiance> terms = evaluate(gbuffer_, samples);
+    add_evaluation_stats(terms.download(), samples_, &stats_);
+    stats_.evaluation_seconds = seconds_since(start);
+    start = SteadyClock::now();
+    std::vector<shared::float4> sums = shade(terms);
+    stats_.shading_seconds = seconds_since(start);
+    return sums;
+}
+
 Image IrradianceDecomposition::render(const DecompositionOptions& options,
                                       DecompositionStats* stats) {
     const int width = options.width > 0 ? options.width : scene_.camera.width;
@@ -379,6 +442,7 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
     source_ = options.source;
     split_factor_ = options.split_factor;
     stats_ = DecompositionStats{};
+    radiosity_shares_.clear();
     params_ = shared::DecompParams{};
     params_.width = width;
     params_.height = height;
@@ -420,14 +484,7 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
         context_.finish();
         stats_.near_seconds += seconds_since(start);
     }
-    // Pass 2: both terms at every camera sample, then the render pass.
-    start = SteadyClock::now();
-    const Buffer<shared::DecompIrradiance> terms = evaluate(gbuffer_, samples);
-    add_evaluation_stats(terms.download(), samples_, &stats_);
-    stats_.evaluation_seconds = seconds_since(start);
-    start = SteadyClock::now();
-    const std::vector<shared::float4> sums = shade(terms);
-    stats_.shading_seconds = seconds_since(start);
+    const std::vector<shared::float4> sums = pass_two(samples);
 
     Image image = unpack_film(sums, RC_DECOMP_FILM_SLOTS, width, height,
                               {{"beauty", RC_DECOMP_FILM_BEAUTY},

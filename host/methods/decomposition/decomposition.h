@@ -16,11 +16,14 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "device/buffer.h"
 #include "image/image.h"
+#include "methods/decomposition/decomp_device_split.h"
+#include "methods/decomposition/decomp_radiosity_split.h"
 #include "methods/frame_scene.h"
 #include "methods/radiance_source.h"
 #include "methods/records/record_grid.h"
@@ -28,6 +31,8 @@
 #include "shared/types.h"
 
 namespace rc {
+
+class DecompClusterSplit;
 
 struct DecompositionOptions {
     int width = 0;  // 0: the scene camera's
@@ -95,10 +100,13 @@ struct DecompositionStats {
     double gbuffer_seconds = 0.0;
     double near_seconds = 0.0;        // splitting, the near triangles' grid, their radiosity
     double far_seconds = 0.0;         // clusters, their rays and fits, the samples' grid
-    double evaluation_seconds = 0.0;  // both terms at every camera sample
-    double shading_seconds = 0.0;     // the render pass
+    double evaluation_seconds = 0.0;  // both terms at every camera sample (several devices:
+                                      // and the render pass, chunk by chunk)
+    double shading_seconds = 0.0;     // the render pass (0 with several devices: in evaluation)
     uint64_t nonfinite_samples = 0;
     int64_t first_nonfinite_pixel = -1;
+    // With several devices: each one's share of pass 2 (decomp_device_split.h).
+    std::vector<DecompDeviceShare> devices;
 };
 
 // The layers of a decomposed image, in channel order (3 channels each): beauty (R, G, B),
@@ -109,6 +117,7 @@ extern const char* const kDecompositionAovs[7];
 class IrradianceDecomposition : private FrameBound {
    public:
     explicit IrradianceDecomposition(const FrameScene& frame);
+    ~IrradianceDecomposition();
 
     Image render(const DecompositionOptions& options, DecompositionStats* stats = nullptr);
 
@@ -146,8 +155,14 @@ class IrradianceDecomposition : private FrameBound {
     Buffer<shared::DecompIrradiance> evaluate(const Buffer<shared::GBufferSample>& points,
                                               size_t count);
     std::vector<shared::float4> shade(const Buffer<shared::DecompIrradiance>& irradiance);
+    std::vector<shared::float4> pass_two(size_t samples);
     Kernel& kernel(const char* name);
 
+    FrameScene frame_;  // with its peers (several devices: pass 2 shared)
+    // Several devices and path-traced continuation: the cluster batches shared.
+    std::unique_ptr<DecompClusterSplit> cluster_split_;
+    // The same: each device's share of the coarse radiosity (decomp_radiosity_split.h).
+    std::vector<DecompRadiosityShare> radiosity_shares_;
     const RadianceSource* source_ = nullptr;
     float split_factor_ = 1.0f;
     shared::DecompParams params_{};

@@ -112,6 +112,26 @@ nlohmann::json stats_json(const DecompositionStats& s, const DecompositionOption
               {"shading", s.shading_seconds}}}};
 }
 
+// Each device's share of pass 2 (several devices).
+nlohmann::json devices_json(const std::vector<DecompDeviceShare>& shares) {
+    nlohmann::json devices = nlohmann::json::array();
+    for (const DecompDeviceShare& d : shares) {
+        devices.push_back({{"device", d.device},
+                           {"radiosity_triangles", d.radiosity_triangles},
+                           {"radiosity_rays", d.radiosity_rays},
+                           {"radiosity_seconds", d.radiosity_seconds},
+                           {"cluster_ranges", d.cluster_ranges},
+                           {"clusters", d.clusters},
+                           {"cluster_rays", d.cluster_rays},
+                           {"cluster_seconds", d.cluster_seconds},
+                           {"chunks", d.chunks},
+                           {"pixels", d.pixels},
+                           {"shading_rays", d.shading_rays},
+                           {"seconds", d.seconds}});
+    }
+    return devices;
+}
+
 class Decomposition final : public Method {
    public:
     Decomposition(const ParsedArguments& arguments, const MethodSettings& settings)
@@ -177,11 +197,19 @@ class Decomposition final : public Method {
         result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
         const size_t pixels = static_cast<size_t>(result.image.width) * result.image.height;
         result.stats.update(stats_json(stats, options, result.rays, pixels));
+        if (!stats.devices.empty()) {
+            result.stats["devices"] = devices_json(stats.devices);
+        }
         log_note(std::to_string(stats.sh_samples) + " far-field samples, " +
                  std::to_string(stats.near_triangles) + " near-field triangles (alpha " +
                  std::to_string(options.alpha) + ")");
         return result;
     }
+
+    // Several devices: the grid's photons, pass 2 (both terms and the render pass) and, with
+    // path-traced continuation, the coarse radiosity and the cluster batches shared; the G-buffer,
+    // the near field's split and the gathered radiosity on the first device.
+    bool splits_across_devices() const override { return true; }
 
     std::vector<ProgramRequest> programs() const override {
         std::vector<ProgramRequest> programs = {
