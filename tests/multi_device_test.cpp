@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/render_devices.h"
 #include "device/fault_injection.h"
 #include "image/image_io.h"
 #include "test_support.h"
@@ -416,6 +417,37 @@ TEST(MultiDevice, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {
     std::vector<std::string> one_level = ic;
     one_level.insert(one_level.end(), {"--ic-bounces", "1"});
     expect_failing_device_named("multi_device_fault_ic_records", one_level, 5);
+}
+
+// A method that does not declare that its work splits (every registered one does today) is
+// refused a device list by name, with exit status 2, before any context is opened; one device is
+// opened for it as for any method.
+TEST(MultiDevice, AMethodThatDoesNotSplitIsRefusedSeveralDevices) {
+    setenv("POCL_DEVICES", "pthread pthread", 1);  // before this process's first OpenCL call
+    if (!two_devices()) {
+        GTEST_SKIP() << "PoCL does not expose two devices here";
+    }
+    struct OneDeviceMethod final : Method {
+        FrameResult render_frame(const FrameScene&, const FrameHooks&) override { return {}; }
+        std::vector<ProgramRequest> programs() const override { return {}; }
+        DeviceMemoryNeed device_memory_need(const Scene&, const DeviceInfo&) const override {
+            return {};
+        }
+    };
+    const OneDeviceMethod method;
+    ContextOptions options;
+    options.device_spec = "0:0,0:1";
+    try {
+        open_render_devices(options, method, "one-device");
+        ADD_FAILURE() << "two devices were opened for a method that renders on one";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.exit_code(), kExitUsage);
+        EXPECT_NE(std::string(error.what()).find("--method one-device renders on one"),
+                  std::string::npos)
+            << error.what();
+    }
+    options.device_spec = "0:1";
+    EXPECT_EQ(open_render_devices(options, method, "one-device").size(), 1u);
 }
 
 }  // namespace
