@@ -403,7 +403,8 @@ uint64_t kernel_launches(const std::vector<std::string>& options) {
 // In this process (the fault injection is in-process): the path tracer's 20th kernel launch; the
 // irradiance cache's 5th with one cache level (after the G-buffer, its tile depths, the first
 // placement pass's coverage query and selection on the first device: the first record range's
-// hemisphere cells, in the split) and its last (the final pass's, shared by the devices).
+// hemisphere cells, in the split) and its last (the final pass's, shared by the devices); the
+// decomposition's last with the path source (its pass 2, shared by the devices).
 TEST(MultiDevice, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {
     setenv("POCL_DEVICES", "pthread pthread", 1);  // before this process's first OpenCL call
     if (!two_devices()) {
@@ -417,6 +418,12 @@ TEST(MultiDevice, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {
     std::vector<std::string> one_level = ic;
     one_level.insert(one_level.end(), {"--ic-bounces", "1"});
     expect_failing_device_named("multi_device_fault_ic_records", one_level, 5);
+    const std::vector<std::string> decomposition = {"--method", "decomposition", "--decomp-source",
+                                                    "path",     "--alpha",       "3%"};
+    const uint64_t decomposition_launches = kernel_launches(decomposition);
+    ASSERT_GT(decomposition_launches, 2u);
+    expect_failing_device_named("multi_device_fault_decomposition", decomposition,
+                                decomposition_launches);
 }
 
 // A method that does not declare that its work splits (every registered one does today) is
