@@ -63,6 +63,29 @@ nlohmann::json render(const std::filesystem::path& dir, const std::string& name,
     return stats.contains("frames") ? stats["frames"][0] : stats;
 }
 
+struct SplitRender {
+    nlohmann::json one;  // the frame's stats on device 0:0
+    nlohmann::json two;  // and with `devices`
+};
+
+// `options` rendered on device 0:0 (dir/NAME_one) and with `devices` (dir/NAME_two): every layer
+// of the two images expected bitwise equal.
+SplitRender render_one_and_split(const std::filesystem::path& dir, const std::string& name,
+                                 const std::vector<std::string>& options,
+                                 const std::vector<std::string>& devices,
+                                 const std::string& scene = cornell()) {
+    std::vector<std::string> one = options;
+    one.insert(one.end(), {"--device", "0:0"});
+    std::vector<std::string> two = options;
+    two.insert(two.end(), devices.begin(), devices.end());
+    SplitRender result{render(dir, name + "_one", one, scene),
+                       render(dir, name + "_two", two, scene)};
+    EXPECT_TRUE(
+        same_pixels(read_image(dir / (name + "_two.exr")), read_image(dir / (name + "_one.exr"))))
+        << name;
+    return result;
+}
+
 TEST(MultiDevice, PathTracerImageIsTheOneDeviceImageWhateverTheSplit) {
     if (!two_devices()) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
@@ -98,12 +121,8 @@ TEST(MultiDevice, GridMethodsImageIsTheOneDeviceImage) {
     }
     const auto dir = test::scratch_dir("multi_device_ivg");
     for (const std::string method : {"ivg", "ivg-gather"}) {
-        render(dir, method + "_one", {"--method", method, "--device", "0:0"});
         const nlohmann::json stats =
-            render(dir, method + "_two", {"--method", method, "--device", "0:1,0:0"});
-        EXPECT_TRUE(same_pixels(read_image(dir / (method + "_two.exr")),
-                                read_image(dir / (method + "_one.exr"))))
-            << method;
+            render_one_and_split(dir, method, {"--method", method}, {"--device", "0:1,0:0"}).two;
         const nlohmann::json& grid = stats.at("grid");
         ASSERT_EQ(grid.at("devices").size(), 2u) << method;
         uint64_t photons = 0;
@@ -144,15 +163,7 @@ TEST(MultiDevice, IrradianceCacheImageIsTheOneDeviceImageWhateverTheSplit) {
               true},
              {"one_level", with({"--ic-bounces", "1"}), {"--device", "all"}, true},
              {"grid", with({"--ic-bounces", "1", "--ic-ivg"}), {"--device", "all"}, false}}) {
-        std::vector<std::string> one = c.method;
-        one.insert(one.end(), {"--device", "0:0"});
-        const nlohmann::json single = render(dir, c.name + "_one", one);
-        std::vector<std::string> two = c.method;
-        two.insert(two.end(), c.devices.begin(), c.devices.end());
-        const nlohmann::json stats = render(dir, c.name + "_two", two);
-        EXPECT_TRUE(same_pixels(read_image(dir / (c.name + "_two.exr")),
-                                read_image(dir / (c.name + "_one.exr"))))
-            << c.name;
+        const auto [single, stats] = render_one_and_split(dir, c.name, c.method, c.devices);
         EXPECT_EQ(stats.at("level_records"), single.at("level_records")) << c.name;
         EXPECT_EQ(stats.at("record_rays"), single.at("record_rays")) << c.name;
         const nlohmann::json& devices = stats.at("devices");
@@ -187,15 +198,8 @@ TEST(MultiDevice, GlossyCachesImageIsTheOneDeviceImage) {
         (test::source_dir() / "scenes" / "glossy-box" / "scene.json").string();
     for (const std::string method : {"rc", "sdrc"}) {
         const std::vector<std::string> options = {"--method", method, "--ic-rays", "256"};
-        std::vector<std::string> one = options;
-        one.insert(one.end(), {"--device", "0:0"});
-        render(dir, method + "_one", one, glossy_box);
-        std::vector<std::string> two = options;
-        two.insert(two.end(), {"--device", "0:1,0:0"});
-        const nlohmann::json stats = render(dir, method + "_two", two, glossy_box);
-        EXPECT_TRUE(same_pixels(read_image(dir / (method + "_two.exr")),
-                                read_image(dir / (method + "_one.exr"))))
-            << method;
+        const nlohmann::json stats =
+            render_one_and_split(dir, method, options, {"--device", "0:1,0:0"}, glossy_box).two;
         const nlohmann::json& devices = stats.at("devices");
         ASSERT_EQ(devices.size(), 2u) << method;
         for (const nlohmann::json& d : devices) {
@@ -211,10 +215,9 @@ TEST(MultiDevice, NormalsImageIsTheOneDeviceImage) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
     }
     const auto dir = test::scratch_dir("multi_device_normals");
-    render(dir, "one", {"--method", "normals", "--device", "0:0"});
-    const nlohmann::json stats =
-        render(dir, "two", {"--method", "normals", "--device", "0:1,0:0", "--max-chunk", "64"});
-    EXPECT_TRUE(same_pixels(read_image(dir / "two.exr"), read_image(dir / "one.exr")));
+    const nlohmann::json stats = render_one_and_split(dir, "normals", {"--method", "normals"},
+                                                      {"--device", "0:1,0:0", "--max-chunk", "64"})
+                                     .two;
     const nlohmann::json& devices = stats.at("devices");
     ASSERT_EQ(devices.size(), 2u);
     size_t pixels = 0;
@@ -255,15 +258,7 @@ TEST(MultiDevice, DecompositionImageIsTheOneDeviceImageWhateverTheSplit) {
                             path,
                             {"--device", "0:1, 0:0", "--max-chunk", "100", "--local-size", "8"},
                             true}}) {
-        std::vector<std::string> one = c.method;
-        one.insert(one.end(), {"--device", "0:0"});
-        const nlohmann::json single = render(dir, c.name + "_one", one);
-        std::vector<std::string> two = c.method;
-        two.insert(two.end(), c.devices.begin(), c.devices.end());
-        const nlohmann::json stats = render(dir, c.name + "_two", two);
-        EXPECT_TRUE(same_pixels(read_image(dir / (c.name + "_two.exr")),
-                                read_image(dir / (c.name + "_one.exr"))))
-            << c.name;
+        const auto [single, stats] = render_one_and_split(dir, c.name, c.method, c.devices);
         EXPECT_EQ(stats.at("sh_samples"), single.at("sh_samples")) << c.name;
         EXPECT_EQ(stats.at("shading_rays"), single.at("shading_rays")) << c.name;
         EXPECT_EQ(stats.at("cluster_rays_traced"), single.at("cluster_rays_traced")) << c.name;
