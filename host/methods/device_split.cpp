@@ -1,5 +1,6 @@
 #include "methods/device_split.h"
 
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <exception>
@@ -66,6 +67,17 @@ PixelChunks::PixelChunks(int width, int height, size_t devices, int per_device)
 
 std::pair<size_t, size_t> PixelChunks::range(size_t chunk) const {
     return {chunk * chunk_pixels, std::min(pixels, (chunk + 1) * chunk_pixels)};
+}
+
+ItemRanges::ItemRanges(size_t count, size_t devices, size_t per_device, size_t smallest)
+    : items(count) {
+    const size_t ranges = std::max<size_t>(1, per_device * devices);
+    range_items = std::max({size_t{1}, smallest, (count + ranges - 1) / ranges});
+    this->count = (count + range_items - 1) / range_items;
+}
+
+std::pair<size_t, size_t> ItemRanges::range(size_t range) const {
+    return {range * range_items, std::min(items, (range + 1) * range_items)};
 }
 
 DeviceSplit run_device_split(

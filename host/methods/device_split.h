@@ -33,6 +33,19 @@ struct PixelChunks {
     size_t count = 0;
 };
 
+// Items [0, count) (records, clusters, triangles) in ranges of equal size, about `per_device`
+// ranges for each of `devices` and none smaller than `smallest` items (the work items of a split
+// over items; the last range may be shorter).
+struct ItemRanges {
+    ItemRanges(size_t count, size_t devices, size_t per_device, size_t smallest = 1);
+    // Items [first, second) of range `range`.
+    std::pair<size_t, size_t> range(size_t range) const;
+
+    size_t items = 0;
+    size_t range_items = 1;
+    size_t count = 0;  // ranges
+};
+
 // Copies the pixels (`slots` values each) of `chunks` from `film`, a device's film of the whole
 // image, into the same place of `image`; returns how many pixels that is.
 template <class T>

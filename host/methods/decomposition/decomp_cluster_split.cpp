@@ -80,8 +80,7 @@ std::vector<shared::ClusterFit> DecompClusterSplit::fit_batch(
     const shared::DecompParams& params, const std::vector<shared::DecompCluster>& clusters,
     const std::vector<uint32_t>& members, uint64_t* rays) {
     const size_t count = clusters.size();
-    const size_t ranges = kRangesPerDevice * devices_.size();
-    const size_t range = std::max<size_t>(1, (count + ranges - 1) / ranges);
+    const ItemRanges ranges(count, devices_.size(), kRangesPerDevice);
     std::vector<shared::ClusterFit> fits(count);
     std::vector<Context*> contexts;
     for (const auto& device : devices_) {
@@ -90,16 +89,15 @@ std::vector<shared::ClusterFit> DecompClusterSplit::fit_batch(
         contexts.push_back(&device->frame.context);
     }
     const DeviceSplit split = run_device_split(
-        contexts, (count + range - 1) / range,
+        contexts, ranges.count,
         [&](size_t d, size_t item, const std::atomic<bool>&) {
             Device& device = *devices_[d];
             if (!device.members) {
                 device.members = std::make_unique<Buffer<uint32_t>>(device.frame.context, members,
                                                                     "decomp_members");
             }
-            const size_t begin = item * range;
-            device.fit_range(params, clusters, begin, std::min(count, begin + range),
-                             d == 0 ? gbuffer_ : device.copy, fits);
+            const auto [begin, end] = ranges.range(item);
+            device.fit_range(params, clusters, begin, end, d == 0 ? gbuffer_ : device.copy, fits);
         },
         {});
     for (size_t d = 0; d < devices_.size(); ++d) {
@@ -109,7 +107,8 @@ std::vector<shared::ClusterFit> DecompClusterSplit::fit_batch(
         DecompClusterShare& share = shares_[d];
         share.cluster_ranges += split.items[d].size();
         for (size_t item : split.items[d]) {
-            share.clusters += std::min(count, (item + 1) * range) - item * range;
+            const auto [begin, end] = ranges.range(item);
+            share.clusters += end - begin;
         }
         share.cluster_rays += device.rays;
         share.seconds += split.seconds[d];

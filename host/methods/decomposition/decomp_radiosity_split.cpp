@@ -60,31 +60,30 @@ uint64_t split_coarse_radiosity(const FrameScene& frame, const shared::DecompPar
         contexts.push_back(&device->frame.context);
     }
     const size_t count = listed.size();
-    const size_t ranges = kRangesPerDevice * devices.size();
-    const size_t range = std::max<size_t>(1, (count + ranges - 1) / ranges);
+    const ItemRanges ranges(count, devices.size(), kRangesPerDevice);
     const DeviceSplit split = run_device_split(
-        contexts, (count + range - 1) / range,
+        contexts, ranges.count,
         [&](size_t d, size_t item, const std::atomic<bool>&) {
             RadiosityDevice& device = *devices[d];
-            const size_t begin = item * range;
+            const auto [begin, end] = ranges.range(item);
             device.frame.context.launch_range(
-                device.kernel, begin, std::min(count, begin + range), params,
+                device.kernel, begin, end, params,
                 SceneArguments(device.frame.bvh, device.frame.device_scene), device.path,
                 device.triangles, device.list, device.radiance, device.counters);
         },
         {});
-    // B(t) gathered by range: entry listed[i] from the device that computed item i / range.
+    // B(t) gathered by range: entry listed[i] from the device that computed the range holding i.
     std::vector<shared::float4> merged = radiance.download();
     uint64_t rays = 0;
     shares->assign(devices.size(), {});
     for (size_t d = 0; d < devices.size(); ++d) {
         const std::vector<shared::float4> computed = devices[d]->radiance.download();
         for (size_t item : split.items[d]) {
-            const size_t end = std::min(count, (item + 1) * range);
-            for (size_t i = item * range; i < end; ++i) {
+            const auto [begin, end] = ranges.range(item);
+            for (size_t i = begin; i < end; ++i) {
                 merged[listed[i]] = computed[listed[i]];
             }
-            (*shares)[d].triangles += end - item * range;
+            (*shares)[d].triangles += end - begin;
         }
         const uint64_t device_rays = devices[d]->counters.download()[0];
         (*shares)[d].rays = device_rays;

@@ -119,9 +119,8 @@ RecordBatchOutput IcDeviceSplit::compute_batch(const RecordBatchInput& batch,
                                                const HostRecords* next_level) {
     const size_t count = batch.records.size();
     const size_t per_record = static_cast<size_t>(batch.params.strata_m) * batch.params.strata_n;
-    const size_t range = std::max(
-        {size_t{1}, kSmallestRangeCells / std::max<size_t>(1, per_record),
-         (count + kRangesPerDevice * devices_.size() - 1) / (kRangesPerDevice * devices_.size())});
+    const ItemRanges ranges(count, devices_.size(), kRangesPerDevice,
+                            kSmallestRangeCells / std::max<size_t>(1, per_record));
     RecordBatchOutput out;
     out.payloads.resize(count);
     out.distances.resize(count);
@@ -136,7 +135,7 @@ RecordBatchOutput IcDeviceSplit::compute_batch(const RecordBatchInput& batch,
             values.begin() + static_cast<long>(begin), values.begin() + static_cast<long>(end));
     };
     const DeviceSplit split = run_device_split(
-        contexts, (count + range - 1) / range,
+        contexts, ranges.count,
         [&](size_t d, size_t item, const std::atomic<bool>&) {
             Device& device = *devices_[d];
             Context& context = device.frame.context;
@@ -147,8 +146,7 @@ RecordBatchOutput IcDeviceSplit::compute_batch(const RecordBatchInput& batch,
                               context, *next_level, batch.params.max_weight))
                         : std::make_unique<PathContinuation>();
             }
-            const size_t begin = item * range;
-            const size_t end = std::min(count, begin + range);
+            const auto [begin, end] = ranges.range(item);
             const size_t n = end - begin;
             const Buffer<shared::Record> records(context, slice(batch.records, begin, end),
                                                  "ic_batch_records");
@@ -180,7 +178,8 @@ RecordBatchOutput IcDeviceSplit::compute_batch(const RecordBatchInput& batch,
         IcDeviceShare& share = shares_[d];
         share.record_ranges += split.items[d].size();
         for (size_t item : split.items[d]) {
-            share.records += std::min(count, (item + 1) * range) - item * range;
+            const auto [begin, end] = ranges.range(item);
+            share.records += end - begin;
         }
         share.record_seconds += split.seconds[d];
     }
