@@ -83,6 +83,25 @@ TEST(RecordGrid, ListsEveryRecordWhenCellsAreCapped) {
     expect_lists_every_touching_record(random_records(rng, 200), 0.9f, 64);
 }
 
+// A cache's radii span decades: a few large records among many small ones must not be listed in
+// the thousands of small cells the median radius alone would make.
+TEST(RecordGrid, ListingsPerRecordStayBoundedWhenRadiiSpanDecades) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    std::vector<shared::Record> records;
+    for (int i = 0; i < 400; ++i) {
+        shared::Record r = make_record(glm::vec3(10.0f * unit(rng), 4.0f * unit(rng), unit(rng)),
+                                       glm::vec3(0.0f, 0.0f, 1.0f));
+        r.radius = i % 20 == 0 ? 3.0f + unit(rng) : 0.01f + 0.01f * unit(rng);
+        records.push_back(r);
+    }
+    const size_t max_cells = size_t{1} << 16;
+    const RecordGridData data = build_record_grid(records, 1.0f, max_cells);
+    // 64 per record (kMaxListingsPerRecord); the median radius alone gives 400 times more.
+    EXPECT_LE(data.cell_records.size(), 64 * records.size());
+    expect_lists_every_touching_record(records, 1.0f, max_cells);
+}
+
 TEST(RecordGrid, EmptyGridHasOneEmptyCell) {
     const RecordGridData data = build_record_grid({}, 0.5f);
     EXPECT_EQ(data.grid.dims.w, 1);

@@ -18,6 +18,43 @@ struct CellRange {
     glm::ivec3 to;
 };
 
+// The cells a record listed over [lower, ...) with cells of `cell` touches (not clamped to the
+// grid: an upper bound).
+double listings_for(const std::vector<shared::Record>& records, const std::vector<float>& influence,
+                    glm::vec3 lower, float cell) {
+    double listings = 0.0;
+    for (size_t i = 0; i < records.size(); ++i) {
+        const glm::vec3 p = record_position(records[i]);
+        const glm::vec3 span = glm::floor((p + influence[i] - lower) / cell) -
+                               glm::floor((p - influence[i] - lower) / cell) + 1.0f;
+        listings += static_cast<double>(span.x) * span.y * span.z;
+    }
+    return listings;
+}
+
+// The cell size: about twice the median influence radius, grown by 1.25 while there would be more
+// than max_cells cells or more than kMaxListingsPerRecord listings per record on average. (A
+// cache's radii span decades: with cells from the median alone, the large records of a deeper
+// level were each listed in hundreds of cells — 8 M listings for 12 k records on the Cornell box
+// — and building the grid was most of the host's work in a render. Once cells exceed the extent a
+// record touches at most 8, so the growth ends.)
+float cell_size(const std::vector<shared::Record>& records, const std::vector<float>& influence,
+                glm::vec3 lower, glm::vec3 extent, size_t max_cells) {
+    std::vector<float> sorted = influence;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    float cell = std::max(2.0f * sorted[sorted.size() / 2], 1e-6f * glm::length(extent));
+    auto cells_for = [&](float size) {
+        const glm::vec3 dims = glm::ceil(extent / size);
+        return static_cast<double>(dims.x) * dims.y * dims.z;
+    };
+    const double max_listings = kMaxListingsPerRecord * static_cast<double>(records.size());
+    while (cells_for(cell) > static_cast<double>(max_cells) ||
+           listings_for(records, influence, lower, cell) > max_listings) {
+        cell *= 1.25f;
+    }
+    return cell;
+}
+
 }  // namespace
 
 RecordGridData build_record_grid(const std::vector<shared::Record>& records, float accuracy,
@@ -30,8 +67,7 @@ RecordGridData build_record_grid(const std::vector<shared::Record>& records, flo
         data.cell_start = {0, 0};
         return data;
     }
-    // 1. Bounds of every influence sphere and the cell size: about twice the median influence
-    // radius, larger if that would make too many cells.
+    // 1. Bounds of every influence sphere and the cell size.
     glm::vec3 lower(std::numeric_limits<float>::max());
     glm::vec3 upper(-std::numeric_limits<float>::max());
     std::vector<float> influence(records.size());
@@ -40,17 +76,8 @@ RecordGridData build_record_grid(const std::vector<shared::Record>& records, flo
         lower = glm::min(lower, record_position(records[i]) - glm::vec3(influence[i]));
         upper = glm::max(upper, record_position(records[i]) + glm::vec3(influence[i]));
     }
-    std::vector<float> sorted = influence;
-    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
     const glm::vec3 extent = glm::max(upper - lower, glm::vec3(1e-6f));
-    float cell = std::max(2.0f * sorted[sorted.size() / 2], 1e-6f * glm::length(extent));
-    auto count_for = [&](float size) {
-        const glm::vec3 dims = glm::ceil(extent / size);
-        return static_cast<double>(dims.x) * dims.y * dims.z;
-    };
-    while (count_for(cell) > static_cast<double>(max_cells)) {
-        cell *= 1.25f;
-    }
+    const float cell = cell_size(records, influence, lower, extent, max_cells);
     const glm::ivec3 dims = glm::max(glm::ivec3(glm::ceil(extent / cell)), glm::ivec3(1));
     const size_t cells = static_cast<size_t>(dims.x) * dims.y * dims.z;
     data.grid.origin = float4_of(lower);

@@ -17,8 +17,12 @@ struct RecordGridData {
     std::vector<int> cell_records;  // record indices, cell by cell, ascending within a cell
 };
 
+// The most listings per record the grid makes on average (record_grid.cpp, cell_size).
+constexpr double kMaxListingsPerRecord = 64.0;
+
 // The grid over spheres of radius accuracy * R' (R' = records[i].radius) around the records;
-// cells are sized from the median influence radius, at most `max_cells` in all.
+// cells are sized from the median influence radius, at most `max_cells` in all and at most
+// kMaxListingsPerRecord listings per record on average.
 RecordGridData build_record_grid(const std::vector<shared::Record>& records, float accuracy,
                                  size_t max_cells = size_t{1} << 21);
 

@@ -77,12 +77,17 @@ float RecordStore::grid_cell(int level, int grid) {
     return std::ldexp(1.0f, level + kGridOffset + grid);
 }
 
-template <class Visit>
-void RecordStore::visit_overlapping(glm::vec3 p, float radius, Visit&& visit) const {
+template <class ReachOf, class Visit>
+void RecordStore::visit_within(glm::vec3 p, ReachOf&& reach_of, Visit&& visit) const {
     for (const auto& [level, radius_class] : classes_) {
-        // Class members have R_k <= 2^level, so overlapping ones lie within reach of p. The grid
-        // taken: the coarsest whose cells are at most kCellPerReach reaches (or the finest).
-        const float reach = radius + std::ldexp(1.0f, level);
+        // Class members have R_k <= 2^level; the caller gives how far from p a member can matter
+        // at that bound (nothing at a reach <= 0). The grid taken: the coarsest whose cells are
+        // at most kCellPerReach reaches (or the finest). Entries of records that have since moved
+        // to a smaller class are skipped.
+        const float reach = reach_of(std::ldexp(1.0f, level));
+        if (!(reach > 0.0f)) {
+            continue;
+        }
         int grid = 0;
         while (grid + 1 < kGrids && grid_cell(level, grid + 1) <= kCellPerReach * reach) {
             ++grid;
@@ -93,7 +98,9 @@ void RecordStore::visit_overlapping(glm::vec3 p, float radius, Visit&& visit) co
         const glm::dvec3 span = glm::dvec3(to - from) + 1.0;
         if (!std::isfinite(reach) || span.x * span.y * span.z > radius_class.records.size()) {
             for (uint32_t k : radius_class.records) {
-                visit(k);
+                if (class_of_[k] == level) {
+                    visit(k);
+                }
             }
             continue;
         }
@@ -104,7 +111,9 @@ void RecordStore::visit_overlapping(glm::vec3 p, float radius, Visit&& visit) co
                     const auto it = cells.find(cell_key({x, y, z}));
                     if (it != cells.end()) {
                         for (uint32_t k : it->second) {
-                            visit(k);
+                            if (class_of_[k] == level) {
+                                visit(k);
+                            }
                         }
                     }
                 }
@@ -127,14 +136,21 @@ size_t RecordStore::insert_bytes(const shared::Record& record, const RecordHostD
     // and on from every record that changed. (The course clamps one ring of neighbors; the
     // relaxation only goes further if a neighbor's R had been loaded from elsewhere. The result,
     // R_j <= R_k + |p_j - p_k| for every pair, does not depend on the visiting order: a record
-    // that lowers R_j always overlaps it.)
+    // that lowers R_j always overlaps it.) Only records that can lower a radius are visited:
+    // record k lowers R_j when R_k + d < R_j, so d < R_j; the new record lowers R_b when
+    // R_j + d < R_b <= 2^L (b of class L), so d < 2^L - R_j, and classes with 2^L <= R_j are
+    // skipped. Most overlapping pairs satisfy neither (large deeper-level records overlap
+    // thousands).
     const glm::vec3 p = record_position(record);
-    visit_overlapping(p, radius, [&](uint32_t k) {
-        const float d = glm::length(p - record_position(records_[k]));
-        if (d < radius + host_[k].radius) {
-            radius = std::min(radius, host_[k].radius + d);
-        }
-    });
+    const float reach = radius;
+    visit_within(
+        p, [reach](float) { return reach; },
+        [&](uint32_t k) {
+            const float d = glm::length(p - record_position(records_[k]));
+            if (d < radius + host_[k].radius) {
+                radius = std::min(radius, host_[k].radius + d);
+            }
+        });
     const size_t j = records_.size();
     records_.push_back(record);
     host_.push_back(host);
@@ -147,21 +163,36 @@ size_t RecordStore::insert_bytes(const shared::Record& record, const RecordHostD
         const size_t a = changed.back();
         changed.pop_back();
         const glm::vec3 pa = record_position(records_[a]);
-        visit_overlapping(pa, host_[a].radius, [&](uint32_t b) {
-            const float d = glm::length(pa - record_position(records_[b]));
-            if (b != a && d < host_[a].radius + host_[b].radius &&
-                host_[b].radius > host_[a].radius + d) {
-                set_radius(b, host_[a].radius + d);
-                changed.push_back(b);
-            }
-        });
+        const float radius_a = host_[a].radius;
+        const size_t first_changed = changed.size();
+        visit_within(
+            pa, [radius_a](float bound) { return bound - radius_a; },
+            [&](uint32_t b) {
+                const float d = glm::length(pa - record_position(records_[b]));
+                if (b != a && d < host_[a].radius + host_[b].radius &&
+                    host_[b].radius > host_[a].radius + d) {
+                    set_radius(b, host_[a].radius + d);
+                    changed.push_back(b);
+                }
+            });
+        // Re-indexed after the visit, which iterates over the classes.
+        for (size_t c = first_changed; c < changed.size(); ++c) {
+            index_record(static_cast<uint32_t>(changed[c]));
+        }
     }
     return j;
 }
 
 void RecordStore::index_record(uint32_t index) {
-    // R only shrinks after insertion, so the class chosen now stays an upper bound.
+    // R only shrinks after insertion: a record whose R fell into a smaller class is listed there
+    // too, and its entries in the larger class are skipped from then on (class_of_), so each
+    // class bounds its members' R within a factor of 2.
     const int level = radius_class(host_[index].radius);
+    if (index < class_of_.size() && class_of_[index] == level) {
+        return;
+    }
+    class_of_.resize(std::max(class_of_.size(), size_t{index} + 1));
+    class_of_[index] = level;
     RadiusClass& radius_class = classes_[level];
     radius_class.records.push_back(index);
     const glm::vec3 p = record_position(records_[index]);
@@ -181,6 +212,7 @@ void RecordStore::restore(std::vector<shared::Record> records, std::vector<Recor
     host_ = std::move(host);
     payloads_ = std::move(payloads);
     classes_.clear();
+    class_of_.clear();
     for (uint32_t i = 0; i < records_.size(); ++i) {
         set_radius(i, host_[i].radius);
         index_record(i);

@@ -101,10 +101,11 @@ class RecordStore {
     void check_payload_size(size_t bytes) const;
     // Sets the unclamped R of record i and its shared part's clamped radius.
     void set_radius(size_t i, float radius);
-    // Calls visit(k) for every record k with |p - p_k| < radius + R_k, and maybe a few more
-    // (each once; in no particular order: neighbor clamping's result does not depend on it).
-    template <class Visit>
-    void visit_overlapping(glm::vec3 p, float radius, Visit&& visit) const;
+    // Calls visit(k) for every record k of every radius class L with |p - p_k| <
+    // reach_of(2^L), and maybe a few more (each once; in no particular order: neighbor
+    // clamping's result does not depend on it). A reach <= 0 skips the class.
+    template <class ReachOf, class Visit>
+    void visit_within(glm::vec3 p, ReachOf&& reach_of, Visit&& visit) const;
     void index_record(uint32_t index);
 
     float accuracy_;
@@ -113,6 +114,7 @@ class RecordStore {
     std::vector<RecordHostData> host_;
     std::vector<std::byte> payloads_;
     std::unordered_map<int, RadiusClass> classes_;
+    std::vector<int> class_of_;  // the class each record is listed in (its smallest so far)
 };
 
 }  // namespace rc
