@@ -25,7 +25,7 @@ loading, device start and image writing excluded).
 
 Usage: tools/bench/decomposition_vs_ic.py [--scenes relief] [--spp 4] [--source grid path]
            [--alpha 1%] [--cluster 10% 5% 2%] [--rays 512 2048] [--visibility heuristic]
-           [--radiosity gathered] [--gradients off] [--repeats 2] [--with-ic-ivg]
+           [--radiosity gathered] [--gradients on] [--repeats 2] [--with-ic-ivg]
            [--layer indirect]
            [--out build/bench/decomposition]
            [-- extra render options]
@@ -190,7 +190,7 @@ def main():
                         default=["gathered"],
                         help="the near triangles' radiosity (--decomp-radiosity; default "
                              "%(default)s)")
-    parser.add_argument("--gradients", nargs="+", choices=["off", "on"], default=["off"],
+    parser.add_argument("--gradients", nargs="+", choices=["off", "on"], default=["on"],
                         help="the far field's translational gradients (--decomp-gradients; "
                              "default %(default)s)")
     parser.add_argument("--spp", type=int, default=4,

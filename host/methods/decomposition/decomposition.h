@@ -65,8 +65,9 @@ struct DecompositionOptions {
     // (--decomp-visibility rays) instead of taking it as visible.
     bool visibility_rays = false;
     // Fit each far-field sample's translational gradient with its coefficients and interpolate
-    // with it (--decomp-gradients on; rc_decomp_fit_with_gradients).
-    bool gradients = false;
+    // with it (--decomp-gradients on, the default; rc_decomp_fit_with_gradients; measured in
+    // docs/decomposition.md).
+    bool gradients = true;
     // The coarse solution the rays read at their hits (the method's: the irradiance vector grid;
     // path continuation in tests); required.
     const RadianceSource* source = nullptr;

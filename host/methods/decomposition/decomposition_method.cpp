@@ -174,7 +174,7 @@ class Decomposition final : public Method {
                         kExitUsage);
         }
         options_.visibility_rays = visibility == "rays";
-        const std::string gradients = arguments.value("--decomp-gradients", "off");
+        const std::string gradients = arguments.value("--decomp-gradients", "on");
         if (gradients != "on" && gradients != "off") {
             throw Error("--decomp-gradients: expected on or off, got '" + gradients + "'",
                         kExitUsage);
@@ -278,7 +278,7 @@ std::vector<OptionSpec> decomposition_option_specs() {
             .one_of({"heuristic", "rays"}),
         OptionSpec{"--decomp-gradients", "", "on|off",
                    "decomposition: fit each far-field sample's translational gradient from its "
-                   "rays' origins and interpolate with it (default off)"}
+                   "rays' origins and interpolate with it (default on)"}
             .one_of({"on", "off"}),
         OptionSpec{"--decomp-radiosity", "", "NAME",
                    "decomposition: the near triangles' radiosity B(t): gathered (from the "
