@@ -5,6 +5,7 @@
 #include "common/math.h"
 #include "common/sampling.h"
 #include "decomposition/decomp_sh.h"
+#include "decomposition/decomp_sh_gradient.h"
 #include "shared/records.h"
 #include "shared/rng.h"
 #include "shared/types.h"
@@ -75,15 +76,37 @@ RC_FUNC float rc_decomp_sample_weight(RC_GLOBAL const Record* sample, float3 p, 
     return x > 0.0f && c > 0.0f ? x * x * c * c : 0.0f;
 }
 
+// The far-field samples' coefficients and, with --decomp-gradients on, their translational
+// gradients (gradients is then non-null).
+typedef struct FarCoefficients {
+    RC_GLOBAL const ShSample* coefficients;
+    RC_GLOBAL const ShGradient* gradients;
+} FarCoefficients;
+
+// Adds w times sample s's coefficients at p to *out: c + g . (p - x_s) with its gradients
+// (Ward and Heckbert 1992's translational gradients; the fit's, rc_decomp_fit_with_gradients),
+// c alone without.
+RC_FUNC void rc_decomp_add_sample(const FarCoefficients* far, RC_GLOBAL const Record* samples,
+                                  int s, float w, float3 p, ShSample* out) {
+    const float3 offset = p - samples[s].position.xyz;
+    for (int i = 0; i < RC_DECOMP_SH_COEFFICIENTS; ++i) {
+        float4 c = far->coefficients[s].coefficients[i];
+        if (far->gradients != 0) {
+            RC_GLOBAL const ShGradient* g = far->gradients + s;
+            c += offset.x * g->along_x[i] + offset.y * g->along_y[i] + offset.z * g->along_z[i];
+        }
+        out->coefficients[i] += w * c;
+    }
+}
+
 // The far-field samples interpolated at p with unit normal n: the weighted mean of the
-// coefficients of those listed in list[begin .. end) (the record grid's cell of p), in list order.
-// Where none has a positive weight, the listed one whose normal agrees best with n (the nearest,
-// d / R, on ties) stands alone. Returns the samples with a positive weight; *out is all zero when
-// the list is empty.
+// coefficients (at p, with gradients) of those listed in list[begin .. end) (the record grid's
+// cell of p), in list order. Where none has a positive weight, the listed one whose normal agrees
+// best with n (the nearest, d / R, on ties) stands alone. Returns the samples with a positive
+// weight; *out is all zero when the list is empty.
 RC_FUNC uint rc_decomp_interpolate(RC_GLOBAL const int* list, int begin, int end,
-                                   RC_GLOBAL const Record* samples,
-                                   RC_GLOBAL const ShSample* coefficients, float3 p, float3 n,
-                                   ShSample* out) {
+                                   RC_GLOBAL const Record* samples, const FarCoefficients* far,
+                                   float3 p, float3 n, ShSample* out) {
     for (int i = 0; i < RC_DECOMP_SH_COEFFICIENTS; ++i) {
         out->coefficients[i] = (float4)(0.0f);
     }
@@ -105,9 +128,7 @@ RC_FUNC uint rc_decomp_interpolate(RC_GLOBAL const int* list, int begin, int end
         if (w <= 0.0f) {
             continue;
         }
-        for (int i = 0; i < RC_DECOMP_SH_COEFFICIENTS; ++i) {
-            out->coefficients[i] += w * coefficients[s].coefficients[i];
-        }
+        rc_decomp_add_sample(far, samples, s, w, p, out);
         total += w;
         ++count;
     }
@@ -116,31 +137,40 @@ RC_FUNC uint rc_decomp_interpolate(RC_GLOBAL const int* list, int begin, int end
             out->coefficients[i] /= total;
         }
     } else if (best >= 0) {
-        for (int i = 0; i < RC_DECOMP_SH_COEFFICIENTS; ++i) {
-            out->coefficients[i] = coefficients[best].coefficients[i];
-        }
+        rc_decomp_add_sample(far, samples, best, 1.0f, p, out);
     }
     return count;
 }
 
 // A cluster's fit (§4): the least-squares coefficients of L_D* over its kept rays, in ray order
 // ("when we compute the harmonic coefficients, we assume all the rays originate from the
-// geometrical average of the origins of the rays", Fig. 3 b: the directions as traced), and the
-// counts of kept rays and of rays that hit inside its bounding sphere.
+// geometrical average of the origins of the rays", Fig. 3 b: the directions as traced), with
+// params->gradients their translational gradients as well (rc_decomp_fit_with_gradients; all
+// zero without), and the counts of kept rays and of rays that hit inside its bounding sphere.
 RC_FUNC ClusterFit rc_decomp_fit_cluster(const DecompParams* params,
                                          RC_GLOBAL const ClusterRay* rays) {
-    ShNormalEquations e;
-    rc_decomp_normal_equations_init(&e);
+    ClusterFit fit;
+    if (params->gradients != 0) {
+        rc_decomp_fit_with_gradients(params, rays, &fit);
+    } else {
+        ShNormalEquations e;
+        rc_decomp_normal_equations_init(&e);
+        for (int r = 0; r < params->cluster_rays; ++r) {
+            if (rays[r].kept != 0) {
+                rc_decomp_normal_equations_add(&e, rays[r].direction.xyz, rays[r].radiance.xyz);
+            }
+        }
+        rc_decomp_solve(&e, params->ridge, &fit.sample);
+        for (int i = 0; i < RC_DECOMP_SH_COEFFICIENTS; ++i) {
+            fit.gradient.along_x[i] = fit.gradient.along_y[i] = fit.gradient.along_z[i] =
+                (float4)(0.0f);
+        }
+        fit.kept = e.kept;
+    }
     uint inside = 0;
     for (int r = 0; r < params->cluster_rays; ++r) {
-        if (rays[r].kept != 0) {
-            rc_decomp_normal_equations_add(&e, rays[r].direction.xyz, rays[r].radiance.xyz);
-        }
         inside += rays[r].inside != 0 ? 1u : 0u;
     }
-    ClusterFit fit;
-    rc_decomp_solve(&e, params->ridge, &fit.sample);
-    fit.kept = e.kept;
     fit.inside = inside;
     fit.pad0 = fit.pad1 = 0;
     return fit;

@@ -43,3 +43,23 @@ __kernel void decomp_sh_terms(uint begin, uint end, __global const ShSample* sam
     irradiance[q] = (float4)(rc_decomp_sh_irradiance(&s, normals[q].xyz), 0.0f);
     radiance[q] = (float4)(rc_decomp_sh_radiance(&s, normals[q].xyz), 0.0f);
 }
+
+// Item q: I_D about the unit normal normals[q] at points[q] of the single far-field sample (its
+// coefficients, its gradients and its position centre[0]) as the interpolation reads it there
+// (rc_decomp_interpolate's rc_decomp_add_sample) into irradiance[q].
+__kernel void decomp_sh_irradiance_at(uint begin, uint end, __global const ShSample* coefficients,
+                                      __global const ShGradient* gradients,
+                                      __global const Record* centre, __global const float4* points,
+                                      __global const float4* normals, __global float4* irradiance) {
+    const uint q = begin + (uint)get_global_id(0);
+    if (q >= end) {
+        return;
+    }
+    const FarCoefficients far = {coefficients, gradients};
+    ShSample s;
+    for (int i = 0; i < RC_DECOMP_SH_COEFFICIENTS; ++i) {
+        s.coefficients[i] = (float4)(0.0f);
+    }
+    rc_decomp_add_sample(&far, centre, 0, 1.0f, points[q].xyz, &s);
+    irradiance[q] = (float4)(rc_decomp_sh_irradiance(&s, normals[q].xyz), 0.0f);
+}

@@ -52,13 +52,15 @@ RC_FUNC GBufferSample rc_decomp_gbuffer_sample(const DecompParams* params, const
 }
 
 // The far-field samples as the kernels read them: a record grid over their reach (the shared
-// record layout: position = the cluster's centre, radius = its reach) and their coefficients.
+// record layout: position = the cluster's centre, radius = its reach), their coefficients and
+// their gradients (null without --decomp-gradients on).
 typedef struct FarField {
     RecordGrid grid;
     RC_GLOBAL const int* cell_start;
     RC_GLOBAL const int* cell_samples;
     RC_GLOBAL const Record* samples;
     RC_GLOBAL const ShSample* coefficients;
+    RC_GLOBAL const ShGradient* gradients;
 } FarField;
 
 // I_D and I_N at a G-buffer entry (eq. 3 and 4): the far-field samples interpolated at its point,
@@ -79,8 +81,9 @@ RC_FUNC DecompIrradiance rc_decomp_irradiance(const FarField* far, const NearFie
     const int cell = rc_ic_grid_cell(&far->grid, p);
     const int begin = cell < 0 ? 0 : far->cell_start[cell];
     const int end = cell < 0 ? 0 : far->cell_start[cell + 1];
+    const FarCoefficients coefficients = {far->coefficients, far->gradients};
     e.far_samples = rc_decomp_interpolate(far->cell_samples, begin, end, far->samples,
-                                          far->coefficients, p, n, &radiance);
+                                          &coefficients, p, n, &radiance);
     e.far = (float4)(rc_decomp_sh_irradiance(&radiance, n), 0.0f);
     uint count = 0;
     uint rays = 0;

@@ -24,6 +24,7 @@ RC_FUNC ClusterRay rc_decomp_trace_cluster_ray(const DecompParams* params, const
     const Ray ray = rc_decomp_cluster_ray(params, cluster, members, gbuffer, r, &rng);
     ClusterRay out;
     out.direction = (float4)(ray.direction.xyz, 0.0f);
+    out.offset = (float4)(ray.origin.xyz - cluster->centre.xyz, 0.0f);
     out.radiance = (float4)(0.0f);
     out.pad0 = out.pad1 = 0;
     const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);

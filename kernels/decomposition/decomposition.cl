@@ -95,22 +95,24 @@ __kernel void decomp_radiosity_coverage(uint begin, uint end, RecordGrid far_gri
     if (t >= end) {
         return;
     }
-    const FarField far = {far_grid, far_start, far_samples, samples, coefficients};
+    const FarField far = {far_grid, far_start, far_samples, samples, coefficients, 0};
     covered[t] = rc_decomp_triangle_covered(&far, near_triangles + t);
 }
 
-// Item t: B(t) / pi of split triangle t gathered from the decomposition's two terms into
-// radiance[t], the near triangles' radiosities read from `previous` (the last pass's) when
-// with_near, I_N taken as 0 otherwise (the first pass); where covered[t] is 0, traced[t] (path
-// traced) instead. counters[0] counts the rays.
+// Item t: B(t) / pi of split triangle t gathered from the decomposition's two terms (the far
+// field's gradients read with params.gradients) into radiance[t], the near triangles'
+// radiosities read from `previous` (the last pass's) when with_near, I_N taken as 0 otherwise
+// (the first pass); where covered[t] is 0, traced[t] (path traced) instead. counters[0] counts
+// the rays.
 __kernel void decomp_radiosity_gather(
     uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS, RecordGrid far_grid,
     __global const int* far_start, __global const int* far_samples, __global const Record* samples,
-    __global const ShSample* coefficients, RecordGrid near_grid, __global const int* near_start,
-    __global const int* near_list, __global const NearTriangle* near_triangles,
-    __global const float4* direct, __global const float4* reflectance, __global const uint* covered,
-    __global const float4* traced, __global const float4* previous, uint with_near,
-    __global float4* radiance, __global uint* counters) {
+    __global const ShSample* coefficients, __global const ShGradient* gradients,
+    RecordGrid near_grid, __global const int* near_start, __global const int* near_list,
+    __global const NearTriangle* near_triangles, __global const float4* direct,
+    __global const float4* reflectance, __global const uint* covered, __global const float4* traced,
+    __global const float4* previous, uint with_near, __global float4* radiance,
+    __global uint* counters) {
     const uint t = begin + (uint)get_global_id(0);
     if (t >= end) {
         return;
@@ -120,7 +122,8 @@ __kernel void decomp_radiosity_gather(
         return;
     }
     const SceneData scene = RC_SCENE_DATA();
-    const FarField far = {far_grid, far_start, far_samples, samples, coefficients};
+    const FarField far = {far_grid, far_start,    far_samples,
+                          samples,  coefficients, params.gradients != 0 ? gradients : 0};
     const NearField near = rc_decomp_near_field(near_grid, near_start, near_list, near_triangles,
                                                 previous, &params, &scene);
     uint rays = 0;
@@ -152,8 +155,8 @@ __kernel void decomp_cluster_rays(
     atomic_add(&counters[0], rays);
 }
 
-// Item c: batch cluster c's least-squares fit of L_D* to its kept rays (in ray order) and its
-// rays' counts.
+// Item c: batch cluster c's least-squares fit of L_D* to its kept rays (in ray order; with
+// params.gradients first order in the rays' origins) and its rays' counts.
 __kernel void decomp_fit(uint begin, uint end, DecompParams params, __global const ClusterRay* rays,
                          __global ClusterFit* fits) {
     const uint c = begin + (uint)get_global_id(0);
@@ -163,12 +166,14 @@ __kernel void decomp_fit(uint begin, uint end, DecompParams params, __global con
     fits[c] = rc_decomp_fit_cluster(&params, rays + (size_t)c * (uint)params.cluster_rays);
 }
 
-// Item i: I_D and I_N at G-buffer entry i (eq. 3, 4) into irradiance[i].
+// Item i: I_D and I_N at G-buffer entry i (eq. 3, 4) into irradiance[i] (the far field's
+// gradients read with params.gradients).
 __kernel void decomp_irradiance(uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
                                 __global const GBufferSample* gbuffer, RecordGrid far_grid,
                                 __global const int* far_start, __global const int* far_samples,
                                 __global const Record* samples,
-                                __global const ShSample* coefficients, RecordGrid near_grid,
+                                __global const ShSample* coefficients,
+                                __global const ShGradient* gradients, RecordGrid near_grid,
                                 __global const int* near_start, __global const int* near_list,
                                 __global const NearTriangle* near_triangles,
                                 __global const float4* radiance,
@@ -178,7 +183,8 @@ __kernel void decomp_irradiance(uint begin, uint end, DecompParams params, RC_SC
         return;
     }
     const SceneData scene = RC_SCENE_DATA();
-    const FarField far = {far_grid, far_start, far_samples, samples, coefficients};
+    const FarField far = {far_grid, far_start,    far_samples,
+                          samples,  coefficients, params.gradients != 0 ? gradients : 0};
     const NearField near = rc_decomp_near_field(near_grid, near_start, near_list, near_triangles,
                                                 radiance, &params, &scene);
     const GBufferSample g = gbuffer[i];

@@ -47,8 +47,10 @@ typedef struct DecompParams {
     float ridge;          // Tikhonov weight of the fit, per ray, relative to 1 / (4 pi)
     int count_emission;   // 1 to count emission the rays see (tests)
     int near_visibility;  // 1: a shadow ray tests each near triangle (--decomp-visibility rays)
-    int pad1;
-    int pad2;
+    int gradients;  // 1: the fit adds translational gradients to the samples (--decomp-gradients)
+    // Tikhonov weight of the fit's gradient part, per ray, relative to 1 / (4 pi), the offsets
+    // in units of the kept origins' RMS distance from the centre (rc_decomp_fit_with_gradients)
+    float gradient_ridge;
 } DecompParams;
 
 // A cluster of shading points (§4.1) on the device: its members are G-buffer entries
@@ -66,6 +68,7 @@ typedef struct DecompCluster {
 // than alpha are discarded").
 typedef struct ClusterRay {
     float4 direction;  // xyz: the unit world direction; w: 0
+    float4 offset;     // xyz: its origin less its cluster's centre (the fit's gradients); w: 0
     float4 radiance;   // rgb: the radiance it brings back (0 when discarded); w: 0
     int kept;          // 1: its hit lies at least alpha away (or it misses): it enters the fit
     int inside;        // 1: its hit lies inside the cluster's bounding sphere (§4.1's split test)
@@ -79,9 +82,20 @@ typedef struct ShSample {
     float4 coefficients[RC_DECOMP_SH_COEFFICIENTS];  // rgb per function; w: 0
 } ShSample;
 
+// The translational gradient of a far-field sample's coefficients: coefficient i at x is
+// coefficients[i] + along_x[i] (x - c).x + along_y[i] (x - c).y + along_z[i] (x - c).z, c the
+// sample's position (its cluster's centre), per colour channel. All zero without
+// --decomp-gradients on.
+typedef struct ShGradient {
+    float4 along_x[RC_DECOMP_SH_COEFFICIENTS];  // rgb per function, per scene unit; w: 0
+    float4 along_y[RC_DECOMP_SH_COEFFICIENTS];
+    float4 along_z[RC_DECOMP_SH_COEFFICIENTS];
+} ShGradient;
+
 // A cluster's fit and what its rays saw.
 typedef struct ClusterFit {
-    ShSample sample;
+    ShSample sample;  // the coefficients at the cluster's centre
+    ShGradient gradient;
     uint kept;    // rays in the fit
     uint inside;  // rays whose hit lies inside the bounding sphere
     uint pad0;
@@ -128,6 +142,8 @@ RC_SHARED_END
     FIELD(DecompParams, ridge)                  \
     FIELD(DecompParams, count_emission)         \
     FIELD(DecompParams, near_visibility)        \
+    FIELD(DecompParams, gradients)              \
+    FIELD(DecompParams, gradient_ridge)         \
     STRUCT(DecompCluster)                       \
     FIELD(DecompCluster, centre)                \
     FIELD(DecompCluster, test_radius)           \
@@ -136,13 +152,19 @@ RC_SHARED_END
     FIELD(DecompCluster, stream)                \
     STRUCT(ClusterRay)                          \
     FIELD(ClusterRay, direction)                \
+    FIELD(ClusterRay, offset)                   \
     FIELD(ClusterRay, radiance)                 \
     FIELD(ClusterRay, kept)                     \
     FIELD(ClusterRay, inside)                   \
     STRUCT(ShSample)                            \
     FIELD(ShSample, coefficients)               \
+    STRUCT(ShGradient)                          \
+    FIELD(ShGradient, along_x)                  \
+    FIELD(ShGradient, along_y)                  \
+    FIELD(ShGradient, along_z)                  \
     STRUCT(ClusterFit)                          \
     FIELD(ClusterFit, sample)                   \
+    FIELD(ClusterFit, gradient)                 \
     FIELD(ClusterFit, kept)                     \
     FIELD(ClusterFit, inside)                   \
     STRUCT(NearTriangle)                        \
@@ -160,9 +182,10 @@ RC_SHARED_END
 #ifndef __OPENCL_VERSION__
 static_assert(sizeof(rc::shared::DecompParams) == 64);
 static_assert(sizeof(rc::shared::DecompCluster) == 32);
-static_assert(sizeof(rc::shared::ClusterRay) == 48);
+static_assert(sizeof(rc::shared::ClusterRay) == 64);
 static_assert(sizeof(rc::shared::ShSample) == 144);
-static_assert(sizeof(rc::shared::ClusterFit) == 160);
+static_assert(sizeof(rc::shared::ShGradient) == 432);
+static_assert(sizeof(rc::shared::ClusterFit) == 592);
 static_assert(sizeof(rc::shared::NearTriangle) == 48);
 static_assert(sizeof(rc::shared::DecompIrradiance) == 48);
 #endif

@@ -10,9 +10,10 @@ For each scene, at --spp camera samples per pixel (default 4, the sweep's for th
 methods): renders `--method ic` at its defaults (the irradiance cache the issue names; and
 `ic --ic-ivg`, irradiance caching over the same grid the decomposition reads, with
 --with-ic-ivg), then `--method decomposition` at its defaults and over a ladder of settings
-(--source x --rays x --alpha x --cluster x --visibility x --radiosity: --decomp-source,
---decomp-rays, --alpha, --decomp-cluster, --decomp-visibility, --decomp-radiosity), each point --repeats times in rounds (median
-render time).
+(--source x --rays x --alpha x --cluster x --visibility x --radiosity x --gradients:
+--decomp-source, --decomp-rays, --alpha, --decomp-cluster, --decomp-visibility,
+--decomp-radiosity, --decomp-gradients), each point --repeats times in rounds (median render
+time).
 Every image is measured against the scene's reference: relMSE of the beauty and of the indirect
 layer (`radcache compare`). For each ic run it names the fastest decomposition setting whose
 relMSE (of the layer --layer, default indirect) is at most ic's, and the ratios of render time
@@ -24,7 +25,8 @@ loading, device start and image writing excluded).
 
 Usage: tools/bench/decomposition_vs_ic.py [--scenes relief] [--spp 4] [--source grid path]
            [--alpha 1%] [--cluster 10% 5% 2%] [--rays 512 2048] [--visibility heuristic]
-           [--radiosity gathered] [--repeats 2] [--with-ic-ivg] [--layer indirect]
+           [--radiosity gathered] [--gradients on] [--repeats 2] [--with-ic-ivg]
+           [--layer indirect]
            [--out build/bench/decomposition]
            [-- extra render options]
 Writes OUT/decomposition_vs_ic.json (every run) and OUT/decomposition_vs_ic.md (the tables),
@@ -78,14 +80,16 @@ def runs_of(args):
         runs.append(("ic-ivg", "ic", "--ic-ivg", ["--method", "ic", "--ic-ivg"] + spp))
     runs.append(("decomposition", "decomposition", "defaults",
                  ["--method", "decomposition"] + spp))
-    for source, rays, alpha, size, visibility, radiosity in itertools.product(
-            args.source, args.rays, args.alpha, args.cluster, args.visibility, args.radiosity):
-        setting = "%s, alpha %s, cluster %s, %d rays, %s, %s radiosity" % (
-            source, alpha, size, rays, visibility, radiosity)
+    for source, rays, alpha, size, visibility, radiosity, gradients in itertools.product(
+            args.source, args.rays, args.alpha, args.cluster, args.visibility, args.radiosity,
+            args.gradients):
+        setting = "%s, alpha %s, cluster %s, %d rays, %s, %s radiosity, gradients %s" % (
+            source, alpha, size, rays, visibility, radiosity, gradients)
         runs.append(("decomposition", "decomposition", setting,
                      ["--method", "decomposition", "--decomp-source", source, "--alpha", alpha,
                       "--decomp-cluster", size, "--decomp-rays", str(rays),
-                      "--decomp-visibility", visibility, "--decomp-radiosity", radiosity]
+                      "--decomp-visibility", visibility, "--decomp-radiosity", radiosity,
+                      "--decomp-gradients", gradients]
                      + spp))
     return runs
 
@@ -186,6 +190,9 @@ def main():
                         default=["gathered"],
                         help="the near triangles' radiosity (--decomp-radiosity; default "
                              "%(default)s)")
+    parser.add_argument("--gradients", nargs="+", choices=["off", "on"], default=["on"],
+                        help="the far field's translational gradients (--decomp-gradients; "
+                             "default %(default)s)")
     parser.add_argument("--spp", type=int, default=4,
                         help="camera samples per pixel of every run (default %(default)s)")
     parser.add_argument("--repeats", type=int, default=2)

@@ -20,6 +20,7 @@ struct FieldValues {
           far_list(input.fields.far_list.download()),
           far_records(input.fields.far_records.download()),
           far_coefficients(input.fields.far_coefficients.download()),
+          far_gradients(input.fields.far_gradients.download()),
           near_start(input.fields.near_start.download()),
           near_list(input.fields.near_list.download()),
           triangles(input.fields.triangles.download()),
@@ -29,6 +30,7 @@ struct FieldValues {
     std::vector<int> far_list;
     std::vector<shared::Record> far_records;
     std::vector<shared::ShSample> far_coefficients;
+    std::vector<shared::ShGradient> far_gradients;
     std::vector<int> near_start;
     std::vector<int> near_list;
     std::vector<shared::NearTriangle> triangles;
@@ -43,14 +45,24 @@ struct PeerCopies {
           far_list(context, values.far_list, "decomp_far_list"),
           far_records(context, values.far_records, "decomp_far_records"),
           far_coefficients(context, values.far_coefficients, "decomp_far_sh"),
+          far_gradients(context, values.far_gradients, "decomp_far_gradients"),
           near_start(context, values.near_start, "decomp_near_start"),
           near_list(context, values.near_list, "decomp_near_list"),
           triangles(context, values.triangles, "decomp_triangles"),
           radiance(context, values.radiance, "decomp_radiance") {}
 
     DecompFields fields(const DecompPassInput& input) const {
-        return {input.fields.far_grid,  far_start,  far_list,  far_records, far_coefficients,
-                input.fields.near_grid, near_start, near_list, triangles,   radiance};
+        return {input.fields.far_grid,
+                far_start,
+                far_list,
+                far_records,
+                far_coefficients,
+                far_gradients,
+                input.fields.near_grid,
+                near_start,
+                near_list,
+                triangles,
+                radiance};
     }
 
     Buffer<shared::GBufferSample> gbuffer;
@@ -58,6 +70,7 @@ struct PeerCopies {
     Buffer<int> far_list;
     Buffer<shared::Record> far_records;
     Buffer<shared::ShSample> far_coefficients;
+    Buffer<shared::ShGradient> far_gradients;
     Buffer<int> near_start;
     Buffer<int> near_list;
     Buffer<shared::NearTriangle> triangles;
@@ -88,8 +101,8 @@ struct PassDevice {
         const DecompFields& f = fields;
         frame.context.launch_range(evaluate, begin * spp, end * spp, input.params, scene, gbuffer,
                                    f.far_grid.grid, f.far_start, f.far_list, f.far_records,
-                                   f.far_coefficients, f.near_grid.grid, f.near_start, f.near_list,
-                                   f.triangles, f.radiance, terms);
+                                   f.far_coefficients, f.far_gradients, f.near_grid.grid,
+                                   f.near_start, f.near_list, f.triangles, f.radiance, terms);
         frame.context.launch_range(shade, begin, end, input.params, input.camera, scene, terms,
                                    film, counters);
     }

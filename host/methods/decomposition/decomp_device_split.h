@@ -48,6 +48,7 @@ struct DecompFields {
     const Buffer<int>& far_list;
     const Buffer<shared::Record>& far_records;
     const Buffer<shared::ShSample>& far_coefficients;
+    const Buffer<shared::ShGradient>& far_gradients;  // all zero without --decomp-gradients on
     const RecordGridData& near_grid;
     const Buffer<int>& near_start;
     const Buffer<int>& near_list;

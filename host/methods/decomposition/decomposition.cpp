@@ -33,6 +33,13 @@ constexpr size_t kMaxNearTriangles = size_t{1} << 22;
 // quarter of the sphere within a few per cent of its irradiance, where no weight lets the
 // unsampled directions swing (docs/decomposition.md).
 constexpr float kRidge = 1e-3f;
+// The Tikhonov weight of the gradient part of the first-order fit (--decomp-gradients on), per
+// kept ray relative to 1 / (4 pi), the offsets in units of their RMS distance from the centre
+// (rc_decomp_fit_with_gradients): an axis along which the cluster's origins spread with mean
+// square v of that unit keeps v / (v + 0.01) of its derivative, so a flat cluster's normal gets
+// none and an axis spread less than a tenth of the RMS distance keeps at most half
+// (docs/decomposition.md).
+constexpr float kGradientRidge = 1e-2f;
 // A far-field sample is interpolated within kReach times its cluster's bounding radius, that
 // radius taken as at least kMinRadiusFootprints pixel footprints (a cluster of one point).
 // Measured on the Cornell box (docs/decomposition.md): 1.5 beats 2 and 1.2.
@@ -206,9 +213,9 @@ void IrradianceDecomposition::gather_radiosity(int passes, int traced_samples) {
         const unsigned with_near = pass > 0 ? 1u : 0u;
         context_.launch(kernel("decomp_radiosity_gather"), count, params_,
                         SceneArguments(bvh_, device_scene_), far_grid_.grid, far_start_, far_list_,
-                        far_records_, far_coefficients_, near_grid_.grid, near_start_, near_list_,
-                        triangle_buffer_, direct, reflectance, covered, traced, previous, with_near,
-                        radiance_buffer_, counters);
+                        far_records_, far_coefficients_, far_gradients_, near_grid_.grid,
+                        near_start_, near_list_, triangle_buffer_, direct, reflectance, covered,
+                        traced, previous, with_near, radiance_buffer_, counters);
     }
     stats_.radiosity_rays += counters.download()[0];
 }
@@ -313,6 +320,7 @@ void IrradianceDecomposition::sample_far_field(const DecompositionOptions& optio
             s.members = static_cast<uint32_t>(c.members.size());
             s.kept_rays = fits[b].kept;
             s.sh = fits[b].sample;
+            s.gradient = fits[b].gradient;
             far_.push_back(s);
         }
     }
@@ -325,11 +333,13 @@ void IrradianceDecomposition::build_far_grid() {
     std::vector<float> reach;
     std::vector<glm::vec3> normals;
     std::vector<shared::ShSample> coefficients;
+    std::vector<shared::ShGradient> gradients;
     for (const FarSample& s : far_) {
         centres.push_back(s.centre);
         normals.push_back(s.normal);
         reach.push_back(s.reach);
         coefficients.push_back(s.sh);
+        gradients.push_back(s.gradient);
     }
     const std::vector<shared::Record> records = reach_records(centres, reach, normals);
     far_grid_ = build_record_grid(records, 1.0f);
@@ -337,6 +347,7 @@ void IrradianceDecomposition::build_far_grid() {
     far_list_ = Buffer<int>(context_, far_grid_.cell_records, "decomp_far_list");
     far_records_ = Buffer<shared::Record>(context_, records, "decomp_far_records");
     far_coefficients_ = Buffer<shared::ShSample>(context_, coefficients, "decomp_far_sh");
+    far_gradients_ = Buffer<shared::ShGradient>(context_, gradients, "decomp_far_gradients");
 }
 
 Buffer<shared::DecompIrradiance> IrradianceDecomposition::evaluate(
@@ -344,8 +355,8 @@ Buffer<shared::DecompIrradiance> IrradianceDecomposition::evaluate(
     Buffer<shared::DecompIrradiance> out(context_, count, "decomp_irradiance");
     context_.launch(kernel("decomp_irradiance"), count, params_,
                     SceneArguments(bvh_, device_scene_), points, far_grid_.grid, far_start_,
-                    far_list_, far_records_, far_coefficients_, near_grid_.grid, near_start_,
-                    near_list_, triangle_buffer_, radiance_buffer_, out);
+                    far_list_, far_records_, far_coefficients_, far_gradients_, near_grid_.grid,
+                    near_start_, near_list_, triangle_buffer_, radiance_buffer_, out);
     return out;
 }
 
@@ -398,9 +409,10 @@ void add_evaluation_stats(const std::vector<shared::DecompIrradiance>& terms,
 std::vector<shared::float4> IrradianceDecomposition::pass_two(size_t samples) {
     auto start = SteadyClock::now();
     if (frame_devices(frame_) > 1) {
-        const DecompFields fields{far_grid_,         far_start_,      far_list_,   far_records_,
-                                  far_coefficients_, near_grid_,      near_start_, near_list_,
-                                  triangle_buffer_,  radiance_buffer_};
+        const DecompFields fields{far_grid_,        far_start_,        far_list_,
+                                  far_records_,     far_coefficients_, far_gradients_,
+                                  near_grid_,       near_start_,       near_list_,
+                                  triangle_buffer_, radiance_buffer_};
         DecompPassOutput out = decomp_device_pass(
             frame_, {params_, camera_, source_->build_options(), gbuffer_, samples_, fields});
         add_evaluation_stats(out.terms, samples_, &stats_);
@@ -458,6 +470,8 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
     params_.ridge = kRidge;
     params_.count_emission = options.count_emission ? 1 : 0;
     params_.near_visibility = options.visibility_rays ? 1 : 0;
+    params_.gradients = options.gradients ? 1 : 0;
+    params_.gradient_ridge = kGradientRidge;
     camera_ = camera_params(scene_.camera, width, height);
 
     auto start = SteadyClock::now();

@@ -64,6 +64,10 @@ struct DecompositionOptions {
     // Test each near triangle that passes the paper's heuristic with a shadow ray to its centroid
     // (--decomp-visibility rays) instead of taking it as visible.
     bool visibility_rays = false;
+    // Fit each far-field sample's translational gradient with its coefficients and interpolate
+    // with it (--decomp-gradients on, the default; rc_decomp_fit_with_gradients; measured in
+    // docs/decomposition.md).
+    bool gradients = true;
     // The coarse solution the rays read at their hits (the method's: the irradiance vector grid;
     // path continuation in tests); required.
     const RadianceSource* source = nullptr;
@@ -78,6 +82,7 @@ struct FarSample {
     uint32_t members = 0;    // its cluster's shading points
     uint32_t kept_rays = 0;  // its rays that entered the fit
     shared::ShSample sh{};
+    shared::ShGradient gradient{};  // all zero without gradients
 };
 
 struct DecompositionStats {
@@ -182,6 +187,7 @@ class IrradianceDecomposition : private FrameBound {
     Buffer<int> far_list_;
     Buffer<shared::Record> far_records_;
     Buffer<shared::ShSample> far_coefficients_;
+    Buffer<shared::ShGradient> far_gradients_;
     std::map<std::string, Kernel> kernels_;  // by name, from the program built for the source
     DecompositionStats stats_;
 };

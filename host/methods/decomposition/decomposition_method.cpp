@@ -102,6 +102,7 @@ nlohmann::json stats_json(const DecompositionStats& s, const DecompositionOption
             {"cluster_rays_traced", s.cluster_rays},
             {"near_rays", s.near_rays},
             {"visibility", options.visibility_rays ? "rays" : "heuristic"},
+            {"gradients", options.gradients ? "on" : "off"},
             {"shading_rays", s.shading_rays},
             {"rays_per_pixel", static_cast<double>(frame_rays) / static_cast<double>(pixels)},
             {"seconds",
@@ -173,6 +174,12 @@ class Decomposition final : public Method {
                         kExitUsage);
         }
         options_.visibility_rays = visibility == "rays";
+        const std::string gradients = arguments.value("--decomp-gradients", "on");
+        if (gradients != "on" && gradients != "off") {
+            throw Error("--decomp-gradients: expected on or off, got '" + gradients + "'",
+                        kExitUsage);
+        }
+        options_.gradients = gradients == "on";
     }
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
@@ -269,6 +276,10 @@ std::vector<OptionSpec> decomposition_option_specs() {
                    "the back-facing and those below the horizon; default) or rays (of those, the "
                    "ones a shadow ray to the centroid reaches)"}
             .one_of({"heuristic", "rays"}),
+        OptionSpec{"--decomp-gradients", "", "on|off",
+                   "decomposition: fit each far-field sample's translational gradient from its "
+                   "rays' origins and interpolate with it (default on)"}
+            .one_of({"on", "off"}),
         OptionSpec{"--decomp-radiosity", "", "NAME",
                    "decomposition: the near triangles' radiosity B(t): gathered (from the "
                    "decomposition's own far field and near field at the triangles; default with "
