@@ -119,12 +119,7 @@ double TemporalIrradianceCache::adopt(int level, int frame, const RecordStore& p
         r.next = carried[k].next;
         r.site_moves = carried[k].site_moves;
         const float change = temporal_change(r.computed.payload, r.next);
-        // Only the first level's records are replaced and blend towards their replacements: a
-        // deeper record's lifespan is not cut at the clip's last frame (it would be recomputed
-        // there for nothing).
-        r.lifespan = level == 0 ? temporal_lifespan_in_clip(change, temporal_, r.site_moves, frame,
-                                                            last_frame_)
-                                : temporal_lifespan(change, temporal_, r.site_moves);
+        r.lifespan = temporal_lifespan_in_clip(change, temporal_, r.site_moves, frame, last_frame_);
         lifespans += r.lifespan;
         if (k < replaced.size()) {
             records[replaced[k]].successor = static_cast<int>(records.size());
