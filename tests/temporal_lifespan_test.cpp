@@ -449,108 +449,119 @@ void print_table(const char* title, const std::vector<Studied>& studied,
     }
 }
 
-// The temporal render's records created at the study frames against fresh records: the estimate
-// tracks the true one-frame change (it is no noise: correlated with the truth), and records
-// whose estimated lifespan is the longest saw little change.
-TEST(TemporalLifespan, EstimateAgainstFreshRecordsOnTheMovingSphere) {
-    const StudySize size = study_size();
-    MovingSphereFrames frames;
-    const Scene base = frames.posed(0);
-    const IrradianceCacheOptions ic = render_options(size, base);
-    TemporalOptions temporal;
-    temporal.enabled = true;
-    TemporalIrradianceCache cache(ic, temporal, 0, size.clip_end + 1);
-    FrameHooks hooks;
-    hooks.visit_frame = [&](int other, const std::function<void(const FrameScene&)>& use) {
-        use(frames.at(other));
-    };
-    for (int f = 0; f <= size.clip_end; ++f) {
-        cache.render_frame(frames.at(f), hooks);
+// The one-frame estimates of `studied` (records at `sites` created at t0) by reprojection, the
+// estimates h frames ahead, a fresh one-frame change at the render's rays and the oracle's under
+// other streams, then their true changes (measure_truth).
+void estimate_and_measure(MovingSphereFrames& frames, int t0, const StudySize& size,
+                          const IrradianceCacheOptions& ic, const TemporalOptions& temporal,
+                          const std::vector<RecordSite>& sites, std::vector<Studied>* studied) {
+    const Scene next = frames.posed(t0 + 1);
+    std::vector<CarriedRecord> carried;
+    const auto e0 = fresh_records(frames.at(t0), sites, ic, &next, &carried);
+    IrradianceCacheOptions oracle = ic;
+    oracle.rays = size.oracle_rays;
+    const auto oracle0 = fresh_records(frames.at(t0), sites, oracle);
+    const auto own1 = fresh_records(frames.at(t0 + 1), sites, ic);
+    // The oracle's own noise: its one-frame change under other random streams.
+    IrradianceCacheOptions other_seed = oracle;
+    other_seed.seed = oracle.seed + 1;
+    const auto other0 = fresh_records(frames.at(t0), sites, other_seed);
+    const auto other1 = fresh_records(frames.at(t0 + 1), sites, other_seed);
+    for (size_t i = 0; i < sites.size(); ++i) {
+        Studied& s = (*studied)[i];
+        s.estimate = temporal_change(e0[i], carried[i].next);
+        s.own_change = temporal_change(e0[i], own1[i]);
+        s.ahead[1] = s.estimate;
+        s.other_change = temporal_change(other0[i], other1[i]);
     }
-    std::vector<Studied> all;
-    std::vector<Studied> ride;
-    for (int t0 : size.study_frames) {
-        std::vector<RecordSite> sites;
-        std::vector<Studied> studied;
-        const glm::vec3 centre = frames.ball_centre(t0);
-        size_t seen = 0;
-        std::vector<RecordSite> on_ball;
-        for (const TemporalRecord& r : cache.records(0)) {
-            if (r.created == t0 && r.site_moves) {
-                on_ball.push_back(r.site);
-            }
-            if (r.created != t0 || r.site_moves) {
-                continue;
-            }
-            if (t0 == 0 && seen++ % static_cast<size_t>(size.frame0_stride) != 0) {
-                continue;
-            }
-            Studied s;
-            s.distance = glm::length(r.site.position - centre) - kBallRadius;
-            s.render_change = temporal_change(r.computed.payload, r.next);
-            s.lifespan = temporal_lifespan(s.render_change, temporal, false);
-            sites.push_back(r.site);
-            studied.push_back(s);
+    for (int h : kAhead) {
+        if (t0 + h > size.last_frame) {
+            continue;
         }
-        const Scene next = frames.posed(t0 + 1);
-        std::vector<CarriedRecord> carried;
-        const auto e0 = fresh_records(frames.at(t0), sites, ic, &next, &carried);
-        IrradianceCacheOptions oracle = ic;
-        oracle.rays = size.oracle_rays;
-        const auto oracle0 = fresh_records(frames.at(t0), sites, oracle);
-        const auto own1 = fresh_records(frames.at(t0 + 1), sites, ic);
-        // The oracle's own noise: its one-frame change under other random streams.
-        IrradianceCacheOptions other_seed = oracle;
-        other_seed.seed = oracle.seed + 1;
-        const auto other0 = fresh_records(frames.at(t0), sites, other_seed);
-        const auto other1 = fresh_records(frames.at(t0 + 1), sites, other_seed);
+        const Scene later = frames.posed(t0 + h);
+        std::vector<CarriedRecord> carried_h;
+        fresh_records(frames.at(t0), sites, ic, &later, &carried_h);
         for (size_t i = 0; i < sites.size(); ++i) {
-            studied[i].estimate = temporal_change(e0[i], carried[i].next);
-            studied[i].own_change = temporal_change(e0[i], own1[i]);
-            studied[i].ahead[1] = studied[i].estimate;
-            studied[i].other_change = temporal_change(other0[i], other1[i]);
+            Studied& s = (*studied)[i];
+            s.ahead[h] = temporal_change(e0[i], carried_h[i].next);
+            s.longest = std::max(s.longest, lifespan_ahead(s.ahead[h], h, temporal));
         }
-        for (int h : kAhead) {
-            if (t0 + h > size.last_frame) {
-                continue;
-            }
-            const Scene later = frames.posed(t0 + h);
-            std::vector<CarriedRecord> carried_h;
-            fresh_records(frames.at(t0), sites, ic, &later, &carried_h);
-            for (size_t i = 0; i < sites.size(); ++i) {
-                studied[i].ahead[h] = temporal_change(e0[i], carried_h[i].next);
-                studied[i].longest =
-                    std::max(studied[i].longest, lifespan_ahead(studied[i].ahead[h], h, temporal));
-            }
-        }
-        measure_truth(frames, t0, size.last_frame, oracle, temporal, sites, oracle0, &studied);
-        std::printf("frame %d: %zu records studied\n", t0, studied.size());
-        all.insert(all.end(), studied.begin(), studied.end());
-        // Records on the ball, riding it: their true change and lifespan. A riding site stays
-        // on the ball's surface, its normal outwards.
-        const glm::vec3 centre1 = frames.ball_centre(t0 + 1);
-        const Scene posed0 = frames.posed(t0);
-        for (const RecordSite& site : on_ball) {
-            const RecordSite moved = riding_site(site, posed0, next);
-            EXPECT_NEAR(glm::length(moved.position - centre1), kBallRadius, 0.01f * kBallRadius);
-            EXPECT_GT(glm::dot(moved.normal, glm::normalize(moved.position - centre1)), 0.95f);
-        }
-        std::vector<Studied> riding(on_ball.size());
-        const auto ball0 = fresh_records(frames.at(t0), on_ball, oracle);
-        for (Studied& r : riding) {
-            r.lifespan = temporal.max_frames;  // follow each until its change exceeds a^t
-        }
-        measure_truth(frames, t0, size.last_frame, oracle, temporal, on_ball, ball0, &riding, true);
-        ride.insert(ride.end(), riding.begin(), riding.end());
     }
-    const std::vector<Bin> by_distance = {{"d<25", -1e9, 25},     {"25<=d<75", 25, 75},
-                                          {"75<=d<150", 75, 150}, {"150<=d<300", 150, 300},
-                                          {"d>=300", 300, 1e9},   {"all", -1e9, 1e9}};
+    measure_truth(frames, t0, size.last_frame, oracle, temporal, sites, oracle0, studied);
+}
+
+// Records at `on_ball` (on the ball at t0) riding it: their true changes. A riding site stays on
+// the ball's surface at the next frame, its normal outwards.
+std::vector<Studied> study_riding(MovingSphereFrames& frames, int t0, const StudySize& size,
+                                  const IrradianceCacheOptions& ic, const TemporalOptions& temporal,
+                                  const std::vector<RecordSite>& on_ball) {
+    const glm::vec3 centre1 = frames.ball_centre(t0 + 1);
+    const Scene posed0 = frames.posed(t0);
+    const Scene posed1 = frames.posed(t0 + 1);
+    for (const RecordSite& site : on_ball) {
+        const RecordSite moved = riding_site(site, posed0, posed1);
+        EXPECT_NEAR(glm::length(moved.position - centre1), kBallRadius, 0.01f * kBallRadius);
+        EXPECT_GT(glm::dot(moved.normal, glm::normalize(moved.position - centre1)), 0.95f);
+    }
+    IrradianceCacheOptions oracle = ic;
+    oracle.rays = size.oracle_rays;
+    std::vector<Studied> riding(on_ball.size());
+    const auto ball0 = fresh_records(frames.at(t0), on_ball, oracle);
+    for (Studied& r : riding) {
+        r.lifespan = temporal.max_frames;  // follow each until its change exceeds a^t
+    }
+    measure_truth(frames, t0, size.last_frame, oracle, temporal, on_ball, ball0, &riding, true);
+    return riding;
+}
+
+// The records `cache` created at t0: those off the ball (at frame 0 every frame0_stride-th)
+// studied into *still, those on it riding it into *riding.
+void study_frame(MovingSphereFrames& frames, const TemporalIrradianceCache& cache, int t0,
+                 const StudySize& size, const IrradianceCacheOptions& ic,
+                 const TemporalOptions& temporal, std::vector<Studied>* still,
+                 std::vector<Studied>* riding) {
+    std::vector<RecordSite> sites;
+    std::vector<RecordSite> on_ball;
+    std::vector<Studied> studied;
+    const glm::vec3 centre = frames.ball_centre(t0);
+    size_t seen = 0;
+    for (const TemporalRecord& r : cache.records(0)) {
+        if (r.created != t0) {
+            continue;
+        }
+        if (r.site_moves) {
+            on_ball.push_back(r.site);
+            continue;
+        }
+        if (t0 == 0 && seen++ % static_cast<size_t>(size.frame0_stride) != 0) {
+            continue;
+        }
+        Studied s;
+        s.distance = glm::length(r.site.position - centre) - kBallRadius;
+        s.render_change = temporal_change(r.computed.payload, r.next);
+        s.lifespan = temporal_lifespan(s.render_change, temporal, false);
+        sites.push_back(r.site);
+        studied.push_back(s);
+    }
+    estimate_and_measure(frames, t0, size, ic, temporal, sites, &studied);
+    std::printf("frame %d: %zu records studied\n", t0, studied.size());
+    still->insert(still->end(), studied.begin(), studied.end());
+    const std::vector<Studied> ride = study_riding(frames, t0, size, ic, temporal, on_ball);
+    riding->insert(riding->end(), ride.begin(), ride.end());
+}
+
+const std::vector<Bin> kByDistance = {{"d<25", -1e9, 25},     {"25<=d<75", 25, 75},
+                                      {"75<=d<150", 75, 150}, {"150<=d<300", 150, 300},
+                                      {"d>=300", 300, 1e9},   {"all", -1e9, 1e9}};
+
+// The study's tables: by distance, by true change, lifespan rules, riding records.
+void print_study(const std::vector<Studied>& all, const std::vector<Studied>& ride,
+                 const TemporalOptions& temporal) {
     const std::vector<Bin> by_change = {{"true<.002", 0, 0.002},   {".002-.005", 0.002, 0.005},
                                         {".005-.01", 0.005, 0.01}, {".01-.02", 0.01, 0.02},
                                         {".02-.05", 0.02, 0.05},   {">=.05", 0.05, 1e30}};
     print_table(
-        "by distance to the ball's surface (scene units)", all, by_distance,
+        "by distance to the ball's surface (scene units)", all, kByDistance,
         [](const Studied& s) { return s.distance; }, temporal);
     print_table(
         "by true one-frame change", all, by_change,
@@ -571,12 +582,37 @@ TEST(TemporalLifespan, EstimateAgainstFreshRecordsOnTheMovingSphere) {
                      [&](const Studied& s) { return interpolated_lifespan(s, temporal); }});
     print_rules(rules, all, temporal);
     print_riding(ride, temporal);
+}
+
+// The temporal render's records created at the study frames against fresh records: the
+// reprojected one-frame change follows the true one from beside the ball to far from it, and
+// sites carried with the ball stay on it (study_riding).
+TEST(TemporalLifespan, EstimateAgainstFreshRecordsOnTheMovingSphere) {
+    const StudySize size = study_size();
+    MovingSphereFrames frames;
+    const IrradianceCacheOptions ic = render_options(size, frames.posed(0));
+    TemporalOptions temporal;
+    temporal.enabled = true;
+    TemporalIrradianceCache cache(ic, temporal, 0, size.clip_end + 1);
+    FrameHooks hooks;
+    hooks.visit_frame = [&](int other, const std::function<void(const FrameScene&)>& use) {
+        use(frames.at(other));
+    };
+    for (int f = 0; f <= size.clip_end; ++f) {
+        cache.render_frame(frames.at(f), hooks);
+    }
+    std::vector<Studied> all;
+    std::vector<Studied> ride;
+    for (int t0 : size.study_frames) {
+        study_frame(frames, cache, t0, size, ic, temporal, &all, &ride);
+    }
+    print_study(all, ride, temporal);
     ASSERT_GT(all.size(), 20u);
-    // The estimate follows the true one-frame change from near the ball to far from it: in every
-    // distance bin of at least 10 records their means agree within 2x (measured: 0.70x-0.95x at
-    // the study's size, 0.83x-1.28x by default), and near records change more than far ones.
-    for (size_t i = 0; i + 1 < by_distance.size(); ++i) {  // the last bin is all of them
-        const Bin& b = by_distance[i];
+    // In every distance bin of at least 10 records the means agree within 2x (measured:
+    // 0.70x-0.95x at the study's size, 0.83x-1.28x by default), and records near the ball are
+    // estimated to change more than far ones.
+    for (size_t i = 0; i + 1 < kByDistance.size(); ++i) {  // the last bin is all of them
+        const Bin& b = kByDistance[i];
         const BinMeans m = bin_means(all, b);
         if (m.n >= 10) {
             EXPECT_GT(m.estimate, 0.5 * m.truth) << b.name;
