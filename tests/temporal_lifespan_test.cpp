@@ -24,6 +24,7 @@
 #include "methods/temporal/temporal_cache.h"
 #include "methods/temporal/temporal_record.h"
 #include "scene/scene_loader.h"
+#include "temporal_records.h"
 #include "test_support.h"
 
 namespace rc {
@@ -125,22 +126,7 @@ std::vector<shared::IrradiancePayload> fresh_records(
     options.height = 4;
     options.spp = 1;
     options.bounces = 1;
-    IrradianceCache cache(frame);
-    std::unique_ptr<TemporalReprojection> reprojection;
-    if (next != nullptr) {
-        reprojection = std::make_unique<TemporalReprojection>(frame, *next, 4);
-        options.observer = reprojection.get();
-    }
-    cache.begin(options);
-    cache.add_records(sites);
-    if (carried != nullptr) {
-        *carried = reprojection->take(0);
-    }
-    std::vector<shared::IrradiancePayload> payloads;
-    for (size_t i = 0; i < sites.size(); ++i) {
-        payloads.push_back(cache.store(0).payload<shared::IrradiancePayload>(i));
-    }
-    return payloads;
+    return records_at_sites(frame, sites, options, next, carried);
 }
 
 // One studied record.

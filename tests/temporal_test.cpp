@@ -21,6 +21,7 @@
 #include "methods/temporal/tc_reprojection.h"
 #include "methods/temporal/temporal_record.h"
 #include "scene/scene_loader.h"
+#include "temporal_records.h"
 #include "test_support.h"
 #include "util/file_io.h"
 
@@ -106,23 +107,7 @@ std::vector<shared::IrradiancePayload> records_at(const FrameScene& frame,
                                                   uint64_t seed, int max_depth,
                                                   const Scene* next = nullptr,
                                                   std::vector<CarriedRecord>* carried = nullptr) {
-    IrradianceCache cache(frame);
-    IrradianceCacheOptions options = record_options(rays, seed, max_depth);
-    std::unique_ptr<TemporalReprojection> reprojection;
-    if (next != nullptr) {
-        reprojection = std::make_unique<TemporalReprojection>(frame, *next, 4);
-        options.observer = reprojection.get();
-    }
-    cache.begin(options);
-    cache.add_records(sites);
-    if (carried != nullptr) {
-        *carried = reprojection->take(0);
-    }
-    std::vector<shared::IrradiancePayload> payloads;
-    for (size_t i = 0; i < sites.size(); ++i) {
-        payloads.push_back(cache.store(0).payload<shared::IrradiancePayload>(i));
-    }
-    return payloads;
+    return records_at_sites(frame, sites, record_options(rays, seed, max_depth), next, carried);
 }
 
 double luminance(const shared::float4& e) { return 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z; }
