@@ -175,6 +175,29 @@ std::vector<float> brute_force_radii(const std::vector<glm::vec3>& positions,
     return radii;
 }
 
+// Record i of the fixed-point tests: in clusters of very different sizes, radii over five
+// decades, some with no hit and some limited by their method.
+struct ClusteredRecord {
+    shared::Record record;
+    RecordHostData host;
+    float limit;
+};
+
+ClusteredRecord clustered_record(std::mt19937& rng, int i) {
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const float scale = std::pow(10.0f, -2.0f + 3.0f * static_cast<float>(i % 4) / 3.0f);
+    const glm::vec3 centre = 20.0f * glm::vec3(i % 3, (i / 3) % 2, 0.5f);
+    ClusteredRecord r;
+    r.record = make_record(centre + scale * glm::vec3(unit(rng), unit(rng), unit(rng)),
+                           glm::vec3(0, 0, 1));
+    r.host.harmonic_distance =
+        i % 97 == 0 ? INFINITY : scale * std::pow(10.0f, -1.0f + 2.0f * unit(rng));
+    r.host.r_min = 0.0f;
+    r.host.r_max = 1e30f;
+    r.limit = i % 7 == 0 ? 0.5f * scale : INFINITY;
+    return r;
+}
+
 // The store's radii after several numbers of insertions, bit for bit, against brute force: the
 // greatest fixed point of R_b = min(R_b, R_a + |p_a - p_b|) over every ordered pair, relaxed in
 // sweeps until nothing changes, from each record's initial R = min(harmonic distance, limit). (A
@@ -184,25 +207,15 @@ std::vector<float> brute_force_radii(const std::vector<glm::vec3>& positions,
 // the search's whole-class fallback are exercised.
 TEST(RecordStore, InsertionReachesTheBruteForceFixedPointBitForBit) {
     std::mt19937 rng(41);
-    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     RecordStore store(0.35f, sizeof(DummyPayload));
     std::vector<glm::vec3> positions;
     std::vector<float> radii;
     size_t lowered = 0;
     for (int i = 0; i < 2500; ++i) {
-        const float scale = std::pow(10.0f, -2.0f + 3.0f * static_cast<float>(i % 4) / 3.0f);
-        const glm::vec3 centre = 20.0f * glm::vec3(i % 3, (i / 3) % 2, 0.5f);
-        shared::Record record = make_record(
-            centre + scale * glm::vec3(unit(rng), unit(rng), unit(rng)), glm::vec3(0, 0, 1));
-        RecordHostData host;
-        host.harmonic_distance =
-            i % 97 == 0 ? INFINITY : scale * std::pow(10.0f, -1.0f + 2.0f * unit(rng));
-        host.r_min = 0.0f;
-        host.r_max = 1e30f;
-        const float limit = i % 7 == 0 ? 0.5f * scale : INFINITY;
-        store.insert(record, host, dummy_payload(rng), limit);
-        positions.push_back(record_position(record));
-        radii.push_back(std::min(host.harmonic_distance, limit));
+        const ClusteredRecord r = clustered_record(rng, i);
+        store.insert(r.record, r.host, dummy_payload(rng), r.limit);
+        positions.push_back(record_position(r.record));
+        radii.push_back(std::min(r.host.harmonic_distance, r.limit));
         const size_t count = positions.size();
         if (count % 50 == 0 && (count <= 400 || count % 500 == 0)) {
             const std::vector<float> expected = brute_force_radii(positions, radii, count);
@@ -215,6 +228,64 @@ TEST(RecordStore, InsertionReachesTheBruteForceFixedPointBitForBit) {
         }
     }
     EXPECT_GT(lowered, 500u);  // clamping did most of the work
+}
+
+// Batches of records (as a placement pass inserts them), their neighbor searches on 1, 2, 3 and
+// 8 threads: after every batch the radii are brute force's fixed point bit for bit (and so equal
+// whatever the thread count and batch size), the records and payloads are stored in order.
+// Batches of up to 1500 records give every thread several hundred searches.
+TEST(RecordStore, BatchInsertionOnAnyThreadCountReachesTheBruteForceFixedPoint) {
+    const std::vector<size_t> batches = {1, 40, 259, 600, 1500, 100};
+    std::vector<ClusteredRecord> all;
+    std::vector<DummyPayload> payloads;
+    std::mt19937 rng(43);
+    size_t total = 0;
+    for (size_t size : batches) {
+        total += size;
+    }
+    std::vector<glm::vec3> positions;
+    std::vector<float> radii;
+    for (size_t i = 0; i < total; ++i) {
+        all.push_back(clustered_record(rng, static_cast<int>(i)));
+        payloads.push_back(dummy_payload(rng));
+        positions.push_back(record_position(all.back().record));
+        radii.push_back(std::min(all.back().host.harmonic_distance, all.back().limit));
+    }
+    std::vector<std::vector<float>> expected_after;  // brute force after each batch
+    size_t end = 0;
+    for (size_t size : batches) {
+        end += size;
+        expected_after.push_back(brute_force_radii(positions, radii, end));
+    }
+    for (unsigned threads : {1u, 2u, 3u, 8u}) {
+        RecordStore store(0.35f, sizeof(DummyPayload));
+        store.set_threads(threads);
+        size_t count = 0;
+        for (size_t n = 0; n < batches.size(); ++n) {
+            const size_t size = batches[n];
+            std::vector<NewRecord> batch;
+            for (size_t i = count; i < count + size; ++i) {
+                batch.push_back({all[i].record, all[i].host, &payloads[i], all[i].limit});
+            }
+            ASSERT_EQ(store.insert_batch(batch), count);
+            count += size;
+            ASSERT_EQ(store.size(), count);
+            const std::vector<float>& expected = expected_after[n];
+            size_t lowered = 0;
+            for (size_t k = 0; k < count; ++k) {
+                ASSERT_EQ(store.host_data()[k].radius, expected[k])
+                    << "record " << k << " after " << count << " on " << threads << " threads";
+                lowered += expected[k] < radii[k] ? 1 : 0;
+            }
+            if (count == total) {
+                EXPECT_GT(lowered, count / 5);  // clamping had work to do
+            }
+        }
+        for (size_t k = 0; k < total; ++k) {
+            ASSERT_EQ(record_position(store.records()[k]), positions[k]) << k;
+            ASSERT_TRUE(same_payload(store.payload<DummyPayload>(k), payloads[k])) << k;
+        }
+    }
 }
 
 // Restoring a store's records gives the same shared parts, host data, payloads and neighbor

@@ -397,9 +397,7 @@ void IrradianceCache::cover(int level, const Buffer<shared::GBufferSample>& samp
         if (timed) {
             insert_level0(computed);
         } else {
-            for (const ComputedRecord& record : computed) {
-                insert_irradiance_record(stores_[level], record);
-            }
+            insert_irradiance_records(stores_[level], computed);
         }
         stats_.passes[entry].records = computed.size();
     }
@@ -502,9 +500,7 @@ RecordSampling sampling_of(const IrradianceCacheOptions& options) {
 
 void IrradianceCache::insert_level0(const std::vector<ComputedRecord>& computed) {
     const auto start = SteadyClock::now();
-    for (const ComputedRecord& record : computed) {
-        insert_irradiance_record(stores_[0], record);
-    }
+    insert_irradiance_records(stores_[0], computed);
     stats_.insertion_seconds += seconds_since(start);
 }
 

@@ -37,6 +37,16 @@ size_t insert_irradiance_record(RecordStore& store, const ComputedRecord& comput
                         irradiance_radius_limit(computed.payload));
 }
 
+void insert_irradiance_records(RecordStore& store, const std::vector<ComputedRecord>& computed) {
+    std::vector<NewRecord> batch;
+    batch.reserve(computed.size());
+    for (const ComputedRecord& record : computed) {
+        batch.push_back(
+            {record.record, record.host, &record.payload, irradiance_radius_limit(record.payload)});
+    }
+    store.insert_batch(batch);
+}
+
 shared::IrradiancePayload device_payload(const RecordStore& store, size_t i) {
     shared::IrradiancePayload p = store.payload<shared::IrradiancePayload>(i);
     const float s = store.gradient_scale(i);

@@ -32,6 +32,8 @@ float irradiance_radius_limit(const shared::IrradiancePayload& payload);
 
 // Inserts a computed record with its gradient limit; returns its index.
 size_t insert_irradiance_record(RecordStore& store, const ComputedRecord& computed);
+// Inserts computed records in one batch (RecordStore::insert_batch: the same radii as one by one).
+void insert_irradiance_records(RecordStore& store, const std::vector<ComputedRecord>& computed);
 
 // The kernels' form of record i's payload: both gradients scaled by store.gradient_scale(i),
 // so extrapolation over a radius the clamp raised stays as bounded as over R.

@@ -181,6 +181,7 @@ void RadianceCache::add_records(const std::vector<shared::RcQuery>& sites,
         const std::vector<float> payload = payloads.download();
         const std::vector<shared::float4> distance = distances.download();
         stats_.record_rays += counters.download()[0];
+        std::vector<NewRecord> inserted(count);
         for (size_t b = 0; b < count; ++b) {
             const shared::RcQuery& q = sites[begin + b];
             RecordHostData host;
@@ -190,10 +191,11 @@ void RadianceCache::add_records(const std::vector<shared::RcQuery>& sites,
             host.r_max = std::max(host.r_min, spacing_bound(options_.max_spacing, q.footprint));
             const std::vector<float> own(payload.begin() + b * floats,
                                          payload.begin() + (b + 1) * floats);
-            store_.insert_bytes(make_record(vec3_of(q.position), vec3_of(q.normal)), host,
-                                own.data(), floats * sizeof(float),
-                                radiance_radius_limit(own, std::max(order_, 1)));
+            inserted[b] = {make_record(vec3_of(q.position), vec3_of(q.normal)), host,
+                           payload.data() + b * floats,
+                           radiance_radius_limit(own, std::max(order_, 1))};
         }
+        store_.insert_batch(inserted);
     }
 }
 

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <string>
+
+#include "util/parallel_ranges.h"
 
 namespace rc {
 
@@ -125,62 +128,123 @@ void RecordStore::visit_within(glm::vec3 p, ReachOf&& reach_of, Visit&& visit) c
 size_t RecordStore::insert_bytes(const shared::Record& record, const RecordHostData& host,
                                  const void* payload, size_t bytes, float radius_limit) {
     check_payload_size(bytes);
+    return insert_batch({{record, host, payload, radius_limit}});
+}
+
+unsigned RecordStore::threads() const { return threads_ > 0 ? threads_ : host_threads(); }
+
+size_t RecordStore::insert_batch(const std::vector<NewRecord>& batch) {
     // R from the harmonic mean distance (infinite where no ray hit), limited by the method's
     // limit (irradiance caching: the translational gradient, course "Gradient Limit on Record
     // Spacing"). Neighbor clamping works on this unclamped R; the [r_min, r_max] clamp comes after
     // it (course, "Summary of Implementation Details": "it is essential to use the original,
     // unclamped value of R").
-    float radius = std::min(host.harmonic_distance, radius_limit);
-
-    // Neighbor clamping: first the new record by every record it overlaps, then the others by it,
-    // and on from every record that changed. (The course clamps one ring of neighbors; the
-    // relaxation only goes further if a neighbor's R had been loaded from elsewhere. The result,
-    // R_j <= R_k + |p_j - p_k| for every pair, does not depend on the visiting order: a record
-    // that lowers R_j always overlaps it.) Only records that can lower a radius are visited:
-    // record k lowers R_j when R_k + d < R_j, so d < R_j; the new record lowers R_b when
-    // R_j + d < R_b <= 2^L (b of class L), so d < 2^L - R_j, and classes with 2^L <= R_j are
-    // skipped. Most overlapping pairs satisfy neither (large deeper-level records overlap
-    // thousands).
-    const glm::vec3 p = record_position(record);
-    const float reach = radius;
-    visit_within(
-        p, [reach](float) { return reach; },
-        [&](uint32_t k) {
-            const float d = glm::length(p - record_position(records_[k]));
-            if (d < radius + host_[k].radius) {
-                radius = std::min(radius, host_[k].radius + d);
-            }
-        });
-    const size_t j = records_.size();
-    records_.push_back(record);
-    host_.push_back(host);
-    const std::byte* data = static_cast<const std::byte*>(payload);
-    payloads_.insert(payloads_.end(), data, data + payload_bytes_);
-    set_radius(j, radius);
-    index_record(static_cast<uint32_t>(j));
-    std::vector<size_t> changed = {j};
+    const size_t first = records_.size();
+    std::vector<uint32_t> added;
+    added.reserve(batch.size());
+    for (const NewRecord& r : batch) {
+        const size_t j = records_.size();
+        records_.push_back(r.record);
+        host_.push_back(r.host);
+        const std::byte* data = static_cast<const std::byte*>(r.payload);
+        payloads_.insert(payloads_.end(), data, data + payload_bytes_);
+        set_radius(j, std::min(r.host.harmonic_distance, r.radius_limit));
+        index_record(static_cast<uint32_t>(j));
+        added.push_back(static_cast<uint32_t>(j));
+    }
+    // Neighbor clamping (R_b <= R_a + |p_a - p_b| for every pair) to its greatest fixed point
+    // below the initial radii: the store held it before the batch, so a pair breaks it only
+    // through a new record. First each new record is lowered by every record near it (their
+    // radii as they stand), then rounds of pushes from every record whose R was last set, until
+    // none lowers another. Each round reads the radii of the round before (the bounds are
+    // collected before any is applied) and takes the least bound per record, and float addition
+    // is monotone, so every order, split over threads or not, ends at the same fixed point, bit
+    // for bit (tests/record_store_test.cpp checks it against brute force over every pair).
+    lower(pulled_bounds(added));
+    std::vector<uint32_t> changed = std::move(added);
     while (!changed.empty()) {
-        const size_t a = changed.back();
-        changed.pop_back();
+        changed = lower(pushed_bounds(changed));
+    }
+    return first;
+}
+
+template <class BoundsOf>
+std::vector<RecordStore::Bound> RecordStore::collect_bounds(const std::vector<uint32_t>& indices,
+                                                            BoundsOf&& bounds_of) const {
+    // Below a few hundred searches a thread costs more than it saves.
+    constexpr size_t kSearchesPerThread = 256;
+    const unsigned parts = static_cast<unsigned>(std::min<size_t>(
+        threads(), (indices.size() + kSearchesPerThread - 1) / kSearchesPerThread));
+    std::vector<std::vector<Bound>> part_bounds(std::max(1u, parts));
+    parallel_ranges(indices.size(), parts, [&](size_t begin, size_t end, size_t part) {
+        for (size_t i = begin; i < end; ++i) {
+            bounds_of(indices[i], part_bounds[part]);
+        }
+    });
+    std::vector<Bound> bounds;
+    for (const std::vector<Bound>& part : part_bounds) {
+        bounds.insert(bounds.end(), part.begin(), part.end());
+    }
+    return bounds;
+}
+
+std::vector<RecordStore::Bound> RecordStore::pulled_bounds(
+    const std::vector<uint32_t>& added) const {
+    // Record k lowers R_j when R_k + d < R_j, so only records within d < R_j are visited.
+    return collect_bounds(added, [this](uint32_t j, std::vector<Bound>& out) {
+        const glm::vec3 p = record_position(records_[j]);
+        const float radius_j = host_[j].radius;
+        float radius = radius_j;
+        visit_within(
+            p, [radius_j](float) { return radius_j; },
+            [&](uint32_t k) {
+                const float d = glm::length(p - record_position(records_[k]));
+                if (k != j && d < radius_j + host_[k].radius) {
+                    radius = std::min(radius, host_[k].radius + d);
+                }
+            });
+        if (radius < radius_j) {
+            out.push_back({j, radius});
+        }
+    });
+}
+
+std::vector<RecordStore::Bound> RecordStore::pushed_bounds(
+    const std::vector<uint32_t>& changed) const {
+    // Record a lowers R_b when R_a + d < R_b <= 2^L (b of class L), so d < 2^L - R_a, and classes
+    // with 2^L <= R_a are skipped. Most overlapping pairs do not qualify (large deeper-level
+    // records overlap thousands).
+    return collect_bounds(changed, [this](uint32_t a, std::vector<Bound>& out) {
         const glm::vec3 pa = record_position(records_[a]);
         const float radius_a = host_[a].radius;
-        const size_t first_changed = changed.size();
         visit_within(
             pa, [radius_a](float bound) { return bound - radius_a; },
             [&](uint32_t b) {
-                const float d = glm::length(pa - record_position(records_[b]));
-                if (b != a && d < host_[a].radius + host_[b].radius &&
-                    host_[b].radius > host_[a].radius + d) {
-                    set_radius(b, host_[a].radius + d);
-                    changed.push_back(b);
+                const float bound = radius_a + glm::length(pa - record_position(records_[b]));
+                if (b != a && bound < host_[b].radius) {
+                    out.push_back({b, bound});
                 }
             });
-        // Re-indexed after the visit, which iterates over the classes.
-        for (size_t c = first_changed; c < changed.size(); ++c) {
-            index_record(static_cast<uint32_t>(changed[c]));
+    });
+}
+
+std::vector<uint32_t> RecordStore::lower(const std::vector<Bound>& bounds) {
+    least_bound_.resize(records_.size(), std::numeric_limits<float>::infinity());
+    std::vector<uint32_t> lowered;
+    for (const Bound& bound : bounds) {
+        float& least = least_bound_[bound.index];
+        if (least == std::numeric_limits<float>::infinity()) {  // its first bound
+            lowered.push_back(bound.index);
         }
+        least = std::min(least, bound.radius);
     }
-    return j;
+    std::sort(lowered.begin(), lowered.end());
+    for (uint32_t index : lowered) {
+        set_radius(index, least_bound_[index]);
+        least_bound_[index] = std::numeric_limits<float>::infinity();
+        index_record(index);
+    }
+    return lowered;
 }
 
 void RecordStore::index_record(uint32_t index) {

@@ -37,6 +37,15 @@ glm::vec3 record_normal(const shared::Record& record);
 // A record's shared part at p with normal n, radius 0 (set on insertion).
 shared::Record make_record(glm::vec3 p, glm::vec3 n);
 
+// A record to insert: its shared part, host data, payload (the store's payload_bytes()) and the
+// method's limit on its validity radius.
+struct NewRecord {
+    shared::Record record;
+    RecordHostData host;
+    const void* payload = nullptr;
+    float radius_limit = 0.0f;
+};
+
 class RecordStore {
    public:
     // `accuracy` a: a record influences points within a R. Every payload has `payload_bytes`.
@@ -57,6 +66,13 @@ class RecordStore {
     // The same for a payload whose size is chosen at run time: `bytes` must be payload_bytes().
     size_t insert_bytes(const shared::Record& record, const RecordHostData& host,
                         const void* payload, size_t bytes, float radius_limit);
+    // Adds records in one batch, numbered in order: the radii are those of inserting them one by
+    // one, bit for bit (neighbor clamping's greatest fixed point does not depend on the order),
+    // with the neighbor searches spread over threads(). Returns the first one's index.
+    size_t insert_batch(const std::vector<NewRecord>& batch);
+    // Host threads for the neighbor searches (0: host_threads()); any count, the same radii.
+    void set_threads(unsigned threads) { threads_ = threads; }
+    unsigned threads() const;
 
     // Restores records as they were stored (host.radius already final), for cache files.
     void restore(std::vector<shared::Record> records, std::vector<RecordHostData> host,
@@ -107,6 +123,22 @@ class RecordStore {
     template <class ReachOf, class Visit>
     void visit_within(glm::vec3 p, ReachOf&& reach_of, Visit&& visit) const;
     void index_record(uint32_t index);
+    // A lower bound proposed for record `index`'s unclamped R.
+    struct Bound {
+        uint32_t index;
+        float radius;
+    };
+    // Neighbor clamping's pull: for each record of `added`, the least R_k + |p_j - p_k| over the
+    // records k that overlap it, where lower than its R.
+    std::vector<Bound> pulled_bounds(const std::vector<uint32_t>& added) const;
+    // Its push: for each record a of `changed`, R_a + |p_a - p_b| for every record b it lowers.
+    std::vector<Bound> pushed_bounds(const std::vector<uint32_t>& changed) const;
+    // Applies the least bound per record; returns the records lowered, in index order.
+    std::vector<uint32_t> lower(const std::vector<Bound>& bounds);
+    // Calls bounds_of(i, out) for every i of `indices` over threads(), output in indices' order.
+    template <class BoundsOf>
+    std::vector<Bound> collect_bounds(const std::vector<uint32_t>& indices,
+                                      BoundsOf&& bounds_of) const;
 
     float accuracy_;
     size_t payload_bytes_;
@@ -115,6 +147,8 @@ class RecordStore {
     std::vector<std::byte> payloads_;
     std::unordered_map<int, RadiusClass> classes_;
     std::vector<int> class_of_;  // the class each record is listed in (its smallest so far)
+    unsigned threads_ = 0;
+    std::vector<float> least_bound_;  // lower()'s scratch: +inf but where a bound was proposed
 };
 
 }  // namespace rc

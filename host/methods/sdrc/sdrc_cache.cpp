@@ -158,6 +158,8 @@ void SdrcCache::add_records(const std::vector<shared::RcQuery>& sites,
         }
         build_trees_in_parallel(built);
         stats_.tree_build_seconds += seconds_since(build_start);
+        std::vector<NewRecord> inserted(count);
+        const char none = 0;
         for (size_t b = 0; b < count; ++b) {
             const shared::RcQuery& q = batch[b];
             RecordHostData host;
@@ -165,11 +167,11 @@ void SdrcCache::add_records(const std::vector<shared::RcQuery>& sites,
             host.min_distance = radius[b].y;
             host.r_min = spacing_bound(options_.min_spacing, q.footprint);
             host.r_max = std::max(host.r_min, spacing_bound(options_.max_spacing, q.footprint));
-            const char none = 0;
-            store_.insert_bytes(make_record(vec3_of(q.position), vec3_of(q.normal)), host, &none, 0,
-                                radius[b].z);
+            inserted[b] = {make_record(vec3_of(q.position), vec3_of(q.normal)), host, &none,
+                           radius[b].z};
             sites_.push_back(q);
         }
+        store_.insert_batch(inserted);
         check_memory();
     }
 }
