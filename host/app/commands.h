@@ -24,6 +24,7 @@ CommandSpec bench_all_command();
 CommandSpec bench_rays_command();
 CommandSpec bench_pt_command();
 CommandSpec bench_sh_command();
+CommandSpec bench_insertion_command();
 CommandSpec bench_compile_command();
 
 // scenes/<name>/scene.json of the working directory, else of the source tree radcache was built
