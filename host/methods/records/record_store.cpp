@@ -172,7 +172,7 @@ template <class BoundsOf>
 std::vector<RecordStore::Bound> RecordStore::collect_bounds(const std::vector<uint32_t>& indices,
                                                             BoundsOf&& bounds_of) const {
     // Below a few hundred searches a thread costs more than it saves.
-    constexpr size_t kSearchesPerThread = 256;
+    constexpr size_t kSearchesPerThread = 32;
     const unsigned parts = static_cast<unsigned>(std::min<size_t>(
         threads(), (indices.size() + kSearchesPerThread - 1) / kSearchesPerThread));
     std::vector<std::vector<Bound>> part_bounds(std::max(1u, parts));
