@@ -1,19 +1,23 @@
 // The near field (the paper, §5): the correction I_N of eq. 4 at a shading point from the split
-// triangles whose centroids lie within alpha, their form factors taken as wholly visible after
-// the paper's visibility heuristic (or, with --decomp-visibility rays, after a shadow ray to each
-// one's centroid), and their coarse radiosities.
+// triangles of its near set (decomp_near_set.h: any point, or the centroid, within alpha), their
+// form factors taken as wholly visible after the paper's visibility heuristic (or, with
+// --decomp-visibility rays, after a shadow ray to each one's centroid), and their coarse
+// radiosities.
 #pragma once
 
 #include "common/path_radiance.h"
 #include "decomposition/decomp_form_factor.h"
+#include "decomposition/decomp_near_set.h"
 #include "decomposition/decomp_sh.h"
 #include "irradiance_cache/ic_records.h"  // rc_ic_grid_cell: the record grid's cell of a point
 
 // The near triangles as the kernels read them: the triangles, the outgoing radiance of each
-// one's front, B(t) / pi (the coarse solution, emission left out), and a record grid over their
-// centroids with reach alpha (cell c lists the triangles whose centroid lies within alpha of some
-// point of it, ascending). With a scene, a triangle that passes the heuristic counts only when a
-// shadow ray reaches its centroid (--decomp-visibility rays).
+// one's front, B(t) / pi (the coarse solution, emission left out), the near set's rule, and a
+// record grid over their centroids (cell c lists, ascending, every triangle that may be in the
+// near set of some point of it: reach alpha about the centroid with the centroid rule, alpha plus
+// the farthest vertex's distance from it with the touching rule). With a scene, a triangle that
+// passes the heuristic counts only when a shadow ray reaches its centroid (--decomp-visibility
+// rays).
 typedef struct NearField {
     RecordGrid grid;
     RC_GLOBAL const int* cell_start;
@@ -21,23 +25,20 @@ typedef struct NearField {
     RC_GLOBAL const NearTriangle* triangles;
     RC_GLOBAL const float4* radiance;
     float alpha;
+    int rule;                     // RC_DECOMP_NEAR_CENTROID or RC_DECOMP_NEAR_TOUCHING
     const SceneData* visibility;  // 0: the paper's heuristic alone
 } NearField;
 
-// The near field of a kernel's arguments: B(t) / pi in `radiance`, alpha and the visibility test
-// from params (a shadow ray through `scene` with --decomp-visibility rays).
+// The near field of a kernel's arguments: B(t) / pi in `radiance`, alpha, the near set's rule and
+// the visibility test from params (a shadow ray through `scene` with --decomp-visibility rays).
 RC_FUNC NearField rc_decomp_near_field(RecordGrid grid, RC_GLOBAL const int* cell_start,
                                        RC_GLOBAL const int* cell_triangles,
                                        RC_GLOBAL const NearTriangle* triangles,
                                        RC_GLOBAL const float4* radiance, const DecompParams* params,
                                        const SceneData* scene) {
-    const NearField near = {grid,
-                            cell_start,
-                            cell_triangles,
-                            triangles,
-                            radiance,
-                            params->alpha,
-                            params->near_visibility != 0 ? scene : 0};
+    const NearField near = {
+        grid,     cell_start,    cell_triangles,   triangles,
+        radiance, params->alpha, params->near_set, params->near_visibility != 0 ? scene : 0};
     return near;
 }
 
@@ -101,10 +102,10 @@ RC_FUNC float3 rc_decomp_hidden(const ShSample* far, float3 p, float3 n, float3 
     return hidden;
 }
 
-// I_N at point p with unit normal n (eq. 4): the sum over the triangles t whose centroid lies
-// within alpha and that pass the heuristic of FF(t) [B(t) - pi L_D*(P, w_t)], w_t the direction
-// to t's centroid and L_D* read from the interpolated far field `far` (the two terms of the
-// bracket are the power the triangle reflects towards p and the distant power it hides; the
+// I_N at point p with unit normal n (eq. 4): the sum over the triangles t of p's near set
+// (rc_decomp_in_near_set) that pass the heuristic of FF(t) [B(t) - pi L_D*(P, w_t)], w_t the
+// direction to t's centroid and L_D* read from the interpolated far field `far` (the two terms of
+// the bracket are the power the triangle reflects towards p and the distant power it hides; the
 // latter by rc_decomp_hidden's quadrature). The
 // triangles are visited in the grid cell's order. *count receives the triangles summed, *rays the
 // shadow rays traced (with near->visibility; from `origin`, p's ray origin).
@@ -123,8 +124,7 @@ RC_FUNC float3 rc_decomp_near_correction(const NearField* near, const ShSample* 
         const float3 v1 = near->triangles[t].v1.xyz;
         const float3 v2 = near->triangles[t].v2.xyz;
         const float3 centroid = (v0 + v1 + v2) * (1.0f / 3.0f);
-        const float3 offset = centroid - p;
-        if (dot(offset, offset) >= near->alpha * near->alpha ||
+        if (!rc_decomp_in_near_set(near->rule, p, v0, v1, v2, near->alpha) ||
             !rc_decomp_may_see(p, n, v0, v1, v2, tolerance)) {
             continue;
         }

@@ -1,8 +1,9 @@
 // Test kernels of irradiance decomposition (tests/decomposition_test.cpp,
-// tests/shared_layout_test.cpp): the shared layouts, the form factor and the distant term, each on
-// given inputs (the fit's own kernel, decomp_fit, is the method's).
+// tests/shared_layout_test.cpp): the shared layouts, the form factor, the distant term and the
+// near correction, each on given inputs (the fit's own kernel, decomp_fit, is the method's).
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_form_factor.h"
+#include "decomposition/decomp_near.h"
 #include "shared/decomposition.h"
 
 // sizeof and offsetof of every struct of RC_DECOMP_LAYOUTS, in its order.
@@ -62,4 +63,31 @@ __kernel void decomp_sh_irradiance_at(uint begin, uint end, __global const ShSam
     }
     rc_decomp_add_sample(&far, centre, 0, 1.0f, points[q].xyz, &s);
     irradiance[q] = (float4)(rc_decomp_sh_irradiance(&s, normals[q].xyz), 0.0f);
+}
+
+// Item q: I_N at points[q] with unit normal normals[q] (rc_decomp_near_correction, the paper's
+// visibility heuristic) over the near triangles of the grid (near_grid.h) under params.near_set
+// and params.alpha, with B(t) / pi = radiance[t] and no distant light (L_D* = 0), into
+// correction[q] (xyz; w: the triangles summed).
+__kernel void decomp_near_correction_at(
+    uint begin, uint end, DecompParams params, RecordGrid near_grid, __global const int* near_start,
+    __global const int* near_list, __global const NearTriangle* near_triangles,
+    __global const float4* radiance, __global const float4* points, __global const float4* normals,
+    __global float4* correction) {
+    const uint q = begin + (uint)get_global_id(0);
+    if (q >= end) {
+        return;
+    }
+    params.near_visibility = 0;
+    const NearField near = rc_decomp_near_field(near_grid, near_start, near_list, near_triangles,
+                                                radiance, &params, 0);
+    ShSample none;
+    for (int i = 0; i < RC_DECOMP_SH_COEFFICIENTS; ++i) {
+        none.coefficients[i] = (float4)(0.0f);
+    }
+    uint count = 0;
+    uint rays = 0;
+    const float3 sum = rc_decomp_near_correction(&near, &none, points[q].xyz, points[q].xyz,
+                                                 normals[q].xyz, &count, &rays);
+    correction[q] = (float4)(sum, (float)count);
 }

@@ -152,7 +152,7 @@ RC_FUNC float3 rc_decomp_gathered_radiance(const FarField* far, const NearField*
     g.served = 1;
     NearField nearby = *near;
     if (!with_near) {
-        nearby.alpha = 0.0f;  // no centroid lies nearer than 0: I_N = 0
+        nearby.alpha = 0.0f;  // no triangle lies nearer than 0: I_N = 0
     }
     const DecompIrradiance e = rc_decomp_irradiance(far, &nearby, &g);
     *rays += e.near_rays;

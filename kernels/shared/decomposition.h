@@ -29,6 +29,12 @@
 #define RC_DECOMP_FILM_NEAR 6  // rho_d / pi I_N: the near correction's (signed)
 #define RC_DECOMP_FILM_SLOTS 7
 
+// The near set's rule (DecompParams.near_set; --decomp-near; decomposition/decomp_near_set.h):
+// the split triangles whose centroid lies within alpha (the paper's, §5), or those with any
+// point within alpha.
+#define RC_DECOMP_NEAR_CENTROID 0
+#define RC_DECOMP_NEAR_TOUCHING 1
+
 RC_SHARED_BEGIN
 
 // Parameters of the decomposition's kernels.
@@ -51,6 +57,7 @@ typedef struct DecompParams {
     // Tikhonov weight of the fit's gradient part, per ray, relative to 1 / (4 pi), the offsets
     // in units of the kept origins' RMS distance from the centre (rc_decomp_fit_with_gradients)
     float gradient_ridge;
+    int near_set;  // RC_DECOMP_NEAR_CENTROID or RC_DECOMP_NEAR_TOUCHING (--decomp-near)
 } DecompParams;
 
 // A cluster of shading points (§4.1) on the device: its members are G-buffer entries
@@ -144,6 +151,7 @@ RC_SHARED_END
     FIELD(DecompParams, near_visibility)        \
     FIELD(DecompParams, gradients)              \
     FIELD(DecompParams, gradient_ridge)         \
+    FIELD(DecompParams, near_set)               \
     STRUCT(DecompCluster)                       \
     FIELD(DecompCluster, centre)                \
     FIELD(DecompCluster, test_radius)           \
@@ -180,7 +188,7 @@ RC_SHARED_END
 // clang-format on
 
 #ifndef __OPENCL_VERSION__
-static_assert(sizeof(rc::shared::DecompParams) == 64);
+static_assert(sizeof(rc::shared::DecompParams) == 68);
 static_assert(sizeof(rc::shared::DecompCluster) == 32);
 static_assert(sizeof(rc::shared::ClusterRay) == 64);
 static_assert(sizeof(rc::shared::ShSample) == 144);

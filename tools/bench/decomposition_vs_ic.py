@@ -10,9 +10,10 @@ For each scene, at --spp camera samples per pixel (default 4, the sweep's for th
 methods): renders `--method ic` at its defaults (the irradiance cache the issue names; and
 `ic --ic-ivg`, irradiance caching over the same grid the decomposition reads, with
 --with-ic-ivg), then `--method decomposition` at its defaults and over a ladder of settings
-(--source x --rays x --alpha x --cluster x --visibility x --radiosity x --gradients:
+(--source x --rays x --alpha x --cluster x --visibility x --radiosity x --gradients x --near:
 --decomp-source, --decomp-rays, --alpha, --decomp-cluster, --decomp-visibility,
---decomp-radiosity, --decomp-gradients), each point --repeats times in rounds (median render
+--decomp-radiosity, --decomp-gradients, --decomp-near; `--near default` leaves the near set to
+follow the radiosity), each point --repeats times in rounds (median render
 time).
 Every image is measured against the scene's reference: relMSE of the beauty and of the indirect
 layer (`radcache compare`). For each ic run it names the fastest decomposition setting whose
@@ -25,7 +26,8 @@ loading, device start and image writing excluded).
 
 Usage: tools/bench/decomposition_vs_ic.py [--scenes relief] [--spp 4] [--source grid path]
            [--alpha 1%] [--cluster 10% 5% 2%] [--rays 512 2048] [--visibility heuristic]
-           [--radiosity gathered] [--gradients on] [--repeats 2] [--with-ic-ivg]
+           [--radiosity gathered] [--gradients on] [--near default] [--repeats 2]
+           [--with-ic-ivg]
            [--layer indirect]
            [--out build/bench/decomposition]
            [-- extra render options]
@@ -80,16 +82,20 @@ def runs_of(args):
         runs.append(("ic-ivg", "ic", "--ic-ivg", ["--method", "ic", "--ic-ivg"] + spp))
     runs.append(("decomposition", "decomposition", "defaults",
                  ["--method", "decomposition"] + spp))
-    for source, rays, alpha, size, visibility, radiosity, gradients in itertools.product(
+    for source, rays, alpha, size, visibility, radiosity, gradients, near in itertools.product(
             args.source, args.rays, args.alpha, args.cluster, args.visibility, args.radiosity,
-            args.gradients):
+            args.gradients, args.near):
         setting = "%s, alpha %s, cluster %s, %d rays, %s, %s radiosity, gradients %s" % (
             source, alpha, size, rays, visibility, radiosity, gradients)
+        near_option = []
+        if near != "default":
+            setting += ", near set " + near
+            near_option = ["--decomp-near", near]
         runs.append(("decomposition", "decomposition", setting,
                      ["--method", "decomposition", "--decomp-source", source, "--alpha", alpha,
                       "--decomp-cluster", size, "--decomp-rays", str(rays),
                       "--decomp-visibility", visibility, "--decomp-radiosity", radiosity,
-                      "--decomp-gradients", gradients]
+                      "--decomp-gradients", gradients] + near_option
                      + spp))
     return runs
 
@@ -193,6 +199,10 @@ def main():
     parser.add_argument("--gradients", nargs="+", choices=["off", "on"], default=["on"],
                         help="the far field's translational gradients (--decomp-gradients; "
                              "default %(default)s)")
+    parser.add_argument("--near", nargs="+", choices=["default", "touching", "centroid"],
+                        default=["default"],
+                        help="eq. 4's near set (--decomp-near; default: not given, so it follows "
+                             "the radiosity)")
     parser.add_argument("--spp", type=int, default=4,
                         help="camera samples per pixel of every run (default %(default)s)")
     parser.add_argument("--repeats", type=int, default=2)

@@ -11,6 +11,7 @@
 #include "methods/decomposition/decomp_cluster_split.h"
 #include "methods/decomposition/decomp_device_split.h"
 #include "methods/decomposition/decomp_radiosity_split.h"
+#include "methods/decomposition/near_grid.h"
 #include "methods/decomposition/triangle_split.h"
 #include "methods/records/record_store.h"
 #include "methods/scene_arguments.h"
@@ -123,8 +124,8 @@ void IrradianceDecomposition::compute_gbuffer() {
     samples_ = gbuffer_.download();
 }
 
-// §5 and §6 pass 1: the scene's triangles split to alpha and the grid that finds the ones within
-// alpha of a point (their radiosity: coarse_radiosity or gather_radiosity).
+// §5 and §6 pass 1: the scene's triangles split to alpha and the grid that finds a point's near
+// set (near_grid.h; their radiosity: coarse_radiosity or gather_radiosity).
 void IrradianceDecomposition::build_near_field(const DecompositionOptions& options) {
     triangles_.clear();
     uncovered_.clear();
@@ -136,15 +137,7 @@ void IrradianceDecomposition::build_near_field(const DecompositionOptions& optio
     triangle_buffer_ = Buffer<shared::NearTriangle>(context_, triangles_, "decomp_triangles");
     radiance_buffer_ = Buffer<shared::float4>(context_, triangles_.size(), "decomp_radiance");
     radiance_buffer_.fill_zero();
-    std::vector<glm::vec3> centroids;
-    centroids.reserve(triangles_.size());
-    for (const shared::NearTriangle& t : triangles_) {
-        centroids.push_back((vec3_of(t.v0) + vec3_of(t.v1) + vec3_of(t.v2)) / 3.0f);
-    }
-    near_grid_ = build_record_grid(
-        reach_records(centroids, std::vector<float>(centroids.size(), options.alpha),
-                      std::vector<glm::vec3>(centroids.size(), glm::vec3(0.0f))),
-        1.0f);
+    near_grid_ = build_near_grid(triangles_, options.alpha, params_.near_set);
     near_start_ = Buffer<int>(context_, near_grid_.cell_start, "decomp_near_start");
     near_list_ = Buffer<int>(context_, near_grid_.cell_records, "decomp_near_list");
 }
@@ -472,6 +465,7 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
     params_.near_visibility = options.visibility_rays ? 1 : 0;
     params_.gradients = options.gradients ? 1 : 0;
     params_.gradient_ridge = kGradientRidge;
+    params_.near_set = options.near_touching ? RC_DECOMP_NEAR_TOUCHING : RC_DECOMP_NEAR_CENTROID;
     camera_ = camera_params(scene_.camera, width, height);
 
     auto start = SteadyClock::now();

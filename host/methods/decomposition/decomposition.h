@@ -64,6 +64,11 @@ struct DecompositionOptions {
     // Test each near triangle that passes the paper's heuristic with a shadow ray to its centroid
     // (--decomp-visibility rays) instead of taking it as visible.
     bool visibility_rays = false;
+    // The near set of eq. 4: the split triangles with any point within alpha (--decomp-near
+    // touching, the default with the gathered radiosity), or those whose centroid lies within
+    // alpha (centroid, the paper's; the default with the coarse radiosity;
+    // kernels/decomposition/decomp_near_set.h; measured in docs/decomposition.md).
+    bool near_touching = true;
     // Fit each far-field sample's translational gradient with its coefficients and interpolate
     // with it (--decomp-gradients on, the default; rc_decomp_fit_with_gradients; measured in
     // docs/decomposition.md).
