@@ -141,10 +141,12 @@ struct Studied {
     float own_change = 0.0f;     // the one-frame change of fresh records at the render's rays
     float other_change = 0.0f;   // the oracle's one-frame change under other random streams
     std::map<int, float> ahead;  // |tau - 1| by reprojection to t0 + h, by h
-    float curvature = 0.0f;      // temporal_curvature from the reprojections to t0 + 1, t0 + 2
-    int longest = 1;             // the longest lifespan any rule gives (truth needed that far)
-    int true_lifespan = 0;       // 1 + the frames k with truth[1..k] <= a^t (max: delta t_max)
-    bool censored = false;       // the clip ended before the change exceeded a^t
+    // By h: the curvature per frame^2 from the reprojections to t0 + h and t0 + 2 h (h = 1:
+    // temporal_curvature, as the render's departure lifespans; h > 1: divided by h^2).
+    std::map<int, float> curvature;
+    int longest = 1;        // the longest lifespan any rule gives (truth needed that far)
+    int true_lifespan = 0;  // 1 + the frames k with truth[1..k] <= a^t (max: delta t_max)
+    bool censored = false;  // the clip ended before the change exceeded a^t
 };
 
 double luminance(const shared::float4& e) { return 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z; }
@@ -479,10 +481,12 @@ void print_departure_table(const std::vector<Studied>& studied, const std::vecto
             if (!(k >= b.lo && k < b.hi) || s.truth.size() < 2) {
                 continue;
             }
-            const int l = departure_lifespan(s.curvature, temporal, false);
+            const auto it = s.curvature.find(1);
+            const float curvature = it == s.curvature.end() ? 0.0f : it->second;
+            const int l = departure_lifespan(curvature, temporal, false);
             const int oracle = interpolated_lifespan(s, temporal);
             n += 1;
-            est += s.curvature;
+            est += curvature;
             const float c = true_curvature(s);
             if (c >= 0.0f) {
                 truth += c;
@@ -533,6 +537,7 @@ void estimate_and_measure(MovingSphereFrames& frames, int t0, const StudySize& s
         s.ahead[1] = s.estimate;
         s.other_change = temporal_change(other0[i], other1[i]);
     }
+    std::map<int, std::vector<shared::IrradiancePayload>> reprojected;  // by h, per site
     for (int h : kAhead) {
         if (t0 + h > size.last_frame) {
             continue;
@@ -544,10 +549,21 @@ void estimate_and_measure(MovingSphereFrames& frames, int t0, const StudySize& s
             Studied& s = (*studied)[i];
             s.ahead[h] = temporal_change(e0[i], carried_h[i].next);
             s.longest = std::max(s.longest, lifespan_ahead(s.ahead[h], h, temporal));
-            if (h == 2) {
-                s.curvature = temporal_curvature(e0[i], carried[i].next, carried_h[i].next);
-                s.longest = std::max(s.longest, departure_lifespan(s.curvature, temporal, false));
-            }
+            reprojected[h].push_back(carried_h[i].next);
+        }
+    }
+    for (size_t i = 0; i < sites.size(); ++i) {
+        reprojected[1].push_back(carried[i].next);
+    }
+    for (int h : {1, 2, 4}) {
+        if (reprojected[h].size() != sites.size() || reprojected[2 * h].size() != sites.size()) {
+            continue;
+        }
+        for (size_t i = 0; i < sites.size(); ++i) {
+            Studied& s = (*studied)[i];
+            s.curvature[h] = temporal_curvature(e0[i], reprojected[h][i], reprojected[2 * h][i]) /
+                             static_cast<float>(h * h);
+            s.longest = std::max(s.longest, departure_lifespan(s.curvature[h], temporal, false));
         }
     }
     measure_truth(frames, t0, size.last_frame, oracle, temporal, sites, oracle0, studied);
@@ -640,9 +656,17 @@ void print_study(const std::vector<Studied>& all, const std::vector<Studied>& ri
                                                         : lifespan_ahead(it->second, h, temporal);
                          }});
     }
-    rules.push_back({"departure (t0+1, t0+2)", [&](const Studied& s) {
-                         return departure_lifespan(s.curvature, temporal, false);
-                     }});
+    for (int h : {1, 2, 4}) {
+        const auto departure = [&, h](const Studied& s) {
+            const auto it = s.curvature.find(h);
+            return it == s.curvature.end() ? 1 : departure_lifespan(it->second, temporal, false);
+        };
+        const std::string ahead = "t0+" + std::to_string(h) + ", t0+" + std::to_string(2 * h);
+        rules.push_back({"departure (" + ahead + ")", departure});
+        rules.push_back(
+            {"max(change, departure " + std::to_string(h) + ")",
+             [&, departure](const Studied& s) { return std::max(s.lifespan, departure(s)); }});
+    }
     rules.push_back({"oracle", [](const Studied& s) { return s.true_lifespan; }});
     rules.push_back({"oracle, interpolated",
                      [&](const Studied& s) { return interpolated_lifespan(s, temporal); }});

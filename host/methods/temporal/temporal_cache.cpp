@@ -29,22 +29,22 @@ RecordStore store_of(float accuracy, size_t count, const PayloadOf& payload_of,
 }
 
 // Shows every batch of records to the one-frame reprojection and the first level's also to the
-// two-frame one (--temporal-lifespan departure: deeper records' lifespans stay by change, their
-// values being held).
+// two-frame one when there is one (--temporal-lifespan departure: deeper records' lifespans stay
+// by change, their values being held).
 class ReprojectionPair final : public RecordBatchObserver {
    public:
-    ReprojectionPair(RecordBatchObserver& one_frame, RecordBatchObserver& two_frames)
+    ReprojectionPair(RecordBatchObserver& one_frame, RecordBatchObserver* two_frames)
         : one_frame_(one_frame), two_frames_(two_frames) {}
     void observe(const RecordBatch& batch) override {
         one_frame_.observe(batch);
-        if (batch.params.level == 0) {
-            two_frames_.observe(batch);
+        if (two_frames_ != nullptr && batch.params.level == 0) {
+            two_frames_->observe(batch);
         }
     }
 
    private:
     RecordBatchObserver& one_frame_;
-    RecordBatchObserver& two_frames_;
+    RecordBatchObserver* two_frames_;
 };
 
 }  // namespace
@@ -167,6 +167,29 @@ double TemporalIrradianceCache::adopt(int level, int frame, const RecordStore& p
     return carried.empty() ? 0.0 : lifespans / static_cast<double>(carried.size());
 }
 
+std::unique_ptr<TemporalReprojection> TemporalIrradianceCache::two_frames_ahead(
+    const FrameScene& frame) {
+    if (temporal_.lifespan != TemporalLifespan::kDeparture) {
+        return nullptr;
+    }
+    if (!ahead_) {
+        ahead_.emplace(frame.scene);
+    }
+    ahead_->set_frame(static_cast<double>(frame.frame) + 2.0);
+    return std::make_unique<TemporalReprojection>(frame, *ahead_, temporal_.hole_passes);
+}
+
+std::vector<uint8_t> TemporalIrradianceCache::moving_into_or_out(
+    const TemporalReprojection& reprojection) {
+    // At the sequence's last frame the next pose may be the same: the motion into it still counts.
+    std::vector<uint8_t> moving = reprojection.moves();
+    for (size_t p = 0; p < std::min(moving.size(), moved_before_.size()); ++p) {
+        moving[p] |= moved_before_[p];
+    }
+    moved_before_ = reprojection.moves();
+    return moving;
+}
+
 void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
     const auto start = SteadyClock::now();
     const int t = frame.frame;
@@ -180,26 +203,10 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
     stats.moving_primitives = reprojection.moving_primitives();
     IrradianceCache cache(frame);
     IrradianceCacheOptions options = ic_;
-    options.observer = &reprojection;
-    // With departure lifespans, the first level's records also reprojected two frames ahead.
-    std::unique_ptr<TemporalReprojection> two_frames;
-    std::unique_ptr<ReprojectionPair> pair;
-    if (temporal_.lifespan == TemporalLifespan::kDeparture) {
-        if (!ahead_) {
-            ahead_.emplace(frame.scene);
-        }
-        ahead_->set_frame(static_cast<double>(t) + 2.0);
-        two_frames = std::make_unique<TemporalReprojection>(frame, *ahead_, temporal_.hole_passes);
-        pair = std::make_unique<ReprojectionPair>(reprojection, *two_frames);
-        options.observer = pair.get();
-    }
-    // Triangles in motion into or out of this frame (at the sequence's last frame the next pose
-    // may be the same: the motion into it still counts).
-    std::vector<uint8_t> moving = reprojection.moves();
-    for (size_t p = 0; p < std::min(moving.size(), moved_before_.size()); ++p) {
-        moving[p] |= moved_before_[p];
-    }
-    moved_before_ = reprojection.moves();
+    const std::unique_ptr<TemporalReprojection> two_frames = two_frames_ahead(frame);
+    ReprojectionPair observers(reprojection, two_frames.get());
+    options.observer = &observers;
+    std::vector<uint8_t> moving = moving_into_or_out(reprojection);
     if (!temporal_.cache_moving_hits) {
         options.uncached_primitives = std::move(moving);
     }

@@ -78,6 +78,12 @@ class TemporalIrradianceCache {
     void place_through(int last, const FrameScene& frame, const FrameHooks& hooks);
     // Pass 1 at one frame.
     void place_frame(const FrameScene& frame);
+    // Per primitive: 1 where it moves into or out of the frame `reprojection` starts from (the
+    // moves into it remembered from the frame placed before).
+    std::vector<uint8_t> moving_into_or_out(const TemporalReprojection& reprojection);
+    // With --temporal-lifespan departure, the reprojection of `frame`'s new records two frames
+    // ahead; else null.
+    std::unique_ptr<TemporalReprojection> two_frames_ahead(const FrameScene& frame);
     // A cache level's records across frames.
     struct Level {
         std::vector<TemporalRecord> records;
