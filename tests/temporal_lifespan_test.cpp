@@ -141,9 +141,12 @@ struct Studied {
     float own_change = 0.0f;     // the one-frame change of fresh records at the render's rays
     float other_change = 0.0f;   // the oracle's one-frame change under other random streams
     std::map<int, float> ahead;  // |tau - 1| by reprojection to t0 + h, by h
-    int longest = 1;             // the longest lifespan any rule gives (truth needed that far)
-    int true_lifespan = 0;       // 1 + the frames k with truth[1..k] <= a^t (max: delta t_max)
-    bool censored = false;       // the clip ended before the change exceeded a^t
+    // By h: the curvature per frame^2 from the reprojections to t0 + h and t0 + 2 h (h = 1:
+    // temporal_curvature, as the render's departure lifespans; h > 1: divided by h^2).
+    std::map<int, float> curvature;
+    int longest = 1;        // the longest lifespan any rule gives (truth needed that far)
+    int true_lifespan = 0;  // 1 + the frames k with truth[1..k] <= a^t (max: delta t_max)
+    bool censored = false;  // the clip ended before the change exceeded a^t
 };
 
 double luminance(const shared::float4& e) { return 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z; }
@@ -227,7 +230,7 @@ void measure_truth(MovingSphereFrames& frames, int t0, int last_frame,
             }
             const bool need =
                 !exceeded[i] || k <= std::max({s.lifespan, s.longest, 2 * s.true_lifespan + 2});
-            if (need && k < temporal.max_frames) {
+            if (need && k <= temporal.max_frames) {
                 still.push_back(i);
             }
             s.censored = !exceeded[i] && k < temporal.max_frames;
@@ -291,13 +294,17 @@ int lifespan_ahead(float change, int h, const TemporalOptions& temporal) {
 
 // Per rule: mean lifespan, the share of records whose true change exceeded a^t at a frame they
 // served (violations; among those whose truth reaches that far), the mean true change at their
-// last frame served, and the share of expiries the truth calls avoidable.
+// last frame served, and the share of expiries the truth calls avoidable; with interpolated
+// gradients towards an exact replacement at t0 + L (interpolation_error; records whose truth
+// reaches t0 + L, L >= 2): the mean largest departure from the line over the frames served, the
+// share above a^t, and the mean over all records of the departure's oracle lifespan (L*i).
 void print_rules(const std::vector<Rule>& rules, const std::vector<Studied>& studied,
                  const TemporalOptions& temporal) {
-    std::printf("\n%-28s %7s %7s %9s %9s %9s\n", "rule", "L", "L*", "violate", "at L-1", "avoid");
+    std::printf("\n%-28s %7s %7s %9s %9s %9s %9s %9s %7s\n", "rule", "L", "L*", "violate", "at L-1",
+                "avoid", "interp", "i-viol", "L*i");
     for (const Rule& rule : rules) {
         double n = 0, life = 0, tlife = 0, checked = 0, violations = 0, last = 0, last_n = 0;
-        double expired = 0, avoidable = 0;
+        double expired = 0, avoidable = 0, interp = 0, interp_n = 0, interp_over = 0, ilife = 0;
         for (const Studied& s : studied) {
             const int l = rule.lifespan(s);
             n += 1;
@@ -320,11 +327,20 @@ void print_rules(const std::vector<Rule>& rules, const std::vector<Studied>& stu
                 expired += 1;
                 avoidable += s.truth[static_cast<size_t>(l)] <= temporal.accuracy ? 1 : 0;
             }
+            if (l >= 2 && l < static_cast<int>(s.values.size())) {
+                const float error = interpolation_error(s, l);
+                interp += error;
+                interp_n += 1;
+                interp_over += error > temporal.accuracy ? 1 : 0;
+            }
+            ilife += interpolated_lifespan(s, temporal);
         }
-        std::printf("%-28s %7.2f %7.2f %8.1f%% %9.4f %8.1f%%\n", rule.name.c_str(), life / n,
-                    tlife / n, checked > 0 ? 100.0 * violations / checked : 0.0,
-                    last_n > 0 ? last / last_n : 0.0,
-                    expired > 0 ? 100.0 * avoidable / expired : 0.0);
+        std::printf(
+            "%-28s %7.2f %7.2f %8.1f%% %9.4f %8.1f%% %9.4f %8.1f%% %7.2f\n", rule.name.c_str(),
+            life / n, tlife / n, checked > 0 ? 100.0 * violations / checked : 0.0,
+            last_n > 0 ? last / last_n : 0.0, expired > 0 ? 100.0 * avoidable / expired : 0.0,
+            interp_n > 0 ? interp / interp_n : 0.0,
+            interp_n > 0 ? 100.0 * interp_over / interp_n : 0.0, ilife / n);
     }
 }
 
@@ -435,6 +451,67 @@ void print_table(const char* title, const std::vector<Studied>& studied,
     }
 }
 
+// The oracle's curvature of a record (its fresh values at t0, t0 + 1, t0 + 2), or -1 when its
+// truth was not followed that far.
+float true_curvature(const Studied& s) {
+    if (s.values.size() < 3) {
+        return -1.0f;
+    }
+    shared::IrradiancePayload e[3]{};
+    for (size_t k = 0; k < 3; ++k) {
+        e[k].irradiance = s.values[k];
+    }
+    return temporal_curvature(e[0], e[1], e[2]);
+}
+
+// Departure lifespans by bin of `key`: count, mean estimated and true curvature (two frames'
+// second difference), the departure lifespan given and the oracle's (interpolated_lifespan), the
+// mean departure from the line over the frames served at the given lifespan and the share above
+// a^t (records whose truth reaches t0 + L, L >= 2), and the share given longer than the oracle's.
+void print_departure_table(const std::vector<Studied>& studied, const std::vector<Bin>& bins,
+                           float (*key)(const Studied&), const TemporalOptions& temporal) {
+    std::printf(
+        "\ndeparture lifespans by distance to the ball\n%-12s %5s %9s %9s %6s %6s %9s %7s %7s\n",
+        "bin", "n", "curv est", "curv true", "L", "L*i", "interp", "i-viol", "longer");
+    for (const Bin& b : bins) {
+        double n = 0, est = 0, truth = 0, truth_n = 0, life = 0, ilife = 0, interp = 0;
+        double interp_n = 0, over = 0, longer = 0;
+        for (const Studied& s : studied) {
+            const float k = key(s);
+            if (!(k >= b.lo && k < b.hi) || s.truth.size() < 2) {
+                continue;
+            }
+            const auto it = s.curvature.find(1);
+            const float curvature = it == s.curvature.end() ? 0.0f : it->second;
+            const int l = departure_lifespan(curvature, temporal, false);
+            const int oracle = interpolated_lifespan(s, temporal);
+            n += 1;
+            est += curvature;
+            const float c = true_curvature(s);
+            if (c >= 0.0f) {
+                truth += c;
+                truth_n += 1;
+            }
+            life += l;
+            ilife += oracle;
+            longer += l > oracle ? 1 : 0;
+            if (l >= 2 && l < static_cast<int>(s.values.size())) {
+                const float error = interpolation_error(s, l);
+                interp += error;
+                interp_n += 1;
+                over += error > temporal.accuracy ? 1 : 0;
+            }
+        }
+        if (n == 0) {
+            continue;
+        }
+        std::printf("%-12s %5.0f %9.5f %9.5f %6.2f %6.2f %9.4f %6.1f%% %6.1f%%\n", b.name.c_str(),
+                    n, est / n, truth_n > 0 ? truth / truth_n : 0.0, life / n, ilife / n,
+                    interp_n > 0 ? interp / interp_n : 0.0,
+                    interp_n > 0 ? 100.0 * over / interp_n : 0.0, 100.0 * longer / n);
+    }
+}
+
 // The one-frame estimates of `studied` (records at `sites` created at t0) by reprojection, the
 // estimates h frames ahead, a fresh one-frame change at the render's rays and the oracle's under
 // other streams, then their true changes (measure_truth).
@@ -460,6 +537,7 @@ void estimate_and_measure(MovingSphereFrames& frames, int t0, const StudySize& s
         s.ahead[1] = s.estimate;
         s.other_change = temporal_change(other0[i], other1[i]);
     }
+    std::map<int, std::vector<shared::IrradiancePayload>> reprojected;  // by h, per site
     for (int h : kAhead) {
         if (t0 + h > size.last_frame) {
             continue;
@@ -471,6 +549,21 @@ void estimate_and_measure(MovingSphereFrames& frames, int t0, const StudySize& s
             Studied& s = (*studied)[i];
             s.ahead[h] = temporal_change(e0[i], carried_h[i].next);
             s.longest = std::max(s.longest, lifespan_ahead(s.ahead[h], h, temporal));
+            reprojected[h].push_back(carried_h[i].next);
+        }
+    }
+    for (size_t i = 0; i < sites.size(); ++i) {
+        reprojected[1].push_back(carried[i].next);
+    }
+    for (int h : {1, 2, 4}) {
+        if (reprojected[h].size() != sites.size() || reprojected[2 * h].size() != sites.size()) {
+            continue;
+        }
+        for (size_t i = 0; i < sites.size(); ++i) {
+            Studied& s = (*studied)[i];
+            s.curvature[h] = temporal_curvature(e0[i], reprojected[h][i], reprojected[2 * h][i]) /
+                             static_cast<float>(h * h);
+            s.longest = std::max(s.longest, departure_lifespan(s.curvature[h], temporal, false));
         }
     }
     measure_truth(frames, t0, size.last_frame, oracle, temporal, sites, oracle0, studied);
@@ -563,10 +656,23 @@ void print_study(const std::vector<Studied>& all, const std::vector<Studied>& ri
                                                         : lifespan_ahead(it->second, h, temporal);
                          }});
     }
+    for (int h : {1, 2, 4}) {
+        const auto departure = [&, h](const Studied& s) {
+            const auto it = s.curvature.find(h);
+            return it == s.curvature.end() ? 1 : departure_lifespan(it->second, temporal, false);
+        };
+        const std::string ahead = "t0+" + std::to_string(h) + ", t0+" + std::to_string(2 * h);
+        rules.push_back({"departure (" + ahead + ")", departure});
+        rules.push_back(
+            {"max(change, departure " + std::to_string(h) + ")",
+             [&, departure](const Studied& s) { return std::max(s.lifespan, departure(s)); }});
+    }
     rules.push_back({"oracle", [](const Studied& s) { return s.true_lifespan; }});
     rules.push_back({"oracle, interpolated",
                      [&](const Studied& s) { return interpolated_lifespan(s, temporal); }});
     print_rules(rules, all, temporal);
+    print_departure_table(
+        all, kByDistance, [](const Studied& s) { return s.distance; }, temporal);
     print_riding(ride, temporal);
 }
 

@@ -8,7 +8,9 @@
 // the whole sequence; bad options refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -293,6 +295,128 @@ TEST(TemporalCaching, RecordsSeeingAMovingLightExpireBeforeTheirErrorBound) {
     EXPECT_EQ(checked, 5);
 }
 
+// f(t) = 1 + b t + c t^2 / 2, a record's irradiance over time relative to its value at t_0 = 0.
+double quadratic(double b, double c, double t) { return 1.0 + b * t + 0.5 * c * t * t; }
+
+// The oracle of a departure lifespan, by brute force over the frames: the largest departure of
+// f(k) from the line from f(0) to f(l), 0 < k < l, relative to f(0) (the error of a record
+// serving frames 0 .. l - 1 with interpolated gradients towards an exact replacement at l).
+double chord_departure(double b, double c, int l) {
+    double worst = 0.0;
+    for (int k = 1; k < l; ++k) {
+        const double line = 1.0 + (quadratic(b, c, l) - 1.0) * k / l;
+        worst = std::max(worst, std::fabs(quadratic(b, c, k) - line));
+    }
+    return worst;
+}
+
+// The longest lifespan (at most delta t_max) whose chord departs by at most a^t, by brute force.
+int oracle_departure_lifespan(double b, double c, const TemporalOptions& options) {
+    int best = 1;
+    for (int l = 2; l <= options.max_frames; ++l) {
+        if (chord_departure(b, c, l) <= options.accuracy) {
+            best = l;
+        }
+    }
+    return best;
+}
+
+shared::IrradiancePayload payload_of(shared::float4 e) {
+    shared::IrradiancePayload p{};
+    p.irradiance = e;
+    return p;
+}
+
+// Synthetic records whose irradiance follows f(t) = 1 + b t + c t^2 / 2 (every channel, at
+// several scales): the departure lifespan from E(0), E(1), E(2) never lets the line towards the
+// replacement depart by more than a^t at a frame served, and is at most one frame shorter than
+// the brute-force oracle's. A linear change (c = 0) serves delta t_max however fast it is, where
+// the change's lifespan is short; a fast curvature serves one or two frames. (No c of the grid
+// puts sqrt(8 a^t / |c|) on an integer, where rounding could go either way.)
+TEST(TemporalCaching, DepartureLifespanAgainstTheChordByBruteForce) {
+    TemporalOptions options;
+    options.lifespan = TemporalLifespan::kDeparture;
+    const shared::float4 scales[] = {{1.0f, 0.5f, 0.25f, 0.0f}, {40.0f, 3.0f, 0.2f, 0.0f}};
+    int checked = 0;
+    for (const shared::float4& s : scales) {
+        for (double b : {-0.04, -0.01, 0.0, 0.003, 0.02, 0.1}) {
+            for (double c : {-0.012, -0.002, 0.0, 0.0005, 0.003, 0.02, 0.3}) {
+                shared::IrradiancePayload e[3];
+                for (int t = 0; t < 3; ++t) {
+                    const float f = static_cast<float>(quadratic(b, c, t));
+                    e[t] = payload_of({s.x * f, s.y * f, s.z * f, 0.0f});
+                }
+                const float curvature = temporal_curvature(e[0], e[1], e[2]);
+                const int given = departure_lifespan(curvature, options, false);
+                const int oracle = oracle_departure_lifespan(b, c, options);
+                EXPECT_LE(chord_departure(b, c, given), options.accuracy * 1.0001)
+                    << "b " << b << " c " << c;
+                EXPECT_GE(given, oracle - 1) << "b " << b << " c " << c;
+                EXPECT_LE(given, oracle) << "b " << b << " c " << c;
+                if (c == 0.0) {
+                    EXPECT_EQ(given, options.max_frames) << "b " << b;
+                }
+                ++checked;
+            }
+        }
+    }
+    EXPECT_EQ(checked, 84);
+    // Linear and fast: the change's lifespan is one frame, the departure's the longest.
+    const shared::IrradiancePayload a = payload_of({1.0f, 1.0f, 1.0f, 0.0f});
+    const shared::IrradiancePayload b = payload_of({1.25f, 1.25f, 1.25f, 0.0f});
+    const shared::IrradiancePayload c = payload_of({1.5f, 1.5f, 1.5f, 0.0f});
+    EXPECT_EQ(temporal_lifespan(temporal_change(a, b), options, false), 1);
+    EXPECT_EQ(departure_lifespan(temporal_curvature(a, b, c), options, false), options.max_frames);
+    // A fast curvature: 1, 1.1, 1.5 (c = 0.3) serves one frame; a moving site serves one frame.
+    const shared::IrradiancePayload d = payload_of({1.1f, 1.1f, 1.1f, 0.0f});
+    EXPECT_EQ(departure_lifespan(temporal_curvature(a, d, c), options, false), 1);
+    EXPECT_EQ(departure_lifespan(0.0f, options, true), 1);
+}
+
+// A point light alone in the closed box, its intensity I(t) = 4 f(t) at frames 0, 1, 2: every
+// record's irradiance is proportional to it, so the truth is E(t) = E(0) f(t) exactly. The
+// records on the floor reprojected one and two frames ahead (the kernels carrying each sample by
+// the change of the light's unshadowed irradiance at its hit) give the curvature of f, and the
+// departure lifespan the brute-force oracle's on f: linear growth (f = 1, 1.25, 1.5) serves
+// delta t_max where the change's lifespan is one frame; f = 1, 1.0125, 1.03 (b = 0.01,
+// c = 0.005) serves 5 frames, the change's 2.
+TEST(TemporalCaching, DepartureLifespanOfALightGrowingLinearlyOrQuadratically) {
+    struct Growth {
+        double b, c;
+        int departure, change;
+    };
+    TemporalOptions options;
+    options.lifespan = TemporalLifespan::kDeparture;
+    const std::vector<RecordSite> sites = floor_sites({{0.0f, 0.0f}, {-0.6f, 0.5f}, {0.7f, -0.4f}});
+    for (const Growth& g : {Growth{0.25, 0.0, options.max_frames, 1}, Growth{0.01, 0.005, 5, 2}}) {
+        std::vector<std::filesystem::path> scenes;
+        for (int t = 0; t < 3; ++t) {
+            char emitter[128];
+            std::snprintf(emitter, sizeof emitter,
+                          R"({"type": "point", "position": [0.2, 0.4, 0.1], "intensity": %.6f})",
+                          4.0 * quadratic(g.b, g.c, t));
+            scenes.push_back(box_scene("growth_" + std::to_string(t), "", emitter, kStill));
+        }
+        PosedFrame now(scenes[0], 0);
+        const Scene next = load_scene(scenes[1]);
+        const Scene ahead = load_scene(scenes[2]);
+        std::vector<CarriedRecord> one;
+        std::vector<CarriedRecord> two;
+        const auto e0 = records_at(now.frame(), sites, 1024, 5, 64, &next, &one);
+        records_at(now.frame(), sites, 1024, 5, 64, &ahead, &two);
+        const int oracle = oracle_departure_lifespan(g.b, g.c, options);
+        EXPECT_EQ(oracle, g.departure);
+        for (size_t i = 0; i < sites.size(); ++i) {
+            const float curvature = temporal_curvature(e0[i], one[i].next, two[i].next);
+            EXPECT_NEAR(curvature, g.c, 1e-4) << i;
+            EXPECT_EQ(departure_lifespan(curvature, options, false), oracle) << i;
+            EXPECT_EQ(temporal_lifespan(temporal_change(e0[i], one[i].next), options, false),
+                      g.change)
+                << i;
+        }
+    }
+}
+
 bool same_pixels(const Image& a, const Image& b) {
     return a.width == b.width && a.height == b.height && a.channels == b.channels &&
            std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
@@ -445,6 +569,14 @@ TEST(TemporalCaching, BadOptionsAreRefusedByName) {
         {{"--method", "rc", "--temporal-accuracy", "0.1"}, "needs --temporal"},
         {{"--method", "rc", "--temporal", "--temporal-max-frames", "0"}, "--temporal-max-frames"},
         {{"--method", "pt", "--temporal"}, "--temporal"},
+        {{"--method", "ic", "--temporal", "--temporal-lifespan", "curvature"},
+         "--temporal-lifespan"},
+        {{"--method", "ic", "--temporal-lifespan", "departure"}, "needs --temporal"},
+        {{"--method", "ic", "--temporal", "--temporal-lifespan", "departure",
+          "--temporal-gradients", "extrapolated"},
+         "--temporal-lifespan"},
+        {{"--method", "rc", "--temporal", "--temporal-lifespan", "departure"},
+         "--temporal-lifespan"},
     };
     for (const Case& c : cases) {
         std::vector<std::string> command = {"render",  scene, "-o",       out,

@@ -91,6 +91,12 @@ class RadianceCaching final : public Method {
         if (!temporal.enabled) {
             return;
         }
+        if (temporal.lifespan == TemporalLifespan::kDeparture) {
+            throw Error(
+                "--temporal-lifespan departure: --method ic only (rc's radiance records' "
+                "lifespans are by change)",
+                kExitUsage);
+        }
         refuse_cache_files_with_temporal(!ic_.cache_in.empty() || !ic_.cache_out.empty() ||
                                              !rc_.cache_in.empty() || !rc_.cache_out.empty(),
                                          "--cache-in/--cache-out, --rc-cache-in/--rc-cache-out");

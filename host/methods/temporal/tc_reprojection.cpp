@@ -1,6 +1,7 @@
 #include "methods/temporal/tc_reprojection.h"
 
 #include "methods/scene_arguments.h"
+#include "util/timing.h"
 
 namespace rc {
 
@@ -14,6 +15,7 @@ TemporalReprojection::TemporalReprojection(const FrameScene& frame, const Scene&
           frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_reduce")) {}
 
 void TemporalReprojection::observe(const RecordBatch& batch) {
+    const auto start = SteadyClock::now();
     const size_t per_record = static_cast<size_t>(batch.params.strata_m) * batch.params.strata_n;
     const size_t cells = batch.count * per_record;
     Buffer<shared::TcCarriedSample> carried(context_, cells, "tc_carried");
@@ -39,6 +41,7 @@ void TemporalReprojection::observe(const RecordBatch& batch) {
         r.site_moves = motion_.primitive_moves(batch.sites[b].primitive);
         carried_[batch.params.level].push_back(r);
     }
+    seconds_ += seconds_since(start);
 }
 
 std::vector<CarriedRecord> TemporalReprojection::take(int level) {

@@ -35,6 +35,9 @@ class TemporalReprojection final : public RecordBatchObserver, private FrameBoun
     // Every record of cache level `level` observed so far, in observation order; clears the list.
     std::vector<CarriedRecord> take(int level);
 
+    // Seconds spent in observe() so far (the reprojection's kernels and the download).
+    double seconds() const { return seconds_; }
+
     // What moves and changes between the two frames.
     const TcMotion& motion() const { return motion_; }
     // Primitives that move between the two frames.
@@ -48,6 +51,7 @@ class TemporalReprojection final : public RecordBatchObserver, private FrameBoun
     Kernel assemble_kernel_;
     Kernel reduce_kernel_;
     std::map<int, std::vector<CarriedRecord>> carried_;  // by level
+    double seconds_ = 0.0;
 };
 
 }  // namespace rc

@@ -28,6 +28,25 @@ RecordStore store_of(float accuracy, size_t count, const PayloadOf& payload_of,
     return store;
 }
 
+// Shows every batch of records to the one-frame reprojection and the first level's also to the
+// two-frame one when there is one (--temporal-lifespan departure: deeper records' lifespans stay
+// by change, their values being held).
+class ReprojectionPair final : public RecordBatchObserver {
+   public:
+    ReprojectionPair(RecordBatchObserver& one_frame, RecordBatchObserver* two_frames)
+        : one_frame_(one_frame), two_frames_(two_frames) {}
+    void observe(const RecordBatch& batch) override {
+        one_frame_.observe(batch);
+        if (two_frames_ != nullptr && batch.params.level == 0) {
+            two_frames_->observe(batch);
+        }
+    }
+
+   private:
+    RecordBatchObserver& one_frame_;
+    RecordBatchObserver* two_frames_;
+};
+
 }  // namespace
 
 TemporalIrradianceCache::TemporalIrradianceCache(IrradianceCacheOptions ic,
@@ -92,15 +111,32 @@ std::vector<size_t> TemporalIrradianceCache::still_used(IrradianceCache& cache,
     return kept;
 }
 
+int TemporalIrradianceCache::new_lifespan(const TemporalRecord& r, const CarriedRecord* ahead,
+                                          int frame) const {
+    const float change = temporal_change(r.computed.payload, r.next);
+    const int lifespan =
+        ahead != nullptr
+            ? departure_lifespan(temporal_curvature(r.computed.payload, r.next, ahead->next),
+                                 temporal_, r.site_moves)
+            : temporal_lifespan(change, temporal_, r.site_moves);
+    return lifespan_in_clip(lifespan, change, temporal_, frame, last_frame_);
+}
+
 double TemporalIrradianceCache::adopt(int level, int frame, const RecordStore& placed,
                                       const std::vector<size_t>& serving,
                                       const std::vector<CarriedRecord>& carried,
+                                      const std::vector<CarriedRecord>& ahead,
                                       const std::vector<size_t>& replaced) {
     std::vector<TemporalRecord>& records = levels_[static_cast<size_t>(level)].records;
     if (placed.size() != serving.size() + carried.size()) {
         throw Error("temporal caching: level " + std::to_string(level) + " holds " +
                     std::to_string(placed.size()) + " records, " +
                     std::to_string(serving.size() + carried.size()) + " expected");
+    }
+    if (!ahead.empty() && ahead.size() != carried.size()) {
+        throw Error("temporal caching: " + std::to_string(ahead.size()) +
+                    " records reprojected two frames ahead, " + std::to_string(carried.size()) +
+                    " one frame");
     }
     for (size_t i = 0; i < serving.size(); ++i) {
         TemporalRecord& r = records[serving[i]];
@@ -118,8 +154,10 @@ double TemporalIrradianceCache::adopt(int level, int frame, const RecordStore& p
         r.created = frame;
         r.next = carried[k].next;
         r.site_moves = carried[k].site_moves;
-        const float change = temporal_change(r.computed.payload, r.next);
-        r.lifespan = temporal_lifespan_in_clip(change, temporal_, r.site_moves, frame, last_frame_);
+        if (!ahead.empty()) {
+            r.ahead = ahead[k].next;
+        }
+        r.lifespan = new_lifespan(r, ahead.empty() ? nullptr : &ahead[k], frame);
         lifespans += r.lifespan;
         if (k < replaced.size()) {
             records[replaced[k]].successor = static_cast<int>(records.size());
@@ -127,6 +165,29 @@ double TemporalIrradianceCache::adopt(int level, int frame, const RecordStore& p
         records.push_back(r);
     }
     return carried.empty() ? 0.0 : lifespans / static_cast<double>(carried.size());
+}
+
+std::unique_ptr<TemporalReprojection> TemporalIrradianceCache::two_frames_ahead(
+    const FrameScene& frame) {
+    if (temporal_.lifespan != TemporalLifespan::kDeparture) {
+        return nullptr;
+    }
+    if (!ahead_) {
+        ahead_.emplace(frame.scene);
+    }
+    ahead_->set_frame(static_cast<double>(frame.frame) + 2.0);
+    return std::make_unique<TemporalReprojection>(frame, *ahead_, temporal_.hole_passes);
+}
+
+std::vector<uint8_t> TemporalIrradianceCache::moving_into_or_out(
+    const TemporalReprojection& reprojection) {
+    // At the sequence's last frame the next pose may be the same: the motion into it still counts.
+    std::vector<uint8_t> moving = reprojection.moves();
+    for (size_t p = 0; p < std::min(moving.size(), moved_before_.size()); ++p) {
+        moving[p] |= moved_before_[p];
+    }
+    moved_before_ = reprojection.moves();
+    return moving;
 }
 
 void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
@@ -142,14 +203,10 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
     stats.moving_primitives = reprojection.moving_primitives();
     IrradianceCache cache(frame);
     IrradianceCacheOptions options = ic_;
-    options.observer = &reprojection;
-    // Triangles in motion into or out of this frame (at the sequence's last frame the next pose
-    // may be the same: the motion into it still counts).
-    std::vector<uint8_t> moving = reprojection.moves();
-    for (size_t p = 0; p < std::min(moving.size(), moved_before_.size()); ++p) {
-        moving[p] |= moved_before_[p];
-    }
-    moved_before_ = reprojection.moves();
+    const std::unique_ptr<TemporalReprojection> two_frames = two_frames_ahead(frame);
+    ReprojectionPair observers(reprojection, two_frames.get());
+    options.observer = &observers;
+    std::vector<uint8_t> moving = moving_into_or_out(reprojection);
     if (!temporal_.cache_moving_hits) {
         options.uncached_primitives = std::move(moving);
     }
@@ -167,7 +224,9 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
         RecordStore store = serving_store(level, t, &serving[l], &expired[l]);
         cache.set_records(level, std::move(store), levels_[l].next_stream);
     }
+    const auto usage_start = SteadyClock::now();
     const std::vector<size_t> replaced = still_used(cache, expired[0]);
+    stats.usage_seconds = seconds_since(usage_start);
     std::vector<RecordSite> sites;
     for (size_t id : replaced) {
         sites.push_back(levels_[0].records[id].site);
@@ -188,7 +247,9 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
         const size_t l = static_cast<size_t>(level);
         levels_[l].next_stream = cache.next_stream(level);
         const std::vector<CarriedRecord> carried = reprojection.take(level);
-        const double lifespan = adopt(level, t, cache.store(level), serving[l], carried,
+        const std::vector<CarriedRecord> ahead =
+            two_frames && level == 0 ? two_frames->take(0) : std::vector<CarriedRecord>{};
+        const double lifespan = adopt(level, t, cache.store(level), serving[l], carried, ahead,
                                       level == 0 ? replaced : std::vector<size_t>{});
         if (level == 0) {
             stats.reused = serving[0].size();
@@ -218,6 +279,8 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
     stats.record_rays = placement.record_rays;
     stats.placement = placement;
     stats.placement_seconds = seconds_since(start);
+    stats.reprojection_seconds =
+        reprojection.seconds() + (two_frames ? two_frames->seconds() : 0.0);
     serving_.push_back(std::move(now));
     frame_stats_.push_back(stats);
     // The glossy lobes' radiance records, whose hemisphere rays read this frame's first level.
@@ -296,6 +359,7 @@ FrameResult TemporalIrradianceCache::shade_frame(const FrameScene& frame) {
     result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
     add_irradiance_cache_stats(combined, ic_, &result.stats);
     result.stats["temporal"] = {{"gradients", temporal_gradients_name(temporal_.gradients)},
+                                {"lifespan", temporal_lifespan_name(temporal_.lifespan)},
                                 {"records", placed.records},
                                 {"reused", placed.reused},
                                 {"recomputed", placed.recomputed},
@@ -304,7 +368,10 @@ FrameResult TemporalIrradianceCache::shade_frame(const FrameScene& frame) {
                                 {"mean_new_lifespan", placed.mean_new_lifespan},
                                 {"moving_primitives", placed.moving_primitives},
                                 {"record_rays", placed.record_rays},
-                                {"seconds", {{"placement", placed.placement_seconds}}}};
+                                {"seconds",
+                                 {{"placement", placed.placement_seconds},
+                                  {"reprojection", placed.reprojection_seconds},
+                                  {"usage", placed.usage_seconds}}}};
     nlohmann::json deeper = nlohmann::json::array();
     for (size_t l = 0; l < placed.deeper.size(); ++l) {
         deeper.push_back({{"level", l + 1},

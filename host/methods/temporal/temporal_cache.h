@@ -44,6 +44,8 @@ struct TemporalFrameStats {
     double mean_new_lifespan = 0.0;  // of the records computed at this frame
     uint64_t record_rays = 0;
     double placement_seconds = 0.0;          // pass 1: G-buffer, reprojection, placement, records
+    double reprojection_seconds = 0.0;       // of which the reprojections (both with departure)
+    double usage_seconds = 0.0;              // of which the test of expired records' use
     IrradianceCacheStats placement;          // irradiance caching's figures of pass 1
     std::vector<TemporalLevelStats> deeper;  // levels 1, 2, ...
 };
@@ -76,6 +78,12 @@ class TemporalIrradianceCache {
     void place_through(int last, const FrameScene& frame, const FrameHooks& hooks);
     // Pass 1 at one frame.
     void place_frame(const FrameScene& frame);
+    // Per primitive: 1 where it moves into or out of the frame `reprojection` starts from (the
+    // moves into it remembered from the frame placed before).
+    std::vector<uint8_t> moving_into_or_out(const TemporalReprojection& reprojection);
+    // With --temporal-lifespan departure, the reprojection of `frame`'s new records two frames
+    // ahead; else null.
+    std::unique_ptr<TemporalReprojection> two_frames_ahead(const FrameScene& frame);
     // A cache level's records across frames.
     struct Level {
         std::vector<TemporalRecord> records;
@@ -90,10 +98,15 @@ class TemporalIrradianceCache {
     // After placement at `frame`: `level`'s serving records as neighbor clamping left them in
     // `placed` (its first serving.size() records), and its new records (the rest, observed as
     // `carried`) with their lifespans; the new records from `replaced.size()` on are
-    // replacements of those. Returns the mean lifespan of the new records.
+    // replacements of those. `ahead`: with --temporal-lifespan departure at the first level, the
+    // new records' estimates two frames ahead (as `carried`), else empty. Returns the mean
+    // lifespan of the new records.
     double adopt(int level, int frame, const RecordStore& placed,
                  const std::vector<size_t>& serving, const std::vector<CarriedRecord>& carried,
-                 const std::vector<size_t>& replaced);
+                 const std::vector<CarriedRecord>& ahead, const std::vector<size_t>& replaced);
+    // A new record's lifespan by the chosen rule (`ahead`: its estimate two frames ahead, with
+    // --temporal-lifespan departure at the first level; else null).
+    int new_lifespan(const TemporalRecord& r, const CarriedRecord* ahead, int frame) const;
     // Pass 2 at one frame: the image from the records serving it, their values at that frame.
     FrameResult shade_frame(const FrameScene& frame);
 
@@ -101,9 +114,10 @@ class TemporalIrradianceCache {
     TemporalOptions temporal_;
     int first_frame_;
     int last_frame_;
-    int placed_until_;           // the last frame placed (pass 1)
-    int shaded_until_;           // the last frame shaded (pass 2)
-    std::optional<Scene> next_;  // the scene posed at the frame after the one being placed
+    int placed_until_;            // the last frame placed (pass 1)
+    int shaded_until_;            // the last frame shaded (pass 2)
+    std::optional<Scene> next_;   // the scene posed at the frame after the one being placed
+    std::optional<Scene> ahead_;  // and two frames after it (--temporal-lifespan departure)
     // Per primitive: 1 where it moved from the frame placed last to the one after it.
     std::vector<uint8_t> moved_before_;
     std::vector<Level> levels_;                    // 0: the camera's

@@ -15,6 +15,11 @@ std::vector<OptionSpec> temporal_option_specs() {
                    "replacement (two passes, default), extrapolated from its reprojected next "
                    "frame (one pass), or held"}
             .one_of({"interpolated", "extrapolated", "none"}),
+        OptionSpec{"--temporal-lifespan", "", "change|departure",
+                   "--temporal (ic, interpolated gradients): what bounds a record's lifespan: its "
+                   "change since its creation (default) or its departure from the line towards "
+                   "its replacement, from a second reprojection two frames ahead"}
+            .one_of({"change", "departure"}),
         OptionSpec{"--temporal-accuracy", "", "A",
                    "--temporal: a^t, the largest relative change of a record's irradiance (rc: "
                    "of its radiance's SH coefficients) over its lifespan, estimated by "
@@ -35,8 +40,9 @@ TemporalOptions parse_temporal_options(const ParsedArguments& arguments) {
     TemporalOptions t;
     t.enabled = arguments.has("--temporal");
     if (!t.enabled) {
-        for (const char* option : {"--temporal-gradients", "--temporal-accuracy",
-                                   "--temporal-max-frames", "--temporal-moving-hits"}) {
+        for (const char* option :
+             {"--temporal-gradients", "--temporal-lifespan", "--temporal-accuracy",
+              "--temporal-max-frames", "--temporal-moving-hits"}) {
             if (arguments.has(option)) {
                 throw Error(std::string(option) + " needs --temporal", kExitUsage);
             }
@@ -65,6 +71,23 @@ TemporalOptions parse_temporal_options(const ParsedArguments& arguments) {
         }
         t.cache_moving_hits = value == "cache";
     }
+    if (arguments.has("--temporal-lifespan")) {
+        const std::string value = arguments.value("--temporal-lifespan");
+        if (value != "change" && value != "departure") {
+            throw Error("--temporal-lifespan: expected change or departure, got '" + value + "'",
+                        kExitUsage);
+        }
+        t.lifespan =
+            value == "departure" ? TemporalLifespan::kDeparture : TemporalLifespan::kChange;
+        if (t.lifespan == TemporalLifespan::kDeparture &&
+            t.gradients != TemporalGradients::kInterpolated) {
+            throw Error(
+                "--temporal-lifespan departure: needs --temporal-gradients interpolated, "
+                "got " +
+                    temporal_gradients_name(t.gradients),
+                kExitUsage);
+        }
+    }
     t.accuracy = static_cast<float>(arguments.number("--temporal-accuracy", t.accuracy));
     t.max_frames = static_cast<int>(arguments.integer("--temporal-max-frames", t.max_frames));
     return t;
@@ -80,6 +103,10 @@ std::string temporal_gradients_name(TemporalGradients gradients) {
             return "interpolated";
     }
     return "?";
+}
+
+std::string temporal_lifespan_name(TemporalLifespan lifespan) {
+    return lifespan == TemporalLifespan::kDeparture ? "departure" : "change";
 }
 
 void refuse_cache_files_with_temporal(bool given, const std::string& options) {

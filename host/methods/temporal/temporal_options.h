@@ -14,9 +14,16 @@ namespace rc {
 // pass), or interpolated towards the record that replaces it (eqs. 21-23, two passes).
 enum class TemporalGradients { kNone, kExtrapolated, kInterpolated };
 
+// What bounds a first-level record's lifespan: its estimated change since its creation (the
+// report's eqs. 9-12), or, with interpolated gradients, its estimated departure from the line
+// towards its replacement (the curvature of its change, from a second reprojection two frames
+// ahead; docs/temporal-caching.md, "Lifespans by departure from the line").
+enum class TemporalLifespan { kChange, kDeparture };
+
 struct TemporalOptions {
     bool enabled = false;
     TemporalGradients gradients = TemporalGradients::kInterpolated;
+    TemporalLifespan lifespan = TemporalLifespan::kChange;
     float accuracy = 0.02f;  // a^t of eq. 10 (the report's §6 uses 0.05; docs/temporal-caching.md)
     int max_frames = 20;     // delta t_max of eq. 12 (the report's §6: 20 frames)
     int hole_passes = 4;     // 3 x 3 hole-filling passes of the reprojection (§4.3)
@@ -32,6 +39,7 @@ std::vector<OptionSpec> temporal_option_specs();
 TemporalOptions parse_temporal_options(const ParsedArguments& arguments);
 
 std::string temporal_gradients_name(TemporalGradients gradients);
+std::string temporal_lifespan_name(TemporalLifespan lifespan);
 
 // With --temporal the records live across frames, not in cache files: Error (exit status 2)
 // naming `options` (the cache-file options of the method) when `given`.

@@ -58,14 +58,54 @@ int temporal_lifespan(float change, const TemporalOptions& options, bool site_mo
     return static_cast<int>(std::min<double>(options.max_frames, 1.0 + frames));
 }
 
-int temporal_lifespan_in_clip(float change, const TemporalOptions& options, bool site_moves,
-                              int frame, int last_frame) {
-    const int lifespan = temporal_lifespan(change, options, site_moves);
+float temporal_curvature(const shared::IrradiancePayload& now,
+                         const shared::IrradiancePayload& next,
+                         const shared::IrradiancePayload& ahead) {
+    const float e0[3] = {now.irradiance.x, now.irradiance.y, now.irradiance.z};
+    const float e1[3] = {next.irradiance.x, next.irradiance.y, next.irradiance.z};
+    const float e2[3] = {ahead.irradiance.x, ahead.irradiance.y, ahead.irradiance.z};
+    const float largest = std::max({e0[0], e0[1], e0[2]});
+    if (!(largest > 0.0f)) {
+        return std::max({e1[0], e1[1], e1[2], e2[0], e2[1], e2[2]}) > 0.0f
+                   ? std::numeric_limits<float>::infinity()
+                   : 0.0f;
+    }
+    float curvature = 0.0f;
+    for (int c = 0; c < 3; ++c) {
+        if (e0[c] >= 1e-3f * largest) {
+            // The second difference in double: E_2 - 2 E_1 + E_0 cancels.
+            const double second = static_cast<double>(e2[c]) - 2.0 * e1[c] + e0[c];
+            curvature = std::max(curvature, static_cast<float>(std::fabs(second) / e0[c]));
+        }
+    }
+    return std::isfinite(curvature) ? curvature : std::numeric_limits<float>::infinity();
+}
+
+int departure_lifespan(float curvature, const TemporalOptions& options, bool site_moves) {
+    if (site_moves) {
+        return 1;
+    }
+    if (!(curvature > 0.0f)) {
+        return options.max_frames;
+    }
+    const double frames =
+        std::floor(std::sqrt(8.0 * static_cast<double>(options.accuracy) / curvature));
+    return static_cast<int>(std::clamp<double>(frames, 1.0, options.max_frames));
+}
+
+int lifespan_in_clip(int lifespan, float change, const TemporalOptions& options, int frame,
+                     int last_frame) {
     if (options.gradients == TemporalGradients::kInterpolated && change > 0.0f &&
         frame < last_frame && frame + lifespan > last_frame) {
         return last_frame - frame;
     }
     return lifespan;
+}
+
+int temporal_lifespan_in_clip(float change, const TemporalOptions& options, bool site_moves,
+                              int frame, int last_frame) {
+    return lifespan_in_clip(temporal_lifespan(change, options, site_moves), change, options, frame,
+                            last_frame);
 }
 
 shared::IrradiancePayload temporal_payload(const TemporalRecord& r, const TemporalRecord* successor,

@@ -16,8 +16,11 @@ struct TemporalRecord {
     int created = 0;          // t_k
     int lifespan = 1;         // it serves frames created .. created + lifespan - 1
     shared::IrradiancePayload next{};  // estimated at created + 1 (TemporalReprojection)
-    bool site_moves = false;           // its own surface moves away by the next frame
-    int successor = -1;  // the record computed in its place at created + lifespan, or -1
+    // Estimated at created + 2 (a second TemporalReprojection, two frames ahead), with
+    // --temporal-lifespan departure only (first level).
+    shared::IrradiancePayload ahead{};
+    bool site_moves = false;  // its own surface moves away by the next frame
+    int successor = -1;       // the record computed in its place at created + lifespan, or -1
 };
 
 // The largest relative change over the RGB channels from E_0 (the record's irradiance) to E_1
@@ -30,6 +33,28 @@ float temporal_change(const shared::IrradiancePayload& now, const shared::Irradi
 // t - t_0 <= a^t / |tau - 1|, and t - t_0 < delta t_max (eq. 12). A record whose own surface moves
 // serves one frame.
 int temporal_lifespan(float change, const TemporalOptions& options, bool site_moves);
+
+// The curvature of a record's irradiance over its first frames, relative: the largest over the
+// RGB channels holding at least 1e-3 of E_0's largest of |E_2 - 2 E_1 + E_0| / E_0 (the second
+// difference of E at t_0, t_0 + 1, t_0 + 2: E_1 and E_2 reprojected one and two frames ahead);
+// infinite when E_0 is black and E_1 or E_2 is not.
+float temporal_curvature(const shared::IrradiancePayload& now,
+                         const shared::IrradiancePayload& next,
+                         const shared::IrradiancePayload& ahead);
+
+// How many frames a record serves when the bound is its departure from the line towards its
+// replacement (interpolated gradients, the report's eqs. 21-23 with a replacement at t_0 + L):
+// for E(t) = E_0 + b (t - t_0) + c (t - t_0)^2 / 2 the line from E(t_0) to E(t_0 + L) departs
+// from E by c (t - t_0)(t_0 + L - t) / 2, at most |c| L^2 / 8 (at t_0 + L / 2), which stays
+// within a^t (eq. 10's bound on the relative error) for L <= sqrt(8 a^t / |c|); at most
+// delta t_max (eq. 12), at least 1. A change linear in time (c = 0) serves delta t_max. A record
+// whose own surface moves serves one frame.
+int departure_lifespan(float curvature, const TemporalOptions& options, bool site_moves);
+
+// `lifespan` of a record created at `frame` of a clip ending at `last_frame`, cut as
+// temporal_lifespan_in_clip cuts it (`change`: the record's one-frame change).
+int lifespan_in_clip(int lifespan, float change, const TemporalOptions& options, int frame,
+                     int last_frame);
 
 // temporal_lifespan of a record created at `frame` of a clip ending at `last_frame`, where with
 // interpolated gradients a changing record that would outlive the clip expires at its last frame
