@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <exception>
 #include <thread>
@@ -49,6 +50,21 @@ void parallel_ranges(size_t count, unsigned parts, Body&& body) {
             std::rethrow_exception(error);
         }
     }
+}
+
+// Calls body(i, part) for every i of [0, count) on `parts` threads (fewer when count is smaller),
+// handing out `chunk` indices at a time to whichever thread is free: for items of uneven cost.
+// Which part runs an item is not deterministic: body's result must not depend on it.
+template <class Body>
+void parallel_items(size_t count, unsigned parts, size_t chunk, Body&& body) {
+    std::atomic<size_t> next{0};
+    parallel_ranges(parts, parts, [&](size_t, size_t, size_t part) {
+        for (size_t begin = next.fetch_add(chunk); begin < count; begin = next.fetch_add(chunk)) {
+            for (size_t i = begin; i < std::min(count, begin + chunk); ++i) {
+                body(i, part);
+            }
+        }
+    });
 }
 
 }  // namespace rc

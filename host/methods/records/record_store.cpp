@@ -171,16 +171,15 @@ size_t RecordStore::insert_batch(const std::vector<NewRecord>& batch) {
 template <class BoundsOf>
 std::vector<RecordStore::Bound> RecordStore::collect_bounds(const std::vector<uint32_t>& indices,
                                                             BoundsOf&& bounds_of) const {
-    // Below a few hundred searches a thread costs more than it saves.
+    // Below a few dozen searches a thread costs more than it saves.
     constexpr size_t kSearchesPerThread = 32;
     const unsigned parts = static_cast<unsigned>(std::min<size_t>(
         threads(), (indices.size() + kSearchesPerThread - 1) / kSearchesPerThread));
     std::vector<std::vector<Bound>> part_bounds(std::max(1u, parts));
-    parallel_ranges(indices.size(), parts, [&](size_t begin, size_t end, size_t part) {
-        for (size_t i = begin; i < end; ++i) {
-            bounds_of(indices[i], part_bounds[part]);
-        }
-    });
+    // Handed out a few at a time: a large record's search costs thousands of a small one's. The
+    // bounds' order does not matter (lower() takes the least per record).
+    parallel_items(indices.size(), parts, 8,
+                   [&](size_t i, size_t part) { bounds_of(indices[i], part_bounds[part]); });
     std::vector<Bound> bounds;
     for (const std::vector<Bound>& part : part_bounds) {
         bounds.insert(bounds.end(), part.begin(), part.end());

@@ -154,9 +154,6 @@ double TemporalIrradianceCache::adopt(int level, int frame, const RecordStore& p
         r.created = frame;
         r.next = carried[k].next;
         r.site_moves = carried[k].site_moves;
-        if (!ahead.empty()) {
-            r.ahead = ahead[k].next;
-        }
         r.lifespan = new_lifespan(r, ahead.empty() ? nullptr : &ahead[k], frame);
         lifespans += r.lifespan;
         if (k < replaced.size()) {

@@ -16,9 +16,6 @@ struct TemporalRecord {
     int created = 0;          // t_k
     int lifespan = 1;         // it serves frames created .. created + lifespan - 1
     shared::IrradiancePayload next{};  // estimated at created + 1 (TemporalReprojection)
-    // Estimated at created + 2 (a second TemporalReprojection, two frames ahead), with
-    // --temporal-lifespan departure only (first level).
-    shared::IrradiancePayload ahead{};
     bool site_moves = false;  // its own surface moves away by the next frame
     int successor = -1;       // the record computed in its place at created + lifespan, or -1
 };
