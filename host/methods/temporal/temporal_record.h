@@ -16,8 +16,8 @@ struct TemporalRecord {
     int created = 0;          // t_k
     int lifespan = 1;         // it serves frames created .. created + lifespan - 1
     shared::IrradiancePayload next{};  // estimated at created + 1 (TemporalReprojection)
-    bool site_moves = false;  // its own surface moves away by the next frame
-    int successor = -1;       // the record computed in its place at created + lifespan, or -1
+    bool site_moves = false;           // its own surface moves away by the next frame
+    int successor = -1;  // the record computed in its place at created + lifespan, or -1
 };
 
 // The largest relative change over the RGB channels from E_0 (the record's irradiance) to E_1
