@@ -22,6 +22,17 @@ invocation on one device with warm kernel binaries (one untimed small render fir
   5. A chart of per-frame relMSE and temporal error over the clip (tools/flicker_chart.py,
      needs matplotlib): --chart FILE.
 
+--slow K renders the temporal run on the same animation K times slower: a copy of the scene
+(OUT/slow/scene.json, its files' paths made absolute) whose keyframes and clip range have their
+frame numbers multiplied by K, rendered over frames K·A..K·B; its frame K·j has frame j's pose
+exactly (keyframes interpolate linearly in the frame number), so its every K-th frame is compared
+with reference j. Per-frame caching renders every frame on its own, so its time for the slow clip
+is its time for the referenced frames A..B times (K(B − A) + 1) / (B − A + 1) (the frames in
+between taken at the referenced frames' mean cost); its errors are those of the referenced
+frames. The temporal error (flicker) is then between frames K apart: neither reported nor
+charted. Slow motion sampled densely is how the report's clips move (7.6× on a 400-frame "Cube
+in a Box", Gautron et al. 2006 §6).
+
 The clock (--clock): `cpu` (default), the CPU seconds (user + system) of the radcache processes,
 which other processes on a shared machine barely change; or `wall`, the render phase of --stats.
 Per-frame caching in one `--frames` run draws the same random streams every frame (records land
@@ -31,7 +42,8 @@ not depend on the frame; that is the baseline here.
 Usage: tools/bench/temporal.py [--scene scenes/moving-sphere] [--method ic|rc]
            [--reference DIR/frame####.exr] [--frames 0:11] [--width 128]
            [--height 128] [--spp 16] [--ladder "1024 512 256"] [--options "--ic-bounces 1"]
-           [--temporal-options "--temporal-accuracy 0.05"] [--clock cpu] [--chart FILE.png]
+           [--temporal-options "--temporal-accuracy 0.05"] [--slow K] [--clock cpu]
+           [--chart FILE.png]
            [--out build/bench/temporal] [-- extra radcache render options, e.g. --device 0:0]
 Writes OUT/temporal.json and prints a table. Python 3 standard library (matplotlib for --chart).
 """
@@ -60,6 +72,68 @@ def render(scene, pattern, options, clock):
     return (cpu if clock == "cpu" else stats["seconds"]["render"]), stats
 
 
+def strip_comments(text):
+    """JSON with // line comments (the scene format) as plain JSON."""
+    lines = []
+    for line in text.splitlines():
+        in_string = False
+        for i, c in enumerate(line):
+            if c == '"' and (i == 0 or line[i - 1] != "\\"):
+                in_string = not in_string
+            elif c == "/" and not in_string and line[i:i + 2] == "//":
+                line = line[:i]
+                break
+        lines.append(line)
+    return "\n".join(lines)
+
+
+def absolute_paths(node, scene_dir):
+    """Every "file" and "filename" value under `node` made absolute (relative to scene_dir)."""
+    if isinstance(node, dict):
+        for key, value in node.items():
+            if key in ("file", "filename") and isinstance(value, str) and not os.path.isabs(value):
+                node[key] = os.path.normpath(os.path.join(scene_dir, value))
+            else:
+                absolute_paths(value, scene_dir)
+    elif isinstance(node, list):
+        for value in node:
+            absolute_paths(value, scene_dir)
+
+
+def slowed_scene(scene, factor, out_dir):
+    """A copy of `scene` whose animation runs `factor` times slower (see --slow); its path."""
+    with open(scene) as f:
+        document = json.loads(strip_comments(f.read()))
+    absolute_paths(document, os.path.dirname(os.path.abspath(scene)))
+    animation = document.get("animation")
+    if not animation:
+        sys.exit("--slow: %s has no animation" % scene)
+    for key in ("frame_start", "frame_end"):
+        if key in animation:
+            animation[key] *= factor
+    for track in animation.get("tracks", []):
+        for keyframe in track.get("keyframes", []):
+            keyframe["frame"] *= factor
+    os.makedirs(out_dir, exist_ok=True)
+    path = os.path.join(out_dir, "scene.json")
+    with open(path, "w") as f:
+        json.dump(document, f, indent=1)
+    return path
+
+
+def every_kth_frame(pattern, frames, factor):
+    """Links OUT/slow/kth####.exr -> frame K·j of `pattern` for each j of `frames` (A:B)."""
+    first, last = (int(x) for x in frames.split(":"))
+    linked = os.path.join(os.path.dirname(pattern), "slow", "kth####.exr")
+    os.makedirs(os.path.dirname(linked), exist_ok=True)
+    for j in range(first, last + 1):
+        link = linked.replace("####", "%04d" % j)
+        if os.path.lexists(link):
+            os.remove(link)
+        os.symlink(os.path.abspath(pattern.replace("####", "%04d" % (factor * j))), link)
+    return linked
+
+
 def sequence_errors(pattern, reference, frames, layer):
     """Means over the clip of `compare --frames` on `layer`, and its per-frame rows."""
     json_path = pattern.replace("####", "") + "." + layer + ".json"
@@ -69,10 +143,12 @@ def sequence_errors(pattern, reference, frames, layer):
     return result["mean"], json_path
 
 
-def measure(label, scene, pattern, options, args):
+def measure(label, scene, pattern, options, args, slow=1):
+    """Renders and compares one run; with slow > 1, the slowed clip (--slow) every slow-th frame."""
     seconds, stats = render(scene, pattern, options, args.clock)
-    indirect, indirect_json = sequence_errors(pattern, args.reference, args.frames, "indirect")
-    beauty, _ = sequence_errors(pattern, args.reference, args.frames, "beauty")
+    compared = every_kth_frame(pattern, args.frames, slow) if slow > 1 else pattern
+    indirect, indirect_json = sequence_errors(compared, args.reference, args.frames, "indirect")
+    beauty, _ = sequence_errors(compared, args.reference, args.frames, "beauty")
     row = {"label": label, "options": options, "seconds": seconds,
            "indirect_relmse": indirect["relmse"], "indirect_temporal": indirect["temporal_error"],
            "beauty_relmse": beauty["relmse"], "beauty_relmse_net": beauty["relmse_net"],
@@ -151,6 +227,8 @@ def main(argv):
     parser.add_argument("--options", default="", help="options of every render (quoted)")
     parser.add_argument("--temporal-options", default="",
                         help="options of the temporal render only (quoted)")
+    parser.add_argument("--slow", type=int, default=1,
+                        help="the temporal run on the animation this many times slower")
     parser.add_argument("--clock", choices=["cpu", "wall"], default="cpu")
     parser.add_argument("--chart", default="", help="write the flicker chart here (.png)")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "temporal"))
@@ -164,6 +242,8 @@ def main(argv):
     args.scene_dir = args.scene if os.path.isdir(args.scene) else os.path.dirname(args.scene)
     scene = os.path.join(args.scene_dir, "scene.json")
     args.reference = args.reference or os.path.join(args.scene_dir, "reference", "frame####.exr")
+    if args.slow < 1:
+        sys.exit("--slow: %d is not a positive integer" % args.slow)
     ladder_rays = [int(n) for n in args.ladder.split()]
     rays_option = "--ic-rays" if args.method == "ic" else "--rc-rays"
     common = ["--method", args.method, "--frames", args.frames, "--width", str(args.width), "--height",
@@ -177,43 +257,64 @@ def main(argv):
     print("%s, frames %s at %dx%d, %d spp (%s clock):" % (os.path.relpath(scene, ROOT),
                                                         args.frames, args.width, args.height,
                                                         args.spp, args.clock))
-    temporal = measure("temporal %s, %d rays" % (args.method, ladder_rays[0]), scene,
+    first, last = (int(x) for x in args.frames.split(":"))
+    temporal_scene = scene
+    temporal_common = common
+    if args.slow > 1:
+        temporal_scene = slowed_scene(scene, args.slow, out("slow"))
+        slow_frames = "%d:%d" % (args.slow * first, args.slow * last)
+        temporal_common = list(common)
+        temporal_common[common.index("--frames") + 1] = slow_frames
+        print("  temporal run on %s, frames %s (every %d-th compared)"
+              % (temporal_scene, slow_frames, args.slow))
+    temporal = measure("temporal %s, %d rays" % (args.method, ladder_rays[0]), temporal_scene,
                        out("tc####.exr"),
-                       common + [rays_option, str(ladder_rays[0]), "--temporal"]
-                       + shlex.split(args.temporal_options), args)
+                       temporal_common + [rays_option, str(ladder_rays[0]), "--temporal"]
+                       + shlex.split(args.temporal_options), args, args.slow)
     ladder = [measure("per-frame %s, %d rays" % (args.method, rays), scene,
                       out("%s%d-####.exr" % (args.method, rays)),
                       common + [rays_option, str(rays)], args) for rays in ladder_rays]
+    if args.slow > 1:
+        scale = (args.slow * (last - first) + 1) / (last - first + 1)
+        for row in ladder:
+            row["referenced_frames_seconds"] = row["seconds"]
+            row["seconds"] *= scale
+        print("  per-frame times scaled by %.3f to the slow clip's %d frames"
+              % (scale, args.slow * (last - first) + 1))
 
     per_frame_time, bound = time_at_error(temporal["indirect_relmse"], ladder)
     speedup = per_frame_time / temporal["seconds"]
     flicker, bracketed = temporal_error_at_time(temporal["seconds"], ladder, "indirect_temporal")
     flicker_ratio = flicker / temporal["indirect_temporal"]
     same = ladder[0]
-    result = {"scene": scene, "method": args.method, "frames": args.frames, "resolution": [args.width, args.height],
+    result = {"scene": scene, "method": args.method, "frames": args.frames, "slow": args.slow,
+              "resolution": [args.width, args.height],
               "spp": args.spp, "clock": args.clock, "extra_options": extra,
               "temporal": temporal, "ladder": ladder,
               "speedup_at_equal_indirect_relmse": {"value": speedup, "bound": bound,
                                                    "per_frame_seconds": per_frame_time},
               "flicker_at_equal_time": {"per_frame": flicker, "bracketed": bracketed,
-                                        "ratio": flicker_ratio},
+                                        "ratio": flicker_ratio} if args.slow == 1 else None,
               "same_settings": {"speedup": same["seconds"] / temporal["seconds"],
                                 "indirect_relmse_ratio":
                                     temporal["indirect_relmse"] / same["indirect_relmse"],
                                 "flicker_ratio":
-                                    same["indirect_temporal"] / temporal["indirect_temporal"]}}
+                                    same["indirect_temporal"] / temporal["indirect_temporal"]
+                                    if args.slow == 1 else None}}
     with open(out("temporal.json"), "w") as f:
         json.dump(result, f, indent=2)
     print("same settings: per-frame / temporal time %.2f×, indirect relMSE temporal / per-frame "
-          "%.2f, temporal error per-frame / temporal %.2f×"
-          % (result["same_settings"]["speedup"], result["same_settings"]["indirect_relmse_ratio"],
-             result["same_settings"]["flicker_ratio"]))
+          "%.2f" % (result["same_settings"]["speedup"],
+                    result["same_settings"]["indirect_relmse_ratio"])
+          + (", temporal error per-frame / temporal %.2f×" % result["same_settings"]["flicker_ratio"]
+             if args.slow == 1 else ""))
     print("speed-up at equal indirect relMSE: %s %.2f× (per-frame %.1f s against %.1f s)"
           % ("" if bound == "=" else bound, speedup, per_frame_time, temporal["seconds"]))
-    print("temporal error at equal time: per-frame %.3g against %.3g: %.2f× lower%s"
-          % (flicker, temporal["indirect_temporal"], flicker_ratio,
-             "" if bracketed else " (nearest per-frame run, not interpolated)"))
-    if args.chart:
+    if args.slow == 1:
+        print("temporal error at equal time: per-frame %.3g against %.3g: %.2f× lower%s"
+              % (flicker, temporal["indirect_temporal"], flicker_ratio,
+                 "" if bracketed else " (nearest per-frame run, not interpolated)"))
+    if args.chart and args.slow == 1:
         chart(args.chart, [temporal] + ladder, args)
     return 0
 
