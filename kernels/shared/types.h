@@ -266,7 +266,19 @@ typedef struct IvgParams {
     uint seed_lo;        // the 64-bit seed
     uint seed_hi;
     int light_samples;  // next-event estimation's light samples at a camera hit (ivg_shade)
+    // Corner visibility without shadow rays (ivg_visibility.h, host: ivg_cell_planes.h): a
+    // lookup uses its cell's plane only when its point and ray origin lie in the cell grown by
+    // cell_margin, the origin off the plane by more than origin_margin, and skips a corner's ray
+    // when the ray's target lies more than cell_margin off the plane on the origin's side.
+    float cell_margin;
+    float origin_margin;
 } IvgParams;
+
+// The one plane every triangle overlapping a grid cell (grown by twice IvgParams::cell_margin)
+// lies in: dot(equation.xyz, x) + equation.w is x's signed distance to it (xyz: unit normal).
+typedef struct IvgPlane {
+    float4 equation;
+} IvgPlane;
 
 RC_SHARED_END
 
@@ -409,7 +421,11 @@ RC_SHARED_END
     FIELD(IvgParams, camera_spp)           \
     FIELD(IvgParams, seed_lo)              \
     FIELD(IvgParams, seed_hi)              \
-    FIELD(IvgParams, light_samples)
+    FIELD(IvgParams, light_samples)        \
+    FIELD(IvgParams, cell_margin)          \
+    FIELD(IvgParams, origin_margin)        \
+    STRUCT(IvgPlane)                       \
+    FIELD(IvgPlane, equation)
 // clang-format on
 
 #ifndef __OPENCL_VERSION__
@@ -433,6 +449,7 @@ static_assert(offsetof(rc::shared::Light, area) == 48);
 static_assert(sizeof(rc::shared::PathTracerParams) == 32);
 static_assert(sizeof(rc::shared::GBufferSample) == 64);
 static_assert(sizeof(rc::shared::IcParams) == 76);
-static_assert(sizeof(rc::shared::IvgParams) == 128);
+static_assert(sizeof(rc::shared::IvgParams) == 144);
+static_assert(sizeof(rc::shared::IvgPlane) == 16);
 static_assert(offsetof(rc::shared::IvgParams, sphere_radius) == 64);
 #endif
