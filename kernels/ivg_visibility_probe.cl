@@ -1,6 +1,6 @@
 // Test kernel (tests/ivg_visibility_test.cpp): the corners of its grid cell a lookup's surface
-// point sees, by rc_ivg_visible_corners (the cell's plane, shadow rays for the rest) and by a
-// shadow ray to every corner, as the lookup traced them before the cells had planes.
+// point sees, by rc_ivg_visible_corners (the cell's supporting planes, shadow rays for the rest)
+// and by a shadow ray to every corner, as the lookup traced them before the cells had planes.
 #include "irradiance_vector_grid/ivg_visibility.h"
 #include "scene_arguments.h"
 
@@ -8,9 +8,9 @@
 // seen by eight shadow rays, the rays rc_ivg_visible_corners traced, 1); all 0 without a hit.
 __kernel void ivg_visibility_probe(uint begin, uint end, IvgParams params,
                                    __global const float* values, __global const half* packed,
-                                   __global const int* cell_planes, __global const IvgPlane* planes,
-                                   RC_SCENE_PARAMETERS, __global const Ray* rays,
-                                   __global uint4* out) {
+                                   __global const IvgCellPlanes* cell_planes,
+                                   __global const IvgPlane* planes, RC_SCENE_PARAMETERS,
+                                   __global const Ray* rays, __global uint4* out) {
     const uint i = begin + (uint)get_global_id(0);
     if (i >= end) {
         return;

@@ -137,8 +137,9 @@ Shape quad(const std::string& name, std::vector<glm::vec3> corners) {
 
 // A floor y = 0 over [-1, 1]^2 and a ceiling at y = 1 (grid 4 x 4 x 4: cells 0.5 x 0.25 x 0.5), and
 // a thin wall x = 0.2, y in [0, 0.1], z in [0.1, 0.4], inside the floor's cell [0, 0.5] x [0,
-// 0.25] x [0, 0.5]. A point on the floor in that cell lies in a cell of two planes: it traces all
-// eight rays, and the wall hides corners from it. A point on the floor in a cell of the floor
+// 0.25] x [0, 0.5]. In that cell the wall stands above the floor's plane and the floor extends on
+// both sides of the wall's: no plane leaves the side of a point on the floor free, so it traces
+// all eight rays, and the wall hides corners from it. A point on the floor in a cell of the floor
 // alone skips the rays to the cell's upper corners (the lower ones lie on the floor's plane).
 TEST(IvgVisibility, PointBesideAThinWallTracesEveryCorner) {
     Scene scene;

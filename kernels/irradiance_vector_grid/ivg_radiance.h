@@ -12,13 +12,13 @@ typedef struct VectorGrid {
     IvgParams params;
     RC_GLOBAL const float* values;
     RC_GLOBAL const half* packed;
-    RC_GLOBAL const int* cell_planes;  // per cell, into planes or -1 (ivg_visibility.h)
+    RC_GLOBAL const IvgCellPlanes* cell_planes;  // per cell, into planes (ivg_visibility.h)
     RC_GLOBAL const IvgPlane* planes;
 } VectorGrid;
 
 // The diffuse light the grid gives a surface point: rho_d / pi E (§3.2, eq. 1), interpolated
 // over the corners of its cell the point sees (rc_ivg_visible_corners: a shadow ray from the
-// point's ray origin to just short of each corner its cell's plane does not prove unblocked;
+// point's ray origin to just short of each corner its cell's planes do not prove unblocked;
 // counted in *rays): corners behind a wall hold the other side's light.
 RC_FUNC float3 rc_ivg_diffuse(const SceneData* scene, const VectorGrid* grid,
                               const SurfaceMaterial* material, const SurfacePoint* sp, uint* rays) {

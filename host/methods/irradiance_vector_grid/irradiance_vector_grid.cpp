@@ -155,7 +155,8 @@ IvgDeviceNeed ivg_device_need(const IvgOptions& options, const Scene& scene) {
         vertex_count(grid_cells(options, upper - lower)) * RC_IVG_VALUES_PER_VERTEX;
     // IrradianceVectorGrid's placeholders, then build(): accum, counters and the normalised
     // values together; then upload_values(): the values and the compressed copy.
-    need.building.add("grid placeholders", sizeof(float) + sizeof(uint16_t) + sizeof(int32_t) +
+    need.building.add("grid placeholders", sizeof(float) + sizeof(uint16_t) +
+                                               sizeof(shared::IvgCellPlanes) +
                                                sizeof(shared::IvgPlane));
     need.building.add("grid sums", buffer_bytes(values, sizeof(int64_t)));
     need.building.add("grid counters", buffer_bytes(2, sizeof(unsigned)));
@@ -166,13 +167,14 @@ IvgDeviceNeed ivg_device_need(const IvgOptions& options, const Scene& scene) {
                        ? buffer_bytes(values / RC_IVG_VALUES_PER_VERTEX * RC_IVG_PACKED_PER_VERTEX,
                                       sizeof(uint16_t))
                        : sizeof(uint16_t));
-    // The cells' planes (ivg_cell_planes.h): an index per cell, at most one plane per cell or
-    // triangle.
+    // The cells' planes (ivg_cell_planes.h): two indices per cell, at most two planes per cell
+    // or triangle.
     const std::array<int, 3> cells = grid_cells(options, upper - lower);
     const size_t cell_count = static_cast<size_t>(cells[0]) * cells[1] * cells[2];
-    need.built.add("grid cell planes", buffer_bytes(cell_count, sizeof(int32_t)));
-    need.built.add("grid planes", buffer_bytes(std::min(cell_count, scene.mesh.triangle_count()),
-                                               sizeof(shared::IvgPlane)));
+    need.built.add("grid cell planes", buffer_bytes(cell_count, sizeof(shared::IvgCellPlanes)));
+    need.built.add("grid planes",
+                   buffer_bytes(2 * std::min(cell_count, scene.mesh.triangle_count()),
+                                sizeof(shared::IvgPlane)));
     return need;
 }
 
@@ -339,14 +341,15 @@ void IrradianceVectorGrid::upload_cell_planes(IvgStats* stats) {
     const IvgCellPlanes classified = classify_cell_planes(scene_.mesh, params_);
     params_.cell_margin = classified.cell_margin;
     params_.origin_margin = classified.origin_margin;
-    cell_planes_ = Buffer<int32_t>(context_, classified.cell_planes, "ivg_cell_planes");
+    cell_planes_ =
+        Buffer<shared::IvgCellPlanes>(context_, classified.cell_planes, "ivg_cell_planes");
     planes_ = Buffer<shared::IvgPlane>(
         context_, classified.planes.empty() ? std::vector<shared::IvgPlane>(1) : classified.planes,
         "ivg_planes");
     stats->empty_cells = classified.empty_cells;
-    stats->multi_plane_cells = classified.multi_plane_cells;
+    stats->unsupported_cells = classified.unsupported_cells;
     stats->plane_cells =
-        classified.cell_planes.size() - classified.empty_cells - classified.multi_plane_cells;
+        classified.cell_planes.size() - classified.empty_cells - classified.unsupported_cells;
     stats->planes = classified.planes.size();
     stats->planes_seconds = seconds_since(start);
 }

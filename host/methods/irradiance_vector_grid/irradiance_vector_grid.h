@@ -56,9 +56,10 @@ struct IvgStats {
     size_t grid_bytes = 0;  // the normalised grid (and the compressed copy) on the device
     double trace_seconds = 0.0;
     double normalize_seconds = 0.0;  // normalisation, compression and the file
-    // The cells' planes (ivg_cell_planes.h): cells with one plane, several, none; distinct planes.
+    // The cells' planes (ivg_cell_planes.h): cells with a supporting plane, with triangles but
+    // none, with no triangle; the oriented planes stored.
     size_t plane_cells = 0;
-    size_t multi_plane_cells = 0;
+    size_t unsupported_cells = 0;
     size_t empty_cells = 0;
     size_t planes = 0;
     double planes_seconds = 0.0;
@@ -140,7 +141,7 @@ class IrradianceVectorGrid : public RadianceSource, private FrameBound {
     shared::IvgParams params_{};
     Buffer<float> values_;
     Buffer<uint16_t> packed_;
-    Buffer<int32_t> cell_planes_;
+    Buffer<shared::IvgCellPlanes> cell_planes_;
     Buffer<shared::IvgPlane> planes_;
 };
 

@@ -1,8 +1,11 @@
-// Per cell of the irradiance vector grid, the one plane of the triangles that can block a
-// lookup's shadow rays, when they lie in one (kernels/irradiance_vector_grid/ivg_visibility.h
-// skips the shadow rays that plane proves unblocked). Built on the host with the grid, from the
-// scene's triangles: each triangle's bounding box rasterised to cells, then an exact
-// triangle-box test (triangle_box_overlap.h) against the cell grown by twice the cell margin.
+// Per cell of the irradiance vector grid, up to two supporting planes of the triangles that can
+// block a lookup's shadow rays: planes of the cell's triangles with every triangle of the cell on
+// one side (on the plane or behind it), stored oriented towards the free side; a cell whose
+// triangles all lie in one plane has it twice, once per side. A shadow ray whose two ends lie
+// strictly on a free side meets none of them (kernels/irradiance_vector_grid/ivg_visibility.h
+// skips it). Built on the host with the grid, from the scene's triangles: each triangle's
+// bounding box rasterised to cells, then an exact triangle-box test (triangle_box_overlap.h)
+// against the cell grown by twice the cell margin.
 #pragma once
 
 #include <cstdint>
@@ -14,17 +17,17 @@
 namespace rc {
 
 struct IvgCellPlanes {
-    std::vector<int32_t> cell_planes;      // per cell (x fastest, then y, z): into planes, or -1
-    std::vector<shared::IvgPlane> planes;  // the distinct planes the cells use
-    float cell_margin = 0.0f;              // IvgParams::cell_margin
-    float origin_margin = 0.0f;            // IvgParams::origin_margin
-    size_t empty_cells = 0;                // no triangle overlaps them
-    size_t multi_plane_cells = 0;          // triangles of several planes overlap them
+    std::vector<shared::IvgCellPlanes> cell_planes;  // per cell (x fastest, then y, z)
+    std::vector<shared::IvgPlane> planes;            // the oriented planes the cells use
+    float cell_margin = 0.0f;                        // IvgParams::cell_margin
+    float origin_margin = 0.0f;                      // IvgParams::origin_margin
+    size_t empty_cells = 0;                          // no triangle overlaps them
+    size_t unsupported_cells = 0;                    // no plane of theirs leaves a side free
 };
 
 // The cells of the grid `params` places, classified against `mesh` (the scene posed at the grid's
-// frame; the triangles the BVH holds). Deterministic: cells take the plane of their first
-// overlapping triangle in mesh order.
+// frame; the triangles the BVH holds). Deterministic: a cell's planes are tried in the order of
+// its triangles in the mesh.
 IvgCellPlanes classify_cell_planes(const TriangleMesh& mesh, const shared::IvgParams& params);
 
 }  // namespace rc

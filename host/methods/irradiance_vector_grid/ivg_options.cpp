@@ -96,7 +96,7 @@ nlohmann::json ivg_stats_json(const IvgStats& stats) {
         {"grid_bytes", stats.grid_bytes},
         {"cell_planes",
          {{"plane_cells", stats.plane_cells},
-          {"multi_plane_cells", stats.multi_plane_cells},
+          {"unsupported_cells", stats.unsupported_cells},
           {"empty_cells", stats.empty_cells},
           {"planes", stats.planes}}},
         {"seconds",
