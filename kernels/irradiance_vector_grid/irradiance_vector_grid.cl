@@ -76,14 +76,15 @@ __kernel void ivg_lookup(uint begin, uint end, IvgParams params, __global const 
 // light at the camera's hit as its layer. counters: [0] rays, [1] NaN or infinite samples
 // (dropped), [2] the first pixel that had one.
 __kernel void ivg_shade(uint begin, uint end, IvgParams params, __global const float* values,
-                        __global const half* packed, CameraParams camera, RC_SCENE_PARAMETERS,
+                        __global const half* packed, __global const IvgCellPlanes* cell_planes,
+                        __global const IvgPlane* planes, CameraParams camera, RC_SCENE_PARAMETERS,
                         __global float4* film, __global uint* counters) {
     const uint pixel = begin + (uint)get_global_id(0);
     if (pixel >= end) {
         return;
     }
     const SceneData scene = RC_SCENE_DATA();
-    const VectorGrid grid = {params, values, packed};
+    const VectorGrid grid = {params, values, packed, cell_planes, planes};
     const PixelShader shader = {&scene, &grid, &camera};
     rc_shade_pixel(&shader, (uint)params.camera_spp, pixel, film, counters);
 }

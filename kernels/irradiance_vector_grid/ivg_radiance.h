@@ -5,30 +5,25 @@
 
 #include "common/cached_radiance.h"
 #include "irradiance_vector_grid/ivg_lookup.h"
+#include "irradiance_vector_grid/ivg_visibility.h"
 
 // The grid as the kernels read it.
 typedef struct VectorGrid {
     IvgParams params;
     RC_GLOBAL const float* values;
     RC_GLOBAL const half* packed;
+    RC_GLOBAL const IvgCellPlanes* cell_planes;  // per cell, into planes (ivg_visibility.h)
+    RC_GLOBAL const IvgPlane* planes;
 } VectorGrid;
 
 // The diffuse light the grid gives a surface point: rho_d / pi E (§3.2, eq. 1), interpolated
-// over the corners of its cell the point sees (a shadow ray from the point's ray origin to just
-// short of each corner; counted in *rays): corners behind a wall hold the other side's light.
+// over the corners of its cell the point sees (rc_ivg_visible_corners: a shadow ray from the
+// point's ray origin to just short of each corner its cell's planes do not prove unblocked;
+// counted in *rays): corners behind a wall hold the other side's light.
 RC_FUNC float3 rc_ivg_diffuse(const SceneData* scene, const VectorGrid* grid,
                               const SurfaceMaterial* material, const SurfacePoint* sp, uint* rays) {
     const IvgParams* p = &grid->params;
-    const int3 base = rc_ivg_cell_base(p, rc_ivg_grid_coordinates(p, sp->position));
-    int visible = 0;
-    for (int corner = 0; corner < 8; ++corner) {
-        const float3 vertex = rc_ivg_corner_position(p, base, corner);
-        const float3 target = vertex + 0.01f * (sp->origin - vertex);
-        if (!rc_occluded(scene, sp->origin, target, false, target - sp->origin)) {
-            visible |= 1 << corner;
-        }
-    }
-    *rays += 8;
+    const int visible = rc_ivg_visible_corners(scene, p, grid->cell_planes, grid->planes, sp, rays);
     return material->diffuse * RC_INV_PI *
            rc_ivg_irradiance(p, grid->values, grid->packed, sp->position, sp->shading.n, visible);
 }

@@ -9,10 +9,11 @@
 typedef VectorGrid RadianceSource;
 
 // As host/methods/irradiance_vector_grid/irradiance_vector_grid.h binds them.
-#define RC_RADIANCE_SOURCE_PARAMETERS \
-    IvgParams grid_params, RC_GLOBAL const float *grid_values, RC_GLOBAL const half *grid_packed,
+#define RC_RADIANCE_SOURCE_PARAMETERS                                                             \
+    IvgParams grid_params, RC_GLOBAL const float *grid_values, RC_GLOBAL const half *grid_packed, \
+        RC_GLOBAL const IvgCellPlanes *grid_cell_planes, RC_GLOBAL const IvgPlane *grid_planes,
 #define RC_RADIANCE_SOURCE_DATA() \
-    { grid_params, grid_values, grid_packed }
+    { grid_params, grid_values, grid_packed, grid_cell_planes, grid_planes }
 
 RC_FUNC SourceSample rc_source_radiance(const SceneData* scene, const RadianceSource* source,
                                         Ray ray, RngStream* rng, bool count_emission, int bounces,

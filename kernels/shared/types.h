@@ -266,7 +266,27 @@ typedef struct IvgParams {
     uint seed_lo;        // the 64-bit seed
     uint seed_hi;
     int light_samples;  // next-event estimation's light samples at a camera hit (ivg_shade)
+    // Corner visibility without shadow rays (ivg_visibility.h, host: ivg_cell_planes.h): a
+    // lookup uses its cell's planes only when its point and ray origin lie in the cell grown by
+    // cell_margin, and a plane only when the origin lies on its free side by more than
+    // origin_margin; it skips a corner's ray when the ray's target lies there by more than
+    // cell_margin.
+    float cell_margin;
+    float origin_margin;
 } IvgParams;
+
+// A plane of the triangles overlapping a grid cell (grown by twice IvgParams::cell_margin) that
+// has all of them on it or behind it: dot(equation.xyz, x) + equation.w is x's signed distance
+// to it, positive on the free side (xyz: unit normal).
+typedef struct IvgPlane {
+    float4 equation;
+} IvgPlane;
+
+// A grid cell's supporting planes: indices into the IvgPlane table, -1 for none.
+typedef struct IvgCellPlanes {
+    int first;
+    int second;
+} IvgCellPlanes;
 
 RC_SHARED_END
 
@@ -409,7 +429,14 @@ RC_SHARED_END
     FIELD(IvgParams, camera_spp)           \
     FIELD(IvgParams, seed_lo)              \
     FIELD(IvgParams, seed_hi)              \
-    FIELD(IvgParams, light_samples)
+    FIELD(IvgParams, light_samples)        \
+    FIELD(IvgParams, cell_margin)          \
+    FIELD(IvgParams, origin_margin)        \
+    STRUCT(IvgPlane)                       \
+    FIELD(IvgPlane, equation)              \
+    STRUCT(IvgCellPlanes)                  \
+    FIELD(IvgCellPlanes, first)            \
+    FIELD(IvgCellPlanes, second)
 // clang-format on
 
 #ifndef __OPENCL_VERSION__
@@ -433,6 +460,8 @@ static_assert(offsetof(rc::shared::Light, area) == 48);
 static_assert(sizeof(rc::shared::PathTracerParams) == 32);
 static_assert(sizeof(rc::shared::GBufferSample) == 64);
 static_assert(sizeof(rc::shared::IcParams) == 76);
-static_assert(sizeof(rc::shared::IvgParams) == 128);
+static_assert(sizeof(rc::shared::IvgParams) == 144);
+static_assert(sizeof(rc::shared::IvgPlane) == 16);
+static_assert(sizeof(rc::shared::IvgCellPlanes) == 8);
 static_assert(offsetof(rc::shared::IvgParams, sphere_radius) == 64);
 #endif

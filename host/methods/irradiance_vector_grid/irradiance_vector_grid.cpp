@@ -117,7 +117,9 @@ IrradianceVectorGrid::IrradianceVectorGrid(const FrameScene& frame)
       lookup_kernel_(
           frame.context.kernel("irradiance_vector_grid/irradiance_vector_grid.cl", "ivg_lookup")),
       values_(frame.context, 1, "ivg_values"),
-      packed_(frame.context, 1, "ivg_packed") {}
+      packed_(frame.context, 1, "ivg_packed"),
+      cell_planes_(frame.context, 1, "ivg_cell_planes"),
+      planes_(frame.context, 1, "ivg_planes") {}
 
 namespace {
 
@@ -153,7 +155,9 @@ IvgDeviceNeed ivg_device_need(const IvgOptions& options, const Scene& scene) {
         vertex_count(grid_cells(options, upper - lower)) * RC_IVG_VALUES_PER_VERTEX;
     // IrradianceVectorGrid's placeholders, then build(): accum, counters and the normalised
     // values together; then upload_values(): the values and the compressed copy.
-    need.building.add("grid placeholders", sizeof(float) + sizeof(uint16_t));
+    need.building.add("grid placeholders", sizeof(float) + sizeof(uint16_t) +
+                                               sizeof(shared::IvgCellPlanes) +
+                                               sizeof(shared::IvgPlane));
     need.building.add("grid sums", buffer_bytes(values, sizeof(int64_t)));
     need.building.add("grid counters", buffer_bytes(2, sizeof(unsigned)));
     need.building.add("grid values", buffer_bytes(values, sizeof(float)));
@@ -163,6 +167,14 @@ IvgDeviceNeed ivg_device_need(const IvgOptions& options, const Scene& scene) {
                        ? buffer_bytes(values / RC_IVG_VALUES_PER_VERTEX * RC_IVG_PACKED_PER_VERTEX,
                                       sizeof(uint16_t))
                        : sizeof(uint16_t));
+    // The cells' planes (ivg_cell_planes.h): two indices per cell, at most two planes per cell
+    // or triangle.
+    const std::array<int, 3> cells = grid_cells(options, upper - lower);
+    const size_t cell_count = static_cast<size_t>(cells[0]) * cells[1] * cells[2];
+    need.built.add("grid cell planes", buffer_bytes(cell_count, sizeof(shared::IvgCellPlanes)));
+    need.built.add("grid planes",
+                   buffer_bytes(2 * std::min(cell_count, scene.mesh.triangle_count()),
+                                sizeof(shared::IvgPlane)));
     return need;
 }
 
@@ -281,6 +293,7 @@ void IrradianceVectorGrid::build(const IvgOptions& options, IvgStats* stats) {
     const auto start = SteadyClock::now();
     upload_values(values);
     s.normalize_seconds += seconds_since(start);
+    upload_cell_planes(&s);
     s.cells = {params_.cells.x, params_.cells.y, params_.cells.z};
     s.grid_bytes = values_.bytes() + (options.compressed ? packed_.bytes() : 0);
     if (stats != nullptr) {
@@ -323,18 +336,44 @@ void IrradianceVectorGrid::upload_values(const std::vector<float>& values) {
     packed_ = Buffer<uint16_t>(context_, packed, "ivg_packed");
 }
 
+void IrradianceVectorGrid::upload_cell_planes(IvgStats* stats) {
+    const auto start = SteadyClock::now();
+    const IvgCellPlanes classified = classify_cell_planes(scene_.mesh, params_);
+    params_.cell_margin = classified.cell_margin;
+    params_.origin_margin = classified.origin_margin;
+    cell_planes_ =
+        Buffer<shared::IvgCellPlanes>(context_, classified.cell_planes, "ivg_cell_planes");
+    planes_ = Buffer<shared::IvgPlane>(
+        context_, classified.planes.empty() ? std::vector<shared::IvgPlane>(1) : classified.planes,
+        "ivg_planes");
+    stats->empty_cells = classified.empty_cells;
+    stats->unsupported_cells = classified.unsupported_cells;
+    stats->plane_cells =
+        classified.cell_planes.size() - classified.empty_cells - classified.unsupported_cells;
+    stats->planes = classified.planes.size();
+    stats->planes_seconds = seconds_since(start);
+}
+
 unsigned IrradianceVectorGrid::set_kernel_args(Kernel& kernel, unsigned first) const {
     kernel.set_arg(first, sizeof params_, &params_);
     _cl_mem* values = values_.handle();
     kernel.set_arg(first + 1, sizeof values, &values);
     _cl_mem* packed = packed_.handle();
     kernel.set_arg(first + 2, sizeof packed, &packed);
-    return 3;
+    _cl_mem* cell_planes = cell_planes_.handle();
+    kernel.set_arg(first + 3, sizeof cell_planes, &cell_planes);
+    _cl_mem* planes = planes_.handle();
+    kernel.set_arg(first + 4, sizeof planes, &planes);
+    return 5;
 }
 
 std::vector<float> IrradianceVectorGrid::values() const { return values_.download(); }
 
-void IrradianceVectorGrid::set_values(const std::vector<float>& values) { upload_values(values); }
+void IrradianceVectorGrid::set_values(const std::vector<float>& values) {
+    upload_values(values);
+    IvgStats ignored;
+    upload_cell_planes(&ignored);
+}
 
 std::vector<int64_t> IrradianceVectorGrid::deposit(const shared::IvgParams& params,
                                                    const std::vector<PhotonSegment>& segments) {

@@ -16,6 +16,7 @@
 #include "device/kernel.h"
 #include "device/memory_need.h"
 #include "methods/frame_scene.h"
+#include "methods/irradiance_vector_grid/ivg_cell_planes.h"
 #include "methods/radiance_source.h"
 #include "shared/types.h"
 
@@ -55,6 +56,13 @@ struct IvgStats {
     size_t grid_bytes = 0;  // the normalised grid (and the compressed copy) on the device
     double trace_seconds = 0.0;
     double normalize_seconds = 0.0;  // normalisation, compression and the file
+    // The cells' planes (ivg_cell_planes.h): cells with a supporting plane, with triangles but
+    // none, with no triangle; the oriented planes stored.
+    size_t plane_cells = 0;
+    size_t unsupported_cells = 0;
+    size_t empty_cells = 0;
+    size_t planes = 0;
+    double planes_seconds = 0.0;
 };
 
 // A photon segment for the deposition tests: from -> to carrying flux.
@@ -93,7 +101,7 @@ class IrradianceVectorGrid : public RadianceSource, private FrameBound {
     const shared::IvgParams& params() const { return params_; }
     void set_params(const shared::IvgParams& params) { params_ = params; }
 
-    // Kernel arguments (IvgParams, values, packed), in that order.
+    // Kernel arguments (IvgParams, values, packed, cell planes, planes), in that order.
     unsigned set_kernel_args(Kernel& kernel, unsigned first) const override;
     std::string build_options() const override { return radiance_source_define(RC_RADIANCE_GRID); }
     std::string source_name() const override { return "irradiance vector grid"; }
@@ -114,6 +122,8 @@ class IrradianceVectorGrid : public RadianceSource, private FrameBound {
 
    private:
     void upload_values(const std::vector<float>& values);
+    // The cells' planes for params_ and the scene, classified and uploaded; params_'s margins set.
+    void upload_cell_planes(IvgStats* stats);
     // Photons 0 .. photons - 1 of params_ traced into `accum` (fixed-point sums, zeroed; counters:
     // the launches' two counters): on the frame's device, or in batches shared with its peers
     // (ivg_photon_split.cpp), each device into its own sums, added on the host (integer sums:
@@ -131,6 +141,8 @@ class IrradianceVectorGrid : public RadianceSource, private FrameBound {
     shared::IvgParams params_{};
     Buffer<float> values_;
     Buffer<uint16_t> packed_;
+    Buffer<shared::IvgCellPlanes> cell_planes_;
+    Buffer<shared::IvgPlane> planes_;
 };
 
 }  // namespace rc

@@ -94,7 +94,15 @@ nlohmann::json ivg_stats_json(const IvgStats& stats) {
         {"photon_rays", stats.rays},
         {"photons_per_second", seconds > 0.0 ? static_cast<double>(stats.photons) / seconds : 0.0},
         {"grid_bytes", stats.grid_bytes},
-        {"seconds", {{"photons", stats.trace_seconds}, {"normalize", stats.normalize_seconds}}}};
+        {"cell_planes",
+         {{"plane_cells", stats.plane_cells},
+          {"unsupported_cells", stats.unsupported_cells},
+          {"empty_cells", stats.empty_cells},
+          {"planes", stats.planes}}},
+        {"seconds",
+         {{"photons", stats.trace_seconds},
+          {"normalize", stats.normalize_seconds},
+          {"planes", stats.planes_seconds}}}};
     if (!stats.devices.empty()) {
         nlohmann::json devices = nlohmann::json::array();
         for (const IvgDeviceShare& d : stats.devices) {
