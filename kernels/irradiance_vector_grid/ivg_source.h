@@ -8,10 +8,13 @@
 
 typedef VectorGrid RadianceSource;
 
-// As host/methods/irradiance_vector_grid/irradiance_vector_grid.h binds them.
+// As host/methods/irradiance_vector_grid/irradiance_vector_grid.h binds them (not formatted:
+// clang-format reads the macro's pointers as the file's style and would flip the functions').
+// clang-format off
 #define RC_RADIANCE_SOURCE_PARAMETERS                                                             \
-    IvgParams grid_params, RC_GLOBAL const float *grid_values, RC_GLOBAL const half *grid_packed, \
-        RC_GLOBAL const IvgCellPlanes *grid_cell_planes, RC_GLOBAL const IvgPlane *grid_planes,
+    IvgParams grid_params, RC_GLOBAL const float* grid_values, RC_GLOBAL const half* grid_packed, \
+        RC_GLOBAL const IvgCellPlanes* grid_cell_planes, RC_GLOBAL const IvgPlane* grid_planes,
+// clang-format on
 #define RC_RADIANCE_SOURCE_DATA() \
     { grid_params, grid_values, grid_packed, grid_cell_planes, grid_planes }
 

@@ -57,6 +57,8 @@ import subprocess
 import sys
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import references  # noqa: E402
 from radcache_process import cpu_seconds, run  # noqa: E402
 
 
@@ -70,21 +72,6 @@ def render(scene, pattern, options, clock):
     with open(stats_path) as f:
         stats = json.load(f)
     return (cpu if clock == "cpu" else stats["seconds"]["render"]), stats
-
-
-def strip_comments(text):
-    """JSON with // line comments (the scene format) as plain JSON."""
-    lines = []
-    for line in text.splitlines():
-        in_string = False
-        for i, c in enumerate(line):
-            if c == '"' and (i == 0 or line[i - 1] != "\\"):
-                in_string = not in_string
-            elif c == "/" and not in_string and line[i:i + 2] == "//":
-                line = line[:i]
-                break
-        lines.append(line)
-    return "\n".join(lines)
 
 
 def absolute_paths(node, scene_dir):
@@ -102,8 +89,10 @@ def absolute_paths(node, scene_dir):
 
 def slowed_scene(scene, factor, out_dir):
     """A copy of `scene` whose animation runs `factor` times slower (see --slow); its path."""
-    with open(scene) as f:
-        document = json.loads(strip_comments(f.read()))
+    try:
+        document = references.load_scene_json(scene)
+    except references.ReferenceError as e:
+        sys.exit("--slow: %s" % e)
     absolute_paths(document, os.path.dirname(os.path.abspath(scene)))
     animation = document.get("animation")
     if not animation:
