@@ -1052,6 +1052,60 @@ TEST(DecompositionDeterminism, WithGradientsImageIsBitwiseIdenticalAcrossChunksA
     EXPECT_FALSE(test::bitwise_equal(reference, render_with(0, 0, false)));
 }
 
+// The largest difference between two images' `layer`, relative to the larger image's largest
+// value there.
+double relative_difference(const Image& a, const Image& b, const std::string& layer) {
+    const Image la = select_layers(a, {layer});
+    const Image lb = select_layers(b, {layer});
+    double largest = 0.0, difference = 0.0;
+    for (size_t i = 0; i < la.pixels.size(); ++i) {
+        largest =
+            std::max({largest, std::fabs(double(la.pixels[i])), std::fabs(double(lb.pixels[i]))});
+        difference = std::max(difference, std::fabs(double(la.pixels[i]) - double(lb.pixels[i])));
+    }
+    return largest > 0.0 ? difference / largest : difference;
+}
+
+// --decomp-indirect-spp 8 with --spp 2 (the Cornell box: diffuse only): the layers that hold the
+// diffuse lobe's indirect light (indirect, far-field, near-field) are those of a render shading
+// all 8 samples fully (the same camera samples, clusters and terms; only the sums' order differs),
+// the others (direct, albedo, normal) bit for bit those of a render at 2; the 6 extra samples cost
+// one camera ray each.
+TEST(DecompositionCameraSamples, IndirectOnlySamplesGiveTheFullySampledIndirectLight) {
+    GridFrame f(test::load_cornell_box(), test::shared_context(), 20000);
+    const auto render = [&](int spp, int indirect_spp, DecompositionStats* stats) {
+        IrradianceDecomposition decomposition(f.device.frame());
+        DecompositionOptions options = small_options(30.0f, &f.grid, 24);
+        options.spp = spp;
+        options.indirect_spp = indirect_spp;
+        return decomposition.render(options, stats);
+    };
+    DecompositionStats mixed_stats, shaded_stats, eight_stats;
+    const Image mixed = render(2, 8, &mixed_stats);
+    const Image shaded = render(2, 0, &shaded_stats);
+    const Image eight = render(8, 0, &eight_stats);
+    for (const char* layer : {"indirect", "far-field", "near-field"}) {
+        EXPECT_LT(relative_difference(mixed, eight, layer), 1e-5) << layer;
+    }
+    EXPECT_GT(relative_difference(mixed, shaded, "indirect"), 1e-3);
+    for (const char* layer : {"direct", "albedo", "normal"}) {
+        EXPECT_TRUE(
+            test::bitwise_equal(select_layers(mixed, {layer}), select_layers(shaded, {layer})))
+            << layer;
+    }
+    const Image beauty_mixed = select_layers(mixed, {"beauty"});
+    const Image direct = select_layers(mixed, {"direct"});
+    const Image indirect = select_layers(mixed, {"indirect"});
+    for (size_t i = 0; i < beauty_mixed.pixels.size(); ++i) {
+        ASSERT_NEAR(beauty_mixed.pixels[i], direct.pixels[i] + indirect.pixels[i],
+                    1e-5f * (1.0f + beauty_mixed.pixels[i]))
+            << i;
+    }
+    EXPECT_EQ(mixed_stats.shading_rays, shaded_stats.shading_rays + 24u * 24u * 6u);
+    EXPECT_EQ(mixed_stats.cluster_rays, eight_stats.cluster_rays);
+    EXPECT_EQ(mixed_stats.served_samples, eight_stats.served_samples);
+}
+
 // The near triangles' radiosity by default: gathered over the grid, read from the source (path
 // traced) with --decomp-source path; --decomp-radiosity overrides either (--stats names it).
 // The near set follows the radiosity (docs/decomposition.md, "The crease bias").
@@ -1107,6 +1161,10 @@ TEST(DecompositionOptions, BadOptionsAreRefusedByName) {
         {{"--decomp-source", "path", "--photons", "1000"}, "--photons applies to --decomp-source"},
         {{"--decomp-source", "path", "--alpha", "0.01"}, "--alpha 0.01"},
         {{"--light-samples", "0"}, "--light-samples"},
+        {{"--decomp-indirect-spp", "0"}, "--decomp-indirect-spp"},
+        {{"--decomp-traced-points", "0"}, "--decomp-traced-points"},
+        {{"--decomp-radiosity", "coarse", "--decomp-traced-points", "4"},
+         "--decomp-traced-points: applies to --decomp-radiosity gathered only"},
         {{"--aovs", "records"}, "has no layer 'records'"},
     };
     for (const auto& [options, expected] : cases) {
@@ -1119,6 +1177,14 @@ TEST(DecompositionOptions, BadOptionsAreRefusedByName) {
         EXPECT_NE(r.output.find(expected), std::string::npos) << r.output;
         EXPECT_FALSE(std::filesystem::exists(out)) << options[0];
     }
+    const test::CommandResult fewer =
+        test::run_radcache({"render", scene, "-o", out, "--width", "8", "--height", "8", "--spp",
+                            "4", "--method", "decomposition", "--decomp-indirect-spp", "2"});
+    EXPECT_EQ(fewer.exit_code, 2) << fewer.output;
+    EXPECT_NE(fewer.output.find("--decomp-indirect-spp 2: must be at least --spp (4)"),
+              std::string::npos)
+        << fewer.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
     const test::CommandResult foreign =
         test::run_radcache({"render", scene, "-o", out, "--method", "ic", "--alpha", "5%"});
     EXPECT_EQ(foreign.exit_code, 2);

@@ -247,7 +247,10 @@ TEST(MultiDevice, DecompositionImageIsTheOneDeviceImageWhateverTheSplit) {
         // Path-traced continuation: the coarse radiosity and the cluster batches shared.
         bool path_split;
     };
-    const std::vector<std::string> grid = {"--method", "decomposition"};
+    // With camera samples past the fully shaded ones (--decomp-indirect-spp): their terms and
+    // their indirect light in each device's chunks too.
+    const std::vector<std::string> grid = {"--method", "decomposition", "--decomp-indirect-spp",
+                                           "12"};
     // Fewer split triangles: their path-traced radiosity is most of the render.
     const std::vector<std::string> path = {"--method", "decomposition", "--decomp-source",
                                            "path",     "--alpha",       "3%"};

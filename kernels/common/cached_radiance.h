@@ -36,31 +36,21 @@ RC_FUNC SurfaceMaterial rc_without_specular(const SurfaceMaterial* material) {
     return m;
 }
 
-// Traces `ray` and fills c with its hit (albedo, normal, position, distance), the hit's emission
-// (if count_emission) and its direct light as the path tracer's vertex computes them: of every
-// lobe, or, when !diffuse_direct (a cache provides the diffuse lobe's direct light too), of the
-// other lobes only, with `light_samples` light samples beside the one BRDF sample (the render
-// pass's camera hits take --light-samples, other vertices 1). `bounces`: the bounces the ray's
-// path made before (for the depth limit).
-// Returns true at a hit that may still reflect light (bounces < max_depth), with the hit in *sp,
-// *material and *wo (the direction back along the ray, in the shading frame); indirect light
-// there takes one bounce more (bounces + 1 < max_depth).
-RC_FUNC bool rc_cached_vertex(const SceneData* scene, Ray ray, RngStream* rng, bool count_emission,
-                              bool diffuse_direct, int light_samples, int bounces, int max_depth,
-                              CachedRadiance* c, SurfacePoint* sp, SurfaceMaterial* material,
-                              float3* wo) {
+// c with no light, no hit and `rays` rays.
+RC_FUNC void rc_cached_radiance_clear(CachedRadiance* c, uint rays) {
     c->direct = c->indirect = c->albedo = c->normal = c->position = (float3)(0.0f);
     c->coverage = 0.0f;
     c->served = false;
     c->distance = INFINITY;
-    c->rays = 1;
-    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
-    if (hit.primitive == RC_NO_HIT) {
-        if (scene->environment >= 0 && count_emission) {
-            c->direct = scene->lights[scene->environment].radiance.xyz;
-        }
-        return false;
-    }
+    c->rays = rays;
+}
+
+// rc_cached_vertex at a hit of `ray` already found (hit.primitive a primitive's): fills c (whose
+// light starts at 0) as rc_cached_vertex does, adding the rays its light samples trace.
+RC_FUNC bool rc_cached_vertex_at(const SceneData* scene, Ray ray, Hit hit, RngStream* rng,
+                                 bool count_emission, bool diffuse_direct, int light_samples,
+                                 int bounces, int max_depth, CachedRadiance* c, SurfacePoint* sp,
+                                 SurfaceMaterial* material, float3* wo) {
     *sp = rc_surface_point(scene, ray, hit);
     *material = rc_surface_material(scene, sp);
     c->albedo = material->diffuse + material->specular;
@@ -78,6 +68,31 @@ RC_FUNC bool rc_cached_vertex(const SceneData* scene, Ray ray, RngStream* rng, b
     c->direct += rc_next_event(scene, sp, &lit, *wo, light_samples, rng, &c->rays);
     c->direct += rc_bsdf_sampled_emission(scene, sp, &lit, *wo, light_samples, rng, &c->rays);
     return true;
+}
+
+// Traces `ray` and fills c with its hit (albedo, normal, position, distance), the hit's emission
+// (if count_emission) and its direct light as the path tracer's vertex computes them: of every
+// lobe, or, when !diffuse_direct (a cache provides the diffuse lobe's direct light too), of the
+// other lobes only, with `light_samples` light samples beside the one BRDF sample (the render
+// pass's camera hits take --light-samples, other vertices 1). `bounces`: the bounces the ray's
+// path made before (for the depth limit).
+// Returns true at a hit that may still reflect light (bounces < max_depth), with the hit in *sp,
+// *material and *wo (the direction back along the ray, in the shading frame); indirect light
+// there takes one bounce more (bounces + 1 < max_depth).
+RC_FUNC bool rc_cached_vertex(const SceneData* scene, Ray ray, RngStream* rng, bool count_emission,
+                              bool diffuse_direct, int light_samples, int bounces, int max_depth,
+                              CachedRadiance* c, SurfacePoint* sp, SurfaceMaterial* material,
+                              float3* wo) {
+    rc_cached_radiance_clear(c, 1);
+    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
+    if (hit.primitive == RC_NO_HIT) {
+        if (scene->environment >= 0 && count_emission) {
+            c->direct = scene->lights[scene->environment].radiance.xyz;
+        }
+        return false;
+    }
+    return rc_cached_vertex_at(scene, ray, hit, rng, count_emission, diffuse_direct, light_samples,
+                               bounces, max_depth, c, sp, material, wo);
 }
 
 // The indirect light of the lobes of `traced` (the material less what the cache served) at sp, by

@@ -10,9 +10,18 @@
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_shading.h"
 
+// How far above a split triangle its points' rays start: a thousandth of the triangle's size, and
+// enough for the coordinates' float precision.
+RC_FUNC float rc_decomp_triangle_lift(RC_GLOBAL const NearTriangle* triangle) {
+    const float3 v0 = triangle->v0.xyz;
+    return 1e-3f * fmax(length(triangle->v1.xyz - v0), length(triangle->v2.xyz - v0)) +
+           1e-5f * fmax(fabs(v0.x), fmax(fabs(v0.y), fabs(v0.z)));
+}
+
 // Point k of `count` of a split triangle (t its index), stratified over it (Hammersley in the
-// unit square, folded), as a ray that arrives at it along its front's normal from just above;
-// *rng starts the point's random stream (the same for every pass over the triangles).
+// unit square, folded), as a ray that arrives at it along its front's normal from
+// rc_decomp_triangle_lift above; *rng starts the point's random stream (the same for every pass
+// over the triangles).
 RC_FUNC Ray rc_decomp_triangle_ray(const DecompParams* params,
                                    RC_GLOBAL const NearTriangle* triangle, uint t, uint k,
                                    int count, RngStream* rng) {
@@ -20,10 +29,7 @@ RC_FUNC Ray rc_decomp_triangle_ray(const DecompParams* params,
     const float3 e1 = triangle->v1.xyz - v0;
     const float3 e2 = triangle->v2.xyz - v0;
     const float3 normal = normalize(cross(e1, e2));
-    // The ray starts a little above the point: a thousandth of the triangle's size, and enough
-    // for the coordinates' float precision.
-    const float lift = 1e-3f * fmax(length(e1), length(e2)) +
-                       1e-5f * fmax(fabs(v0.x), fmax(fabs(v0.y), fabs(v0.z)));
+    const float lift = rc_decomp_triangle_lift(triangle);
     *rng = rc_rng_stream(params->seed_lo ^ RC_DECOMP_RNG_DOMAIN, ~params->seed_hi, t, k);
     float a = ((float)k + rc_rng_next_float(rng)) / (float)count;
     float b = rc_decomp_radical_inverse(k);
@@ -37,11 +43,41 @@ RC_FUNC Ray rc_decomp_triangle_ray(const DecompParams* params,
     return ray;
 }
 
+// Where a split triangle's point ray (rc_decomp_triangle_ray) meets the scene triangle the split
+// triangle lies on, without tracing it: that triangle's primitive, the point's barycentric
+// coordinates in it and the ray's length to it. No hit for a degenerate triangle.
+RC_FUNC Hit rc_decomp_triangle_hit(const SceneData* scene, RC_GLOBAL const NearTriangle* triangle,
+                                   Ray ray) {
+    Hit hit;
+    hit.primitive = RC_NO_HIT;
+    hit.t = rc_decomp_triangle_lift(triangle);
+    hit.u = hit.v = 0.0f;
+    RC_GLOBAL const Triangle* scene_triangle =
+        scene->triangles + scene->triangle_of_primitive[triangle->primitive];
+    const float3 e1 = scene_triangle->v1.xyz - scene_triangle->v0.xyz;
+    const float3 e2 = scene_triangle->v2.xyz - scene_triangle->v0.xyz;
+    const float3 d = ray.origin.xyz + hit.t * ray.direction.xyz - scene_triangle->v0.xyz;
+    const float d11 = dot(e1, e1);
+    const float d12 = dot(e1, e2);
+    const float d22 = dot(e2, e2);
+    const float determinant = d11 * d22 - d12 * d12;
+    if (!(determinant > 0.0f) || !all(isfinite(ray.direction.xyz))) {
+        return hit;
+    }
+    const float u = (d22 * dot(d, e1) - d12 * dot(d, e2)) / determinant;
+    const float v = (d11 * dot(d, e2) - d12 * dot(d, e1)) / determinant;
+    hit.u = clamp(u, 0.0f, 1.0f);
+    hit.v = clamp(v, 0.0f, 1.0f - hit.u);
+    hit.primitive = triangle->primitive;
+    return hit;
+}
+
 // What a split triangle's front sends back along its normal besides its diffuse lobe's indirect
 // light (emission left out, as the coarse solution's: decomp_source_rays.h), the mean over
 // params->radiosity_samples points of it: the direct light by next-event estimation (one light
 // sample) and the other lobes' light by a path sampled from them; and the mean diffuse
-// reflectance rho_d at those points in *reflectance. *rays counts the rays traced.
+// reflectance rho_d at those points in *reflectance. The points lie on the triangle: no ray finds
+// them (rc_decomp_triangle_hit). *rays counts the rays traced.
 RC_FUNC float3 rc_decomp_triangle_direct(const DecompParams* params, const SceneData* scene,
                                          RC_GLOBAL const NearTriangle* triangle, uint t,
                                          float3* reflectance, uint* rays) {
@@ -51,13 +87,16 @@ RC_FUNC float3 rc_decomp_triangle_direct(const DecompParams* params, const Scene
     for (int k = 0; k < count; ++k) {
         RngStream rng;
         const Ray ray = rc_decomp_triangle_ray(params, triangle, t, (uint)k, count, &rng);
+        const Hit hit = rc_decomp_triangle_hit(scene, triangle, ray);
         CachedRadiance c;
+        rc_cached_radiance_clear(&c, 0);
         SurfacePoint sp;
         SurfaceMaterial material;
         float3 wo;
         // The ray's path made one bounce before (a camera hit's, as the coarse source's rays).
-        if (rc_cached_vertex(scene, ray, &rng, params->count_emission != 0, true, 1, 1,
-                             params->max_depth, &c, &sp, &material, &wo) &&
+        if (hit.primitive != RC_NO_HIT &&
+            rc_cached_vertex_at(scene, ray, hit, &rng, params->count_emission != 0, true, 1, 1,
+                                params->max_depth, &c, &sp, &material, &wo) &&
             2 < params->max_depth) {
             *reflectance += material.diffuse;
             const SurfaceMaterial traced = rc_without_diffuse(&material);

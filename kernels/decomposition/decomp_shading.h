@@ -96,23 +96,35 @@ RC_FUNC DecompIrradiance rc_decomp_irradiance(const FarField* far, const NearFie
 }
 
 // What one camera sample gives the film: its light (the diffuse lobe's indirect light from the
-// decomposition) and that light's two parts, rho_d / pi I_D and rho_d / pi I_N.
+// decomposition) and that light's diffuse part rho_d / pi max(0, I_D + I_N) and its two terms,
+// rho_d / pi I_D and rho_d / pi I_N.
 typedef struct DecompSample {
     CachedRadiance light;
+    float3 diffuse;
     float3 far;
     float3 near;
 } DecompSample;
 
-// Camera sample s of a pixel: emission and direct light at its hit (params->light_samples light
-// samples), the diffuse lobe's indirect light rho_d / pi max(0, I_D + I_N) from its entry of the
+// The diffuse lobe's indirect light at a camera hit of reflectance rho_d from its entry of the
 // evaluation buffer (eq. 3: B = rho / pi (I_D + I_N); negative where the near correction
-// overshoots, clamped), the other lobes by a path sampled from them.
+// overshoots, clamped), into out's parts.
+RC_FUNC void rc_decomp_diffuse_indirect(float3 diffuse, const DecompIrradiance* e,
+                                        DecompSample* out) {
+    const float3 reflectance = diffuse * RC_INV_PI;
+    out->far = reflectance * e->far.xyz;
+    out->near = reflectance * e->near.xyz;
+    out->diffuse = reflectance * fmax(e->far.xyz + e->near.xyz, (float3)(0.0f));
+}
+
+// Camera sample s of a pixel: emission and direct light at its hit (params->light_samples light
+// samples), the diffuse lobe's indirect light from the evaluation buffer, the other lobes by a
+// path sampled from them.
 RC_FUNC DecompSample rc_decomp_shade_sample(const DecompParams* params, const SceneData* scene,
                                             const CameraParams* camera,
                                             RC_GLOBAL const DecompIrradiance* irradiance,
                                             uint pixel, uint s) {
     DecompSample out;
-    out.far = out.near = (float3)(0.0f);
+    out.diffuse = out.far = out.near = (float3)(0.0f);
     RngStream rng;
     float x, y;
     const Ray ray = rc_decomp_camera_ray(params, camera, pixel, s, &rng, &x, &y);
@@ -127,10 +139,8 @@ RC_FUNC DecompSample rc_decomp_shade_sample(const DecompParams* params, const Sc
     SurfaceMaterial traced = rc_without_diffuse(&material);
     if (rc_luminance(material.diffuse) > 0.0f) {
         const DecompIrradiance e = irradiance[(size_t)pixel * (uint)params->camera_spp + s];
-        const float3 reflectance = material.diffuse * RC_INV_PI;
-        out.far = reflectance * e.far.xyz;
-        out.near = reflectance * e.near.xyz;
-        out.light.indirect += reflectance * fmax(e.far.xyz + e.near.xyz, (float3)(0.0f));
+        rc_decomp_diffuse_indirect(material.diffuse, &e, &out);
+        out.light.indirect += out.diffuse;
         out.light.served = true;
     }
     rc_trace_lobes(scene, &sp, &traced, wo, &rng, 0, params->max_depth, params->rr_depth,
@@ -138,9 +148,76 @@ RC_FUNC DecompSample rc_decomp_shade_sample(const DecompParams* params, const Sc
     return out;
 }
 
+// Camera sample s of a pixel past the fully shaded ones (--decomp-indirect-spp): only the diffuse
+// lobe's indirect light and its two terms (out.diffuse, out.far, out.near), for the camera ray's
+// one ray (out.light.rays; its light left 0).
+RC_FUNC DecompSample rc_decomp_indirect_sample(const DecompParams* params, const SceneData* scene,
+                                               const CameraParams* camera,
+                                               RC_GLOBAL const DecompIrradiance* irradiance,
+                                               uint pixel, uint s) {
+    DecompSample out;
+    out.diffuse = out.far = out.near = (float3)(0.0f);
+    out.light.direct = out.light.indirect = out.light.albedo = (float3)(0.0f);
+    out.light.normal = out.light.position = (float3)(0.0f);
+    out.light.coverage = 0.0f;
+    out.light.served = false;
+    out.light.distance = INFINITY;
+    out.light.rays = 1;
+    RngStream rng;
+    float x, y;
+    const Ray ray = rc_decomp_camera_ray(params, camera, pixel, s, &rng, &x, &y);
+    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
+    if (hit.primitive == RC_NO_HIT || 1 >= params->max_depth) {
+        return out;
+    }
+    const SurfacePoint sp = rc_surface_point(scene, ray, hit);
+    const SurfaceMaterial material = rc_surface_material(scene, &sp);
+    if (rc_luminance(material.diffuse) > 0.0f) {
+        const DecompIrradiance e = irradiance[(size_t)pixel * (uint)params->camera_spp + s];
+        rc_decomp_diffuse_indirect(material.diffuse, &e, &out);
+    }
+    return out;
+}
+
+// The diffuse lobe's indirect light and its two terms summed over a pixel's camera samples past
+// the fully shaded ones (--decomp-indirect-spp), with the count of finite ones.
+typedef struct DecompDiffuseSums {
+    float3 diffuse;
+    float3 far;
+    float3 near;
+    uint finite;
+} DecompDiffuseSums;
+
+// Adds the diffuse sums of a pixel's camera samples params->shaded_spp .. camera_spp - 1 to *sums
+// (counters as rc_decomp_shade_pixel's); the rays they traced.
+RC_FUNC uint rc_decomp_indirect_samples(const DecompParams* params, const SceneData* scene,
+                                        const CameraParams* camera,
+                                        RC_GLOBAL const DecompIrradiance* irradiance, uint pixel,
+                                        DecompDiffuseSums* sums, RC_GLOBAL uint* counters) {
+    uint rays = 0;
+    for (uint s = (uint)params->shaded_spp; s < (uint)params->camera_spp; ++s) {
+        const DecompSample c =
+            rc_decomp_indirect_sample(params, scene, camera, irradiance, pixel, s);
+        rays += c.light.rays;
+        if (!all(isfinite(c.diffuse)) || !all(isfinite(c.near)) || !all(isfinite(c.far))) {
+            atomic_inc(&counters[1]);
+            atomic_min(&counters[2], pixel);
+            continue;
+        }
+        ++sums->finite;
+        sums->diffuse += c.diffuse;
+        sums->far += c.far;
+        sums->near += c.near;
+    }
+    return rays;
+}
+
 // Shades a pixel's camera samples and writes the means over the finite ones to its
-// RC_DECOMP_FILM_SLOTS film slots. counters: [0] rays traced, [1] non-finite samples (dropped),
-// [2] the first pixel that had one.
+// RC_DECOMP_FILM_SLOTS film slots: of the first params->shaded_spp, every layer; of the others
+// (--decomp-indirect-spp), the diffuse lobe's indirect light and its two terms, whose means then
+// run over all the pixel's finite samples (the layers that hold that light take the mean over all
+// of it, the rest over the shaded ones). counters: [0] rays traced, [1] non-finite samples
+// (dropped), [2] the first pixel that had one.
 RC_FUNC void rc_decomp_shade_pixel(const DecompParams* params, const SceneData* scene,
                                    const CameraParams* camera,
                                    RC_GLOBAL const DecompIrradiance* irradiance, uint pixel,
@@ -149,9 +226,9 @@ RC_FUNC void rc_decomp_shade_pixel(const DecompParams* params, const SceneData* 
     for (int k = 0; k < RC_DECOMP_FILM_SLOTS; ++k) {
         sums[k] = (float3)(0.0f);
     }
+    DecompDiffuseSums shaded = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f), 0};
     uint rays = 0;
-    uint finite = 0;
-    for (uint s = 0; s < (uint)params->camera_spp; ++s) {
+    for (uint s = 0; s < (uint)params->shaded_spp; ++s) {
         const DecompSample c = rc_decomp_shade_sample(params, scene, camera, irradiance, pixel, s);
         const float3 radiance = c.light.direct + c.light.indirect;
         rays += c.light.rays;
@@ -160,7 +237,8 @@ RC_FUNC void rc_decomp_shade_pixel(const DecompParams* params, const SceneData* 
             atomic_min(&counters[2], pixel);
             continue;
         }
-        ++finite;
+        ++shaded.finite;
+        shaded.diffuse += c.diffuse;
         sums[RC_DECOMP_FILM_BEAUTY] += radiance;
         sums[RC_DECOMP_FILM_DIRECT] += c.light.direct;
         sums[RC_DECOMP_FILM_INDIRECT] += c.light.indirect;
@@ -169,10 +247,26 @@ RC_FUNC void rc_decomp_shade_pixel(const DecompParams* params, const SceneData* 
         sums[RC_DECOMP_FILM_FAR] += c.far;
         sums[RC_DECOMP_FILM_NEAR] += c.near;
     }
+    DecompDiffuseSums extra = {(float3)(0.0f), (float3)(0.0f), (float3)(0.0f), 0};
+    rays += rc_decomp_indirect_samples(params, scene, camera, irradiance, pixel, &extra, counters);
     atomic_add(&counters[0], rays);
-    const float inv = finite > 0 ? 1.0f / (float)finite : 0.0f;
+    const float inv = shaded.finite > 0 ? 1.0f / (float)shaded.finite : 0.0f;
+    float3 means[RC_DECOMP_FILM_SLOTS];
+    for (int k = 0; k < RC_DECOMP_FILM_SLOTS; ++k) {
+        means[k] = sums[k] * inv;
+    }
+    if (params->camera_spp > params->shaded_spp) {
+        // The diffuse part's mean over every finite sample in place of the shaded ones' alone.
+        const uint counted = shaded.finite + extra.finite;
+        const float inv_all = counted > 0 ? 1.0f / (float)counted : 0.0f;
+        const float3 diffuse = (shaded.diffuse + extra.diffuse) * inv_all - shaded.diffuse * inv;
+        means[RC_DECOMP_FILM_BEAUTY] += diffuse;
+        means[RC_DECOMP_FILM_INDIRECT] += diffuse;
+        means[RC_DECOMP_FILM_FAR] = (sums[RC_DECOMP_FILM_FAR] + extra.far) * inv_all;
+        means[RC_DECOMP_FILM_NEAR] = (sums[RC_DECOMP_FILM_NEAR] + extra.near) * inv_all;
+    }
     RC_GLOBAL float4* out = film + RC_DECOMP_FILM_SLOTS * (size_t)pixel;
     for (int k = 0; k < RC_DECOMP_FILM_SLOTS; ++k) {
-        out[k] = (float4)(sums[k] * inv, 0.0f);
+        out[k] = (float4)(means[k], 0.0f);
     }
 }

@@ -41,7 +41,10 @@ RC_SHARED_BEGIN
 typedef struct DecompParams {
     int width;  // of the camera's image, in pixels
     int height;
-    int camera_spp;     // camera samples per pixel
+    int camera_spp;  // camera samples per pixel: the G-buffer's, where both terms are evaluated
+    // Of those, the first this many are shaded fully (direct light, the other lobes); the others
+    // add only the diffuse lobe's indirect light (--decomp-indirect-spp)
+    int shaded_spp;
     int light_samples;  // next-event estimation's light samples at a camera hit (the render pass)
     int max_depth;      // bounces of a path
     int rr_depth;       // the depth where Russian roulette starts
@@ -115,6 +118,10 @@ typedef struct NearTriangle {
     float4 v0;  // xyz: vertex 0; w: 0
     float4 v1;
     float4 v2;
+    uint primitive;  // the scene triangle it was split from (the BVH's primitive index)
+    uint pad0;
+    uint pad1;
+    uint pad2;
 } NearTriangle;
 
 // The two terms of eq. 3 at one camera sample: I_D from the interpolated far-field samples and
@@ -138,6 +145,7 @@ RC_SHARED_END
     FIELD(DecompParams, width)                  \
     FIELD(DecompParams, height)                 \
     FIELD(DecompParams, camera_spp)             \
+    FIELD(DecompParams, shaded_spp)             \
     FIELD(DecompParams, light_samples)          \
     FIELD(DecompParams, max_depth)              \
     FIELD(DecompParams, rr_depth)               \
@@ -179,6 +187,7 @@ RC_SHARED_END
     FIELD(NearTriangle, v0)                     \
     FIELD(NearTriangle, v1)                     \
     FIELD(NearTriangle, v2)                     \
+    FIELD(NearTriangle, primitive)              \
     STRUCT(DecompIrradiance)                    \
     FIELD(DecompIrradiance, far)                \
     FIELD(DecompIrradiance, near)               \
@@ -188,12 +197,12 @@ RC_SHARED_END
 // clang-format on
 
 #ifndef __OPENCL_VERSION__
-static_assert(sizeof(rc::shared::DecompParams) == 68);
+static_assert(sizeof(rc::shared::DecompParams) == 72);
 static_assert(sizeof(rc::shared::DecompCluster) == 32);
 static_assert(sizeof(rc::shared::ClusterRay) == 64);
 static_assert(sizeof(rc::shared::ShSample) == 144);
 static_assert(sizeof(rc::shared::ShGradient) == 432);
 static_assert(sizeof(rc::shared::ClusterFit) == 592);
-static_assert(sizeof(rc::shared::NearTriangle) == 48);
+static_assert(sizeof(rc::shared::NearTriangle) == 64);
 static_assert(sizeof(rc::shared::DecompIrradiance) == 48);
 #endif

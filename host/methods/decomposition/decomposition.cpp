@@ -5,6 +5,7 @@
 #include <deque>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <string>
 
 #include "image/film.h"
 #include "methods/decomposition/clusters.h"
@@ -56,6 +57,7 @@ void check_options(const DecompositionOptions& options, size_t samples) {
         throw Error("irradiance decomposition needs at least one camera sample per pixel",
                     kExitUsage);
     }
+    check_indirect_spp(options);
     if (!(options.alpha >= 0.0f) || !std::isfinite(options.alpha)) {
         throw Error("--alpha must be a finite length >= 0", kExitUsage);
     }
@@ -92,6 +94,14 @@ std::vector<shared::Record> reach_records(const std::vector<glm::vec3>& centres,
 }
 
 }  // namespace
+
+void check_indirect_spp(const DecompositionOptions& options) {
+    if (options.indirect_spp != 0 && options.indirect_spp < options.spp) {
+        throw Error("--decomp-indirect-spp " + std::to_string(options.indirect_spp) +
+                        ": must be at least --spp (" + std::to_string(options.spp) + ")",
+                    kExitUsage);
+    }
+}
 
 // A cluster waiting for its rays: its points and its random stream (clusters are numbered as
 // they are made, so the streams do not depend on the batches).
@@ -441,8 +451,9 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
                                       DecompositionStats* stats) {
     const int width = options.width > 0 ? options.width : scene_.camera.width;
     const int height = options.height > 0 ? options.height : scene_.camera.height;
+    const int evaluated_spp = std::max(options.spp, options.indirect_spp);
     const size_t samples =
-        static_cast<size_t>(width) * height * static_cast<size_t>(std::max(options.spp, 0));
+        static_cast<size_t>(width) * height * static_cast<size_t>(std::max(evaluated_spp, 0));
     check_options(options, samples);
     source_ = options.source;
     split_factor_ = options.split_factor;
@@ -451,7 +462,8 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
     params_ = shared::DecompParams{};
     params_.width = width;
     params_.height = height;
-    params_.camera_spp = options.spp;
+    params_.camera_spp = evaluated_spp;
+    params_.shaded_spp = options.spp;
     params_.light_samples = options.light_samples;
     params_.max_depth = options.max_depth;
     params_.rr_depth = options.rr_depth;

@@ -37,7 +37,10 @@ class DecompClusterSplit;
 struct DecompositionOptions {
     int width = 0;  // 0: the scene camera's
     int height = 0;
-    int spp = 4;  // camera samples per pixel
+    int spp = 4;  // camera samples per pixel, shaded fully
+    // Camera samples per pixel where the two terms are evaluated (--decomp-indirect-spp; 0: spp):
+    // the first spp of them shaded fully, the others only for the diffuse lobe's indirect light.
+    int indirect_spp = 0;
     uint64_t seed = 0;
     int max_depth = 64;
     int rr_depth = 3;
@@ -89,6 +92,9 @@ struct FarSample {
     shared::ShSample sh{};
     shared::ShGradient gradient{};  // all zero without gradients
 };
+
+// Error (exit status 2) unless --decomp-indirect-spp is 0 (--spp's) or at least --spp.
+void check_indirect_spp(const DecompositionOptions& options);
 
 struct DecompositionStats {
     size_t scene_triangles = 0;

@@ -80,6 +80,7 @@ float resolve_length(const SceneLength& length, const Scene& scene) {
 nlohmann::json stats_json(const DecompositionStats& s, const DecompositionOptions& options,
                           uint64_t frame_rays, size_t pixels) {
     return {{"spp", options.spp},
+            {"indirect_spp", std::max(options.spp, options.indirect_spp)},
             {"light_samples", options.light_samples},
             {"alpha", options.alpha},
             {"cluster_rays", options.cluster_rays},
@@ -159,6 +160,11 @@ class Decomposition final : public Method {
         }
         if (radiosity == "gathered") {
             options_.radiosity_samples = kRadiositySamplesGathered;
+            options_.traced_samples = static_cast<int>(
+                arguments.integer("--decomp-traced-points", options_.traced_samples));
+        } else if (arguments.has("--decomp-traced-points")) {
+            throw Error("--decomp-traced-points: applies to --decomp-radiosity gathered only",
+                        kExitUsage);
         } else {
             options_.radiosity_passes = 0;
             options_.radiosity_samples = with_grid_ ? kRadiositySamplesGrid : kRadiositySamplesPath;
@@ -169,6 +175,8 @@ class Decomposition final : public Method {
         options_.split_factor =
             static_cast<float>(arguments.number("--decomp-split", kDefaultSplitFactor));
         options_.light_samples = light_samples(arguments);
+        options_.indirect_spp = static_cast<int>(arguments.integer("--decomp-indirect-spp", 0));
+        check_indirect_spp(options_);
         const std::string visibility = arguments.value("--decomp-visibility", "heuristic");
         if (visibility != "heuristic" && visibility != "rays") {
             throw Error("--decomp-visibility: expected heuristic or rays, got '" + visibility + "'",
@@ -243,7 +251,8 @@ class Decomposition final : public Method {
         // IrradianceDecomposition::render: the G-buffer, both terms at every camera sample, the
         // film and its counters, held together in the render pass.
         const size_t pixels = image_pixels(options_.width, options_.height, scene);
-        const size_t samples = pixels * static_cast<size_t>(std::max(options_.spp, 1));
+        const size_t samples =
+            pixels * static_cast<size_t>(std::max({options_.spp, options_.indirect_spp, 1}));
         DeviceMemoryNeed shading;
         shading.add("gbuffer", buffer_bytes(samples, sizeof(shared::GBufferSample)));
         shading.add("irradiance terms", buffer_bytes(samples, sizeof(shared::DecompIrradiance)));
@@ -282,6 +291,15 @@ std::vector<OptionSpec> decomposition_option_specs() {
             "decomposition: a cluster is split while its rays hit inside S times its bounding "
             "sphere (>= 1; the paper's test is 1; default 4)"}
             .numbers(1.0, 1e3),
+        OptionSpec{"--decomp-indirect-spp", "", "N",
+                   "decomposition: camera samples per pixel where the far and near terms are "
+                   "evaluated (>= --spp; default --spp): the first --spp are shaded fully, the "
+                   "others add only the diffuse lobe's indirect light, for one camera ray each"}
+            .integers(1, 4096),
+        OptionSpec{"--decomp-traced-points", "", "N",
+                   "decomposition, gathered radiosity: points per split triangle at which the "
+                   "B(t) of those no far-field sample covers is path traced (default 16)"}
+            .integers(1, 1024),
         OptionSpec{"--decomp-visibility", "", "NAME",
                    "decomposition: which near triangles count: heuristic (the paper's: all but "
                    "the back-facing and those below the horizon; default) or rays (of those, the "

@@ -20,7 +20,8 @@ std::vector<shared::NearTriangle> split_triangles(const TriangleMesh& mesh, floa
     std::vector<shared::NearTriangle> out;
     std::vector<Corners> stack;
     const float limit = alpha * alpha;
-    for (const glm::uvec3& t : mesh.triangles) {
+    for (size_t primitive = 0; primitive < mesh.triangles.size(); ++primitive) {
+        const glm::uvec3& t = mesh.triangles[primitive];
         stack.push_back({mesh.positions[t.x], mesh.positions[t.y], mesh.positions[t.z]});
         while (!stack.empty()) {
             const Corners c = stack.back();
@@ -38,7 +39,9 @@ std::vector<shared::NearTriangle> split_triangles(const TriangleMesh& mesh, floa
                 }
             }
             if (longest <= limit) {
-                out.push_back({float4_of(c.a), float4_of(c.b), float4_of(c.c)});
+                shared::NearTriangle split{float4_of(c.a), float4_of(c.b), float4_of(c.c)};
+                split.primitive = static_cast<uint32_t>(primitive);
+                out.push_back(split);
                 if (out.size() > max_triangles) {
                     throw Error("--alpha " + std::to_string(alpha) +
                                     ": the near field would split the scene's " +
