@@ -25,6 +25,7 @@
 #include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
 #include "methods/radiance_source.h"
+#include "methods/scene_arguments.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
 #include "util/glm_helpers.h"
@@ -1050,6 +1051,63 @@ TEST(DecompositionDeterminism, WithGradientsImageIsBitwiseIdenticalAcrossChunksA
     EXPECT_TRUE(test::bitwise_equal(reference, render_with(32, 333, true)))
         << "local 32, chunk 333";
     EXPECT_FALSE(test::bitwise_equal(reference, render_with(0, 0, false)));
+}
+
+// The split triangles' radiosity points (rc_decomp_triangle_hit, no ray) against the points
+// their rays find by tracing the scene (the BVH as the oracle): on the relief, every placed point
+// lies on its split triangle and its scene triangle, and wherever the traced ray meets that same
+// scene triangle (no other surface covers the point) both give the same position.
+TEST(DecompositionNearField, RadiosityPointsArePlacedWhereTheirRaysHit) {
+    test::DeviceFrame f(load_scene(test::source_dir() / "scenes/relief/scene.json"));
+    const std::vector<shared::NearTriangle> all =
+        split_triangles(f.scene.mesh, 0.01f * std::sqrt(12.0f), size_t{1} << 22);
+    std::vector<shared::NearTriangle> triangles;
+    for (size_t t = 0; t < all.size(); t += 13) {
+        triangles.push_back(all[t]);
+    }
+    const int count = 4;
+    const size_t n = triangles.size() * count;
+    shared::DecompParams params{};
+    params.seed_lo = 5;
+    Context& context = f.context;
+    const Buffer<shared::NearTriangle> triangle_buffer(context, triangles, "triangles");
+    Buffer<uint32_t> placed_primitives(context, n, "placed_primitives");
+    Buffer<shared::float4> placed(context, n, "placed");
+    Buffer<uint32_t> traced_primitives(context, n, "traced_primitives");
+    Buffer<shared::float4> traced(context, n, "traced");
+    Kernel kernel = context.kernel("decomposition/decomp_probe.cl", "decomp_triangle_points");
+    context.launch(kernel, n, params, SceneArguments(f.device_bvh, f.device_scene), triangle_buffer,
+                   count, placed_primitives, placed, traced_primitives, traced);
+    const std::vector<uint32_t> placed_p = placed_primitives.download();
+    const std::vector<shared::float4> placed_x = placed.download();
+    const std::vector<uint32_t> traced_p = traced_primitives.download();
+    const std::vector<shared::float4> traced_x = traced.download();
+    size_t same = 0;
+    double largest = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        const shared::NearTriangle& t = triangles[i / count];
+        ASSERT_EQ(placed_p[i], t.primitive) << i;
+        const glm::dvec3 a(vec3_of(t.v0)), b(vec3_of(t.v1)), c(vec3_of(t.v2));
+        const glm::dvec3 p(vec3_of(placed_x[i]));
+        const glm::dvec3 normal = glm::cross(b - a, c - a);
+        const double area2 = glm::length(normal);
+        ASSERT_LT(std::fabs(glm::dot(p - a, normal)) / area2, 1e-5) << i;
+        // Barycentric coordinates about the split triangle: all within [0, 1] up to rounding.
+        const double wa = glm::dot(glm::cross(b - p, c - p), normal) / (area2 * area2);
+        const double wb = glm::dot(glm::cross(c - p, a - p), normal) / (area2 * area2);
+        const double wc = 1.0 - wa - wb;
+        ASSERT_GT(std::min({wa, wb, wc}), -1e-3) << i;
+        if (traced_p[i] == t.primitive) {
+            ++same;
+            largest = std::max(largest, glm::length(p - glm::dvec3(vec3_of(traced_x[i]))));
+        }
+    }
+    std::printf(
+        "%zu points of %zu split triangles: %zu traced to their own triangle, largest "
+        "distance %.3g\n",
+        n, triangles.size(), same, largest);
+    EXPECT_GT(same, n * 9 / 10);
+    EXPECT_LT(largest, 1e-5);
 }
 
 // The largest difference between two images' `layer`, relative to the larger image's largest

@@ -1,9 +1,11 @@
 // Test kernels of irradiance decomposition (tests/decomposition_test.cpp,
-// tests/shared_layout_test.cpp): the shared layouts, the form factor, the distant term and the
-// near correction, each on given inputs (the fit's own kernel, decomp_fit, is the method's).
+// tests/shared_layout_test.cpp): the shared layouts, the form factor, the distant term, the
+// near correction and the split triangles' radiosity points, each on given inputs (the fit's own kernel, decomp_fit, is the method's).
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_form_factor.h"
 #include "decomposition/decomp_near.h"
+#include "decomposition/decomp_radiosity.h"
+#include "scene_arguments.h"
 #include "shared/decomposition.h"
 
 // sizeof and offsetof of every struct of RC_DECOMP_LAYOUTS, in its order.
@@ -90,4 +92,34 @@ __kernel void decomp_near_correction_at(
     const float3 sum = rc_decomp_near_correction(&near, &none, points[q].xyz, points[q].xyz,
                                                  normals[q].xyz, &count, &rays);
     correction[q] = (float4)(sum, (float)count);
+}
+
+// Item i: point i % count of split triangle split[i / count] (rc_decomp_triangle_ray) found two
+// ways: rc_decomp_triangle_hit's primitive and position into placed_primitives[i], placed[i];
+// and the closest hit of the point's ray traced through the scene into traced_primitives[i],
+// traced[i] (RC_NO_HIT and 0 for a miss).
+__kernel void decomp_triangle_points(uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
+                                     __global const NearTriangle* split, int count,
+                                     __global uint* placed_primitives, __global float4* placed,
+                                     __global uint* traced_primitives, __global float4* traced) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const uint t = i / (uint)count;
+    RngStream rng;
+    const Ray ray = rc_decomp_triangle_ray(&params, split + t, t, i % (uint)count, count, &rng);
+    const Hit hit = rc_decomp_triangle_hit(&scene, split + t, ray);
+    placed_primitives[i] = hit.primitive;
+    placed[i] = (float4)(0.0f);
+    if (hit.primitive != RC_NO_HIT) {
+        placed[i] = (float4)(rc_surface_point(&scene, ray, hit).position, 0.0f);
+    }
+    const Hit found = rc_trace_closest(scene.nodes, scene.triangles, ray);
+    traced_primitives[i] = found.primitive;
+    traced[i] = (float4)(0.0f);
+    if (found.primitive != RC_NO_HIT) {
+        traced[i] = (float4)(rc_surface_point(&scene, ray, found).position, 0.0f);
+    }
 }
