@@ -1,6 +1,7 @@
 // Test kernels of irradiance decomposition (tests/decomposition_test.cpp,
 // tests/shared_layout_test.cpp): the shared layouts, the form factor, the distant term, the
-// near correction and the split triangles' radiosity points, each on given inputs (the fit's own kernel, decomp_fit, is the method's).
+// near correction and the split triangles' radiosity points, each on given inputs (the fit's own
+// kernel, decomp_fit, is the method's).
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_form_factor.h"
 #include "decomposition/decomp_near.h"
