@@ -214,12 +214,12 @@ TEST(DecompositionRadiositySource, ClusterRaysFindTheSplitTriangleTheyHit) {
 
 // A closed box of one diffuse material (reflectance rho) whose every surface emits Le, with a
 // smaller emitting box inside (the furnace of tests/decomposition_test.cpp): leaving emission
-// out, the radiance of every surface after k bounces of the iteration is
-// L_k = rho Le (1 + rho + ... + rho^k) = L* (1 - rho^(k+1)), L* = rho Le / (1 - rho), whatever
-// the geometry. With --decomp-source radiosity, B^0 / pi is the direct part rho Le and iteration
-// k gathers B^k / pi = rho Le + rho B^(k-1) / pi from the far field's rays (which read B^(k-1)
-// at their hits) and the near field: the split triangles' B(t) / pi after K iterations is
-// L_K, and the image's indirect light reads B^K through the far field: rho L_K.
+// out, every surface sends L* = rho Le / (1 - rho), whatever the geometry, and after k bounces
+// of light L_k = rho Le (1 + rho + ... + rho^k) = L* (1 - rho^(k+1)). With --decomp-source
+// radiosity, B^0 / pi is the direct part rho Le where the far field covers a triangle and the
+// path-traced L* where it does not, and iteration k gathers B^k / pi = rho Le + rho x (the
+// far field's and near field's B^(k-1) / pi): the covered triangles' B^k lies between L_k (had
+// every ray hit a covered triangle) and L*.
 constexpr float kFurnaceReflectance = 0.6f;
 constexpr float kFurnaceEmission = 2.0f;
 
@@ -244,10 +244,13 @@ double furnace_bounces(int k) {
     return rho * kFurnaceEmission / (1.0 - rho) * (1.0 - std::pow(rho, k + 1));
 }
 
-// The split triangles' B(t) / pi (area-weighted mean of those the far field covers, and each
-// within 6 %) and the image's mean indirect light after 1 and after 12 iterations: L_1 = 1.92 and
-// L_12 = 2.996 (L* = 3); a missing bounce or a double-counted one would be off by 22 % (K = 1)
-// or more.
+// The covered split triangles' B(t) / pi (area-weighted mean) and the image's mean indirect
+// light: after 12 iterations L_12 = 2.996 (L* = 3) within 2 % and 3 %, each triangle within 6 %
+// (measured: 0.1 %, 0.1 %, 3.2 %); after 1 iteration B(t) / pi between L_1 = 1.92 and 0.95 L*
+// (measured 2.61: some rays read path-traced triangles) and the indirect light above rho L_1
+// (measured 1.71; the image reads B^1 of every triangle, path-traced ones included), so an
+// iteration that stopped short of the far field's refit or ran to convergence whatever K would
+// fail.
 TEST(DecompositionRadiositySource, IteratedRadiosityInAFurnaceFollowsItsBounces) {
     test::DeviceFrame device(furnace_box());
     PathContinuation path;
@@ -277,6 +280,8 @@ TEST(DecompositionRadiositySource, IteratedRadiosityInAFurnaceFollowsItsBounces)
             traced[t] = true;
         }
         const double expected = furnace_bounces(iterations);
+        const double converged = furnace_bounces(1000);
+        const bool one = iterations == 1;
         double sum = 0.0, area = 0.0, worst = 0.0;
         for (size_t t = 0; t < triangles.size(); ++t) {
             if (traced[t]) {
@@ -288,7 +293,9 @@ TEST(DecompositionRadiositySource, IteratedRadiosityInAFurnaceFollowsItsBounces)
             for (int c = 0; c < 3; ++c) {
                 sum += a * radiance[t][c];
                 worst = std::max(worst, std::abs(radiance[t][c] - expected) / expected);
-                EXPECT_NEAR(radiance[t][c], expected, 0.06 * expected) << "triangle " << t;
+                if (!one) {
+                    EXPECT_NEAR(radiance[t][c], expected, 0.06 * expected) << "triangle " << t;
+                }
             }
             area += 3.0 * a;
         }
@@ -303,6 +310,12 @@ TEST(DecompositionRadiositySource, IteratedRadiosityInAFurnaceFollowsItsBounces)
             "furnace, %d iterations: B(t) / pi mean %.4f (L_K %.4f), worst triangle %.3f off; "
             "indirect mean %.4f (rho L_K %.4f)\n",
             iterations, mean, expected, worst, reflected, kFurnaceReflectance * expected);
+        if (one) {
+            EXPECT_GT(mean, 0.98 * expected);
+            EXPECT_LT(mean, 0.95 * converged);
+            EXPECT_GT(reflected, 0.98 * kFurnaceReflectance * expected);
+            continue;
+        }
         EXPECT_NEAR(mean, expected, 0.02 * expected);
         EXPECT_NEAR(reflected, kFurnaceReflectance * expected,
                     0.03 * kFurnaceReflectance * expected);
