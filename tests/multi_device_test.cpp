@@ -307,16 +307,18 @@ TEST(MultiDevice, WhatRendersOnOneDeviceIsRefusedByName) {
         std::vector<std::string> options;
         std::string names;
     };
-    for (const Case& c :
-         std::vector<Case>{{{"--method", "ic", "--temporal", "--device", "all"},
-                            "--temporal renders on one device"},
-                           {{"--method", "rc", "--temporal", "--device", "0:0,0:1"},
-                            "--temporal renders on one device"},
-                           {{"--device", "0:0,0:0"}, "twice"},
-                           {{"--device", "0:0,"}, "empty entry"},
-                           {{"--device", "0:0,7:7"}, "7:7"},
-                           {{"--device", "all", "--time", "1"}, "--time"},
-                           {{"--device", "all", "--save-every-pow2"}, "--save-every-pow2"}}) {
+    for (const Case& c : std::vector<Case>{
+             {{"--method", "ic", "--temporal", "--device", "all"},
+              "--temporal renders on one device"},
+             {{"--method", "rc", "--temporal", "--device", "0:0,0:1"},
+              "--temporal renders on one device"},
+             {{"--method", "decomposition", "--decomp-source", "radiosity", "--device", "all"},
+              "--decomp-source radiosity renders on one device"},
+             {{"--device", "0:0,0:0"}, "twice"},
+             {{"--device", "0:0,"}, "empty entry"},
+             {{"--device", "0:0,7:7"}, "7:7"},
+             {{"--device", "all", "--time", "1"}, "--time"},
+             {{"--device", "all", "--save-every-pow2"}, "--save-every-pow2"}}) {
         std::vector<std::string> args = {"render",   cornell(), "--width", "8",
                                          "--height", "8",       "-o",      out};
         args.insert(args.end(), c.options.begin(), c.options.end());

@@ -139,17 +139,22 @@ RC_FUNC float3 rc_decomp_triangle_traced(const DecompParams* params, const Scene
 // bricks' undersides), where the gather would read a fit made for other orientations and B(t) is
 // path traced instead (rc_decomp_triangle_traced); 1 otherwise (covered, or beyond every
 // sample's reach: then no camera sample lies within alpha of it, but beside clusters less than
-// 4 alpha across, and its B(t) does not reach the image; the gather's fallback serves).
-RC_FUNC uint rc_decomp_triangle_covered(const FarField* far,
-                                        RC_GLOBAL const NearTriangle* triangle) {
+// 4 alpha across, and its B(t) does not reach the image; the gather's fallback serves). With
+// `reach_needed` (--decomp-source radiosity, where every B(t) reaches the image through the far
+// field's rays) a triangle beyond every sample's reach is not covered either.
+RC_FUNC uint rc_decomp_triangle_covered(const FarField* far, RC_GLOBAL const NearTriangle* triangle,
+                                        bool reach_needed) {
     const float3 v0 = triangle->v0.xyz;
     const float3 v1 = triangle->v1.xyz;
     const float3 v2 = triangle->v2.xyz;
     const float3 normal = normalize(cross(v1 - v0, v2 - v0));
     const float3 centroid = (v0 + v1 + v2) * (1.0f / 3.0f);
     const int cell = rc_ic_grid_cell(&far->grid, centroid);
-    if (cell < 0 || !all(isfinite(normal))) {
+    if (!all(isfinite(normal))) {
         return 1;
+    }
+    if (cell < 0) {
+        return reach_needed ? 0u : 1u;
     }
     uint reached = 0;
     for (int k = far->cell_start[cell]; k < far->cell_start[cell + 1]; ++k) {
@@ -159,7 +164,7 @@ RC_FUNC uint rc_decomp_triangle_covered(const FarField* far,
         }
         reached |= length(centroid - sample->position.xyz) < sample->radius ? 1u : 0u;
     }
-    return reached != 0 ? 0u : 1u;
+    return reached != 0 || reach_needed ? 0u : 1u;
 }
 
 // B(t) / pi of a split triangle's front gathered from the decomposition (eq. 3 at its centroid

@@ -26,7 +26,8 @@ RC_FUNC ClusterRay rc_decomp_trace_cluster_ray(const DecompParams* params, const
     out.direction = (float4)(ray.direction.xyz, 0.0f);
     out.offset = (float4)(ray.origin.xyz - cluster->centre.xyz, 0.0f);
     out.radiance = (float4)(0.0f);
-    out.pad0 = out.pad1 = 0;
+    out.split_triangle = -1;
+    out.pad1 = 0;
     const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
     *rays += 1;
     const float distance = hit.primitive == RC_NO_HIT ? INFINITY : hit.t;

@@ -3,6 +3,7 @@
 // cluster's far-field rays and their least-squares fit, the two terms of eq. 3 per camera sample,
 // and the render pass. Built for the radiance source the rays read (the irradiance vector grid).
 #include "decomposition/decomp_radiosity.h"
+#include "decomposition/decomp_radiosity_rays.h"
 #include "decomposition/decomp_shading.h"
 #include "scene_arguments.h"
 // The source after the method's own headers (see common/radiance_source.h).
@@ -82,21 +83,21 @@ __kernel void decomp_radiosity_traced(uint begin, uint end, DecompParams params,
     atomic_add(&counters[0], rays);
 }
 
-// Item t: whether a far-field sample covers split triangle t (rc_decomp_triangle_covered) into
-// covered[t].
+// Item t: whether a far-field sample covers split triangle t (rc_decomp_triangle_covered; beyond
+// every sample's reach counts as covered unless reach_needed) into covered[t].
 __kernel void decomp_radiosity_coverage(uint begin, uint end, RecordGrid far_grid,
                                         __global const int* far_start,
                                         __global const int* far_samples,
                                         __global const Record* samples,
                                         __global const ShSample* coefficients,
                                         __global const NearTriangle* near_triangles,
-                                        __global uint* covered) {
+                                        uint reach_needed, __global uint* covered) {
     const uint t = begin + (uint)get_global_id(0);
     if (t >= end) {
         return;
     }
     const FarField far = {far_grid, far_start, far_samples, samples, coefficients, 0};
-    covered[t] = rc_decomp_triangle_covered(&far, near_triangles + t);
+    covered[t] = rc_decomp_triangle_covered(&far, near_triangles + t, reach_needed != 0);
 }
 
 // Item t: B(t) / pi of split triangle t gathered from the decomposition's two terms (the far
@@ -153,6 +154,41 @@ __kernel void decomp_cluster_rays(
     rays_out[i] = rc_decomp_trace_cluster_ray(&params, &scene, &source, &cluster, members, gbuffer,
                                               i % per_cluster, &rays);
     atomic_add(&counters[0], rays);
+}
+
+// Item i: ray i % params.cluster_rays of batch cluster i / params.cluster_rays traced to its
+// closest hit and the split triangle there (--decomp-source radiosity), into rays_out[i].
+// counters[0] counts the rays traced.
+__kernel void decomp_cluster_hits(uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
+                                  __global const SplitNode* split_nodes,
+                                  __global const uint* split_roots,
+                                  __global const DecompCluster* clusters,
+                                  __global const uint* members,
+                                  __global const GBufferSample* gbuffer,
+                                  __global ClusterRay* rays_out, __global uint* counters) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const uint per_cluster = (uint)params.cluster_rays;
+    const DecompCluster cluster = clusters[i / per_cluster];
+    uint rays = 0;
+    rays_out[i] = rc_decomp_trace_cluster_hit(&params, &scene, split_nodes, split_roots, &cluster,
+                                              members, gbuffer, i % per_cluster, &rays);
+    atomic_add(&counters[0], rays);
+}
+
+// Item i: ray i with the radiance B(t) / pi of the split triangle it hit (--decomp-source
+// radiosity) into rays_out[i].
+__kernel void decomp_radiosity_rays(uint begin, uint end, __global const ClusterRay* traced,
+                                    __global const float4* radiance,
+                                    __global ClusterRay* rays_out) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    rays_out[i] = rc_decomp_radiosity_ray(traced[i], radiance);
 }
 
 // Item c: batch cluster c's least-squares fit of L_D* to its kept rays (in ray order; with

@@ -82,7 +82,9 @@ typedef struct ClusterRay {
     float4 radiance;   // rgb: the radiance it brings back (0 when discarded); w: 0
     int kept;          // 1: its hit lies at least alpha away (or it misses): it enters the fit
     int inside;        // 1: its hit lies inside the cluster's bounding sphere (§4.1's split test)
-    int pad0;
+    // The split triangle (index into the near field's triangles) whose front its hit lies on, or
+    // -1 (a miss, a back face, no split): --decomp-source radiosity reads B(t) there.
+    int split_triangle;
     int pad1;
 } ClusterRay;
 
@@ -123,6 +125,19 @@ typedef struct NearTriangle {
     uint pad1;
     uint pad2;
 } NearTriangle;
+
+// A node of the tree that splits one scene triangle into the near field's triangles
+// (triangle_split.h), to find the split triangle a point of the scene triangle lies on: an inner
+// node halves its triangle along the plane through its longest edge's midpoint and the opposite
+// corner; a point x with dot(plane.xyz, x) + plane.w >= 0 lies in child `children`, the others in
+// child `children` + 1. A leaf is split triangle `triangle`.
+typedef struct SplitNode {
+    float4 plane;  // xyz: the splitting plane's normal; w: its offset (inner nodes)
+    int children;  // inner node: the first child's node index; leaf: -1
+    int triangle;  // leaf: the split triangle's index; inner node: -1
+    int pad0;
+    int pad1;
+} SplitNode;
 
 // The two terms of eq. 3 at one camera sample: I_D from the interpolated far-field samples and
 // the near correction I_N of eq. 4.
@@ -172,6 +187,7 @@ RC_SHARED_END
     FIELD(ClusterRay, radiance)                 \
     FIELD(ClusterRay, kept)                     \
     FIELD(ClusterRay, inside)                   \
+    FIELD(ClusterRay, split_triangle)           \
     STRUCT(ShSample)                            \
     FIELD(ShSample, coefficients)               \
     STRUCT(ShGradient)                          \
@@ -188,6 +204,10 @@ RC_SHARED_END
     FIELD(NearTriangle, v1)                     \
     FIELD(NearTriangle, v2)                     \
     FIELD(NearTriangle, primitive)              \
+    STRUCT(SplitNode)                           \
+    FIELD(SplitNode, plane)                     \
+    FIELD(SplitNode, children)                  \
+    FIELD(SplitNode, triangle)                  \
     STRUCT(DecompIrradiance)                    \
     FIELD(DecompIrradiance, far)                \
     FIELD(DecompIrradiance, near)               \
@@ -204,5 +224,6 @@ static_assert(sizeof(rc::shared::ShSample) == 144);
 static_assert(sizeof(rc::shared::ShGradient) == 432);
 static_assert(sizeof(rc::shared::ClusterFit) == 592);
 static_assert(sizeof(rc::shared::NearTriangle) == 64);
+static_assert(sizeof(rc::shared::SplitNode) == 32);
 static_assert(sizeof(rc::shared::DecompIrradiance) == 48);
 #endif

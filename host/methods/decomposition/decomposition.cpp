@@ -72,6 +72,18 @@ void check_options(const DecompositionOptions& options, size_t samples) {
     if (!(options.min_cluster_size >= 0.0f) || !std::isfinite(options.min_cluster_size)) {
         throw Error("--decomp-cluster must be a finite length >= 0", kExitUsage);
     }
+    if (options.radiosity_source && !(options.alpha > 0.0f)) {
+        throw Error(
+            "--alpha 0: --decomp-source radiosity reads the split triangles' radiosity "
+            "(needs --alpha > 0)",
+            kExitUsage);
+    }
+    if (options.radiosity_source && options.radiosity_passes < 1) {
+        throw Error("--decomp-source radiosity reads the gathered radiosity", kExitUsage);
+    }
+    if (options.radiosity_source && options.source_iterations < 1) {
+        throw Error("--decomp-iterations must be at least 1", kExitUsage);
+    }
     if (samples > std::numeric_limits<uint32_t>::max()) {
         throw Error("irradiance decomposition: width x height x spp exceeds 2^32 camera samples",
                     kExitUsage);
@@ -139,8 +151,14 @@ void IrradianceDecomposition::compute_gbuffer() {
 void IrradianceDecomposition::build_near_field(const DecompositionOptions& options) {
     triangles_.clear();
     uncovered_.clear();
+    TriangleSplit split;
     if (options.alpha > 0.0f) {
-        triangles_ = split_triangles(scene_.mesh, options.alpha, kMaxNearTriangles);
+        split = split_triangle_tree(scene_.mesh, options.alpha, kMaxNearTriangles);
+    }
+    triangles_ = std::move(split.triangles);
+    if (radiosity_source_) {
+        split_nodes_ = Buffer<shared::SplitNode>(context_, split.nodes, "decomp_split_nodes");
+        split_roots_ = Buffer<uint32_t>(context_, split.roots, "decomp_split_roots");
     }
     stats_.scene_triangles = scene_.mesh.triangles.size();
     stats_.near_triangles = triangles_.size();
@@ -184,21 +202,32 @@ void IrradianceDecomposition::gather_radiosity(int passes, int traced_samples) {
     if (triangles_.empty()) {
         return;
     }
+    GatherInputs inputs;
+    prepare_gather(traced_samples, &inputs);
+    Buffer<shared::float4> previous(context_, triangles_.size(), "decomp_radiance_previous");
+    for (int pass = 0; pass < passes; ++pass) {
+        std::swap(previous, radiance_buffer_);
+        gather_pass(inputs, previous, pass > 0);
+    }
+    stats_.radiosity_rays += inputs.counters.download()[0];
+}
+
+void IrradianceDecomposition::prepare_gather(int traced_samples, GatherInputs* in) {
     const size_t count = triangles_.size();
-    Buffer<shared::float4> direct(context_, count, "decomp_radiosity_direct");
-    Buffer<shared::float4> reflectance(context_, count, "decomp_reflectance");
-    Buffer<shared::float4> previous(context_, count, "decomp_radiance_previous");
-    Buffer<shared::float4> traced(context_, count, "decomp_radiance_traced");
-    Buffer<uint32_t> covered(context_, count, "decomp_covered");
-    Buffer<unsigned> counters(context_, 1, "decomp_radiosity_counters");
-    counters.fill_zero();
-    traced.fill_zero();
+    in->direct = Buffer<shared::float4>(context_, count, "decomp_radiosity_direct");
+    in->reflectance = Buffer<shared::float4>(context_, count, "decomp_reflectance");
+    in->traced = Buffer<shared::float4>(context_, count, "decomp_radiance_traced");
+    in->covered = Buffer<uint32_t>(context_, count, "decomp_covered");
+    in->counters = Buffer<unsigned>(context_, 1, "decomp_radiosity_counters");
+    in->counters.fill_zero();
+    in->traced.fill_zero();
     context_.launch(kernel("decomp_radiosity_direct"), count, params_,
-                    SceneArguments(bvh_, device_scene_), triangle_buffer_, direct, reflectance,
-                    counters);
+                    SceneArguments(bvh_, device_scene_), triangle_buffer_, in->direct,
+                    in->reflectance, in->counters);
     context_.launch(kernel("decomp_radiosity_coverage"), count, far_grid_.grid, far_start_,
-                    far_list_, far_records_, far_coefficients_, triangle_buffer_, covered);
-    const std::vector<uint32_t> flags = covered.download();
+                    far_list_, far_records_, far_coefficients_, triangle_buffer_,
+                    reach_needed_ ? 1u : 0u, in->covered);
+    const std::vector<uint32_t> flags = in->covered.download();
     for (size_t t = 0; t < count; ++t) {
         if (flags[t] == 0) {
             uncovered_.push_back(static_cast<uint32_t>(t));
@@ -209,18 +238,18 @@ void IrradianceDecomposition::gather_radiosity(int passes, int traced_samples) {
         const Buffer<uint32_t> list(context_, uncovered_, "decomp_uncovered");
         context_.launch(kernel("decomp_radiosity_traced"), uncovered_.size(), params_,
                         SceneArguments(bvh_, device_scene_), triangle_buffer_, list, traced_samples,
-                        traced, counters);
+                        in->traced, in->counters);
     }
-    for (int pass = 0; pass < passes; ++pass) {
-        std::swap(previous, radiance_buffer_);
-        const unsigned with_near = pass > 0 ? 1u : 0u;
-        context_.launch(kernel("decomp_radiosity_gather"), count, params_,
-                        SceneArguments(bvh_, device_scene_), far_grid_.grid, far_start_, far_list_,
-                        far_records_, far_coefficients_, far_gradients_, near_grid_.grid,
-                        near_start_, near_list_, triangle_buffer_, direct, reflectance, covered,
-                        traced, previous, with_near, radiance_buffer_, counters);
-    }
-    stats_.radiosity_rays += counters.download()[0];
+}
+
+void IrradianceDecomposition::gather_pass(GatherInputs& in, const Buffer<shared::float4>& previous,
+                                          bool with_near) {
+    const unsigned near_flag = with_near ? 1u : 0u;
+    context_.launch(kernel("decomp_radiosity_gather"), triangles_.size(), params_,
+                    SceneArguments(bvh_, device_scene_), far_grid_.grid, far_start_, far_list_,
+                    far_records_, far_coefficients_, far_gradients_, near_grid_.grid, near_start_,
+                    near_list_, triangle_buffer_, in.direct, in.reflectance, in.covered, in.traced,
+                    previous, near_flag, radiance_buffer_, in.counters);
 }
 
 std::vector<shared::ClusterFit> IrradianceDecomposition::fit_batch(
@@ -251,9 +280,15 @@ std::vector<shared::ClusterFit> IrradianceDecomposition::fit_batch(
     Buffer<shared::ClusterFit> fit_buffer(context_, batch.size(), "decomp_fits");
     Buffer<unsigned> counters(context_, 1, "decomp_cluster_counters");
     counters.fill_zero();
-    context_.launch(kernel("decomp_cluster_rays"), ray_count, params_,
-                    SceneArguments(bvh_, device_scene_), *source_, cluster_buffer, member_buffer,
-                    gbuffer_, ray_buffer, counters);
+    if (radiosity_source_) {
+        context_.launch(kernel("decomp_cluster_hits"), ray_count, params_,
+                        SceneArguments(bvh_, device_scene_), split_nodes_, split_roots_,
+                        cluster_buffer, member_buffer, gbuffer_, ray_buffer, counters);
+    } else {
+        context_.launch(kernel("decomp_cluster_rays"), ray_count, params_,
+                        SceneArguments(bvh_, device_scene_), *source_, cluster_buffer,
+                        member_buffer, gbuffer_, ray_buffer, counters);
+    }
     context_.launch(kernel("decomp_fit"), batch.size(), params_, ray_buffer, fit_buffer);
     stats_.cluster_rays += counters.download()[0];
     if (rays != nullptr) {
@@ -267,8 +302,10 @@ std::vector<shared::ClusterFit> IrradianceDecomposition::fit_batch(
 // that stays whole gives a far-field sample.
 void IrradianceDecomposition::sample_far_field(const DecompositionOptions& options) {
     far_.clear();
+    far_rays_.clear();
     cluster_split_.reset();
-    if (frame_devices(frame_) > 1 && dynamic_cast<const PathContinuation*>(source_) != nullptr) {
+    if (frame_devices(frame_) > 1 && !radiosity_source_ &&
+        dynamic_cast<const PathContinuation*>(source_) != nullptr) {
         cluster_split_ = std::make_unique<DecompClusterSplit>(frame_, gbuffer_, samples_,
                                                               source_->build_options());
     }
@@ -295,7 +332,9 @@ void IrradianceDecomposition::sample_far_field(const DecompositionOptions& optio
             batch.push_back(std::move(pending.front()));
             pending.pop_front();
         }
-        const std::vector<shared::ClusterFit> fits = fit_batch(batch);
+        std::vector<shared::ClusterRay> rays;
+        const std::vector<shared::ClusterFit> fits =
+            fit_batch(batch, radiosity_source_ ? &rays : nullptr);
         stats_.clusters_sampled += batch.size();
         for (size_t b = 0; b < batch.size(); ++b) {
             const PointCluster& c = batch[b].cluster;
@@ -325,6 +364,10 @@ void IrradianceDecomposition::sample_far_field(const DecompositionOptions& optio
             s.sh = fits[b].sample;
             s.gradient = fits[b].gradient;
             far_.push_back(s);
+            if (radiosity_source_) {
+                const auto first = rays.begin() + static_cast<ptrdiff_t>(b * params_.cluster_rays);
+                far_rays_.insert(far_rays_.end(), first, first + params_.cluster_rays);
+            }
         }
     }
     stats_.sh_samples = far_.size();
@@ -456,6 +499,8 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
         static_cast<size_t>(width) * height * static_cast<size_t>(std::max(evaluated_spp, 0));
     check_options(options, samples);
     source_ = options.source;
+    radiosity_source_ = options.radiosity_source;
+    reach_needed_ = options.radiosity_source;
     split_factor_ = options.split_factor;
     stats_ = DecompositionStats{};
     radiosity_shares_.clear();
@@ -498,7 +543,12 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
     start = SteadyClock::now();
     sample_far_field(options);
     stats_.far_seconds = seconds_since(start);
-    if (options.radiosity_passes > 0) {
+    if (options.radiosity_source) {
+        start = SteadyClock::now();
+        iterate_radiosity_source(options.source_iterations, options.traced_samples);
+        context_.finish();
+        stats_.near_seconds += seconds_since(start);
+    } else if (options.radiosity_passes > 0) {
         start = SteadyClock::now();
         gather_radiosity(options.radiosity_passes, options.traced_samples);
         context_.finish();

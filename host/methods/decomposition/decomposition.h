@@ -77,8 +77,14 @@ struct DecompositionOptions {
     // docs/decomposition.md).
     bool gradients = true;
     // The coarse solution the rays read at their hits (the method's: the irradiance vector grid;
-    // path continuation in tests); required.
+    // path continuation in tests); required. With radiosity_source, the program's source (the
+    // split triangles' path-traced B(t) reads none of it).
     const RadianceSource* source = nullptr;
+    // --decomp-source radiosity: the cluster rays read the gathered radiosity B(t) / pi of the
+    // split triangle they hit (decomp_radiosity_source.cpp), refitted over `source_iterations`
+    // iterations of B(t) with no ray; needs alpha > 0 and the gathered radiosity.
+    bool radiosity_source = false;
+    int source_iterations = 6;
 };
 
 // One far-field sample (§4.1): the fit of a cluster that needed no split.
@@ -111,8 +117,13 @@ struct DecompositionStats {
     int radiosity_passes = 0;        // gathered passes (0: from the coarse solution)
     size_t uncovered_triangles = 0;  // gathered: facing away from the far field (B(t) traced)
     uint64_t cluster_rays = 0;       // the clusters' fits (and the source's rays for them)
-    uint64_t near_rays = 0;          // shadow rays of the near field (--decomp-visibility rays)
-    uint64_t shading_rays = 0;       // the G-buffer and the render pass
+    // --decomp-source radiosity: per iteration k, sum |B^k - B^(k-1)| / sum |B^k| over the split
+    // triangles (luminance of B(t) / pi, area-weighted), and the kept rays that hit a split
+    // triangle's back face or missed (they bring back no radiosity).
+    std::vector<double> source_change;
+    uint64_t source_rays_without_triangle = 0;
+    uint64_t near_rays = 0;     // shadow rays of the near field (--decomp-visibility rays)
+    uint64_t shading_rays = 0;  // the G-buffer and the render pass
     double gbuffer_seconds = 0.0;
     double near_seconds = 0.0;        // splitting, the near triangles' grid, their radiosity
     double far_seconds = 0.0;         // clusters, their rays and fits, the samples' grid
@@ -156,6 +167,14 @@ class IrradianceDecomposition : private FrameBound {
 
    private:
     struct PendingCluster;
+    // The gathered radiosity's buffers besides B(t).
+    struct GatherInputs {
+        Buffer<shared::float4> direct;       // what each sends besides its diffuse indirect light
+        Buffer<shared::float4> reflectance;  // its diffuse reflectance
+        Buffer<shared::float4> traced;       // path-traced B(t) / pi where uncovered
+        Buffer<uint32_t> covered;            // 1 where a far-field sample covers it
+        Buffer<unsigned> counters;           // [0]: rays
+    };
     void compute_gbuffer();
     void build_near_field(const DecompositionOptions& options);
     void sample_far_field(const DecompositionOptions& options);
@@ -164,6 +183,15 @@ class IrradianceDecomposition : private FrameBound {
     // at `traced_samples` points).
     void coarse_radiosity(const std::vector<uint32_t>& listed, Buffer<shared::float4>& radiance);
     void gather_radiosity(int passes, int traced_samples);
+    // The gathered radiosity's inputs (direct part, reflectance, coverage, traced B(t)) and one
+    // gathering pass reading `previous` (I_N from it when with_near) into radiance_buffer_.
+    void prepare_gather(int traced_samples, GatherInputs* inputs);
+    void gather_pass(GatherInputs& inputs, const Buffer<shared::float4>& previous, bool with_near);
+    // --decomp-source radiosity (decomp_radiosity_source.cpp): B^0 (direct part; traced where
+    // uncovered), then `iterations` times: the kept rays' radiance from B^(k-1), every far-field
+    // sample refitted, B^k gathered; the far field refitted from the last B(t).
+    void iterate_radiosity_source(int iterations, int traced_samples);
+    void refit_far_field(const Buffer<shared::float4>& radiance);
     // Rays and fits of a batch of clusters (their rays in *rays when given).
     std::vector<shared::ClusterFit> fit_batch(const std::vector<PendingCluster>& batch,
                                               std::vector<shared::ClusterRay>* rays = nullptr);
@@ -188,6 +216,14 @@ class IrradianceDecomposition : private FrameBound {
     std::vector<shared::NearTriangle> triangles_;
     std::vector<uint32_t> uncovered_;
     Buffer<shared::NearTriangle> triangle_buffer_;
+    bool radiosity_source_ = false;
+    bool reach_needed_ = false;
+    Buffer<shared::SplitNode> split_nodes_;  // the scene triangles' split trees
+    Buffer<uint32_t> split_roots_;
+    // --decomp-source radiosity: the far-field samples' traced rays, far_'s order,
+    // params_.cluster_rays each (on the host while the clusters are built, then on the device).
+    std::vector<shared::ClusterRay> far_rays_;
+    Buffer<shared::ClusterRay> far_ray_buffer_;
     Buffer<shared::float4> radiance_buffer_;
     RecordGridData near_grid_;
     Buffer<int> near_start_;

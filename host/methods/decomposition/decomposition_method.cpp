@@ -35,6 +35,8 @@ constexpr int kRadiositySamplesPath = 16;
 // Gathered radiosity (--decomp-radiosity gathered): direct light at 4 points per split triangle,
 // DecompositionOptions' passes (docs/decomposition.md).
 constexpr int kRadiositySamplesGathered = 4;
+// --decomp-source radiosity: iterations of B(t) and the far field (docs/decomposition.md).
+constexpr int kDefaultSourceIterations = 6;
 
 // A length option (--alpha, --decomp-cluster): in scene units ("0.2", "0.2u") or a percentage of
 // the diagonal of the scene's bounding box ("5%").
@@ -86,7 +88,10 @@ nlohmann::json stats_json(const DecompositionStats& s, const DecompositionOption
             {"cluster_rays", options.cluster_rays},
             {"min_cluster_size", options.min_cluster_size},
             {"split_factor", options.split_factor},
-            {"source", options.source->source_name()},
+            {"source", options.radiosity_source ? "radiosity" : options.source->source_name()},
+            {"source_iterations", options.radiosity_source ? options.source_iterations : 0},
+            {"source_change", s.source_change},
+            {"source_rays_without_triangle", s.source_rays_without_triangle},
             {"radiosity", options.radiosity_passes > 0 ? "gathered" : "coarse"},
             {"radiosity_passes", s.radiosity_passes},
             {"uncovered_triangles", s.uncovered_triangles},
@@ -144,16 +149,30 @@ class Decomposition final : public Method {
         const std::string source = arguments.value("--decomp-source", "grid");
         if (source == "grid") {
             grid_options_ = ivg_options(arguments, settings);
-        } else if (source == "path") {
+        } else if (source == "path" || source == "radiosity") {
             refuse_ivg_options(arguments, "applies to --decomp-source grid only");
         } else {
-            throw Error("--decomp-source: expected grid or path, got '" + source + "'", kExitUsage);
+            throw Error("--decomp-source: expected grid, path or radiosity, got '" + source + "'",
+                        kExitUsage);
         }
         with_grid_ = source == "grid";
+        options_.radiosity_source = source == "radiosity";
+        if (arguments.has("--decomp-iterations") && !options_.radiosity_source) {
+            throw Error("--decomp-iterations applies to --decomp-source radiosity only",
+                        kExitUsage);
+        }
+        options_.source_iterations =
+            static_cast<int>(arguments.integer("--decomp-iterations", kDefaultSourceIterations));
         // The gathered radiosity beats the grid's B(t) but not path-traced B(t) (the relief:
-        // docs/decomposition.md), so each source has its own default.
-        const std::string radiosity =
-            arguments.value("--decomp-radiosity", with_grid_ ? "gathered" : "coarse");
+        // docs/decomposition.md), so each source has its own default; the radiosity source reads
+        // the gathered one.
+        const std::string radiosity = arguments.value(
+            "--decomp-radiosity", with_grid_ || options_.radiosity_source ? "gathered" : "coarse");
+        if (options_.radiosity_source && radiosity != "gathered") {
+            throw Error("--decomp-radiosity " + radiosity +
+                            ": --decomp-source radiosity reads the gathered radiosity",
+                        kExitUsage);
+        }
         if (radiosity != "gathered" && radiosity != "coarse") {
             throw Error("--decomp-radiosity: expected gathered or coarse, got '" + radiosity + "'",
                         kExitUsage);
@@ -202,6 +221,11 @@ class Decomposition final : public Method {
     }
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
+        if (options_.radiosity_source && frame_devices(frame) > 1) {
+            throw Error("--decomp-source radiosity renders on one device; --device names " +
+                            std::to_string(frame_devices(frame)),
+                        kExitUsage);
+        }
         FrameResult result;
         std::unique_ptr<IrradianceVectorGrid> grid;
         PathContinuation path;
@@ -324,8 +348,14 @@ std::vector<OptionSpec> decomposition_option_specs() {
         OptionSpec{"--decomp-source", "", "NAME",
                    "decomposition: the coarse solution the rays read at their hits and the near "
                    "triangles' radiosity comes from: grid (the irradiance vector grid, default; "
-                   "its options apply) or path (path-traced continuation)"}
-            .one_of({"grid", "path"}),
+                   "its options apply), path (path-traced continuation) or radiosity (the split "
+                   "triangles' gathered radiosity B(t) at the rays' hits, iterated with the far "
+                   "field; one device)"}
+            .one_of({"grid", "path", "radiosity"}),
+        OptionSpec{"--decomp-iterations", "", "K",
+                   "decomposition, --decomp-source radiosity: iterations of the split triangles' "
+                   "radiosity and the far field's fits, no ray each (default 6)"}
+            .integers(1, 64),
         kLightSamplesOption,
     };
     for (OptionSpec& spec : ivg_option_specs()) {
