@@ -115,23 +115,7 @@ TEST(DecompositionSplitTree, FindsTheSplitTriangleABruteForceSearchFinds) {
 
 // A camera looking down at a floor (y = 0) under a ceiling (y = 1), both 4 x 4.
 Scene floor_and_ceiling() {
-    const auto dir = test::scratch_dir("decomp_radiosity_source_planes");
-    std::ofstream(dir / "scene.json") << R"({
-        "camera": {"position": [0, 0.9, 0], "look_at": [0, 0, 0.01], "up": [0, 0, 1],
-                   "fov": 60, "resolution": [16, 16]},
-        "materials": {"white": {"type": "diffuse", "reflectance": 0.5}},
-        "shapes": [
-            {"type": "rectangle", "material": "white",
-             "transform": [{"scale": 2}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]},
-            {"type": "rectangle", "material": "white",
-             "transform": [{"scale": 2}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
-                           {"translate": [0, 1, 0]}]},
-            {"type": "rectangle", "material": "white", "emitter": {"type": "area", "radiance": 5},
-             "transform": [{"scale": 0.2}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
-                           {"translate": [0, 0.999, 0]}]}
-        ]
-    })";
-    return load_scene(dir / "scene.json");
+    return test::floor_and_ceiling(2.0f, "decomp_radiosity_source_planes");
 }
 
 // The distance along the ray (o, d) to triangle t's front, by the Moeller-Trumbore test in double.

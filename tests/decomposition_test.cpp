@@ -463,25 +463,7 @@ TEST(DecompositionFarGradients, TooFewRaysDropTheGradient) {
 }
 
 // A camera looking down at a floor (y = 0) under a ceiling (y = 1), both 20 x 20.
-Scene floor_and_ceiling() {
-    const auto dir = test::scratch_dir("decomposition_planes");
-    std::ofstream(dir / "scene.json") << R"({
-        "camera": {"position": [0, 0.9, 0], "look_at": [0, 0, 0.01], "up": [0, 0, 1],
-                   "fov": 60, "resolution": [16, 16]},
-        "materials": {"white": {"type": "diffuse", "reflectance": 0.5}},
-        "shapes": [
-            {"type": "rectangle", "material": "white",
-             "transform": [{"scale": 10}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]},
-            {"type": "rectangle", "material": "white",
-             "transform": [{"scale": 10}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
-                           {"translate": [0, 1, 0]}]},
-            {"type": "rectangle", "material": "white", "emitter": {"type": "area", "radiance": 5},
-             "transform": [{"scale": 0.2}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
-                           {"translate": [0, 0.999, 0]}]}
-        ]
-    })";
-    return load_scene(dir / "scene.json");
-}
+Scene floor_and_ceiling() { return test::floor_and_ceiling(10.0f, "decomposition_planes"); }
 
 DecompositionOptions small_options(float alpha, const RadianceSource* source, int size = 16) {
     DecompositionOptions options;

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <memory>
 
@@ -40,6 +41,30 @@ std::filesystem::path source_dir() { return RADCACHE_SOURCE_DIR; }
 std::filesystem::path radcache_executable() { return RADCACHE_EXECUTABLE; }
 
 Scene load_cornell_box() { return load_scene(source_dir() / "scenes/cornell-box/scene.json"); }
+
+Scene floor_and_ceiling(float half_size, const std::string& scratch) {
+    const auto dir = scratch_dir(scratch);
+    const std::string scale = std::to_string(half_size);
+    std::ofstream(dir / "scene.json")
+        << R"({
+        "camera": {"position": [0, 0.9, 0], "look_at": [0, 0, 0.01], "up": [0, 0, 1],
+                   "fov": 60, "resolution": [16, 16]},
+        "materials": {"white": {"type": "diffuse", "reflectance": 0.5}},
+        "shapes": [
+            {"type": "rectangle", "material": "white",
+             "transform": [{"scale": )"
+        << scale << R"(}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]},
+            {"type": "rectangle", "material": "white",
+             "transform": [{"scale": )"
+        << scale << R"(}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
+                           {"translate": [0, 1, 0]}]},
+            {"type": "rectangle", "material": "white", "emitter": {"type": "area", "radiance": 5},
+             "transform": [{"scale": 0.2}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
+                           {"translate": [0, 0.999, 0]}]}
+        ]
+    })";
+    return load_scene(dir / "scene.json");
+}
 
 Material pure_phong(float exponent) {
     Material m;

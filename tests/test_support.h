@@ -28,6 +28,10 @@ Context& layout_context(BvhLayout layout);
 std::filesystem::path source_dir();
 std::filesystem::path radcache_executable();
 Scene load_cornell_box();
+// A camera at (0, 0.9, 0) looking down at a diffuse floor (y = 0) under a ceiling (y = 1), both
+// 2 half_size across, with a small area light under the ceiling's centre; written under
+// scratch_dir(scratch).
+Scene floor_and_ceiling(float half_size, const std::string& scratch);
 
 // A Phong material with white specular reflectance and no diffuse lobe ("phong E").
 Material pure_phong(float exponent);

@@ -20,28 +20,37 @@ RC_FUNC int rc_decomp_split_triangle_of(RC_GLOBAL const SplitNode* nodes,
     return node->triangle;
 }
 
+// Ray r of a cluster (rc_decomp_cluster_ray) traced to its closest hit, returned; *out started
+// from it (direction, offset from the cluster's centre, no radiance, no split triangle), *ray and
+// *rng left for the caller. *rays counts the ray.
+RC_FUNC Hit rc_decomp_cluster_ray_hit(const DecompParams* params, const SceneData* scene,
+                                      const DecompCluster* cluster, RC_GLOBAL const uint* members,
+                                      RC_GLOBAL const GBufferSample* gbuffer, uint r,
+                                      RngStream* rng, Ray* ray, ClusterRay* out, uint* rays) {
+    *ray = rc_decomp_cluster_ray(params, cluster, members, gbuffer, r, rng);
+    out->direction = (float4)(ray->direction.xyz, 0.0f);
+    out->offset = (float4)(ray->origin.xyz - cluster->centre.xyz, 0.0f);
+    out->radiance = (float4)(0.0f);
+    out->split_triangle = -1;
+    out->pad1 = 0;
+    *rays += 1;
+    return rc_trace_closest(scene->nodes, scene->triangles, *ray);
+}
+
 // Ray r of a cluster, traced to its closest hit only: whether it enters the fit and whether its
 // hit lies inside the cluster's bounding sphere (as rc_decomp_trace_cluster_ray), the split
 // triangle whose front it hits (-1 for a miss or a back face), and as radiance only the emission
 // it sees when the tests count it (rc_decomp_radiosity_ray adds B(t) / pi). *rays counts the rays
 // traced.
-RC_FUNC ClusterRay rc_decomp_trace_cluster_hit(const DecompParams* params, const SceneData* scene,
-                                               RC_GLOBAL const SplitNode* nodes,
-                                               RC_GLOBAL const uint* roots,
-                                               const DecompCluster* cluster,
-                                               RC_GLOBAL const uint* members,
-                                               RC_GLOBAL const GBufferSample* gbuffer, uint r,
-                                               uint* rays) {
+RC_FUNC ClusterRay rc_decomp_trace_cluster_hit(
+    const DecompParams* params, const SceneData* scene, RC_GLOBAL const SplitNode* nodes,
+    RC_GLOBAL const uint* roots, const DecompCluster* cluster, RC_GLOBAL const uint* members,
+    RC_GLOBAL const GBufferSample* gbuffer, uint r, uint* rays) {
     RngStream rng;
-    const Ray ray = rc_decomp_cluster_ray(params, cluster, members, gbuffer, r, &rng);
+    Ray ray;
     ClusterRay out;
-    out.direction = (float4)(ray.direction.xyz, 0.0f);
-    out.offset = (float4)(ray.origin.xyz - cluster->centre.xyz, 0.0f);
-    out.radiance = (float4)(0.0f);
-    out.split_triangle = -1;
-    out.pad1 = 0;
-    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
-    *rays += 1;
+    const Hit hit = rc_decomp_cluster_ray_hit(params, scene, cluster, members, gbuffer, r, &rng,
+                                              &ray, &out, rays);
     const bool missed = hit.primitive == RC_NO_HIT;
     out.kept = rc_decomp_is_distant(missed ? INFINITY : hit.t, params->alpha) ? 1 : 0;
     out.inside = 0;

@@ -8,6 +8,7 @@
 #include "common/radiance_source.h"
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_radiosity.h"
+#include "decomposition/decomp_radiosity_rays.h"
 
 // Ray r of a cluster: its direction, whether it enters the fit, whether its hit lies inside the
 // cluster's bounding sphere, and the radiance it brings back when kept (the source's: direct
@@ -21,15 +22,10 @@ RC_FUNC ClusterRay rc_decomp_trace_cluster_ray(const DecompParams* params, const
                                                RC_GLOBAL const GBufferSample* gbuffer, uint r,
                                                uint* rays) {
     RngStream rng;
-    const Ray ray = rc_decomp_cluster_ray(params, cluster, members, gbuffer, r, &rng);
+    Ray ray;
     ClusterRay out;
-    out.direction = (float4)(ray.direction.xyz, 0.0f);
-    out.offset = (float4)(ray.origin.xyz - cluster->centre.xyz, 0.0f);
-    out.radiance = (float4)(0.0f);
-    out.split_triangle = -1;
-    out.pad1 = 0;
-    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
-    *rays += 1;
+    const Hit hit = rc_decomp_cluster_ray_hit(params, scene, cluster, members, gbuffer, r, &rng,
+                                              &ray, &out, rays);
     const float distance = hit.primitive == RC_NO_HIT ? INFINITY : hit.t;
     out.kept = rc_decomp_is_distant(distance, params->alpha) ? 1 : 0;
     out.inside =
