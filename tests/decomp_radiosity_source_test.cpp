@@ -204,24 +204,10 @@ TEST(DecompositionRadiositySource, ClusterRaysFindTheSplitTriangleTheyHit) {
 // path-traced L* where it does not, and iteration k gathers B^k / pi = rho Le + rho x (the
 // far field's and near field's B^(k-1) / pi): the covered triangles' B^k lies between L_k (had
 // every ray hit a covered triangle) and L*.
-constexpr float kFurnaceReflectance = 0.6f;
-constexpr float kFurnaceEmission = 2.0f;
+using test::kFurnaceEmission;
+using test::kFurnaceReflectance;
 
-Scene furnace_box() {
-    const auto dir = test::scratch_dir("decomp_radiosity_source_furnace");
-    std::ofstream(dir / "scene.json") << R"({
-        "camera": {"position": [0.7, 0.4, -0.8], "look_at": [-0.3, -0.7, 0.5], "up": [0, 1, 0],
-                   "fov": 100, "resolution": [16, 16]},
-        "materials": {"grey": {"type": "diffuse", "reflectance": 0.6}},
-        "shapes": [
-            {"type": "cube", "material": "grey", "flip_normals": true,
-             "emitter": {"type": "area", "radiance": 2}},
-            {"type": "cube", "material": "grey", "emitter": {"type": "area", "radiance": 2},
-             "transform": [{"scale": 0.3}, {"translate": [-0.2, -0.6, 0.2]}]}
-        ]
-    })";
-    return load_scene(dir / "scene.json");
-}
+Scene furnace_box() { return test::furnace_box("decomp_radiosity_source_furnace"); }
 
 double furnace_bounces(int k) {
     const double rho = kFurnaceReflectance;

@@ -791,24 +791,10 @@ TEST(DecompositionNearField, ShadowRaysDropTrianglesTheHeuristicTakesAsVisible) 
 // diffuse with reflectance rho and emitting radiance Le. The light leaving any surface besides its
 // own emission is the same everywhere, L* = rho Le / (1 - rho) (the sum of the bounces
 // rho^k Le, k >= 1), whatever the geometry.
-constexpr float kFurnaceReflectance = 0.6f;
-constexpr float kFurnaceEmission = 2.0f;
+using test::kFurnaceEmission;
+using test::kFurnaceReflectance;
 
-Scene furnace_box() {
-    const auto dir = test::scratch_dir("decomposition_furnace");
-    std::ofstream(dir / "scene.json") << R"({
-        "camera": {"position": [0.7, 0.4, -0.8], "look_at": [-0.3, -0.7, 0.5], "up": [0, 1, 0],
-                   "fov": 100, "resolution": [16, 16]},
-        "materials": {"grey": {"type": "diffuse", "reflectance": 0.6}},
-        "shapes": [
-            {"type": "cube", "material": "grey", "flip_normals": true,
-             "emitter": {"type": "area", "radiance": 2}},
-            {"type": "cube", "material": "grey", "emitter": {"type": "area", "radiance": 2},
-             "transform": [{"scale": 0.3}, {"translate": [-0.2, -0.6, 0.2]}]}
-        ]
-    })";
-    return load_scene(dir / "scene.json");
-}
+Scene furnace_box() { return test::furnace_box("decomposition_furnace"); }
 
 // The gathered radiosity (--decomp-radiosity gathered; decomp_radiosity.h) in the furnace: every
 // split triangle's B(t) / pi, direct light plus rho_d / pi (I_D + I_N) gathered at it, is L*

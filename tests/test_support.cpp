@@ -66,6 +66,27 @@ Scene floor_and_ceiling(float half_size, const std::string& scratch) {
     return load_scene(dir / "scene.json");
 }
 
+Scene furnace_box(const std::string& scratch) {
+    const auto dir = scratch_dir(scratch);
+    const std::string rho = std::to_string(kFurnaceReflectance);
+    const std::string emission = std::to_string(kFurnaceEmission);
+    std::ofstream(dir / "scene.json") << R"({
+        "camera": {"position": [0.7, 0.4, -0.8], "look_at": [-0.3, -0.7, 0.5], "up": [0, 1, 0],
+                   "fov": 100, "resolution": [16, 16]},
+        "materials": {"grey": {"type": "diffuse", "reflectance": )"
+                                      << rho << R"(}},
+        "shapes": [
+            {"type": "cube", "material": "grey", "flip_normals": true,
+             "emitter": {"type": "area", "radiance": )"
+                                      << emission << R"(}},
+            {"type": "cube", "material": "grey", "emitter": {"type": "area", "radiance": )"
+                                      << emission << R"(},
+             "transform": [{"scale": 0.3}, {"translate": [-0.2, -0.6, 0.2]}]}
+        ]
+    })";
+    return load_scene(dir / "scene.json");
+}
+
 Material pure_phong(float exponent) {
     Material m;
     m.name = "phong " + std::to_string(static_cast<int>(exponent));

@@ -32,6 +32,12 @@ Scene load_cornell_box();
 // 2 half_size across, with a small area light under the ceiling's centre; written under
 // scratch_dir(scratch).
 Scene floor_and_ceiling(float half_size, const std::string& scratch);
+// A furnace: a closed box (inward faces) with a block standing on its floor, every surface diffuse
+// with reflectance kFurnaceReflectance and emitting radiance kFurnaceEmission; written under
+// scratch_dir(scratch).
+constexpr float kFurnaceReflectance = 0.6f;
+constexpr float kFurnaceEmission = 2.0f;
+Scene furnace_box(const std::string& scratch);
 
 // A Phong material with white specular reflectance and no diffuse lobe ("phong E").
 Material pure_phong(float exponent);
