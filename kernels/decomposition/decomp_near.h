@@ -57,8 +57,12 @@ RC_FUNC bool rc_decomp_reaches(const SceneData* scene, float3 origin, float3 cen
 RC_FUNC bool rc_decomp_may_see(float3 p, float3 n, float3 v0, float3 v1, float3 v2,
                                float tolerance) {
     const float3 normal = cross(v1 - v0, v2 - v0);
+    const float facing = dot(normal, p - v0);
+    if (facing <= 0.0f) {
+        return false;  // back-facing or edge-on, decided without the normal's length
+    }
     const float length_normal = length(normal);
-    if (length_normal <= 0.0f || dot(normal, p - v0) <= tolerance * length_normal) {
+    if (length_normal <= 0.0f || facing <= tolerance * length_normal) {
         return false;  // back-facing (or edge-on)
     }
     return dot(v0 - p, n) > tolerance || dot(v1 - p, n) > tolerance || dot(v2 - p, n) > tolerance;
@@ -67,39 +71,52 @@ RC_FUNC bool rc_decomp_may_see(float3 p, float3 n, float3 v0, float3 v1, float3 
 // The largest subdivision of a near triangle's quadrature: m^2 pieces.
 #define RC_DECOMP_MAX_PIECES_PER_EDGE 4
 
-// The distant power a near triangle hides from p (the second term of eq. 4's bracket times its
-// FF): the paper takes L_D* as "constant over directions spanned by one of the split triangles",
-// L_D*(w_t) FF(t). A triangle close to p spans a wide cone over which the order-2 fit varies, so
-// here it is cut into m^2 pieces on a regular grid of its barycentric coordinates, m = the
-// triangle's longest edge over half its centroid's distance (1 to RC_DECOMP_MAX_PIECES_PER_EDGE),
-// and the sum runs over the pieces, each with its own form factor and L_D* at its centroid
-// (measured on the relief scene: docs/decomposition.md). Returns sum FF_k L_D*(w_k).
+// The distant power a near triangle of form factor ff hides from p (the second term of eq. 4's
+// bracket over pi): the paper takes L_D* as "constant over directions spanned by one of the split
+// triangles", L_D*(w_t) FF(t). A triangle close to p spans a wide cone over which the order-2 fit
+// varies, so here L_D* is averaged over m^2 pieces on a regular grid of the triangle's
+// barycentric coordinates, m = the triangle's longest edge over half its centroid's distance (1 to
+// RC_DECOMP_MAX_PIECES_PER_EDGE), each piece weighted by its share of ff: the point-to-disc
+// estimate cos(theta_p) cos(theta_t) A_k / (pi r^2 + A_k) at its centroid (the pieces' areas A_k
+// are equal and cos(theta_t) r is p's height over the triangle's plane, the same for all). The
+// exact ff keeps the sum right for constant L_D* (measured on the relief: docs/decomposition.md).
+// Returns FF(t) times that mean of L_D*.
 RC_FUNC float3 rc_decomp_hidden(const ShSample* far, float3 p, float3 n, float3 v0, float3 v1,
-                                float3 v2) {
+                                float3 v2, float ff) {
     const float3 e1 = v1 - v0;
     const float3 e2 = v2 - v0;
+    const float3 to_centroid = (v0 + v1 + v2) * (1.0f / 3.0f) - p;
     const float longest = fmax(length(e1), fmax(length(e2), length(v2 - v1)));
-    const float distance = length((v0 + v1 + v2) * (1.0f / 3.0f) - p);
-    const int m = (int)clamp(ceil(2.0f * longest / fmax(distance, 1e-30f)), 1.0f,
+    const int m = (int)clamp(ceil(2.0f * longest / fmax(length(to_centroid), 1e-30f)), 1.0f,
                              (float)RC_DECOMP_MAX_PIECES_PER_EDGE);
+    if (m == 1) {
+        return ff * rc_decomp_sh_radiance(far, normalize(to_centroid));
+    }
     const float step = 1.0f / (float)m;
-    float3 hidden = (float3)(0.0f);
+    const float piece_area = 0.5f * length(cross(e1, e2)) * step * step;
+    float3 sum = (float3)(0.0f);
+    float weights = 0.0f;
     for (int i = 0; i < m; ++i) {
         for (int j = 0; i + j < m; ++j) {
-            // The upward piece at lattice point (i, j), and the downward one beside it.
+            // The upward piece at lattice point (i, j), and the downward one beside it: their
+            // centroids at barycentric (i + 1/3, j + 1/3) and (i + 2/3, j + 2/3) steps.
             for (int down = 0; down < 2 && (down == 0 || i + j + 1 < m); ++down) {
-                const float3 a = v0 + ((float)(i + down) * e1 + (float)j * e2) * step;
-                const float3 b = v0 + ((float)(i + 1) * e1 + (float)(j + down) * e2) * step;
-                const float3 c = v0 + ((float)i * e1 + (float)(j + 1) * e2) * step;
-                const float ff = rc_decomp_form_factor(p, n, a, b, c);
-                if (ff > 0.0f) {
-                    hidden +=
-                        ff * rc_decomp_sh_radiance(far, normalize((a + b + c) * (1.0f / 3.0f) - p));
+                const float shift = down == 0 ? 1.0f / 3.0f : 2.0f / 3.0f;
+                const float3 d =
+                    v0 + (((float)i + shift) * e1 + ((float)j + shift) * e2) * step - p;
+                const float r2 = dot(d, d);
+                const float cosine = dot(n, d);
+                if (cosine <= 0.0f || r2 <= 0.0f) {
+                    continue;
                 }
+                const float weight = cosine / (r2 * (RC_PI * r2 + piece_area));
+                sum += weight * rc_decomp_sh_radiance(far, d / sqrt(r2));
+                weights += weight;
             }
         }
     }
-    return hidden;
+    return weights > 0.0f ? (ff / weights) * sum
+                          : ff * rc_decomp_sh_radiance(far, normalize(to_centroid));
 }
 
 // I_N at point p with unit normal n (eq. 4): the sum over the triangles t of p's near set
@@ -124,8 +141,8 @@ RC_FUNC float3 rc_decomp_near_correction(const NearField* near, const ShSample* 
         const float3 v1 = near->triangles[t].v1.xyz;
         const float3 v2 = near->triangles[t].v2.xyz;
         const float3 centroid = (v0 + v1 + v2) * (1.0f / 3.0f);
-        if (!rc_decomp_in_near_set(near->rule, p, v0, v1, v2, near->alpha) ||
-            !rc_decomp_may_see(p, n, v0, v1, v2, tolerance)) {
+        if (!rc_decomp_may_see(p, n, v0, v1, v2, tolerance) ||
+            !rc_decomp_in_near_set(near->rule, p, v0, v1, v2, near->alpha)) {
             continue;
         }
         const float ff = rc_decomp_form_factor(p, n, v0, v1, v2);
@@ -133,7 +150,7 @@ RC_FUNC float3 rc_decomp_near_correction(const NearField* near, const ShSample* 
                            !rc_decomp_reaches(near->visibility, origin, centroid, rays))) {
             continue;
         }
-        sum += RC_PI * (ff * near->radiance[t].xyz - rc_decomp_hidden(far, p, n, v0, v1, v2));
+        sum += RC_PI * (ff * near->radiance[t].xyz - rc_decomp_hidden(far, p, n, v0, v1, v2, ff));
         *count += 1;
     }
     return sum;

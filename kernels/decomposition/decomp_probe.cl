@@ -1,7 +1,7 @@
 // Test kernels of irradiance decomposition (tests/decomposition_test.cpp,
 // tests/shared_layout_test.cpp): the shared layouts, the form factor, the distant term, the
-// near correction and the split triangles' radiosity points, each on given inputs (the fit's own
-// kernel, decomp_fit, is the method's).
+// near correction, the hidden distant power and the split triangles' radiosity points, each on
+// given inputs (the fit's own kernel, decomp_fit, is the method's).
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_form_factor.h"
 #include "decomposition/decomp_near.h"
@@ -32,6 +32,23 @@ __kernel void decomp_form_factors(uint begin, uint end, __global const float4* p
     }
     out[i] = rc_decomp_form_factor(points[i].xyz, normals[i].xyz, triangles[i].v0.xyz,
                                    triangles[i].v1.xyz, triangles[i].v2.xyz);
+}
+
+// Item i: the distant power triangles[i] hides from points[i] with unit normal normals[i]
+// (rc_decomp_hidden, L_D* of sample[0]) into hidden[i] (xyz; w: the triangle's FF).
+__kernel void decomp_hidden_at(uint begin, uint end, __global const ShSample* sample,
+                               __global const float4* points, __global const float4* normals,
+                               __global const NearTriangle* triangles, __global float4* hidden) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const ShSample far = sample[0];
+    const float3 p = points[i].xyz;
+    const float3 n = normals[i].xyz;
+    const NearTriangle t = triangles[i];
+    const float ff = rc_decomp_form_factor(p, n, t.v0.xyz, t.v1.xyz, t.v2.xyz);
+    hidden[i] = (float4)(rc_decomp_hidden(&far, p, n, t.v0.xyz, t.v1.xyz, t.v2.xyz, ff), ff);
 }
 
 // Item q: I_D of sample samples[q] about the unit normal normals[q] into irradiance[q], and its

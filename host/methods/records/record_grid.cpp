@@ -32,17 +32,17 @@ double listings_for(const std::vector<shared::Record>& records, const std::vecto
     return listings;
 }
 
-// The cell size: about twice the median influence radius, grown by 1.25 while there would be more
-// than max_cells cells or more than kMaxListingsPerRecord listings per record on average. (A
-// cache's radii span decades: with cells from the median alone, the large records of a deeper
-// level were each listed in hundreds of cells — 8 M listings for 12 k records on the Cornell box
-// — and building the grid was most of the host's work in a render. Once cells exceed the extent a
-// record touches at most 8, so the growth ends.)
+// The cell size: about cell_per_radius times the median influence radius, grown by 1.25 while there
+// would be more than max_cells cells or more than kMaxListingsPerRecord listings per record on
+// average. (A cache's radii span decades: with cells from the median alone, the large records of a
+// deeper level were each listed in hundreds of cells — 8 M listings for 12 k records on the Cornell
+// box — and building the grid was most of the host's work in a render. Once cells exceed the extent
+// a record touches at most 8, so the growth ends.)
 float cell_size(const std::vector<shared::Record>& records, const std::vector<float>& influence,
-                glm::vec3 lower, glm::vec3 extent, size_t max_cells) {
+                glm::vec3 lower, glm::vec3 extent, size_t max_cells, float cell_per_radius) {
     std::vector<float> sorted = influence;
     std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-    float cell = std::max(2.0f * sorted[sorted.size() / 2], 1e-6f * glm::length(extent));
+    float cell = std::max(cell_per_radius * sorted[sorted.size() / 2], 1e-6f * glm::length(extent));
     auto cells_for = [&](float size) {
         const glm::vec3 dims = glm::ceil(extent / size);
         return static_cast<double>(dims.x) * dims.y * dims.z;
@@ -58,7 +58,7 @@ float cell_size(const std::vector<shared::Record>& records, const std::vector<fl
 }  // namespace
 
 RecordGridData build_record_grid(const std::vector<shared::Record>& records, float accuracy,
-                                 size_t max_cells) {
+                                 size_t max_cells, float cell_per_radius) {
     RecordGridData data;
     if (records.empty()) {
         data.grid.origin = {0, 0, 0, 0};
@@ -77,7 +77,7 @@ RecordGridData build_record_grid(const std::vector<shared::Record>& records, flo
         upper = glm::max(upper, record_position(records[i]) + glm::vec3(influence[i]));
     }
     const glm::vec3 extent = glm::max(upper - lower, glm::vec3(1e-6f));
-    const float cell = cell_size(records, influence, lower, extent, max_cells);
+    const float cell = cell_size(records, influence, lower, extent, max_cells, cell_per_radius);
     const glm::ivec3 dims = glm::max(glm::ivec3(glm::ceil(extent / cell)), glm::ivec3(1));
     const size_t cells = static_cast<size_t>(dims.x) * dims.y * dims.z;
     data.grid.origin = float4_of(lower);

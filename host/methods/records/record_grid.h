@@ -21,9 +21,10 @@ struct RecordGridData {
 constexpr double kMaxListingsPerRecord = 64.0;
 
 // The grid over spheres of radius accuracy * R' (R' = records[i].radius) around the records;
-// cells are sized from the median influence radius, at most `max_cells` in all and at most
-// kMaxListingsPerRecord listings per record on average.
+// cells are `cell_per_radius` times the median influence radius (larger where needed), at most
+// `max_cells` in all and at most kMaxListingsPerRecord listings per record on average. Smaller
+// cells list a record in more cells and give a query fewer records that cannot reach it.
 RecordGridData build_record_grid(const std::vector<shared::Record>& records, float accuracy,
-                                 size_t max_cells = size_t{1} << 21);
+                                 size_t max_cells = size_t{1} << 21, float cell_per_radius = 2.0f);
 
 }  // namespace rc
