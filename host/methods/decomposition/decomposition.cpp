@@ -545,7 +545,8 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
     stats_.far_seconds = seconds_since(start);
     if (options.radiosity_source) {
         start = SteadyClock::now();
-        iterate_radiosity_source(options.source_iterations, options.traced_samples);
+        iterate_radiosity_source(options.source_iterations, options.source_extrapolate,
+                                 options.traced_samples);
         context_.finish();
         stats_.near_seconds += seconds_since(start);
     } else if (options.radiosity_passes > 0) {

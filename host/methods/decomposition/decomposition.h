@@ -84,7 +84,10 @@ struct DecompositionOptions {
     // split triangle they hit (decomp_radiosity_source.cpp), refitted over `source_iterations`
     // iterations of B(t) with no ray; needs alpha > 0 and the gathered radiosity.
     bool radiosity_source = false;
-    int source_iterations = 6;
+    int source_iterations = 4;
+    // With radiosity_source and at least 2 iterations: the bounces left after the last one added
+    // as a geometric tail (decomp_radiosity_source.cpp, extrapolate_bounce_tail).
+    bool source_extrapolate = true;
 };
 
 // One far-field sample (§4.1): the fit of a cluster that needed no split.
@@ -122,8 +125,9 @@ struct DecompositionStats {
     // triangle's back face or missed (they bring back no radiosity).
     std::vector<double> source_change;
     uint64_t source_rays_without_triangle = 0;
-    uint64_t near_rays = 0;     // shadow rays of the near field (--decomp-visibility rays)
-    uint64_t shading_rays = 0;  // the G-buffer and the render pass
+    double source_tail_ratio = 0.0;  // the ratio the tail was extrapolated with (0: none)
+    uint64_t near_rays = 0;          // shadow rays of the near field (--decomp-visibility rays)
+    uint64_t shading_rays = 0;       // the G-buffer and the render pass
     double gbuffer_seconds = 0.0;
     double near_seconds = 0.0;        // splitting, the near triangles' grid, their radiosity
     double far_seconds = 0.0;         // clusters, their rays and fits, the samples' grid
@@ -189,8 +193,9 @@ class IrradianceDecomposition : private FrameBound {
     void gather_pass(GatherInputs& inputs, const Buffer<shared::float4>& previous, bool with_near);
     // --decomp-source radiosity (decomp_radiosity_source.cpp): B^0 (direct part; traced where
     // uncovered), then `iterations` times: the kept rays' radiance from B^(k-1), every far-field
-    // sample refitted, B^k gathered; the far field refitted from the last B(t).
-    void iterate_radiosity_source(int iterations, int traced_samples);
+    // sample refitted, B^k gathered; with `extrapolate` the bounces left added as a geometric
+    // tail; the far field refitted from the last B(t).
+    void iterate_radiosity_source(int iterations, bool extrapolate, int traced_samples);
     void refit_far_field(const Buffer<shared::float4>& radiance);
     // Rays and fits of a batch of clusters (their rays in *rays when given).
     std::vector<shared::ClusterFit> fit_batch(const std::vector<PendingCluster>& batch,

@@ -35,8 +35,9 @@ constexpr int kRadiositySamplesPath = 16;
 // Gathered radiosity (--decomp-radiosity gathered): direct light at 4 points per split triangle,
 // DecompositionOptions' passes (docs/decomposition.md).
 constexpr int kRadiositySamplesGathered = 4;
-// --decomp-source radiosity: iterations of B(t) and the far field (docs/decomposition.md).
-constexpr int kDefaultSourceIterations = 6;
+// --decomp-source radiosity: iterations of B(t) and the far field; with the tail extrapolated, 4
+// gave the relief what 6 without it did (docs/decomposition.md, "The bounces' tail").
+constexpr int kDefaultSourceIterations = 4;
 
 // A length option (--alpha, --decomp-cluster): in scene units ("0.2", "0.2u") or a percentage of
 // the diagonal of the scene's bounding box ("5%").
@@ -91,6 +92,7 @@ nlohmann::json stats_json(const DecompositionStats& s, const DecompositionOption
             {"source", options.radiosity_source ? "radiosity" : options.source->source_name()},
             {"source_iterations", options.radiosity_source ? options.source_iterations : 0},
             {"source_change", s.source_change},
+            {"source_tail_ratio", s.source_tail_ratio},
             {"source_rays_without_triangle", s.source_rays_without_triangle},
             {"radiosity", options.radiosity_passes > 0 ? "gathered" : "coarse"},
             {"radiosity_passes", s.radiosity_passes},
@@ -161,8 +163,13 @@ class Decomposition final : public Method {
             throw Error("--decomp-iterations applies to --decomp-source radiosity only",
                         kExitUsage);
         }
+        if (arguments.has("--decomp-extrapolate") && !options_.radiosity_source) {
+            throw Error("--decomp-extrapolate applies to --decomp-source radiosity only",
+                        kExitUsage);
+        }
         options_.source_iterations =
             static_cast<int>(arguments.integer("--decomp-iterations", kDefaultSourceIterations));
+        options_.source_extrapolate = arguments.value("--decomp-extrapolate", "on") == "on";
         // The gathered radiosity beats the grid's B(t) but not path-traced B(t) (the relief:
         // docs/decomposition.md), so each source has its own default; the radiosity source reads
         // the gathered one.
@@ -354,8 +361,13 @@ std::vector<OptionSpec> decomposition_option_specs() {
             .one_of({"grid", "path", "radiosity"}),
         OptionSpec{"--decomp-iterations", "", "K",
                    "decomposition, --decomp-source radiosity: iterations of the split triangles' "
-                   "radiosity and the far field's fits, no ray each (default 6)"}
+                   "radiosity and the far field's fits, no ray each (default 4)"}
             .integers(1, 64),
+        OptionSpec{"--decomp-extrapolate", "", "on|off",
+                   "decomposition, --decomp-source radiosity: add the bounces the iterations "
+                   "left out as a geometric tail, its ratio that of the last two changes (on, "
+                   "default) or stop at the last iteration (off)"}
+            .one_of({"on", "off"}),
         kLightSamplesOption,
     };
     for (OptionSpec& spec : ivg_option_specs()) {
