@@ -10,11 +10,11 @@ For each scene, at --spp camera samples per pixel (default 4, the sweep's for th
 methods): renders `--method ic` at its defaults (the irradiance cache the issue names; and
 `ic --ic-ivg`, irradiance caching over the same grid the decomposition reads, with
 --with-ic-ivg), then `--method decomposition` at its defaults and over a ladder of settings
-(--source x --rays x --alpha x --cluster x --visibility x --radiosity x --gradients x --near:
---decomp-source, --decomp-rays, --alpha, --decomp-cluster, --decomp-visibility,
---decomp-radiosity, --decomp-gradients, --decomp-near; `--near default` leaves the near set to
-follow the radiosity), each point --repeats times in rounds (median render
-time).
+(--source x --rays x --alpha x --cluster x --visibility x --radiosity x --gradients x --near x
+--indirect-spp: --decomp-source, --decomp-rays, --alpha, --decomp-cluster, --decomp-visibility,
+--decomp-radiosity, --decomp-gradients, --decomp-near, --decomp-indirect-spp; `--near default`
+leaves the near set to follow the radiosity, `--indirect-spp 0` the evaluation at --spp), each
+point --repeats times in rounds (median render time).
 Every image is measured against the scene's reference: relMSE of the beauty and of the indirect
 layer (`radcache compare`). For each ic run it names the fastest decomposition setting whose
 relMSE (of the layer --layer, default indirect) is at most ic's, and the ratios of render time
@@ -26,7 +26,8 @@ loading, device start and image writing excluded).
 
 Usage: tools/bench/decomposition_vs_ic.py [--scenes relief] [--spp 4] [--source grid path]
            [--alpha 1%] [--cluster 10% 5% 2%] [--rays 512 2048] [--visibility heuristic]
-           [--radiosity gathered] [--gradients on] [--near default] [--repeats 2]
+           [--radiosity gathered] [--gradients on] [--near default] [--indirect-spp 0]
+           [--repeats 2]
            [--with-ic-ivg]
            [--layer indirect]
            [--out build/bench/decomposition]
@@ -82,20 +83,24 @@ def runs_of(args):
         runs.append(("ic-ivg", "ic", "--ic-ivg", ["--method", "ic", "--ic-ivg"] + spp))
     runs.append(("decomposition", "decomposition", "defaults",
                  ["--method", "decomposition"] + spp))
-    for source, rays, alpha, size, visibility, radiosity, gradients, near in itertools.product(
+    for (source, rays, alpha, size, visibility, radiosity, gradients, near,
+         indirect_spp) in itertools.product(
             args.source, args.rays, args.alpha, args.cluster, args.visibility, args.radiosity,
-            args.gradients, args.near):
+            args.gradients, args.near, args.indirect_spp):
         setting = "%s, alpha %s, cluster %s, %d rays, %s, %s radiosity, gradients %s" % (
             source, alpha, size, rays, visibility, radiosity, gradients)
-        near_option = []
+        more = []
         if near != "default":
             setting += ", near set " + near
-            near_option = ["--decomp-near", near]
+            more += ["--decomp-near", near]
+        if indirect_spp > 0:
+            setting += ", indirect spp %d" % indirect_spp
+            more += ["--decomp-indirect-spp", str(indirect_spp)]
         runs.append(("decomposition", "decomposition", setting,
                      ["--method", "decomposition", "--decomp-source", source, "--alpha", alpha,
                       "--decomp-cluster", size, "--decomp-rays", str(rays),
                       "--decomp-visibility", visibility, "--decomp-radiosity", radiosity,
-                      "--decomp-gradients", gradients] + near_option
+                      "--decomp-gradients", gradients] + more
                      + spp))
     return runs
 
@@ -186,7 +191,8 @@ def main():
         argv = argv[:argv.index("--")]
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--scenes", nargs="+", default=["relief"])
-    parser.add_argument("--source", nargs="+", choices=["grid", "path"], default=["grid", "path"])
+    parser.add_argument("--source", nargs="+", choices=["grid", "path", "radiosity"],
+                        default=["grid", "path"])
     parser.add_argument("--alpha", nargs="+", default=["1%"])
     parser.add_argument("--cluster", nargs="+", default=["10%", "5%", "2%"])
     parser.add_argument("--rays", nargs="+", type=int, default=[512, 2048])
@@ -203,6 +209,9 @@ def main():
                         default=["default"],
                         help="eq. 4's near set (--decomp-near; default: not given, so it follows "
                              "the radiosity)")
+    parser.add_argument("--indirect-spp", nargs="+", type=int, default=[0],
+                        help="camera samples per pixel of the two terms (--decomp-indirect-spp; "
+                             "default 0: not given, so --spp)")
     parser.add_argument("--spp", type=int, default=4,
                         help="camera samples per pixel of every run (default %(default)s)")
     parser.add_argument("--repeats", type=int, default=2)
