@@ -140,6 +140,24 @@ std::optional<double> front_hit(const shared::NearTriangle& t, glm::dvec3 o, glm
     return distance;
 }
 
+// The options every render here shares: a size x size image at 2 camera samples per pixel, seed
+// 5, the radiosity source over `path` with `iterations` iterations.
+DecompositionOptions radiosity_source_options(const PathContinuation& path, int size, float alpha,
+                                              float min_cluster_size, int cluster_rays,
+                                              int iterations) {
+    DecompositionOptions options;
+    options.width = options.height = size;
+    options.spp = 2;
+    options.seed = 5;
+    options.alpha = alpha;
+    options.min_cluster_size = min_cluster_size;
+    options.cluster_rays = cluster_rays;
+    options.source = &path;
+    options.radiosity_source = true;
+    options.source_iterations = iterations;
+    return options;
+}
+
 // The cluster rays of --decomp-source radiosity (decomp_cluster_hits): each kept ray's
 // split_triangle is the split triangle whose front a brute-force ray test over all of them hits
 // first (or one holding that hit point, on a shared edge), and -1 for the rays that miss.
@@ -147,16 +165,7 @@ TEST(DecompositionRadiositySource, ClusterRaysFindTheSplitTriangleTheyHit) {
     test::DeviceFrame device(floor_and_ceiling());
     PathContinuation path;
     IrradianceDecomposition decomposition(device.frame());
-    DecompositionOptions options;
-    options.width = options.height = 16;
-    options.spp = 2;
-    options.seed = 5;
-    options.alpha = 0.3f;
-    options.min_cluster_size = 1e5f;
-    options.cluster_rays = 512;
-    options.source = &path;
-    options.radiosity_source = true;
-    options.source_iterations = 1;
+    const DecompositionOptions options = radiosity_source_options(path, 16, 0.3f, 1e5f, 512, 1);
     decomposition.render(options);
     const std::vector<shared::NearTriangle>& triangles = decomposition.near_triangles();
     ASSERT_GT(triangles.size(), 100u);
@@ -227,18 +236,11 @@ FurnaceRender render_furnace(test::DeviceFrame& device, int iterations, bool ext
                              double expected) {
     PathContinuation path;
     IrradianceDecomposition decomposition(device.frame());
-    DecompositionOptions options;
-    options.width = options.height = 16;
-    options.spp = 2;
-    options.seed = 5;
-    options.alpha = 0.4f;
-    options.min_cluster_size = 1e5f;  // one cluster: one far-field sample
-    options.cluster_rays = 16384;
+    // One cluster (a minimum size beyond the box): one far-field sample.
+    DecompositionOptions options =
+        radiosity_source_options(path, 16, 0.4f, 1e5f, 16384, iterations);
     options.radiosity_samples = 256;
     options.traced_samples = 256;
-    options.source = &path;
-    options.radiosity_source = true;
-    options.source_iterations = iterations;
     options.source_extrapolate = extrapolate;
     DecompositionStats stats;
     const Image image = decomposition.render(options, &stats);
@@ -336,17 +338,7 @@ Image render_cornell(size_t local_size, size_t max_chunk, int iterations = 3) {
     test::DeviceFrame device(test::load_cornell_box(), context);
     PathContinuation path;
     IrradianceDecomposition decomposition(device.frame());
-    DecompositionOptions options;
-    options.width = options.height = 24;
-    options.spp = 2;
-    options.seed = 5;
-    options.alpha = 30.0f;
-    options.min_cluster_size = 30.0f;
-    options.cluster_rays = 256;
-    options.source = &path;
-    options.radiosity_source = true;
-    options.source_iterations = iterations;
-    return decomposition.render(options);
+    return decomposition.render(radiosity_source_options(path, 24, 30.0f, 30.0f, 256, iterations));
 }
 
 // Same seed and options: the same image, bit for bit, whatever the chunking and the work-group
