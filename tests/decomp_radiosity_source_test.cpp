@@ -229,7 +229,6 @@ double furnace_bounces(int k) {
 // the worst channel's relative distance from `expected`), the image's mean indirect light.
 struct FurnaceRender {
     double mean = 0.0, worst = 0.0, reflected = 0.0, tail_ratio = 0.0;
-    std::vector<glm::vec3> covered;  // each covered triangle's B(t) / pi
 };
 
 FurnaceRender render_furnace(test::DeviceFrame& device, int iterations, bool extrapolate,
@@ -263,7 +262,6 @@ FurnaceRender render_furnace(test::DeviceFrame& device, int iterations, bool ext
         const glm::vec3 e1 = vec3_of(triangles[t].v1) - vec3_of(triangles[t].v0);
         const glm::vec3 e2 = vec3_of(triangles[t].v2) - vec3_of(triangles[t].v0);
         const double a = 0.5 * glm::length(glm::cross(e1, e2));
-        out.covered.push_back(radiance[t]);
         for (int c = 0; c < 3; ++c) {
             sum += a * radiance[t][c];
             out.worst = std::max(out.worst, std::abs(radiance[t][c] - expected) / expected);

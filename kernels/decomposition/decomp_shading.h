@@ -157,12 +157,7 @@ RC_FUNC DecompSample rc_decomp_indirect_sample(const DecompParams* params, const
                                                uint pixel, uint s) {
     DecompSample out;
     out.diffuse = out.far = out.near = (float3)(0.0f);
-    out.light.direct = out.light.indirect = out.light.albedo = (float3)(0.0f);
-    out.light.normal = out.light.position = (float3)(0.0f);
-    out.light.coverage = 0.0f;
-    out.light.served = false;
-    out.light.distance = INFINITY;
-    out.light.rays = 1;
+    rc_cached_radiance_clear(&out.light, 1);
     RngStream rng;
     float x, y;
     const Ray ray = rc_decomp_camera_ray(params, camera, pixel, s, &rng, &x, &y);

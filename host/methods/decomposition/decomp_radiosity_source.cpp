@@ -108,21 +108,25 @@ void IrradianceDecomposition::iterate_radiosity_source(int iterations, bool extr
         b0[t] = traced[t];
     }
     radiance_buffer_.upload(b0);
-    std::vector<double> last = weighted_luminance(triangles_, b0);
+    // B^(k-1) and B^k on the host: the change's luminance and the tail read them.
+    std::vector<shared::float4> before = std::move(b0);
+    std::vector<double> last = weighted_luminance(triangles_, before);
     Buffer<shared::float4> previous(context_, triangles_.size(), "decomp_radiance_previous");
     for (int k = 1; k <= iterations; ++k) {
         refit_far_field(radiance_buffer_);
         std::swap(previous, radiance_buffer_);
         gather_pass(inputs, previous, true);
-        std::vector<double> now = weighted_luminance(triangles_, radiance_buffer_.download());
+        std::vector<shared::float4> radiance = radiance_buffer_.download();
+        std::vector<double> now = weighted_luminance(triangles_, radiance);
         stats_.source_change.push_back(relative_change(last, now));
         last = std::move(now);
-    }
-    if (extrapolate) {
-        std::vector<shared::float4> b = radiance_buffer_.download();
-        stats_.source_tail_ratio =
-            extrapolate_bounce_tail(stats_.source_change, previous.download(), &b);
-        radiance_buffer_.upload(b);
+        if (k < iterations) {
+            before = std::move(radiance);
+        } else if (extrapolate) {
+            stats_.source_tail_ratio =
+                extrapolate_bounce_tail(stats_.source_change, before, &radiance);
+            radiance_buffer_.upload(radiance);
+        }
     }
     refit_far_field(radiance_buffer_);
     stats_.radiosity_rays += inputs.counters.download()[0];
