@@ -143,11 +143,13 @@ def measure_scene(name, args, extra):
 
 
 def comparisons(rows, layer):
-    """For each ic run: the fastest decomposition run at most as far from the reference."""
+    """For each ic run: the fastest decomposition run of the same scene at most as far from
+    the reference."""
     key = "indirect_relmse" if layer == "indirect" else "relmse"
     lines = []
     for base in [r for r in rows if r["run"] != "decomposition"]:
-        reaching = [r for r in rows if r["run"] == "decomposition" and r[key] <= base[key]]
+        reaching = [r for r in rows if r["run"] == "decomposition"
+                    and r["scene"] == base["scene"] and r[key] <= base[key]]
         if not reaching:
             lines.append({"scene": base["scene"], "against": base["run"], "layer": layer,
                           "target": base[key], "reached": False})
