@@ -203,6 +203,22 @@ TEST(Gltf, MalformedFilesAreRefusedCleanly) {
     m = model;
     m["accessors"][1]["bufferView"] = 1;  // the positions' float bits as indices
     cases.push_back({"index_range", m.dump(), "out of range"});
+    // A light index that is no light: negative, past the end, not whole, beyond int, a string.
+    const std::vector<std::pair<std::string, nlohmann::json>> light_indices = {
+        {"light_negative", -1},
+        {"light_past_end", 2},
+        {"light_fraction", 0.5},
+        {"light_huge", 1e20},
+        {"light_string", "0"}};
+    for (const auto& [name, index] : light_indices) {
+        m = model;
+        for (auto& node : m["nodes"]) {
+            if (node.contains("extensions")) {
+                node["extensions"]["KHR_lights_punctual"]["light"] = index;
+            }
+        }
+        cases.push_back({name, m.dump(), "names no existing light"});
+    }
     for (const Case& c : cases) {
         const auto file = dir / (c.name + ".gltf");
         write_file_atomically(file, c.text);

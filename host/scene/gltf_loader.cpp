@@ -314,12 +314,15 @@ class GltfSceneBuilder {
         if (extension == node.extensions.end()) {
             return;
         }
+        // The index is read as a double and range-checked before any conversion: tinygltf's
+        // GetNumberAsInt converts a real such as 1e20 to int unchecked (undefined behaviour).
         const tinygltf::Value& index = extension->second.Get("light");
-        if (!index.IsNumber() || index.GetNumberAsInt() < 0 ||
-            static_cast<size_t>(index.GetNumberAsInt()) >= model_.lights.size()) {
+        const double number = index.IsNumber() ? index.GetNumberAsDouble() : -1.0;
+        if (!(number >= 0.0) || number >= static_cast<double>(model_.lights.size()) ||
+            number != std::floor(number)) {
             throw Error(what + ": KHR_lights_punctual names no existing light");
         }
-        const tinygltf::Light& light = model_.lights[index.GetNumberAsInt()];
+        const tinygltf::Light& light = model_.lights[static_cast<size_t>(number)];
         Emitter emitter;
         emitter.name = "light" + std::to_string(scene_.emitters.size()) +
                        (node.name.empty() ? "" : "_" + node.name);
