@@ -20,6 +20,7 @@ CommandSpec render_command();
 CommandSpec compare_command();
 CommandSpec convert_command();
 CommandSpec warmup_command();
+CommandSpec reference_command();
 CommandSpec bench_all_command();
 CommandSpec bench_rays_command();
 CommandSpec bench_pt_command();

@@ -2,9 +2,12 @@
 // (methods/registry.cpp), and renders frame after frame with it, writing one image per frame
 // and, when asked, the stats file.
 #include <algorithm>
+#include <cstdio>
+#include <iostream>
 
 #include "app/commands.h"
 #include "app/device_options.h"
+#include "app/option_reference.h"
 #include "app/progress_bar.h"
 #include "app/render_devices.h"
 #include "app/render_job.h"
@@ -14,6 +17,7 @@
 #include "methods/registry.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
+#include "util/error.h"
 #include "util/file_io.h"
 #include "util/log.h"
 #include "util/timing.h"
@@ -124,8 +128,41 @@ void render_frame(const RenderJob& job, int frame,
     totals.add_frame(frame, output, result, context);
 }
 
+// --list-knobs: the quality knobs of --method, or of every method, as text or (--json) JSON.
+int list_knobs(const ParsedArguments& arguments) {
+    if (!arguments.positionals().empty()) {
+        throw Error("--list-knobs takes no scene", kExitUsage);
+    }
+    std::vector<const MethodEntry*> methods;
+    if (arguments.has("--method")) {
+        methods.push_back(&find_method(arguments.value("--method")));
+    } else {
+        for (const MethodEntry& entry : method_registry()) {
+            methods.push_back(&entry);
+        }
+    }
+    if (arguments.has("--json")) {
+        nlohmann::json json = nlohmann::json::array();
+        for (const MethodEntry* entry : methods) {
+            json.push_back(knobs_json(*entry));
+        }
+        std::cout << (methods.size() == 1 ? json[0] : json).dump(2) << "\n";
+        return 0;
+    }
+    for (const MethodEntry* entry : methods) {
+        std::cout << knobs_text(*entry);
+    }
+    return 0;
+}
+
 // Renders the scene of `arguments` frame after frame; returns the exit status.
 int render(const ParsedArguments& arguments) {
+    if (arguments.has("--list-knobs")) {
+        return list_knobs(arguments);
+    }
+    if (arguments.has("--json")) {
+        throw Error("--json applies to --list-knobs only", kExitUsage);
+    }
     const auto total_start = SteadyClock::now();
     RenderJob job = read_render_job(arguments);
     set_quiet(arguments.has("--quiet"));
@@ -146,14 +183,14 @@ int render(const ParsedArguments& arguments) {
     const RenderSettings settings = render_settings(arguments, scene.render);
     job.write_options.exposure = settings.exposure;
     const MethodEntry& entry = find_method(settings.method);
-    refuse_foreign_options(entry, arguments);
+    read_method_options(entry, arguments, &job);
     check_layers(entry, job.layers);
     warn_unless_frames_in_range(job.frames, scene.animation);
     const int first =
         job.frames.given ? job.frames.first : static_cast<int>(scene.animation.frame_start);
     const int last = job.frames.given ? job.frames.last : first;
     const std::unique_ptr<Method> method =
-        entry.create(arguments, method_settings(arguments, settings, job, first, last));
+        entry.create(job.method_options, method_settings(arguments, settings, job, first, last));
 
     start = SteadyClock::now();
     const std::vector<std::unique_ptr<Context>> contexts =
@@ -178,6 +215,9 @@ int render(const ParsedArguments& arguments) {
         write_file_atomically(job.stats, stats.dump(2) + "\n");
     }
     outputs.commit();
+    char seconds[32];
+    std::snprintf(seconds, sizeof(seconds), "%.1f", seconds_since(total_start));
+    log_note("done in " + std::string(seconds) + " s (scene, device, kernels and frames)");
     return 0;
 }
 

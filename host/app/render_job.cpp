@@ -55,6 +55,10 @@ std::vector<OptionSpec> render_option_specs() {
         {"--aovs", "", "LIST", ".exr: the layers to write, comma-separated (default all)"},
         {"--stats", "", "FILE", "write timings and counts as JSON"},
         {"--quiet", "-q", "", "print nothing but errors"},
+        {"--list-knobs", "", "",
+         "print the quality knobs of --method (default: of every method) from its option table "
+         "and exit (no scene needed)"},
+        {"--json", "", "", "--list-knobs: as JSON"},
         {"--strict", "", "", "treat every warning (no emitter, dropped samples, ...) as an error"},
     };
     for (const MethodEntry& method : method_registry()) {
@@ -160,11 +164,11 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
     const MethodSettings method = method_settings(arguments, settings, job, 0, 0);
     context_options(arguments);
     if (arguments.has("--method")) {
-        // A method made only to check its options (making one reads nothing and allocates no
-        // device memory); the render makes its own with the scene's settings.
+        // Its options read once here; checked against the command line's settings now, and
+        // against the scene's when the method is made.
         const MethodEntry& entry = find_method(settings.method);
-        refuse_foreign_options(entry, arguments);
-        entry.create(arguments, method);
+        read_method_options(entry, arguments, &job);
+        entry.check(job.method_options, method);
     }
     pixel_filter(arguments, PixelFilter{});
     pixel_sampler(arguments, RC_SAMPLER_SOBOL);
@@ -173,6 +177,16 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
         job.layers = parse_layers(arguments.value("--aovs"));
     }
     return job;
+}
+
+void read_method_options(const MethodEntry& entry, const ParsedArguments& arguments,
+                         RenderJob* job) {
+    if (job->method == entry.name) {
+        return;
+    }
+    refuse_foreign_options(entry, arguments);
+    job->method_options = entry.read(arguments);
+    job->method = entry.name;
 }
 
 RenderSettings render_settings(const ParsedArguments& arguments, RenderSettings settings) {

@@ -34,7 +34,17 @@ struct RenderJob {
     std::filesystem::path stats;  // empty: no stats file
     std::vector<std::string> layers;
     ImageWriteOptions write_options;
+    // The method's options, read once: by read_render_job when --method names the method,
+    // otherwise once the scene's render defaults name it (read_method_options).
+    std::string method;
+    MethodOptions method_options;
 };
+
+// Reads the options of the method `entry` into job->method_options unless they are read already;
+// Error (exit status 2) naming an option another method declares or a combination that cannot
+// work.
+void read_method_options(const MethodEntry& entry, const ParsedArguments& arguments,
+                         RenderJob* job);
 
 // Checks everything that can be checked before loading the scene (output and stats paths,
 // --frames, --aovs, -D keys, the ranges of the numeric options, --method and the options it

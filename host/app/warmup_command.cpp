@@ -17,7 +17,7 @@ namespace {
 void add_programs(const MethodEntry& entry, const ParsedArguments& arguments,
                   std::vector<ProgramRequest>* programs) {
     refuse_foreign_options(entry, arguments);
-    const std::unique_ptr<Method> method = entry.create(arguments, MethodSettings{});
+    const std::unique_ptr<Method> method = entry.create(entry.read(arguments), MethodSettings{});
     for (ProgramRequest& request : method->programs()) {
         programs->push_back(std::move(request));
     }

@@ -1,6 +1,5 @@
-// What the glossy caches' methods (`rc`, `sdrc`) share as registered methods: irradiance caching's
-// options they take, their layers, and one frame rendered by irradiance caching with the cache
-// serving the specular lobes.
+// What the glossy caches' methods (`rc`, `sdrc`) share as registered methods: their layers, and one
+// frame rendered by irradiance caching with the cache serving the specular lobes.
 #pragma once
 
 #include <string>
@@ -11,10 +10,6 @@
 #include "methods/method.h"
 
 namespace rc {
-
-// Irradiance caching's options a glossy method takes: all but the grid as the hemisphere rays'
-// source (--ic-ivg); the cache files hold the irradiance records.
-std::vector<OptionSpec> glossy_method_ic_option_specs();
 
 // Irradiance caching's layers, glossy-indirect and the cache's own `layer`.
 std::vector<std::string> glossy_method_aovs(const std::string& layer);

@@ -5,6 +5,7 @@
 // methods/registry.cpp; the render command loops over frames and knows no method by name.
 #pragma once
 
+#include <any>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -17,6 +18,7 @@
 #include "image/image.h"
 #include "methods/frame_scene.h"
 #include "util/cli.h"
+#include "util/option_table.h"
 
 namespace rc {
 
@@ -99,19 +101,90 @@ class Method {
     virtual bool splits_across_devices() const { return false; }
 };
 
+// A method's options as read from the command line, once (its own options struct).
+using MethodOptions = std::any;
+
 // A method as the registry lists it.
 struct MethodEntry {
     std::string name;     // --method NAME
     std::string summary;  // one line for --help
-    // Its own options (those shared by every method are the render command's). An option that
-    // several methods declare is one option; given to a method that does not declare it, it is
-    // refused by name.
+    // Its own option table (those shared by every method are the render command's), defaults
+    // filled in; `options` is the same as CLI11 declares them, each help line with its default.
+    // An option that several methods declare is one option; given to a method that does not
+    // declare it, it is refused by name.
+    std::vector<OptionInfo> table;
     std::vector<OptionSpec> options;
     std::vector<std::string> aovs;  // its layers, in channel order ("beauty" first)
-    // Reads and validates the method's options (Error with exit status 2 naming the option).
-    std::function<std::unique_ptr<Method>(const ParsedArguments& arguments,
+    // Reads its options into its options struct (Error with exit status 2 naming the option for
+    // a combination that cannot work); reads no scene and no device.
+    std::function<MethodOptions(const ParsedArguments& arguments)> read;
+    // Checks its options against the shared settings (Error with exit status 2 naming the
+    // option); `create` checks them too.
+    std::function<void(const MethodOptions& options, const MethodSettings& settings)> check;
+    std::function<std::unique_ptr<Method>(const MethodOptions& options,
                                           const MethodSettings& settings)>
         create;
+    // The value of each option of `table` in `options`, in the table's order, as the option
+    // takes it ("0.35", "auto", "8px").
+    std::function<std::vector<std::string>(const MethodOptions& options)> values;
 };
+
+// What a method's folder declares: its table over its options struct, the rules its options
+// follow between themselves (`finish`: defaults that depend on other options, combinations that
+// cannot work; it sees which options were given) and with the shared settings (`check`), and how
+// the method is made from them.
+template <class Options>
+struct MethodDefinition {
+    std::string name;
+    std::string summary;
+    std::vector<std::string> aovs;
+    OptionTable<Options> table;
+    std::function<void(Options& options, const ParsedArguments& arguments)> finish;
+    std::function<void(const Options& options, const MethodSettings& settings)> check;
+    std::function<std::unique_ptr<Method>(const Options& options, const MethodSettings& settings)>
+        create;
+};
+
+template <class Options>
+MethodEntry method_entry(MethodDefinition<Options> definition) {
+    MethodEntry entry;
+    entry.name = definition.name;
+    entry.summary = definition.summary;
+    entry.aovs = definition.aovs;
+    entry.table = definition.table.infos();
+    for (const OptionInfo& info : entry.table) {
+        entry.options.push_back(info.spec);
+        entry.options.back().help = info.help_with_default();
+    }
+    const auto shared = std::make_shared<MethodDefinition<Options>>(std::move(definition));
+    entry.read = [shared](const ParsedArguments& arguments) -> MethodOptions {
+        Options options{};
+        shared->table.read(arguments, &options);
+        if (shared->finish) {
+            shared->finish(options, arguments);
+        }
+        return options;
+    };
+    entry.check = [shared](const MethodOptions& options, const MethodSettings& settings) {
+        if (shared->check) {
+            shared->check(std::any_cast<const Options&>(options), settings);
+        }
+    };
+    entry.create = [shared](const MethodOptions& options, const MethodSettings& settings) {
+        const Options& typed = std::any_cast<const Options&>(options);
+        if (shared->check) {
+            shared->check(typed, settings);
+        }
+        return shared->create(typed, settings);
+    };
+    entry.values = [shared](const MethodOptions& options) {
+        std::vector<std::string> values;
+        for (const auto& table_entry : shared->table.entries()) {
+            values.push_back(table_entry.text(std::any_cast<const Options&>(options)));
+        }
+        return values;
+    };
+    return entry;
+}
 
 }  // namespace rc

@@ -50,6 +50,27 @@ const MethodEntry& find_method(const std::string& name) {
         kExitUsage);
 }
 
+namespace {
+
+// "ic, rc or sdrc": the methods that declare `option`.
+std::string owners(const std::string& option, const std::string& last_joint) {
+    std::vector<std::string> names;
+    for (const MethodEntry& method : method_registry()) {
+        for (const OptionSpec& spec : method.options) {
+            if (spec.name == option) {
+                names.push_back(method.name);
+            }
+        }
+    }
+    std::string list;
+    for (size_t i = 0; i < names.size(); ++i) {
+        list += (i == 0 ? "" : i + 1 == names.size() ? last_joint : ", ") + names[i];
+    }
+    return list;
+}
+
+}  // namespace
+
 std::vector<OptionSpec> method_option_specs() {
     std::vector<OptionSpec> specs;
     std::set<std::string> seen;
@@ -57,6 +78,7 @@ std::vector<OptionSpec> method_option_specs() {
         for (const OptionSpec& spec : method.options) {
             if (seen.insert(spec.name).second) {
                 specs.push_back(spec);
+                specs.back().help = owners(spec.name, ", ") + ": " + spec.help;
             }
         }
     }
@@ -77,17 +99,8 @@ void refuse_foreign_options(const MethodEntry& method, const ParsedArguments& ar
         if (!arguments.has(spec.name) || declares(method, spec.name)) {
             continue;
         }
-        std::vector<std::string> owners;
-        for (const MethodEntry& other : method_registry()) {
-            if (declares(other, spec.name)) {
-                owners.push_back(other.name);
-            }
-        }
-        std::string list = owners[0];
-        for (size_t i = 1; i < owners.size(); ++i) {
-            list += (i + 1 == owners.size() ? " or " : ", ") + owners[i];
-        }
-        throw Error(spec.name + " applies to --method " + list + " only", kExitUsage);
+        throw Error(spec.name + " applies to --method " + owners(spec.name, " or ") + " only",
+                    kExitUsage);
     }
 }
 

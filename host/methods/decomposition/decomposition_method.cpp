@@ -20,14 +20,6 @@
 namespace rc {
 namespace {
 
-constexpr int kDefaultClusterRays = 512;  // the paper's "512 rays per harmonic" (§4.1)
-// §4.1's split test, hits inside the bounding sphere, looks inside 4 times it: with the paper's
-// sphere the far field's relMSE on the Cornell box was 2.7 times higher (docs/decomposition.md).
-constexpr double kDefaultSplitFactor = 4.0;
-// Measured on the relief scene and the Cornell box (docs/decomposition.md): the near field
-// within 1 % of the diagonal, clusters down to 5 % of it.
-const char* const kDefaultAlpha = "1%";
-const char* const kDefaultMinCluster = "5%";
 // Points per split triangle of its radiosity: from the grid 4 (16 changed the relief's relMSE by
 // 1 %); path-traced, 16 (4 raised it by 11 %; docs/decomposition.md).
 constexpr int kRadiositySamplesGrid = 4;
@@ -35,9 +27,6 @@ constexpr int kRadiositySamplesPath = 16;
 // Gathered radiosity (--decomp-radiosity gathered): direct light at 4 points per split triangle,
 // DecompositionOptions' passes (docs/decomposition.md).
 constexpr int kRadiositySamplesGathered = 4;
-// --decomp-source radiosity: iterations of B(t) and the far field; with the tail extrapolated, 4
-// gave the relief what 6 without it did (docs/decomposition.md, "The bounces' tail").
-constexpr int kDefaultSourceIterations = 4;
 
 // A length option (--alpha, --decomp-cluster): in scene units ("0.2", "0.2u") or a percentage of
 // the diagonal of the scene's bounding box ("5%").
@@ -45,6 +34,10 @@ struct SceneLength {
     float value = 0.0f;
     bool relative = false;
 };
+
+std::string length_text(const SceneLength& length) {
+    return option_value_text(length.value) + (length.relative ? "%" : "u");
+}
 
 SceneLength parse_length(const std::string& option, const std::string& text) {
     static const std::regex form(R"(^\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*(%|u)?\s*$)");
@@ -142,89 +135,168 @@ nlohmann::json devices_json(const std::vector<DecompDeviceShare>& shares) {
     return devices;
 }
 
+// The coarse solution the cluster rays read at their hits (--decomp-source).
+enum class DecompSource { kGrid, kPath, kRadiosity };
+
+// decomposition's options: the algorithm's, its lengths (resolved per frame against the scene's
+// size), the coarse solution and the grid's.
+struct DecompositionMethodOptions {
+    DecompositionOptions decomposition;
+    // Measured on the relief scene and the Cornell box (docs/decomposition.md): the near field
+    // within 1 % of the diagonal, clusters down to 5 % of it.
+    SceneLength alpha{1.0f, true};
+    SceneLength min_cluster{5.0f, true};
+    DecompSource source = DecompSource::kGrid;
+    // --decomp-radiosity: gathered, or coarse (radiosity_passes 0); its default follows the
+    // source, and the near set's the radiosity (finish_decomposition).
+    bool gathered = true;
+    IvgOptions grid;
+};
+
+OptionTable<DecompositionOptions> decomposition_table() {
+    using O = DecompositionOptions;
+    OptionTable<O> table;
+    table
+        .integer("--decomp-rays", "N", &O::cluster_rays, 4, 1 << 16,
+                 "rays per cluster's far-field fit (the paper's: 512)")
+        .knob(KnobDirection::kIncrease)
+        .number("--decomp-split", "S", &O::split_factor, 1.0, 1e3,
+                "a cluster is split while its rays hit inside S times its bounding sphere (the "
+                "paper's test is 1)")
+        .integer("--decomp-indirect-spp", "N", &O::indirect_spp, 1, 4096,
+                 "camera samples per pixel where the far and near terms are evaluated (>= "
+                 "--spp): the first --spp are shaded fully, the others add only the diffuse "
+                 "lobe's indirect light, for one camera ray each")
+        .default_note("--spp")
+        .knob(KnobDirection::kIncrease)
+        .integer("--decomp-traced-points", "N", &O::traced_samples, 1, 1024,
+                 "gathered radiosity: points per split triangle at which the B(t) of those no "
+                 "far-field sample covers is path traced")
+        .choice<bool>("--decomp-visibility", &O::visibility_rays,
+                      {{"heuristic", false}, {"rays", true}},
+                      "which near triangles count: heuristic (the paper's: all but the "
+                      "back-facing and those below the horizon) or rays (of those, the ones a "
+                      "shadow ray to the centroid reaches)")
+        .choice<bool>("--decomp-near", &O::near_touching, {{"touching", true}, {"centroid", false}},
+                      "the near set of eq. 4: touching (the split triangles with any point within "
+                      "alpha) or centroid (those whose centroid lies within alpha, the paper's)")
+        .default_note("touching with --decomp-radiosity gathered, centroid with coarse")
+        .on_off("--decomp-gradients", &O::gradients,
+                "fit each far-field sample's translational gradient from its rays' origins and "
+                "interpolate with it")
+        .integer("--decomp-iterations", "K", &O::source_iterations, 1, 64,
+                 "--decomp-source radiosity: iterations of the split triangles' radiosity and the "
+                 "far field's fits, no ray each")
+        .on_off("--decomp-extrapolate", &O::source_extrapolate,
+                "--decomp-source radiosity: add the bounces the iterations left out as a "
+                "geometric tail, its ratio that of the last two changes (on) or stop at the last "
+                "iteration (off)");
+    add_light_samples_option(table, &O::light_samples);
+    return table;
+}
+
+OptionTable<DecompositionMethodOptions> decomposition_method_table() {
+    using O = DecompositionMethodOptions;
+    OptionTable<O> table;
+    table
+        .parsed<SceneLength>(
+            "--alpha", "L", &O::alpha, "length",
+            [](const std::string& text) { return parse_length("--alpha", text); }, length_text,
+            "the near/far distance alpha, in scene units (\"0.2\", \"0.2u\") or a percentage of "
+            "the scene's bounding-box diagonal (\"1%\")")
+        .parsed<SceneLength>(
+            "--decomp-cluster", "L", &O::min_cluster, "length",
+            [](const std::string& text) { return parse_length("--decomp-cluster", text); },
+            length_text,
+            "a cluster of shading points less than L across is not split (a length as --alpha "
+            "takes; the paper's rule: alpha)")
+        .knob(KnobDirection::kDecrease)
+        .choice<DecompSource>("--decomp-source", &O::source,
+                              {{"grid", DecompSource::kGrid},
+                               {"path", DecompSource::kPath},
+                               {"radiosity", DecompSource::kRadiosity}},
+                              "the coarse solution the rays read at their hits and the near "
+                              "triangles' radiosity comes from: grid (the irradiance vector grid; "
+                              "its options apply), path (path-traced continuation) or radiosity "
+                              "(the split triangles' gathered radiosity B(t) at the rays' hits, "
+                              "iterated with the far field; one device)")
+        .choice<bool>("--decomp-radiosity", &O::gathered, {{"gathered", true}, {"coarse", false}},
+                      "the near triangles' radiosity B(t): gathered (from the decomposition's own "
+                      "far field and near field at the triangles) or coarse (read from the coarse "
+                      "solution, the paper's)")
+        .default_note("gathered with --decomp-source grid or radiosity, coarse with path")
+        .include(decomposition_table(), &O::decomposition)
+        .include(ivg_option_table(), &O::grid);
+    return table;
+}
+
+// The rules between decomposition's options: the defaults that follow the source and the
+// radiosity, and the options that apply to one source or one radiosity only.
+void finish_decomposition(DecompositionMethodOptions& options, const ParsedArguments& arguments) {
+    DecompositionOptions& d = options.decomposition;
+    const bool radiosity_source = options.source == DecompSource::kRadiosity;
+    if (options.source == DecompSource::kGrid) {
+        finish_ivg_options(options.grid, arguments);
+    } else {
+        refuse_ivg_options(arguments, "applies to --decomp-source grid only");
+    }
+    for (const char* option : {"--decomp-iterations", "--decomp-extrapolate"}) {
+        if (arguments.has(option) && !radiosity_source) {
+            throw Error(std::string(option) + " applies to --decomp-source radiosity only",
+                        kExitUsage);
+        }
+    }
+    // The gathered radiosity beats the grid's B(t) but not path-traced B(t) (the relief:
+    // docs/decomposition.md), so each source has its own default; the radiosity source reads
+    // the gathered one.
+    if (!arguments.has("--decomp-radiosity")) {
+        options.gathered = options.source != DecompSource::kPath;
+    }
+    if (radiosity_source && !options.gathered) {
+        throw Error(
+            "--decomp-radiosity coarse: --decomp-source radiosity reads the gathered radiosity",
+            kExitUsage);
+    }
+    if (!options.gathered && arguments.has("--decomp-traced-points")) {
+        throw Error("--decomp-traced-points: applies to --decomp-radiosity gathered only",
+                    kExitUsage);
+    }
+    // Counting the touching triangles whole helps the gathered radiosity on the relief, the
+    // Cornell box and the two rooms but not the coarse one on the relief
+    // (docs/decomposition.md, "The crease bias"), so the near set follows the radiosity.
+    if (!arguments.has("--decomp-near")) {
+        d.near_touching = options.gathered;
+    }
+    d.radiosity_source = radiosity_source;
+    if (options.gathered) {
+        d.radiosity_samples = kRadiositySamplesGathered;
+    } else {
+        d.radiosity_passes = 0;
+        d.radiosity_samples =
+            options.source == DecompSource::kGrid ? kRadiositySamplesGrid : kRadiositySamplesPath;
+    }
+}
+
+// The algorithm's options with the shared settings applied; Error (exit status 2) for
+// --decomp-indirect-spp below --spp.
+DecompositionOptions decomposition_options(const DecompositionMethodOptions& options,
+                                           const MethodSettings& settings) {
+    DecompositionOptions d = options.decomposition;
+    settings.apply_to(d);
+    check_indirect_spp(d);
+    return d;
+}
+
 class Decomposition final : public Method {
    public:
-    Decomposition(const ParsedArguments& arguments, const MethodSettings& settings)
-        : alpha_(parse_length("--alpha", arguments.value("--alpha", kDefaultAlpha))),
-          min_cluster_(parse_length("--decomp-cluster",
-                                    arguments.value("--decomp-cluster", kDefaultMinCluster))) {
-        const std::string source = arguments.value("--decomp-source", "grid");
-        if (source == "grid") {
-            grid_options_ = ivg_options(arguments, settings);
-        } else if (source == "path" || source == "radiosity") {
-            refuse_ivg_options(arguments, "applies to --decomp-source grid only");
-        } else {
-            throw Error("--decomp-source: expected grid, path or radiosity, got '" + source + "'",
-                        kExitUsage);
+    Decomposition(const DecompositionMethodOptions& options, const MethodSettings& settings)
+        : alpha_(options.alpha),
+          min_cluster_(options.min_cluster),
+          with_grid_(options.source == DecompSource::kGrid),
+          options_(decomposition_options(options, settings)) {
+        if (with_grid_) {
+            grid_options_ = ivg_options(options.grid, settings);
         }
-        with_grid_ = source == "grid";
-        options_.radiosity_source = source == "radiosity";
-        if (arguments.has("--decomp-iterations") && !options_.radiosity_source) {
-            throw Error("--decomp-iterations applies to --decomp-source radiosity only",
-                        kExitUsage);
-        }
-        if (arguments.has("--decomp-extrapolate") && !options_.radiosity_source) {
-            throw Error("--decomp-extrapolate applies to --decomp-source radiosity only",
-                        kExitUsage);
-        }
-        options_.source_iterations =
-            static_cast<int>(arguments.integer("--decomp-iterations", kDefaultSourceIterations));
-        options_.source_extrapolate = arguments.value("--decomp-extrapolate", "on") == "on";
-        // The gathered radiosity beats the grid's B(t) but not path-traced B(t) (the relief:
-        // docs/decomposition.md), so each source has its own default; the radiosity source reads
-        // the gathered one.
-        const std::string radiosity = arguments.value(
-            "--decomp-radiosity", with_grid_ || options_.radiosity_source ? "gathered" : "coarse");
-        if (options_.radiosity_source && radiosity != "gathered") {
-            throw Error("--decomp-radiosity " + radiosity +
-                            ": --decomp-source radiosity reads the gathered radiosity",
-                        kExitUsage);
-        }
-        if (radiosity != "gathered" && radiosity != "coarse") {
-            throw Error("--decomp-radiosity: expected gathered or coarse, got '" + radiosity + "'",
-                        kExitUsage);
-        }
-        if (radiosity == "gathered") {
-            options_.radiosity_samples = kRadiositySamplesGathered;
-            options_.traced_samples = static_cast<int>(
-                arguments.integer("--decomp-traced-points", options_.traced_samples));
-        } else if (arguments.has("--decomp-traced-points")) {
-            throw Error("--decomp-traced-points: applies to --decomp-radiosity gathered only",
-                        kExitUsage);
-        } else {
-            options_.radiosity_passes = 0;
-            options_.radiosity_samples = with_grid_ ? kRadiositySamplesGrid : kRadiositySamplesPath;
-        }
-        settings.apply_to(options_);
-        options_.cluster_rays =
-            static_cast<int>(arguments.integer("--decomp-rays", kDefaultClusterRays));
-        options_.split_factor =
-            static_cast<float>(arguments.number("--decomp-split", kDefaultSplitFactor));
-        options_.light_samples = light_samples(arguments);
-        options_.indirect_spp = static_cast<int>(arguments.integer("--decomp-indirect-spp", 0));
-        check_indirect_spp(options_);
-        const std::string visibility = arguments.value("--decomp-visibility", "heuristic");
-        if (visibility != "heuristic" && visibility != "rays") {
-            throw Error("--decomp-visibility: expected heuristic or rays, got '" + visibility + "'",
-                        kExitUsage);
-        }
-        options_.visibility_rays = visibility == "rays";
-        // Counting the touching triangles whole helps the gathered radiosity on the relief, the
-        // Cornell box and the two rooms but not the coarse one on the relief
-        // (docs/decomposition.md, "The crease bias"), so the near set follows the radiosity.
-        const std::string near =
-            arguments.value("--decomp-near", radiosity == "gathered" ? "touching" : "centroid");
-        if (near != "touching" && near != "centroid") {
-            throw Error("--decomp-near: expected touching or centroid, got '" + near + "'",
-                        kExitUsage);
-        }
-        options_.near_touching = near == "touching";
-        const std::string gradients = arguments.value("--decomp-gradients", "on");
-        if (gradients != "on" && gradients != "off") {
-            throw Error("--decomp-gradients: expected on or off, got '" + gradients + "'",
-                        kExitUsage);
-        }
-        options_.gradients = gradients == "on";
     }
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
@@ -302,91 +374,31 @@ class Decomposition final : public Method {
     SceneLength alpha_;
     SceneLength min_cluster_;
     bool with_grid_ = true;
-    IvgOptions grid_options_;
     DecompositionOptions options_;
+    IvgOptions grid_options_;
 };
-
-std::vector<OptionSpec> decomposition_option_specs() {
-    std::vector<OptionSpec> specs = {
-        {"--alpha", "", "L",
-         "decomposition: the near/far distance alpha, in scene units (\"0.2\", \"0.2u\") or a "
-         "percentage of the scene's bounding-box diagonal (\"1%\"; default 1%)"},
-        OptionSpec{"--decomp-rays", "", "N",
-                   "decomposition: rays per cluster's far-field fit (default 512, the paper's)"}
-            .integers(4, 1 << 16),
-        {"--decomp-cluster", "", "L",
-         "decomposition: a cluster of shading points less than L across is not split (a length "
-         "as --alpha takes; the paper's rule: alpha; default 5%)"},
-        OptionSpec{
-            "--decomp-split", "", "S",
-            "decomposition: a cluster is split while its rays hit inside S times its bounding "
-            "sphere (>= 1; the paper's test is 1; default 4)"}
-            .numbers(1.0, 1e3),
-        OptionSpec{"--decomp-indirect-spp", "", "N",
-                   "decomposition: camera samples per pixel where the far and near terms are "
-                   "evaluated (>= --spp; default --spp): the first --spp are shaded fully, the "
-                   "others add only the diffuse lobe's indirect light, for one camera ray each"}
-            .integers(1, 4096),
-        OptionSpec{"--decomp-traced-points", "", "N",
-                   "decomposition, gathered radiosity: points per split triangle at which the "
-                   "B(t) of those no far-field sample covers is path traced (default 16)"}
-            .integers(1, 1024),
-        OptionSpec{"--decomp-visibility", "", "NAME",
-                   "decomposition: which near triangles count: heuristic (the paper's: all but "
-                   "the back-facing and those below the horizon; default) or rays (of those, the "
-                   "ones a shadow ray to the centroid reaches)"}
-            .one_of({"heuristic", "rays"}),
-        OptionSpec{"--decomp-near", "", "NAME",
-                   "decomposition: the near set of eq. 4: touching (the split triangles with any "
-                   "point within alpha; default with --decomp-radiosity gathered) or centroid "
-                   "(those whose centroid lies within alpha, the paper's; default with "
-                   "--decomp-radiosity coarse)"}
-            .one_of({"touching", "centroid"}),
-        OptionSpec{"--decomp-gradients", "", "on|off",
-                   "decomposition: fit each far-field sample's translational gradient from its "
-                   "rays' origins and interpolate with it (default on)"}
-            .one_of({"on", "off"}),
-        OptionSpec{"--decomp-radiosity", "", "NAME",
-                   "decomposition: the near triangles' radiosity B(t): gathered (from the "
-                   "decomposition's own far field and near field at the triangles; default with "
-                   "--decomp-source grid) or coarse (read from the coarse solution, the paper's; "
-                   "default with --decomp-source path)"}
-            .one_of({"gathered", "coarse"}),
-        OptionSpec{"--decomp-source", "", "NAME",
-                   "decomposition: the coarse solution the rays read at their hits and the near "
-                   "triangles' radiosity comes from: grid (the irradiance vector grid, default; "
-                   "its options apply), path (path-traced continuation) or radiosity (the split "
-                   "triangles' gathered radiosity B(t) at the rays' hits, iterated with the far "
-                   "field; one device)"}
-            .one_of({"grid", "path", "radiosity"}),
-        OptionSpec{"--decomp-iterations", "", "K",
-                   "decomposition, --decomp-source radiosity: iterations of the split triangles' "
-                   "radiosity and the far field's fits, no ray each (default 4)"}
-            .integers(1, 64),
-        OptionSpec{"--decomp-extrapolate", "", "on|off",
-                   "decomposition, --decomp-source radiosity: add the bounces the iterations "
-                   "left out as a geometric tail, its ratio that of the last two changes (on, "
-                   "default) or stop at the last iteration (off)"}
-            .one_of({"on", "off"}),
-        kLightSamplesOption,
-    };
-    for (OptionSpec& spec : ivg_option_specs()) {
-        specs.push_back(std::move(spec));
-    }
-    return specs;
-}
 
 }  // namespace
 
 MethodEntry decomposition_method_entry() {
-    return {"decomposition",
-            "irradiance decomposition: far-field SH samples per cluster, near field from nearby "
-            "triangles' form factors",
-            decomposition_option_specs(),
-            {std::begin(kDecompositionAovs), std::end(kDecompositionAovs)},
-            [](const ParsedArguments& arguments, const MethodSettings& settings) {
-                return std::make_unique<Decomposition>(arguments, settings);
-            }};
+    return method_entry<DecompositionMethodOptions>(
+        {.name = "decomposition",
+         .summary = "irradiance decomposition: far-field SH samples per cluster, near field from "
+                    "nearby triangles' form factors",
+         .aovs = {std::begin(kDecompositionAovs), std::end(kDecompositionAovs)},
+         .table = decomposition_method_table(),
+         .finish = finish_decomposition,
+         .check =
+             [](const DecompositionMethodOptions& options, const MethodSettings& settings) {
+                 decomposition_options(options, settings);
+                 if (options.source == DecompSource::kGrid) {
+                     ivg_options(options.grid, settings);
+                 }
+             },
+         .create =
+             [](const DecompositionMethodOptions& options, const MethodSettings& settings) {
+                 return std::make_unique<Decomposition>(options, settings);
+             }});
 }
 
 }  // namespace rc

@@ -1,20 +1,25 @@
 // Irradiance caching's command-line options (`--method ic`, and the diffuse records of
-// `--method rc`): their specs and their parsing into IrradianceCacheOptions.
+// `--method rc` and `--method sdrc`): their table over IrradianceCacheOptions.
 #pragma once
-
-#include <vector>
 
 #include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/method.h"
 
 namespace rc {
 
-// --accuracy, --ic-*, --cache-in/--cache-out, --light-samples and the grid's options.
-std::vector<OptionSpec> irradiance_cache_option_specs();
+// --accuracy, --ic-*, --cache-in/--cache-out and --light-samples: the irradiance records'
+// options every method with irradiance records takes.
+OptionTable<IrradianceCacheOptions> irradiance_record_option_table();
 
-// Reads and validates them (Error with exit status 2 naming the option); the shared settings
-// applied.
-IrradianceCacheOptions parse_irradiance_cache_options(const ParsedArguments& arguments,
-                                                      const MethodSettings& settings);
+// IrradianceCacheOptions as the command line's defaults have them (--light-samples).
+IrradianceCacheOptions irradiance_record_defaults();
+
+// Error (exit status 2) naming the option: --cache-out's folder must be writable.
+void finish_irradiance_record_options(const IrradianceCacheOptions& options);
+
+// The options with the shared settings applied (and the `records` layer drawn when it is
+// written); Error (exit status 2) for cache files with several frames.
+IrradianceCacheOptions irradiance_record_options(IrradianceCacheOptions options,
+                                                 const MethodSettings& settings);
 
 }  // namespace rc

@@ -18,28 +18,62 @@
 namespace rc {
 namespace {
 
+// ic's options: the irradiance records', the grid's (with --ic-ivg) and temporal caching's.
+struct IrradianceCachingOptions {
+    IrradianceCacheOptions records = irradiance_record_defaults();
+    bool with_grid = false;  // --ic-ivg
+    IvgOptions grid;
+    TemporalOptions temporal;
+};
+
+OptionTable<IrradianceCachingOptions> irradiance_caching_table() {
+    using O = IrradianceCachingOptions;
+    OptionTable<O> table;
+    table.include(irradiance_record_option_table(), &O::records)
+        .flag("--ic-ivg", &O::with_grid,
+              "hemisphere rays read the irradiance vector grid at their hits instead of path "
+              "tracing beyond them (the grid's options apply)")
+        .include(ivg_option_table(), &O::grid)
+        .include(temporal_option_table(), &O::temporal);
+    return table;
+}
+
+// The rules between ic's options: the grid's need --ic-ivg (which makes one cache level the
+// default), the temporal ones --temporal, which excludes the grid and cache files.
+void finish_irradiance_caching(IrradianceCachingOptions& options,
+                               const ParsedArguments& arguments) {
+    finish_irradiance_record_options(options.records);
+    check_temporal_options(options.temporal, arguments);
+    if (options.with_grid) {
+        finish_ivg_options(options.grid, arguments);
+        if (!arguments.has("--ic-bounces")) {
+            options.records.bounces = 1;
+        }
+    } else {
+        refuse_ivg_options(arguments, "applies to --method ivg, ivg-gather, or ic with --ic-ivg");
+    }
+    if (options.temporal.enabled) {
+        if (options.with_grid) {
+            throw Error("--temporal: the hemisphere rays cannot read the grid (--ic-ivg)",
+                        kExitUsage);
+        }
+        refuse_cache_files_with_temporal(
+            !options.records.cache_in.empty() || !options.records.cache_out.empty(),
+            "--cache-in/--cache-out");
+    }
+}
+
 class IrradianceCaching final : public Method {
    public:
-    IrradianceCaching(const ParsedArguments& arguments, const MethodSettings& settings)
-        : options_(parse_irradiance_cache_options(arguments, settings)),
-          with_grid_(arguments.has("--ic-ivg")) {
-        const TemporalOptions temporal = parse_temporal_options(arguments);
-        if (temporal.enabled) {
-            if (with_grid_) {
-                throw Error("--temporal: the hemisphere rays cannot read the grid (--ic-ivg)",
-                            kExitUsage);
-            }
-            refuse_cache_files_with_temporal(
-                !options_.cache_in.empty() || !options_.cache_out.empty(),
-                "--cache-in/--cache-out");
+    IrradianceCaching(const IrradianceCachingOptions& options, const MethodSettings& settings)
+        : options_(irradiance_record_options(options.records, settings)),
+          with_grid_(options.with_grid) {
+        if (options.temporal.enabled) {
             temporal_ = std::make_unique<TemporalIrradianceCache>(
-                options_, temporal, settings.first_frame, settings.frame_count);
+                options_, options.temporal, settings.first_frame, settings.frame_count);
         }
         if (with_grid_) {
-            grid_options_ = ivg_options(arguments, settings);
-        } else {
-            refuse_ivg_options(arguments,
-                               "applies to --method ivg, ivg-gather, or ic with --ic-ivg");
+            grid_options_ = ivg_options(options.grid, settings);
         }
     }
 
@@ -113,13 +147,23 @@ class IrradianceCaching final : public Method {
 }  // namespace
 
 MethodEntry irradiance_cache_method_entry() {
-    return {"ic",
-            "irradiance caching: records with gradients, neighbor clamping, interpolated",
-            irradiance_cache_option_specs(),
-            {std::begin(kIrradianceCacheAovs), std::end(kIrradianceCacheAovs)},
-            [](const ParsedArguments& arguments, const MethodSettings& settings) {
-                return std::make_unique<IrradianceCaching>(arguments, settings);
-            }};
+    return method_entry<IrradianceCachingOptions>(
+        {.name = "ic",
+         .summary = "irradiance caching: records with gradients, neighbor clamping, interpolated",
+         .aovs = {std::begin(kIrradianceCacheAovs), std::end(kIrradianceCacheAovs)},
+         .table = irradiance_caching_table(),
+         .finish = finish_irradiance_caching,
+         .check =
+             [](const IrradianceCachingOptions& options, const MethodSettings& settings) {
+                 irradiance_record_options(options.records, settings);
+                 if (options.with_grid) {
+                     ivg_options(options.grid, settings);
+                 }
+             },
+         .create =
+             [](const IrradianceCachingOptions& options, const MethodSettings& settings) {
+                 return std::make_unique<IrradianceCaching>(options, settings);
+             }});
 }
 
 }  // namespace rc

@@ -11,19 +11,36 @@
 namespace rc {
 namespace {
 
-constexpr int kDefaultGatherRays = 16;
+// The options of both grid renderings: the grid's, --light-samples and (ivg-gather) the gather
+// rays per camera sample.
+struct GridRenderingOptions {
+    IvgOptions grid;
+    int light_samples = kDefaultLightSamples;
+    int gather_rays = 16;
+};
 
-const OptionSpec kGatherRaysOption =
-    OptionSpec{"--gather-rays", "", "N", "ivg-gather: gather rays per camera sample (default 16)"}
-        .integers(1, 1 << 16);
+OptionTable<GridRenderingOptions> grid_rendering_table(bool gather) {
+    using O = GridRenderingOptions;
+    OptionTable<O> table;
+    table.include(ivg_option_table(), &O::grid);
+    add_light_samples_option(table, &O::light_samples);
+    if (gather) {
+        table
+            .integer("--gather-rays", "N", &O::gather_rays, 1, 1 << 16,
+                     "gather rays per camera sample")
+            .knob(KnobDirection::kIncrease);
+    }
+    return table;
+}
 
 class GridRendering final : public Method {
    public:
-    GridRendering(const ParsedArguments& arguments, const MethodSettings& settings, int gather_rays)
+    GridRendering(const GridRenderingOptions& options, const MethodSettings& settings,
+                  int gather_rays)
         : settings_(settings),
-          grid_options_(ivg_options(arguments, settings)),
+          grid_options_(ivg_options(options.grid, settings)),
           gather_rays_(gather_rays),
-          light_samples_(light_samples(arguments)) {}
+          light_samples_(options.light_samples) {}
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         FrameResult result;
@@ -74,33 +91,36 @@ class GridRendering final : public Method {
 
 std::vector<std::string> grid_aovs() { return {std::begin(kIvgAovs), std::end(kIvgAovs)}; }
 
-// The options of both grid renderings: the grid's and --light-samples.
-std::vector<OptionSpec> grid_rendering_options() {
-    std::vector<OptionSpec> options = ivg_option_specs();
-    options.push_back(kLightSamplesOption);
-    return options;
+MethodEntry grid_rendering_entry(std::string name, std::string summary, bool gather) {
+    return method_entry<GridRenderingOptions>(
+        {.name = std::move(name),
+         .summary = std::move(summary),
+         .aovs = grid_aovs(),
+         .table = grid_rendering_table(gather),
+         .finish =
+             [](GridRenderingOptions& options, const ParsedArguments& arguments) {
+                 finish_ivg_options(options.grid, arguments);
+             },
+         .check = [](const GridRenderingOptions& options,
+                     const MethodSettings& settings) { ivg_options(options.grid, settings); },
+         .create =
+             [gather](const GridRenderingOptions& options, const MethodSettings& settings) {
+                 return std::make_unique<GridRendering>(options, settings,
+                                                        gather ? options.gather_rays : 0);
+             }});
 }
 
 }  // namespace
 
 MethodEntry ivg_method_entry() {
-    return {"ivg", "the irradiance vector grid read at the camera's hit (no gather rays)",
-            grid_rendering_options(), grid_aovs(),
-            [](const ParsedArguments& arguments, const MethodSettings& settings) {
-                return std::make_unique<GridRendering>(arguments, settings, 0);
-            }};
+    return grid_rendering_entry(
+        "ivg", "the irradiance vector grid read at the camera's hit (no gather rays)", false);
 }
 
 MethodEntry ivg_gather_method_entry() {
-    std::vector<OptionSpec> options = grid_rendering_options();
-    options.push_back(kGatherRaysOption);
-    return {"ivg-gather",
-            "final gathering: gather rays read the irradiance vector grid at their hits", options,
-            grid_aovs(), [](const ParsedArguments& arguments, const MethodSettings& settings) {
-                const int gather_rays =
-                    static_cast<int>(arguments.integer("--gather-rays", kDefaultGatherRays));
-                return std::make_unique<GridRendering>(arguments, settings, gather_rays);
-            }};
+    return grid_rendering_entry(
+        "ivg-gather", "final gathering: gather rays read the irradiance vector grid at their hits",
+        true);
 }
 
 }  // namespace rc

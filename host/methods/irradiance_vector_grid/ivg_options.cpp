@@ -6,52 +6,54 @@
 
 namespace rc {
 
-std::vector<OptionSpec> ivg_option_specs() {
-    return {
-        {"--grid", "", "NxMxK|auto",
-         "ivg, ivg-gather, ic --ic-ivg: voxels of the irradiance vector grid per axis, or auto "
-         "(about 32k vertices over the scene's bounding box; default)"},
-        OptionSpec{"--photons", "", "N", "grid: photons to trace (default: 8 per grid vertex)"}
-            .integers(1, 1LL << 31),
-        OptionSpec{"--ivg-interp", "", "NAME",
-                   "grid: spatial interpolation, trilinear (default) or tricubic (Catmull-Rom)"}
-            .one_of({"trilinear", "tricubic"}),
-        {"--ivg-compressed", "", "",
-         "grid: read the 16-bit colour + direction layout (RR-6983 §4.2)"},
-        {"--ivg-include-direct", "", "",
-         "grid: record unbounced photons too; the grid then replaces next-event estimation for "
-         "the diffuse lobe where it is read"},
-        {"--grid-out", "", "FILE", "grid: save the normalised grid"},
-        {"--grid-in", "", "FILE",
-         "grid: load a saved grid instead of tracing photons (same scene, frame, depth limit)"},
-    };
+namespace {
+
+std::string grid_resolution_text(const std::array<int, 3>& cells) {
+    if (cells[0] == 0) {
+        return "auto";
+    }
+    return std::to_string(cells[0]) + "x" + std::to_string(cells[1]) + "x" +
+           std::to_string(cells[2]);
+}
+
+}  // namespace
+
+OptionTable<IvgOptions> ivg_option_table() {
+    using O = IvgOptions;
+    OptionTable<O> table;
+    table
+        .parsed<std::array<int, 3>>(
+            "--grid", "NxMxK|auto", &O::cells, "resolution", parse_grid_resolution,
+            grid_resolution_text,
+            "voxels of the irradiance vector grid per axis, or auto (about 32k vertices over the "
+            "scene's bounding box)")
+        .knob(KnobDirection::kIncrease)
+        .integer("--photons", "N", &O::photons, 1, 1LL << 31, "photons to trace into the grid")
+        .default_note("8 per grid vertex")
+        .knob(KnobDirection::kIncrease)
+        .choice<int>("--ivg-interp", &O::interpolation,
+                     {{"trilinear", RC_IVG_TRILINEAR}, {"tricubic", RC_IVG_TRICUBIC}},
+                     "the grid's spatial interpolation: trilinear or tricubic (Catmull-Rom)")
+        .flag("--ivg-compressed", &O::compressed,
+              "read the grid's 16-bit colour + direction layout (RR-6983 §4.2)")
+        .flag("--ivg-include-direct", &O::include_direct,
+              "record unbounced photons too; the grid then replaces next-event estimation for "
+              "the diffuse lobe where it is read")
+        .path("--grid-out", &O::grid_out, "save the normalised grid")
+        .path("--grid-in", &O::grid_in,
+              "load a saved grid instead of tracing photons (same scene, frame, depth limit)");
+    return table;
 }
 
 void refuse_ivg_options(const ParsedArguments& arguments, const std::string& why) {
-    for (const OptionSpec& spec : ivg_option_specs()) {
-        if (arguments.has(spec.name)) {
-            throw Error(spec.name + " " + why, kExitUsage);
+    for (const OptionInfo& info : ivg_option_table().infos()) {
+        if (arguments.has(info.spec.name)) {
+            throw Error(info.spec.name + " " + why, kExitUsage);
         }
     }
 }
 
-IvgOptions ivg_options(const ParsedArguments& arguments, const MethodSettings& settings) {
-    IvgOptions options;
-    options.cells = parse_grid_resolution(arguments.value("--grid", "auto"));
-    options.photons = static_cast<uint64_t>(arguments.integer("--photons", 0));
-    const std::string interpolation = arguments.value("--ivg-interp", "trilinear");
-    if (interpolation == "trilinear") {
-        options.interpolation = RC_IVG_TRILINEAR;
-    } else if (interpolation == "tricubic") {
-        options.interpolation = RC_IVG_TRICUBIC;
-    } else {
-        throw Error("--ivg-interp: expected trilinear or tricubic, got '" + interpolation + "'",
-                    kExitUsage);
-    }
-    options.compressed = arguments.has("--ivg-compressed");
-    options.include_direct = arguments.has("--ivg-include-direct");
-    options.grid_in = arguments.value("--grid-in");
-    options.grid_out = arguments.value("--grid-out");
+void finish_ivg_options(const IvgOptions& options, const ParsedArguments& arguments) {
     if (!options.grid_out.empty()) {
         check_writable_parent(options.grid_out, "--grid-out");
     }
@@ -59,6 +61,9 @@ IvgOptions ivg_options(const ParsedArguments& arguments, const MethodSettings& s
         throw Error("--photons and --grid-in exclude each other (a loaded grid traces none)",
                     kExitUsage);
     }
+}
+
+IvgOptions ivg_options(IvgOptions options, const MethodSettings& settings) {
     if (settings.frame_count > 1 && (!options.grid_in.empty() || !options.grid_out.empty())) {
         throw Error("--grid-in/--grid-out take one frame", kExitUsage);
     }

@@ -14,14 +14,18 @@
 namespace rc {
 
 // The options of the grid itself (resolution, photons, interpolation, layout, files).
-std::vector<OptionSpec> ivg_option_specs();
+OptionTable<IvgOptions> ivg_option_table();
 
 // Error (exit status 2) for the first grid option given: `why` says when they apply.
 void refuse_ivg_options(const ParsedArguments& arguments, const std::string& why);
 
-// The grid's options from the command line and the shared settings; Error (exit status 2) naming
-// the option for a bad value, or for --grid-in/--grid-out with several frames.
-IvgOptions ivg_options(const ParsedArguments& arguments, const MethodSettings& settings);
+// Error (exit status 2) naming the option: --grid-out's folder must be writable, --grid-in
+// excludes --photons.
+void finish_ivg_options(const IvgOptions& options, const ParsedArguments& arguments);
+
+// The grid's options with the shared settings applied; Error (exit status 2) for --grid-in or
+// --grid-out with several frames.
+IvgOptions ivg_options(IvgOptions options, const MethodSettings& settings);
 
 // The frame's grid: photons traced (or the grid loaded), normalised, saved when asked; its
 // statistics go to result->stats["grid"] and its rays to result->rays.

@@ -52,14 +52,20 @@ class NormalsPreview final : public Method {
 
 }  // namespace
 
+// The preview has no options of its own.
+struct NormalsPreviewOptions {};
+
 MethodEntry normals_method_entry() {
-    return {"normals",
-            "geometry preview: the first hit's shading normal",
-            {},
-            {"beauty"},
-            [](const ParsedArguments&, const MethodSettings& settings) {
-                return std::make_unique<NormalsPreview>(settings);
-            }};
+    return method_entry<NormalsPreviewOptions>(
+        {.name = "normals",
+         .summary = "geometry preview: the first hit's shading normal",
+         .aovs = {"beauty"},
+         .table = {},
+         .finish = nullptr,
+         .check = nullptr,
+         .create = [](const NormalsPreviewOptions&, const MethodSettings& settings) {
+             return std::make_unique<NormalsPreview>(settings);
+         }});
 }
 
 }  // namespace rc

@@ -8,20 +8,35 @@
 namespace rc {
 namespace {
 
-const std::vector<OptionSpec> kPathTracerOptions = {
-    OptionSpec{
-        "--time", "", "SECONDS",
-        "pt: render passes until this much time has passed, not to --spp (also -D time=SECONDS)"}
-        .numbers(0.0, 1e7),
-    {"--save-every-pow2", "", "",
-     "pt: also write the image after 1, 2, 4, 8, ... samples per pixel (name.sppN.ext)"},
+// pt's own options.
+struct PathTracerMethodOptions {
+    double time = 0.0;        // seconds; used when time_given
+    bool time_given = false;  // otherwise the scene's render.time (-D time=...)
+    bool save_every_pow2 = false;
 };
+
+OptionTable<PathTracerMethodOptions> path_tracer_option_table() {
+    using O = PathTracerMethodOptions;
+    OptionTable<O> table;
+    table
+        .number("--time", "SECONDS", &O::time, 0.0, 1e7,
+                "render passes until this much time has passed, not to --spp (also -D "
+                "time=SECONDS)")
+        .unit("s")
+        .default_note("the scene's render.time; without one, --spp decides")
+        .knob(KnobDirection::kIncrease)
+        .flag("--save-every-pow2", &O::save_every_pow2,
+              "also write the image after 1, 2, 4, 8, ... samples per pixel (name.sppN.ext)");
+    return table;
+}
 
 class PathTracerMethod final : public Method {
    public:
-    PathTracerMethod(const ParsedArguments& arguments, const MethodSettings& settings)
-        : settings_(settings), save_every_pow2_(arguments.has("--save-every-pow2")) {
-        settings_.time = arguments.number("--time", settings.time);
+    PathTracerMethod(const PathTracerMethodOptions& options, const MethodSettings& settings)
+        : settings_(settings), save_every_pow2_(options.save_every_pow2) {
+        if (options.time_given) {
+            settings_.time = options.time;
+        }
     }
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
@@ -83,13 +98,20 @@ class PathTracerMethod final : public Method {
 }  // namespace
 
 MethodEntry path_tracer_method_entry() {
-    return {"pt",
-            "the reference path tracer: next-event estimation, MIS, Russian roulette",
-            kPathTracerOptions,
-            {std::begin(kPathTracerAovs), std::end(kPathTracerAovs)},
-            [](const ParsedArguments& arguments, const MethodSettings& settings) {
-                return std::make_unique<PathTracerMethod>(arguments, settings);
-            }};
+    return method_entry<PathTracerMethodOptions>(
+        {.name = "pt",
+         .summary = "the reference path tracer: next-event estimation, MIS, Russian roulette",
+         .aovs = {std::begin(kPathTracerAovs), std::end(kPathTracerAovs)},
+         .table = path_tracer_option_table(),
+         .finish =
+             [](PathTracerMethodOptions& options, const ParsedArguments& arguments) {
+                 options.time_given = arguments.has("--time");
+             },
+         .check = nullptr,
+         .create =
+             [](const PathTracerMethodOptions& options, const MethodSettings& settings) {
+                 return std::make_unique<PathTracerMethod>(options, settings);
+             }});
 }
 
 }  // namespace rc

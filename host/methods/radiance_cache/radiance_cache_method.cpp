@@ -22,84 +22,90 @@
 namespace rc {
 namespace {
 
-std::vector<OptionSpec> radiance_cache_option_specs() {
-    std::vector<OptionSpec> specs = {
-        OptionSpec{
-            "--rc-order", "", "N|auto",
-            "rc: largest spherical-harmonic order n (n^2 coefficients per channel) of the BRDF "
-            "tables and the radiance records, 1-10; lobes that need more go to Monte Carlo "
-            "(default auto: 10)"}
-            .integers(1, RC_SH_MAX_ORDER, {"auto"}),
-        OptionSpec{"--rc-max-error", "", "E",
-                   "rc: largest relative L2 error of a BRDF lobe's representation in (0, 1); each "
-                   "material gets the lowest order below it (default 0.1)"}
-            .numbers(1e-6, 0.999999),
-        OptionSpec{"--rc-rays", "", "N", "rc: hemisphere rays per radiance record (default 4096)"}
-            .integers(16, 1 << 16),
-        {"--rc-cache-out", "", "FILE", "rc: save the radiance records"},
-        {"--rc-cache-in", "", "FILE",
-         "rc: start from the radiance records of a saved cache (same scene, frame, accuracy and "
-         "order)"},
-    };
-    for (OptionSpec& spec : glossy_method_ic_option_specs()) {
-        specs.push_back(std::move(spec));
-    }
-    for (OptionSpec& spec : temporal_option_specs()) {
-        specs.push_back(std::move(spec));
-    }
-    return specs;
+// rc's options: its own, the irradiance records' for the diffuse lobes and temporal caching's.
+struct RadianceCachingOptions {
+    RadianceCacheOptions radiance;
+    IrradianceCacheOptions records = irradiance_record_defaults();
+    TemporalOptions temporal;
+};
+
+OptionTable<RadianceCachingOptions> radiance_caching_table() {
+    using O = RadianceCacheOptions;
+    OptionTable<O> own;
+    own.integer("--rc-order", "N|auto", &O::order, 1, RC_SH_MAX_ORDER,
+                "largest spherical-harmonic order n (n^2 coefficients per channel) of the BRDF "
+                "tables and the radiance records; lobes that need more go to Monte Carlo (auto: " +
+                    std::to_string(RC_SH_MAX_ORDER) + ")",
+                {"auto"}, 0)
+        .knob(KnobDirection::kIncrease)
+        .number("--rc-max-error", "E", &O::max_error, 1e-6, 0.999999,
+                "largest relative L2 error of a BRDF lobe's representation in (0, 1); each "
+                "material gets the lowest order below it")
+        .knob(KnobDirection::kDecrease)
+        .integer("--rc-rays", "N", &O::rays, 16, 1 << 16, "hemisphere rays per radiance record")
+        .knob(KnobDirection::kIncrease)
+        .path("--rc-cache-out", &O::cache_out, "save the radiance records")
+        .path("--rc-cache-in", &O::cache_in,
+              "start from the radiance records of a saved cache (same scene, frame, accuracy and "
+              "order)");
+    OptionTable<RadianceCachingOptions> table;
+    table.include(own, &RadianceCachingOptions::radiance)
+        .include(irradiance_record_option_table(), &RadianceCachingOptions::records)
+        .include(temporal_option_table(), &RadianceCachingOptions::temporal);
+    return table;
 }
 
-int parse_order(const ParsedArguments& arguments) {
-    const std::string text = arguments.value("--rc-order", "auto");
-    if (text == "auto") {
-        return 0;
+// The rules between rc's options: --rc-cache-out's folder writable; with --temporal, no cache
+// files and lifespans by change.
+void finish_radiance_caching(RadianceCachingOptions& options, const ParsedArguments& arguments) {
+    finish_irradiance_record_options(options.records);
+    if (!options.radiance.cache_out.empty()) {
+        check_writable_parent(options.radiance.cache_out, "--rc-cache-out");
     }
-    return static_cast<int>(arguments.integer("--rc-order", 0));
+    check_radiance_cache_options(options.radiance);
+    check_temporal_options(options.temporal, arguments);
+    if (!options.temporal.enabled) {
+        return;
+    }
+    if (options.temporal.lifespan == TemporalLifespan::kDeparture) {
+        throw Error(
+            "--temporal-lifespan departure: --method ic only (rc's radiance records' lifespans "
+            "are by change)",
+            kExitUsage);
+    }
+    const IrradianceCacheOptions& ic = options.records;
+    const RadianceCacheOptions& rc = options.radiance;
+    refuse_cache_files_with_temporal(!ic.cache_in.empty() || !ic.cache_out.empty() ||
+                                         !rc.cache_in.empty() || !rc.cache_out.empty(),
+                                     "--cache-in/--cache-out, --rc-cache-in/--rc-cache-out");
 }
 
-RadianceCacheOptions parse_options(const ParsedArguments& arguments, const MethodSettings& settings,
-                                   const IrradianceCacheOptions& ic) {
-    RadianceCacheOptions rc;
-    rc.order = parse_order(arguments);
-    rc.max_error = arguments.number("--rc-max-error", rc.max_error);
-    rc.rays = static_cast<int>(arguments.integer("--rc-rays", rc.rays));
+// The radiance records' options with the irradiance records' they share (a, the spacing) and
+// the shared settings; Error (exit status 2) for cache files with several frames.
+RadianceCacheOptions radiance_record_options(RadianceCacheOptions rc,
+                                             const IrradianceCacheOptions& ic,
+                                             const MethodSettings& settings) {
     rc.accuracy = ic.accuracy;
     rc.min_spacing = ic.min_spacing;
     rc.max_spacing = ic.max_spacing;
     rc.seed = ic.seed;
     rc.max_depth = ic.max_depth;
     rc.rr_depth = ic.rr_depth;
-    rc.cache_in = arguments.value("--rc-cache-in");
-    rc.cache_out = arguments.value("--rc-cache-out");
-    if (!rc.cache_out.empty()) {
-        check_writable_parent(rc.cache_out, "--rc-cache-out");
-    }
     if (settings.frame_count > 1 && (!rc.cache_in.empty() || !rc.cache_out.empty())) {
         throw Error("--rc-cache-in/--rc-cache-out take one frame", kExitUsage);
     }
-    check_radiance_cache_options(rc);
     return rc;
 }
 
 class RadianceCaching final : public Method {
    public:
-    RadianceCaching(const ParsedArguments& arguments, const MethodSettings& settings)
-        : ic_(parse_irradiance_cache_options(arguments, settings)),
-          rc_(parse_options(arguments, settings, ic_)) {
-        const TemporalOptions temporal = parse_temporal_options(arguments);
+    RadianceCaching(const RadianceCachingOptions& options, const MethodSettings& settings)
+        : ic_(irradiance_record_options(options.records, settings)),
+          rc_(radiance_record_options(options.radiance, ic_, settings)) {
+        const TemporalOptions& temporal = options.temporal;
         if (!temporal.enabled) {
             return;
         }
-        if (temporal.lifespan == TemporalLifespan::kDeparture) {
-            throw Error(
-                "--temporal-lifespan departure: --method ic only (rc's radiance records' "
-                "lifespans are by change)",
-                kExitUsage);
-        }
-        refuse_cache_files_with_temporal(!ic_.cache_in.empty() || !ic_.cache_out.empty() ||
-                                             !rc_.cache_in.empty() || !rc_.cache_out.empty(),
-                                         "--cache-in/--cache-out, --rc-cache-in/--rc-cache-out");
         const long long last =
             static_cast<long long>(settings.first_frame) + std::max(settings.frame_count, 1) - 1;
         temporal_glossy_ = std::make_unique<TemporalRadianceCache>(
@@ -217,13 +223,23 @@ class RadianceCaching final : public Method {
 }  // namespace
 
 MethodEntry radiance_cache_method_entry() {
-    return {"rc",
-            "radiance caching: glossy lobes from spherical-harmonic records with gradients, "
-            "rotated and interpolated; diffuse lobes from irradiance records",
-            radiance_cache_option_specs(), glossy_method_aovs("rc-order"),
-            [](const ParsedArguments& arguments, const MethodSettings& settings) {
-                return std::make_unique<RadianceCaching>(arguments, settings);
-            }};
+    return method_entry<RadianceCachingOptions>(
+        {.name = "rc",
+         .summary = "radiance caching: glossy lobes from spherical-harmonic records with "
+                    "gradients, rotated and interpolated; diffuse lobes from irradiance records",
+         .aovs = glossy_method_aovs("rc-order"),
+         .table = radiance_caching_table(),
+         .finish = finish_radiance_caching,
+         .check =
+             [](const RadianceCachingOptions& options, const MethodSettings& settings) {
+                 radiance_record_options(options.radiance,
+                                         irradiance_record_options(options.records, settings),
+                                         settings);
+             },
+         .create =
+             [](const RadianceCachingOptions& options, const MethodSettings& settings) {
+                 return std::make_unique<RadianceCaching>(options, settings);
+             }});
 }
 
 }  // namespace rc

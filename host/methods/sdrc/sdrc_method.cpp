@@ -16,39 +16,38 @@
 namespace rc {
 namespace {
 
-std::vector<OptionSpec> sdrc_option_specs() {
-    std::vector<OptionSpec> specs = {
-        OptionSpec{
-            "--sdrc-samples", "", "N|auto",
-            "sdrc: directions a new record samples from its lobe and keeps in its L-tree, 16-65536 "
-            "(default auto: 3 x interp x spp within [64, 8192])"}
-            .integers(16, 65536, {"auto"}),
-        OptionSpec{
-            "--sdrc-interp", "", "M",
-            "sdrc: lobe directions per camera sample looked up in the L-trees, 1-64 (default 4)"}
-            .integers(1, 64),
-        OptionSpec{
-            "--sdrc-max-radius", "", "R",
-            "sdrc: ceiling of a lookup's radius in the paraboloid map, (0, 2] (default 0.15)"}
-            .numbers(1e-4, 2.0),
-        OptionSpec{"--sdrc-memory", "", "MIB",
-                   "sdrc: cap on the L-trees' memory; a render that needs more stops with an error "
-                   "(default 4096)"}
-            .numbers(1e-3, 1e9),
-    };
-    for (OptionSpec& spec : glossy_method_ic_option_specs()) {
-        specs.push_back(std::move(spec));
-    }
-    return specs;
+// sdrc's options: its own and the irradiance records' for the diffuse lobes.
+struct SdrcMethodOptions {
+    SdrcOptions sdrc;
+    IrradianceCacheOptions records = irradiance_record_defaults();
+};
+
+OptionTable<SdrcMethodOptions> sdrc_option_table() {
+    using O = SdrcOptions;
+    OptionTable<O> own;
+    own.integer("--sdrc-samples", "N|auto", &O::samples, 16, 65536,
+                "directions a new record samples from its lobe and keeps in its L-tree (auto: 3 "
+                "x interp x spp within [64, 8192])",
+                {"auto"}, 0)
+        .knob(KnobDirection::kIncrease)
+        .integer("--sdrc-interp", "M", &O::interp, 1, 64,
+                 "lobe directions per camera sample looked up in the L-trees")
+        .knob(KnobDirection::kIncrease)
+        .number("--sdrc-max-radius", "R", &O::max_radius, 1e-4, 2.0,
+                "ceiling of a lookup's radius in the paraboloid map")
+        .knob(KnobDirection::kDecrease)
+        .number("--sdrc-memory", "MIB", &O::memory_mib, 1e-3, 1e9,
+                "cap on the L-trees' memory; a render that needs more stops with an error")
+        .unit("MiB");
+    OptionTable<SdrcMethodOptions> table;
+    table.include(own, &SdrcMethodOptions::sdrc)
+        .include(irradiance_record_option_table(), &SdrcMethodOptions::records);
+    return table;
 }
 
-SdrcOptions parse_options(const ParsedArguments& arguments, const IrradianceCacheOptions& ic) {
-    SdrcOptions sdrc;
-    const std::string samples = arguments.value("--sdrc-samples", "auto");
-    sdrc.samples = samples == "auto" ? 0 : static_cast<int>(arguments.integer("--sdrc-samples", 0));
-    sdrc.interp = static_cast<int>(arguments.integer("--sdrc-interp", sdrc.interp));
-    sdrc.max_radius = static_cast<float>(arguments.number("--sdrc-max-radius", sdrc.max_radius));
-    sdrc.memory_mib = arguments.number("--sdrc-memory", sdrc.memory_mib);
+// SDRC's options with the irradiance records' they share (a, the spacing) and the shared
+// settings.
+SdrcOptions sdrc_options(SdrcOptions sdrc, const IrradianceCacheOptions& ic) {
     sdrc.accuracy = ic.accuracy;
     sdrc.min_spacing = ic.min_spacing;
     sdrc.max_spacing = ic.max_spacing;
@@ -96,10 +95,10 @@ nlohmann::json sdrc_stats(const SdrcStats& s) {
 
 class SpatialDirectionalRadianceCaching final : public Method {
    public:
-    SpatialDirectionalRadianceCaching(const ParsedArguments& arguments,
+    SpatialDirectionalRadianceCaching(const SdrcMethodOptions& options,
                                       const MethodSettings& settings)
-        : ic_(parse_irradiance_cache_options(arguments, settings)),
-          sdrc_(parse_options(arguments, ic_)) {}
+        : ic_(irradiance_record_options(options.records, settings)),
+          sdrc_(sdrc_options(options.sdrc, ic_)) {}
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks&) override {
         SdrcCache glossy(frame, sdrc_);
@@ -147,14 +146,25 @@ class SpatialDirectionalRadianceCaching final : public Method {
 }  // namespace
 
 MethodEntry sdrc_method_entry() {
-    return {"sdrc",
-            "spatial directional radiance caching: glossy lobes from records of importance-sampled "
-            "radiance samples in per-record kd-trees (L-trees), range-queried; diffuse lobes from "
-            "irradiance records",
-            sdrc_option_specs(), glossy_method_aovs("sdrc-hits"),
-            [](const ParsedArguments& arguments, const MethodSettings& settings) {
-                return std::make_unique<SpatialDirectionalRadianceCaching>(arguments, settings);
-            }};
+    return method_entry<SdrcMethodOptions>(
+        {.name = "sdrc",
+         .summary = "spatial directional radiance caching: glossy lobes from records of "
+                    "importance-sampled radiance samples in per-record kd-trees (L-trees), "
+                    "range-queried; diffuse lobes from irradiance records",
+         .aovs = glossy_method_aovs("sdrc-hits"),
+         .table = sdrc_option_table(),
+         .finish =
+             [](SdrcMethodOptions& options, const ParsedArguments&) {
+                 finish_irradiance_record_options(options.records);
+             },
+         .check =
+             [](const SdrcMethodOptions& options, const MethodSettings& settings) {
+                 irradiance_record_options(options.records, settings);
+             },
+         .create =
+             [](const SdrcMethodOptions& options, const MethodSettings& settings) {
+                 return std::make_unique<SpatialDirectionalRadianceCaching>(options, settings);
+             }});
 }
 
 }  // namespace rc

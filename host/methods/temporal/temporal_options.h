@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "util/cli.h"
+#include "util/option_table.h"
 
 namespace rc {
 
@@ -32,11 +33,12 @@ struct TemporalOptions {
     bool cache_moving_hits = false;
 };
 
-std::vector<OptionSpec> temporal_option_specs();
+// --temporal and the --temporal-* options.
+OptionTable<TemporalOptions> temporal_option_table();
 
-// Reads and validates them (Error with exit status 2 naming the option): the --temporal-* options
-// need --temporal.
-TemporalOptions parse_temporal_options(const ParsedArguments& arguments);
+// Error (exit status 2) naming the option: the --temporal-* options need --temporal, and
+// lifespans by departure need interpolated gradients.
+void check_temporal_options(const TemporalOptions& options, const ParsedArguments& arguments);
 
 std::string temporal_gradients_name(TemporalGradients gradients);
 std::string temporal_lifespan_name(TemporalLifespan lifespan);
