@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A portable radcache bundle (issue 14): radcache-<version>-linux-x86_64.tar.xz holding the
+# A portable radcache bundle: radcache-<version>-linux-x86_64.tar.xz holding the
 # executable (kernels are embedded in it), every shared library it loads except the C library's
 # own (glibc: the machine's) and the GPU driver (loaded by the OpenCL ICD loader, which is
 # bundled), the scenes without their references, and a launcher. Unpacked anywhere, `./radcache`

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The glossy caches against path tracing over the Phong exponent, at equal time (issues 11 and 12;
-the shape of Fig. 4 of the SDRC paper): where does radiance caching (`rc`) stop paying off, and
+"""The glossy caches against path tracing over the Phong exponent, at equal time (the
+shape of Fig. 4 of the SDRC paper): where does radiance caching (`rc`) stop paying off, and
 where does spatial directional radiance caching (`sdrc`) overtake it?
 
 For each exponent, a sphere of Phong exponent E (diffuse 0.1, specular 0.6) filling most of the

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Which basis radiance caching's records use: spherical harmonics (SH) or the hemispherical
-harmonics (HSH) of Gautron et al. 2004 (docs/radiance-caching.md, "Basis").
+harmonics (HSH) of Gautron et al. 2004 (docs/spherical-harmonics.md, "Basis";
+the tables in docs/lab/radiance-caching.md).
 
 An independent numpy implementation (not radcache's kernels) of both bases, measuring on the
 same lobes, by Gauss-Legendre x midpoint quadrature over the hemisphere:

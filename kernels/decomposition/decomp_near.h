@@ -80,7 +80,7 @@ RC_FUNC bool rc_decomp_may_see(float3 p, float3 n, float3 v0, float3 v1, float3 
 // estimate cos(theta_p) cos(theta_t) A_k / (pi r^2 + A_k) at its centroid (the pieces' areas A_k
 // are equal and cos(theta_t) r is p's height over the triangle's plane, the same for all). The
 // exact ff keeps the sum right for constant L_D*; the weights cost no form factor per piece
-// (tested against a quadrature; measured on the relief: docs/decomposition.md, "Time").
+// (tested against a quadrature; measured on the relief: docs/lab/decomposition.md, "Time").
 // Returns FF(t) times that mean of L_D*.
 RC_FUNC float3 rc_decomp_hidden(const ShSample* far, float3 p, float3 n, float3 v0, float3 v1,
                                 float3 v2, float ff) {

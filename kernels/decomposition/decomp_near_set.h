@@ -4,7 +4,7 @@
 // closer than alpha (§4), so with the centroid rule the parts of a triangle within alpha whose
 // centroid lies beyond it are in neither term and send the fit's extrapolated L_D*; a touching
 // triangle is counted whole, its FF [B - pi L_D*] replacing the far term over all of it
-// (docs/decomposition.md, "The crease bias").
+// (docs/lab/decomposition.md, "The crease bias").
 #pragma once
 
 #include "common/math.h"

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Irradiance decomposition against irradiance caching at equal error (issue 15's targets).
+"""Irradiance decomposition against irradiance caching at equal error (its time and ray targets).
 
 The paper (Arikan et al. 2005, §8): "an order of magnitude faster than irradiance caching ...
 while providing the same quality images", with far fewer rays. Ours: on the detail scene
@@ -7,7 +7,7 @@ while providing the same quality images", with far fewer rays. Ours: on the deta
 most 1/10 of its rays.
 
 For each scene, at --spp camera samples per pixel (default 4, the sweep's for the caching
-methods): renders `--method ic` at its defaults (the irradiance cache the issue names; and
+methods): renders `--method ic` at its defaults (the irradiance cache the targets name; and
 `ic --ic-ivg`, irradiance caching over the same grid the decomposition reads, with
 --with-ic-ivg), then `--method decomposition` at its defaults and over a ladder of settings
 (--source x --rays x --alpha x --cluster x --visibility x --radiosity x --gradients x --near x

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The glossy caches against each other and against path tracing at equal time (issue 12's
+"""The glossy caches against each other and against path tracing at equal time (SDRC's
 targets: on the kettle, `sdrc`'s relMSE of the image and of the glossy pixels' indirect light
 below `rc`'s and `pt`'s at `sdrc`'s render time).
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Irradiance vector grid build time against resolution and photon count (issue 5's benchmark).
+"""Irradiance vector grid build time against resolution and photon count.
 
 For each scene, grid resolution and photon count: one `radcache render --method ivg` at 32 x 32
 pixels (the render pass is negligible) with --stats; reports the photon-tracing and

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Temporal caching against per-frame caching over a clip (issue 13's targets: the speed-up at
+"""Temporal caching against per-frame caching over a clip (its targets: the speed-up at
 equal per-frame relMSE, and the temporal error, flicker, at equal time), for irradiance caching
 (`--method ic`, the default) or radiance caching (`--method rc`: the ladder is of radiance records'
 rays, --rc-rays; --options sets the irradiance records').
