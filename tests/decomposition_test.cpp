@@ -787,7 +787,7 @@ CreaseFractions crease_fractions(const std::vector<shared::NearTriangle>& triang
     return {fn, error(fn), fw, error(fw)};
 }
 
-// The crease bias (docs/decomposition.md, "The crease bias"): the far field discards every hit
+// The crease bias (docs/lab/decomposition.md, "The crease bias"): the far field discards every hit
 // nearer than alpha, so eq. 4's near set must count every split triangle such a hit lies on,
 // whole. Beside a crease (brute force above): with the touching rule (any point within alpha)
 // the FF sum over those triangles is the fraction of directions that hit them, and the FF sum
@@ -1224,7 +1224,7 @@ TEST(DecompositionCameraSamples, IndirectOnlySamplesGiveTheFullySampledIndirectL
 
 // The near triangles' radiosity by default: gathered over the grid, read from the source (path
 // traced) with --decomp-source path; --decomp-radiosity overrides either (--stats names it).
-// The near set follows the radiosity (docs/decomposition.md, "The crease bias").
+// The near set follows the radiosity (docs/lab/decomposition.md, "The crease bias").
 TEST(DecompositionOptions, RadiosityFollowsTheSourceAndTheNearSetTheRadiosity) {
     const auto dir = test::scratch_dir("decomposition_radiosity");
     const std::string out = (dir / "out.exr").string();

@@ -1,7 +1,7 @@
 // `radcache bench insertion`: the host's record insertion (neighbor clamping, DESIGN.md §6.2
 // step 4) over a saved irradiance cache's records, one by one and in batches on one thread and
 // on all the host's threads, side by side; every way must give the radii the render gave, bit for
-// bit (docs/devices.md, "The host's own work").
+// bit (docs/lab/devices.md, "The host's own work in an `ic` render").
 #include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>

@@ -263,7 +263,7 @@ void finish_decomposition(DecompositionMethodOptions& options, const ParsedArgum
     }
     // Counting the touching triangles whole helps the gathered radiosity on the relief, the
     // Cornell box and the two rooms but not the coarse one on the relief
-    // (docs/decomposition.md, "The crease bias"), so the near set follows the radiosity.
+    // (docs/lab/decomposition.md, "The crease bias"), so the near set follows the radiosity.
     if (!arguments.has("--decomp-near")) {
         d.near_touching = options.gathered;
     }

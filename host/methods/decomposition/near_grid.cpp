@@ -37,7 +37,7 @@ RecordGridData build_near_grid(const std::vector<shared::NearTriangle>& triangle
     }
     // Cells as large as the median reach, not twice it: a point's cell then lists 220 candidates
     // on the relief at 5 % clusters rather than 400, for about 27 listings per triangle; the
-    // evaluation and the gathers took 10-20 % less time (docs/decomposition.md, "Time").
+    // evaluation and the gathers took 10-20 % less time (docs/lab/decomposition.md, "Time").
     return build_record_grid(records, 1.0f, kNearGridCells, 1.0f);
 }
 
