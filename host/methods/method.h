@@ -17,6 +17,7 @@
 #include "device/program.h"
 #include "image/image.h"
 #include "methods/frame_scene.h"
+#include "methods/shared_settings.h"
 #include "util/cli.h"
 #include "util/option_table.h"
 
@@ -24,14 +25,8 @@ namespace rc {
 
 // The settings every method reads: the scene's render defaults, overridden by -D and the
 // command line's shared options.
-struct MethodSettings {
-    int width = 0;  // 0: the scene camera's
-    int height = 0;
-    int spp = 16;
+struct MethodSettings : SharedSettings {
     double time = 0.0;  // the scene's or -D's time budget (seconds); methods may ignore it
-    uint64_t seed = 0;
-    int max_depth = 64;
-    int rr_depth = 3;
     int frame_count = 1;              // frames this render will ask for
     int first_frame = 0;              // the first of them (they come in order, one apart)
     std::vector<std::string> layers;  // the AOV layers that will be written (empty: all)
@@ -39,19 +34,8 @@ struct MethodSettings {
     // Whether `layer` will be written.
     bool writes_layer(const std::string& layer) const;
 
-    // Copies what a method's own options struct shares with these settings: the image size,
-    // samples per pixel, seed and (where it has them) the path depth limits.
-    template <class Options>
-    void apply_to(Options& options) const {
-        options.width = width;
-        options.height = height;
-        options.spp = spp;
-        options.seed = seed;
-        if constexpr (requires { options.max_depth; }) {
-            options.max_depth = max_depth;
-            options.rr_depth = rr_depth;
-        }
-    }
+    // Sets the shared settings of a method's own options struct.
+    void apply_to(SharedSettings& options) const { options.share(*this); }
 };
 
 // Width x height of a frame's image: the scene camera's where `width` or `height` is 0.

@@ -22,6 +22,7 @@
 
 #include "device/buffer.h"
 #include "image/image.h"
+#include "methods/shared_settings.h"
 #include "methods/decomposition/decomp_device_split.h"
 #include "methods/decomposition/decomp_radiosity_split.h"
 #include "methods/frame_scene.h"
@@ -34,16 +35,11 @@ namespace rc {
 
 class DecompClusterSplit;
 
-struct DecompositionOptions {
-    int width = 0;  // 0: the scene camera's
-    int height = 0;
-    int spp = 4;  // camera samples per pixel, shaded fully
+struct DecompositionOptions : SharedSettings {  // spp: camera samples shaded fully
+    DecompositionOptions() { spp = 4; }
     // Camera samples per pixel where the two terms are evaluated (--decomp-indirect-spp; 0: spp):
     // the first spp of them shaded fully, the others only for the diffuse lobe's indirect light.
     int indirect_spp = 0;
-    uint64_t seed = 0;
-    int max_depth = 64;
-    int rr_depth = 3;
     float alpha = 0.0f;  // the near/far distance, scene units (0: no near field)
     // A cluster less than this across is not split (--decomp-cluster, scene units; the paper's
     // rule: alpha).

@@ -18,6 +18,7 @@
 #include "methods/irradiance_cache/ic_device_split.h"
 #include "methods/irradiance_cache/irradiance_records.h"
 #include "methods/radiance_source.h"
+#include "methods/shared_settings.h"
 
 namespace rc {
 
@@ -36,13 +37,8 @@ float spacing_bound(const Spacing& spacing, float footprint);
 
 class RecordBatchObserver;  // below
 
-struct IrradianceCacheOptions {
-    int width = 0;  // 0: the scene camera's
-    int height = 0;
-    int spp = 4;  // camera samples per pixel
-    uint64_t seed = 0;
-    int max_depth = 64;
-    int rr_depth = 3;
+struct IrradianceCacheOptions : SharedSettings {
+    IrradianceCacheOptions() { spp = 4; }
     float accuracy = 0.35f;  // a: records influence points within a R
     int rays = 1024;         // hemisphere rays per record (M x N strata, N ~ pi M)
     int deeper_rays = 0;     // per record of the deeper levels (--ic-deeper-rays; 0: rays / 4)

@@ -15,6 +15,7 @@
 #include "device/buffer.h"
 #include "device/kernel.h"
 #include "device/memory_need.h"
+#include "methods/shared_settings.h"
 #include "methods/frame_scene.h"
 #include "methods/irradiance_vector_grid/ivg_cell_planes.h"
 #include "methods/radiance_source.h"
@@ -22,15 +23,13 @@
 
 namespace rc {
 
-struct IvgOptions {
+// Of the shared settings, the seed and depth limits apply.
+struct IvgOptions : SharedSettings {
     std::array<int, 3> cells{0, 0, 0};  // voxels per axis; all 0: chosen from the scene (auto)
     uint64_t photons = 0;               // 0: chosen from the grid's size
     bool include_direct = false;        // record unbounced photon segments (direct light)
     int interpolation = RC_IVG_TRILINEAR;
     bool compressed = false;  // read the 16-bit colour + direction layout (§4.2)
-    uint64_t seed = 0;
-    int max_depth = 64;
-    int rr_depth = 3;
     std::filesystem::path grid_in;   // load instead of tracing photons
     std::filesystem::path grid_out;  // save after building
 };

@@ -9,15 +9,13 @@
 
 #include "image/image.h"
 #include "methods/frame_scene.h"
+#include "methods/shared_settings.h"
 #include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
 
 namespace rc {
 
-struct IvgRenderOptions {
-    int width = 0;  // 0: the scene camera's
-    int height = 0;
-    int spp = 4;
-    uint64_t seed = 0;
+struct IvgRenderOptions : SharedSettings {
+    IvgRenderOptions() { spp = 4; }
     int gather_rays = 0;    // per camera sample; 0: read the grid at the camera's hit (ivg)
     int light_samples = 1;  // light samples of the direct light at the camera's hit
 };

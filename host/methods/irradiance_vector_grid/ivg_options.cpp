@@ -67,9 +67,7 @@ IvgOptions ivg_options(IvgOptions options, const MethodSettings& settings) {
     if (settings.frame_count > 1 && (!options.grid_in.empty() || !options.grid_out.empty())) {
         throw Error("--grid-in/--grid-out take one frame", kExitUsage);
     }
-    options.seed = settings.seed;
-    options.max_depth = settings.max_depth;
-    options.rr_depth = settings.rr_depth;
+    settings.apply_to(options);
     return options;
 }
 

@@ -9,18 +9,13 @@
 
 #include "image/image.h"
 #include "methods/frame_scene.h"
+#include "methods/shared_settings.h"
 #include "shared/types.h"
 
 namespace rc {
 
-struct PathTracerOptions {
-    int width = 0;  // 0: the scene camera's
-    int height = 0;
-    int spp = 16;
+struct PathTracerOptions : SharedSettings {
     double time_limit = 0.0;  // > 0: render passes until this many seconds have passed
-    uint64_t seed = 0;
-    int max_depth = 64;
-    int rr_depth = 3;
     // Called after passes 1, 2, 4, 8, ... with the image so far.
     std::function<void(int spp, const Image& image)> on_power_of_two;
     // Called after each pass with the fraction done (of spp or of the time limit).

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "methods/shared_settings.h"
 #include "methods/frame_scene.h"
 #include "methods/glossy_cache.h"
 #include "methods/glossy_placement.h"
@@ -25,16 +26,14 @@
 
 namespace rc {
 
-struct RadianceCacheOptions {
+// Of the shared settings, the seed and depth limits apply (those of the irradiance records).
+struct RadianceCacheOptions : SharedSettings {
     int order = 0;           // n_max of the BRDF tables and the records; 0: auto (RC_SH_MAX_ORDER)
     double max_error = 0.1;  // the BRDF tables' largest representation error (TVCG §4.1)
     int rays = 4096;  // hemisphere rays per record (M x N strata, N ~ 4 M; TVCG §6: 4000-6000)
     float accuracy = 0.35f;            // a (shared with irradiance caching's --accuracy)
     Spacing min_spacing{8.0f, false};  // bounds on a record's radius R
     Spacing max_spacing{64.0f, false};
-    uint64_t seed = 0;
-    int max_depth = 64;
-    int rr_depth = 3;
     bool count_emission = false;      // count emitters the hemisphere rays see (tests)
     std::filesystem::path cache_in;   // radiance records to start from (--rc-cache-in)
     std::filesystem::path cache_out;  // where to save the radiance records (--rc-cache-out)

@@ -88,9 +88,7 @@ RadianceCacheOptions radiance_record_options(RadianceCacheOptions rc,
     rc.accuracy = ic.accuracy;
     rc.min_spacing = ic.min_spacing;
     rc.max_spacing = ic.max_spacing;
-    rc.seed = ic.seed;
-    rc.max_depth = ic.max_depth;
-    rc.rr_depth = ic.rr_depth;
+    rc.share(ic);
     if (settings.frame_count > 1 && (!rc.cache_in.empty() || !rc.cache_out.empty())) {
         throw Error("--rc-cache-in/--rc-cache-out take one frame", kExitUsage);
     }

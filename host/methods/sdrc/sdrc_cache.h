@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "methods/shared_settings.h"
 #include "methods/frame_scene.h"
 #include "methods/glossy_cache.h"
 #include "methods/glossy_placement.h"
@@ -27,7 +28,8 @@
 
 namespace rc {
 
-struct SdrcOptions {
+// Of the shared settings, the seed and depth limits apply (those of the irradiance records).
+struct SdrcOptions : SharedSettings {
     int samples = 0;             // N, directions of a new record; 0: auto (sdrc_record_samples)
     int interp = 4;              // M, directions per camera sample (SDRC §4.4)
     float max_radius = 0.15f;    // r_max in D (SDRC §4.4)
@@ -35,9 +37,6 @@ struct SdrcOptions {
     float accuracy = 0.35f;      // a (shared with irradiance caching's --accuracy)
     Spacing min_spacing{8.0f, false};
     Spacing max_spacing{64.0f, false};
-    uint64_t seed = 0;
-    int max_depth = 64;
-    int rr_depth = 3;
     bool count_emission = false;  // count emitters the rays see (tests)
     // Records per record launch and camera samples per interpolation launch (0: the defaults);
     // the image does not depend on them (tests).

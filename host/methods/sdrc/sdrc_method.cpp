@@ -51,9 +51,7 @@ SdrcOptions sdrc_options(SdrcOptions sdrc, const IrradianceCacheOptions& ic) {
     sdrc.accuracy = ic.accuracy;
     sdrc.min_spacing = ic.min_spacing;
     sdrc.max_spacing = ic.max_spacing;
-    sdrc.seed = ic.seed;
-    sdrc.max_depth = ic.max_depth;
-    sdrc.rr_depth = ic.rr_depth;
+    sdrc.share(ic);
     return sdrc;
 }
 
