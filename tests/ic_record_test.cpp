@@ -1,4 +1,4 @@
-// The record kernels (kernels/irradiance_cache/ic_records.h, rc_ic_reduce) against analytic
+// The record kernels (kernels/records/ic_records.h, rc_ic_reduce) against analytic
 // answers: a constant sky, and a tilted emitting rectangle whose irradiance at any point and
 // orientation Lambert's polygon formula gives exactly, so finite differences of it are the oracle
 // for the translational and rotational gradients.

@@ -1,4 +1,4 @@
-// The grid lookup's corner visibility (kernels/irradiance_vector_grid/ivg_visibility.h, the cells'
+// The grid lookup's corner visibility (kernels/common/ivg_visibility.h, the cells'
 // planes of host/methods/irradiance_vector_grid/ivg_cell_planes.h) against the shadow rays it
 // skips: at the hits of random rays in three scenes, the corners it finds visible must be those
 // eight shadow rays find, and some lookups must trace fewer than eight. The triangle-box test

@@ -23,9 +23,9 @@ int first_candidate_stride(uint32_t i, uint32_t width, uint32_t spp) {
 
 GlossyPlacement::GlossyPlacement(Context& context)
     : context_(context),
-      served_kernel_(context.kernel("glossy/glossy_placement.cl", "rc_served_queries")),
-      select_kernel_(context.kernel("glossy/glossy_placement.cl", "rc_select_queries")),
-      uncovered_kernel_(context.kernel("glossy/glossy_placement.cl", "rc_uncovered")) {}
+      served_kernel_(context.kernel("records/glossy_placement.cl", "rc_served_queries")),
+      select_kernel_(context.kernel("records/glossy_placement.cl", "rc_select_queries")),
+      uncovered_kernel_(context.kernel("records/glossy_placement.cl", "rc_uncovered")) {}
 
 void GlossyPlacement::select_served(const Buffer<shared::RcQuery>& queries,
                                     GlossyPlacementStats* stats) {

@@ -30,9 +30,9 @@ typedef struct SourceSample {
 } SourceSample;
 
 #if RC_RADIANCE_SOURCE == RC_RADIANCE_RECORDS
-#include "irradiance_cache/ic_record_source.h"
+#include "records/ic_record_source.h"
 #elif RC_RADIANCE_SOURCE == RC_RADIANCE_GRID
-#include "irradiance_vector_grid/ivg_source.h"
+#include "common/ivg_source.h"
 #else
 
 // Path-traced continuation: nothing to read.

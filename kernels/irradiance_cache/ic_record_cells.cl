@@ -1,7 +1,7 @@
 // Entry kernel of irradiance caching's hemisphere sampling (host/methods/irradiance_cache/): the
 // radiance arriving through each cell of a batch of records, "the radiance beyond the first
 // bounce" read from the source the program is built for (common/radiance_source.h).
-#include "irradiance_cache/ic_shading.h"
+#include "records/ic_shading.h"
 #include "scene_arguments.h"
 // The source after the method's own headers (see common/radiance_source.h).
 #include "common/radiance_source.h"

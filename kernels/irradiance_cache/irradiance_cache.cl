@@ -2,7 +2,7 @@
 // G-buffer, the hemisphere hits a deeper level must cover, the reduction of a record's hemisphere
 // samples (the sampling itself: ic_record_cells.cl), record gathering (coverage and
 // interpolation), and the final shading pass.
-#include "irradiance_cache/ic_shading.h"
+#include "records/ic_shading.h"
 #include "irradiance_cache/ic_splat.h"
 #include "scene_arguments.h"
 

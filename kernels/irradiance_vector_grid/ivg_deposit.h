@@ -4,7 +4,7 @@
 // ivg_lookup.h alone.
 #pragma once
 
-#include "irradiance_vector_grid/ivg_lookup.h"
+#include "common/ivg_lookup.h"
 
 // The fixed-point amount one crossing adds for colour channel value `flux` and component
 // `incident` of the incident direction: flux * incident / cosine * units, where cosine is the

@@ -6,7 +6,7 @@
 #include "common/camera_film.h"
 #include "common/pixel_sampler.h"
 #include "common/sampling.h"
-#include "irradiance_vector_grid/ivg_radiance.h"
+#include "common/ivg_radiance.h"
 
 // The camera ray of sample s of a pixel, and its random stream.
 RC_FUNC Ray rc_ivg_camera_ray(const IvgParams* p, const CameraParams* camera, uint pixel, uint s,

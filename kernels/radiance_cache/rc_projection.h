@@ -5,7 +5,7 @@
 // per colour channel, over the uniform strata of rc_hemisphere.h.
 #pragma once
 
-#include "radiance_cache/rc_hemisphere.h"
+#include "records/rc_hemisphere.h"
 #include "shared/spherical_harmonics.h"
 
 // Adds weighted.c * Y_i(d) to coefficients[c * order^2 + i] for the channels c = r, g, b.

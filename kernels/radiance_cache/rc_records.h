@@ -5,8 +5,8 @@
 #pragma once
 
 #include "common/record_weight.h"
-#include "glossy/glossy_query.h"
-#include "irradiance_cache/ic_shading.h"
+#include "records/glossy_query.h"
+#include "records/ic_shading.h"
 #include "radiance_cache/rc_brdf_table.h"
 #include "radiance_cache/rc_gradients.h"
 #include "radiance_cache/rc_interpolation.h"

@@ -4,7 +4,7 @@
 // its outgoing radiance.
 #pragma once
 
-#include "glossy/glossy_query.h"
+#include "records/glossy_query.h"
 #include "sdrc/sdrc_lobe.h"
 #include "shared/sdrc.h"
 

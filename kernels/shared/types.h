@@ -203,7 +203,7 @@ typedef struct GBufferSample {
     int served;       // 1 when the cache serves it (a hit with a diffuse lobe)
 } GBufferSample;
 
-// Random-number domain of irradiance-record sampling (kernels/irradiance_cache/ic_records.h),
+// Random-number domain of irradiance-record sampling (kernels/records/ic_records.h),
 // kept apart from camera samples.
 #define RC_IC_RNG_DOMAIN 0x49434331u
 
@@ -236,7 +236,7 @@ typedef struct IcParams {
 #define RC_IVG_TRICUBIC 1
 
 // Values per grid vertex: six directions (+x, -x, +y, -y, +z, -z), an irradiance vector (x, y, z)
-// per colour channel (kernels/irradiance_vector_grid/ivg_lookup.h gives the order).
+// per colour channel (kernels/common/ivg_lookup.h gives the order).
 #define RC_IVG_VALUES_PER_VERTEX 54
 // Half floats per vertex in the compressed layout: per direction |I_r|, |I_g|, |I_b| and a unit
 // direction (§4.2).

@@ -1,6 +1,6 @@
 // Entry kernels of temporal caching's reprojection for radiance records (`--method rc
 // --temporal`; host/methods/temporal/tc_radiance_reprojection.cpp): a batch of radiance records'
-// hemisphere samples (uniform cells, radiance_cache/rc_hemisphere.h) carried to the next frame and
+// hemisphere samples (uniform cells, records/rc_hemisphere.h) carried to the next frame and
 // assembled as temporal/tc_reprojection.h does for irradiance records; rc_record_project then
 // projects the result as it projects a record's cells.
 #include "radiance_cache/rc_records.h"

@@ -6,8 +6,8 @@
 // cells none arrives in (the holes).
 #pragma once
 
-#include "irradiance_cache/ic_shading.h"
-#include "radiance_cache/rc_hemisphere.h"
+#include "records/ic_shading.h"
+#include "records/rc_hemisphere.h"
 #include "shared/temporal.h"
 #include "temporal/tc_unshadowed.h"
 
@@ -22,7 +22,7 @@ typedef struct MovedTriangles {
 // M x N record hemisphere of `layout` (shared/temporal.h), in continuous cell units: (row, column)
 // = (M sin^2 theta, N phi / 2 pi) for irradiance caching's cosine-weighted cells
 // (ic_records.h, rc_ic_cell_direction), (M (1 - cos theta), N phi / 2 pi) for radiance caching's
-// uniform ones (radiance_cache/rc_hemisphere.h); cell (j, k) holds [j, j + 1) x [k, k + 1).
+// uniform ones (records/rc_hemisphere.h); cell (j, k) holds [j, j + 1) x [k, k + 1).
 RC_FUNC float2 rc_tc_cell_position(float3 d, int m, int n, int layout) {
     const float row = layout == RC_TC_CELLS_UNIFORM ? 1.0f - d.z : fmax(0.0f, 1.0f - d.z * d.z);
     float phi = atan2(d.y, d.x);

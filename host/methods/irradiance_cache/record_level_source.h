@@ -1,5 +1,5 @@
 // A cache level's records on the device, and a deeper level read as a radiance source
-// (kernels/irradiance_cache/ic_record_source.h; --ic-bounces): the hemisphere rays of the level
+// (kernels/records/ic_record_source.h; --ic-bounces): the hemisphere rays of the level
 // above interpolate its records at their hits.
 #pragma once
 

@@ -2,7 +2,7 @@
 // over the scene whose vertices hold six irradiance vectors per colour channel, filled by photon
 // tracing on the device, normalised, optionally compressed, saved and loaded. Owns the grid's
 // buffers and reports its statistics; ivg_method.h renders with it, and as a radiance source
-// (kernels/irradiance_vector_grid/ivg_source.h) the hemisphere rays of a caching method read it
+// (kernels/common/ivg_source.h) the hemisphere rays of a caching method read it
 // (--ic-ivg).
 #pragma once
 

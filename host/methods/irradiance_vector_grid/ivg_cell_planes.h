@@ -2,7 +2,7 @@
 // block a lookup's shadow rays: planes of the cell's triangles with every triangle of the cell on
 // one side (on the plane or behind it), stored oriented towards the free side; a cell whose
 // triangles all lie in one plane has it twice, once per side. A shadow ray whose two ends lie
-// strictly on a free side meets none of them (kernels/irradiance_vector_grid/ivg_visibility.h
+// strictly on a free side meets none of them (kernels/common/ivg_visibility.h
 // skips it). Built on the host with the grid, from the scene's triangles: each triangle's
 // bounding box rasterised to cells, then an exact triangle-box test (triangle_box_overlap.h)
 // against the cell grown by twice the cell margin.

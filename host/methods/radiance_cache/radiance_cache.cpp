@@ -102,7 +102,7 @@ RadianceCache::RadianceCache(const FrameScene& frame, const RadianceCacheOptions
       queries_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_queries")),
       project_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_record_project")),
       splat_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_splat")),
-      used_kernel_(frame.context.kernel("glossy/glossy_placement.cl", "rc_records_used")),
+      used_kernel_(frame.context.kernel("records/glossy_placement.cl", "rc_records_used")),
       placement_(frame.context) {
     radiance_strata(options.rays, &strata_m_, &strata_n_);
     stats_.materials = tables_->summaries();

@@ -149,7 +149,7 @@ class RadianceCaching final : public Method {
         programs.push_back({"radiance_cache/rc_cache.cl", ""});
         programs.push_back(
             {"radiance_cache/rc_record_cells.cl", radiance_source_define(RC_RADIANCE_RECORDS)});
-        programs.push_back({"glossy/glossy_placement.cl", ""});
+        programs.push_back({"records/glossy_placement.cl", ""});
         if (temporal_) {
             programs.push_back({"temporal/temporal.cl", ""});
             programs.push_back({"temporal/tc_radiance.cl", ""});

@@ -123,7 +123,7 @@ class SpatialDirectionalRadianceCaching final : public Method {
         std::vector<ProgramRequest> programs = irradiance_cache_programs(ic_, RC_RADIANCE_PATH);
         programs.push_back({"sdrc/sdrc.cl", ""});
         programs.push_back({"sdrc/sdrc_trace.cl", radiance_source_define(RC_RADIANCE_RECORDS)});
-        programs.push_back({"glossy/glossy_placement.cl", ""});
+        programs.push_back({"records/glossy_placement.cl", ""});
         return programs;
     }
 

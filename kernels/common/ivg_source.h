@@ -4,7 +4,7 @@
 // with the grid's own depth limits).
 #pragma once
 
-#include "irradiance_vector_grid/ivg_radiance.h"
+#include "common/ivg_radiance.h"
 
 typedef VectorGrid RadianceSource;
 

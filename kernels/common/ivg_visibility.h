@@ -10,7 +10,7 @@
 #pragma once
 
 #include "common/path_radiance.h"
-#include "irradiance_vector_grid/ivg_lookup.h"
+#include "common/ivg_lookup.h"
 
 // Whether x lies in the cell at `base` grown by `margin` on every side.
 RC_FUNC bool rc_ivg_in_grown_cell(const IvgParams* p, int3 base, float3 x, float margin) {

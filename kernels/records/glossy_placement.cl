@@ -1,7 +1,7 @@
 // Entry kernels of the glossy caches' record placement (host/methods/glossy_placement.h): which
 // camera samples a glossy cache serves, and which of them no record covers yet. Shared by
 // radiance caching and SDRC (DESIGN.md §6.4, §6.5). Item index: begin + get_global_id(0).
-#include "irradiance_cache/ic_records.h"
+#include "records/ic_records.h"
 #include "shared/radiance_cache.h"
 
 // Item i: query i appended to `served` (counted in counts[0], in any order) when its order is

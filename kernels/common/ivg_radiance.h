@@ -4,8 +4,8 @@
 #pragma once
 
 #include "common/cached_radiance.h"
-#include "irradiance_vector_grid/ivg_lookup.h"
-#include "irradiance_vector_grid/ivg_visibility.h"
+#include "common/ivg_lookup.h"
+#include "common/ivg_visibility.h"
 
 // The grid as the kernels read it.
 typedef struct VectorGrid {

@@ -1,7 +1,7 @@
 // A camera sample as the glossy caches see it (radiance caching, DESIGN.md §6.4; SDRC, §6.5).
 #pragma once
 
-#include "irradiance_cache/ic_shading.h"
+#include "records/ic_shading.h"
 #include "shared/radiance_cache.h"
 
 // The camera sample s of a pixel: the hit of the same camera ray the irradiance cache's passes

@@ -7,7 +7,7 @@
 #include "common/camera.h"
 #include "common/camera_film.h"
 #include "common/pixel_sampler.h"
-#include "irradiance_cache/ic_records.h"
+#include "records/ic_records.h"
 #include "shared/radiance_cache.h"
 
 // World size of a pixel at distance t along the camera ray through pixel (x, y).

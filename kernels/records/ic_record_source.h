@@ -4,7 +4,7 @@
 // diffuse lobe where no record covers the hit) by path tracing (rc_ic_cached_radiance).
 #pragma once
 
-#include "irradiance_cache/ic_shading.h"
+#include "records/ic_shading.h"
 
 typedef RecordCache RadianceSource;
 
