@@ -1,4 +1,4 @@
-// `radcache bench all` with several devices (issue 14): whole renders that split their work across
+// `radcache bench all` with several devices: whole renders that split their work across
 // devices (the path tracer's pixel chunks, irradiance caching's record batches and final pass at
 // its defaults and one camera sample per pixel, the grid's photon batches) timed on the wall clock
 // on each device alone and on all of them together, side by side in one run, so the together

@@ -120,7 +120,7 @@ LoadedFrame load_frame(const SequenceJob& job, const ParsedArguments& arguments,
     return loaded;
 }
 
-// Issue 17: a frame's NaN or infinite pixels are an error without --allow-nan. With it, every
+// A frame's NaN or infinite pixels are an error without --allow-nan. With it, every
 // frame's mask becomes its pixels that are finite in both images (and selected by --mask), so
 // that each frame's figures and each pair's temporal error are taken over finite pixels only.
 void exclude_nonfinite_frame_pixels(LoadedFrame& frame, bool allow_nan) {

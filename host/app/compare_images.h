@@ -52,7 +52,7 @@ ReferenceLayer matched_to(const ReferenceLayer& reference, const Image& test, in
 ImageError compare_layer(const Image& test, const ReferenceLayer& reference,
                          const std::string& test_path, PixelMask mask);
 
-// Issue 17: pixels with a NaN or infinite channel in either image are counted, never folded into
+// Pixels with a NaN or infinite channel in either image are counted, never folded into
 // the figures. When there are any, `finite` becomes the pixels `mask` selects that are finite in
 // both and `mask` points at it; Error naming `test_path` when no pixel is left.
 NonfinitePixels exclude_nonfinite_pixels(const Image& test, const Image& reference,

@@ -41,7 +41,7 @@ DeviceMemoryNeed frame_need(const Context& context, const Scene& scene, const Bv
 
 // Warns (an error under --strict) when --frames reaches outside the scene's frame range: the
 // frames there hold the poses of its nearest end, or, in a scene without animation tracks, are
-// all the same picture (issue 17).
+// all the same picture.
 void warn_unless_frames_in_range(const FrameRange& frames, const Animation& animation) {
     const auto start = static_cast<long long>(animation.frame_start);
     const auto end = static_cast<long long>(animation.frame_end);
@@ -83,7 +83,7 @@ void render_frame(const RenderJob& job, int frame,
     auto start = SteadyClock::now();
     bvh = build_bvh(scene.mesh, context.bvh_layout());
     totals.phase("bvh") += seconds_since(start);
-    // The whole frame is refused before its first buffer when it cannot fit (issue 17).
+    // The whole frame is refused before its first buffer when it cannot fit.
     const DeviceMemoryNeed need = frame_need(context, scene, bvh, method);
     for (const auto& device : contexts) {
         check_device_memory_need(*device, frame_need(*device, scene, bvh, method));
@@ -167,7 +167,7 @@ int render(const ParsedArguments& arguments) {
     RenderJob job = read_render_job(arguments);
     set_quiet(arguments.has("--quiet"));
     set_strict(arguments.has("--strict"));
-    OutputBatch outputs;  // every file is written at the end, or none (issue 17)
+    OutputBatch outputs;  // every file is written at the end, or none
     RenderTotals totals;
 
     auto start = SteadyClock::now();

@@ -1,4 +1,4 @@
-// The devices of one render (issue 14): `--device all` or a comma-separated list opens one
+// The devices of one render: `--device all` or a comma-separated list opens one
 // context per device; the first serves every method, the others (the peers) only a method that
 // splits its frames' work across devices (Method::splits_across_devices), which gets each frame's
 // scene and BVH on every peer (PeerFrames).

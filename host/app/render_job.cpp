@@ -159,7 +159,7 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
         overrides_only.apply_override(assignment);  // validates the keys before loading
     }
     // Every value the command line gives that does not depend on the scene is range-checked
-    // before it loads, so that a bad one is the only line printed (issue 17).
+    // before it loads, so that a bad one is the only line printed.
     const RenderSettings settings = render_settings(arguments, overrides_only);
     const MethodSettings method = method_settings(arguments, settings, job, 0, 0);
     context_options(arguments);

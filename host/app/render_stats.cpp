@@ -12,7 +12,7 @@ void RenderTotals::add_frame(int frame, const std::filesystem::path& output,
     nlohmann::json entry = result.stats;
     entry["frame"] = frame;
     entry["output"] = output.string();
-    // Memory of the frame (issue 17): now, and the most since the previous frame.
+    // Memory of the frame: now, and the most since the previous frame.
     const HostMemory host = host_memory();
     const DeviceMemory& device = context.device_memory();
     nlohmann::json need_parts = nlohmann::json::object();

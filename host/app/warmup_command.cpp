@@ -1,5 +1,5 @@
-// `radcache warmup [--method M [its options]]`: fills the kernel binary cache ahead of a render
-// (issue 14). Builds, all at once on their own threads (Context::prebuild), the programs the
+// `radcache warmup [--method M [its options]]`: fills the kernel binary cache ahead of a render.
+// Builds, all at once on their own threads (Context::prebuild), the programs the
 // method with these options will build (Method::programs); without --method, every method's at
 // its defaults. A render afterwards on the same device loads every program from the cache.
 #include <chrono>

@@ -1,4 +1,4 @@
-// A compiler's build log with its locations mapped back to our kernel files (issue 14): the
+// A compiler's build log with its locations mapped back to our kernel files: the
 // program a driver builds is one expanded translation unit (KernelSources::expand) whose #line
 // markers name every original file, but not every vendor honours them (NVIDIA's log says
 // `<kernel>:815:1: error: ...`, AMD's `"/tmp/OCL123.cl", line 815: error: ...`). The host knows

@@ -82,7 +82,7 @@ class Context {
     // started one; a failed build throws here).
     const Program& program(const std::string& entry, const std::string& options = "");
     // Starts building every requested program not built or started yet, each on its own thread,
-    // all at once (issue 14: a cold render does not build its programs one after another; a
+    // all at once (a cold render does not build its programs one after another; a
     // driver's compiler runs them side by side). program() collects them.
     void prebuild(const std::vector<ProgramRequest>& requests);
     Kernel kernel(const std::string& entry, const std::string& name,

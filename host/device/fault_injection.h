@@ -1,4 +1,4 @@
-// Test-only device fault injection (issue 17): makes the N-th call of one OpenCL API fail with a
+// Test-only device fault injection: makes the N-th call of one OpenCL API fail with a
 // given status before the driver sees it, as a failing driver would, so that a test can reach
 // every call site's error path and check what it reports, frees and leaves behind. Disarmed
 // unless a test arms it; disarmed, it only counts calls and live OpenCL objects.

@@ -41,7 +41,7 @@ struct PixelMask {
     bool selects(int x, int y) const { return mask == nullptr || mask->at(x, y, 0) > 0.0f; }
 };
 
-// Pixels with a NaN or infinite channel (issue 17: compare counts them instead of reporting
+// Pixels with a NaN or infinite channel (compare counts them instead of reporting
 // "psnr inf"), among those a mask selects.
 struct NonfinitePixels {
     size_t test = 0;       // pixels of the test image with a NaN or infinite channel

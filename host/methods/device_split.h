@@ -1,4 +1,4 @@
-// Work shared among several devices (issue 14; FrameScene::peers): items 0 .. count - 1 (pixel
+// Work shared among several devices (FrameScene::peers): items 0 .. count - 1 (pixel
 // chunks, photon batches) taken in turn by one thread per device as it finishes its last, so
 // faster devices take more; device i takes item i first, so each does at least one when there
 // are enough. What an item computes must not depend on the device that takes it; the caller

@@ -26,9 +26,9 @@ namespace rc {
 // The settings every method reads: the scene's render defaults, overridden by -D and the
 // command line's shared options.
 struct MethodSettings : SharedSettings {
-    double time = 0.0;  // the scene's or -D's time budget (seconds); methods may ignore it
-    int frame_count = 1;              // frames this render will ask for
-    int first_frame = 0;              // the first of them (they come in order, one apart)
+    double time = 0.0;    // the scene's or -D's time budget (seconds); methods may ignore it
+    int frame_count = 1;  // frames this render will ask for
+    int first_frame = 0;  // the first of them (they come in order, one apart)
     std::vector<std::string> layers;  // the AOV layers that will be written (empty: all)
 
     // Whether `layer` will be written.
@@ -70,7 +70,7 @@ class Method {
     // Renders one frame. Called for the frames in order; a method may keep state between calls.
     virtual FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) = 0;
     // Every program its frames will build (Context::program's entry and options), for the
-    // render to start them all at once in the background (issue 14). Exactly those: a test
+    // render to start them all at once in the background. Exactly those: a test
     // renders every method and compares (tests/prebuild_test.cpp).
     virtual std::vector<ProgramRequest> programs() const = 0;
     // The device memory its buffers hold together at their peak while it renders a frame of

@@ -1,5 +1,5 @@
 // JSON text to nlohmann::json for the scene files, strictly: comments allowed, but no key twice
-// in one object, no number out of range, and a bounded nesting depth (issue 17); and JSON values
+// in one object, no number out of range, and a bounded nesting depth; and JSON values
 // quoted short in error lines.
 #pragma once
 

@@ -1,6 +1,6 @@
 // Where a scene's files come from: the file system, or memory (the fuzz targets read a scene and
 // its meshes without touching the disk). Every read is of a regular file within a size limit
-// (issue 17: /dev/zero as a mesh or an MTL library is refused before any allocation).
+// (/dev/zero as a mesh or an MTL library is refused before any allocation).
 #pragma once
 
 #include <cstdint>

@@ -72,7 +72,7 @@ void check_transform(const glm::mat4& m, const std::string& what, double frame) 
 }
 
 // `object` (in object space) taken to world space by `to_world`, divided by w; Error unless it
-// lies within the world range (issue 17: Embree's build and the kernels' squared distances
+// lies within the world range (Embree's build and the kernels' squared distances
 // overflow beyond it), naming `what`, its object-space position and the offending value.
 glm::vec3 world_point(const glm::mat4& to_world, glm::vec3 object, const std::string& what,
                       double frame) {

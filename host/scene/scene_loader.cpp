@@ -488,7 +488,7 @@ class SceneParser {
     std::set<std::string> emitter_names_;
 };
 
-// A scene that renders black without a word (issue 17): warned, an error under --strict.
+// A scene that renders black without a word: warned, an error under --strict.
 void warn_unless_lit(const Scene& scene) {
     const bool lit = std::any_of(
         scene.lights.lights.begin(), scene.lights.lights.end(), [](const shared::Light& light) {

@@ -34,7 +34,7 @@ void replace_file_atomically(const std::filesystem::path& path,
                              const std::function<void(const std::filesystem::path&)>& write,
                              WriteTiming timing = WriteTiming::kWithBatch);
 
-// The outputs of one run, committed together (issue 17): while a batch is open, every file
+// The outputs of one run, committed together: while a batch is open, every file
 // written with WriteTiming::kWithBatch goes to a temporary beside its path, and commit() renames
 // them all over their paths, in the order written. A batch destroyed without commit() removes its
 // temporaries, so a run that fails anywhere leaves no new file and every old one intact. One batch

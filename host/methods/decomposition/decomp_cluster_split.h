@@ -1,4 +1,4 @@
-// Irradiance decomposition's cluster batches on several devices (issue 14; §4.1's rays and fits):
+// Irradiance decomposition's cluster batches on several devices (§4.1's rays and fits):
 // a batch's clusters in ranges shared among the devices (methods/device_split.h). A cluster's
 // rays read only its own members' camera samples and its own random stream, and its fit only its
 // rays, so neither depends on the device; the host gathers the fits in cluster order. Only with

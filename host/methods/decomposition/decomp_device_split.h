@@ -1,4 +1,4 @@
-// Irradiance decomposition's pass 2 on several devices (issue 14; IrradianceDecomposition with the
+// Irradiance decomposition's pass 2 on several devices (IrradianceDecomposition with the
 // frame's peers): both terms at the camera samples (decomp_irradiance) and the render pass
 // (decomp_shade) in chunks of rows, shared among the devices (methods/device_split.h). A camera
 // sample's terms read only its own G-buffer entry and the near and far fields, and a pixel's

@@ -1,4 +1,4 @@
-// The split triangles' coarse radiosity on several devices (issue 14; §6 pass 1 with
+// The split triangles' coarse radiosity on several devices (§6 pass 1 with
 // --decomp-radiosity coarse and path-traced continuation as the coarse solution): the listed
 // triangles in ranges shared among the devices (methods/device_split.h). A triangle's B(t) reads
 // only its own points and random streams (triangle t, point k), so it does not depend on the

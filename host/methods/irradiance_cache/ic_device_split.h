@@ -1,4 +1,4 @@
-// Irradiance caching on several devices (issue 14; IrradianceCache with the frame's peers): the
+// Irradiance caching on several devices (IrradianceCache with the frame's peers): the
 // records of a batch in ranges and the final pass (splat and render pass) in chunks of rows,
 // shared among the devices (methods/device_split.h). A record's hemisphere sampling reads only its
 // own site and random stream, so its payload does not depend on the device that computed it; the

@@ -125,7 +125,7 @@ GridFile parse_grid_file(const std::string& bytes, const std::string& name, uint
     grid.values.resize(vertices * RC_IVG_VALUES_PER_VERTEX);
     std::memcpy(grid.values.data(), bytes.data() + sizeof header,
                 grid.values.size() * sizeof(float));
-    // The values where they must lie (issue 17: the checksum guards against accidents only).
+    // The values where they must lie (the checksum guards against accidents only).
     bool sound = grid.max_depth >= 0;
     for (int axis = 0; axis < 3; ++axis) {
         const float far =

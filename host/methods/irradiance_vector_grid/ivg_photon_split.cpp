@@ -1,4 +1,4 @@
-// The grid's photons on several devices (issue 14; IrradianceVectorGrid::trace_photons with the
+// The grid's photons on several devices (IrradianceVectorGrid::trace_photons with the
 // frame's peers): photon batches shared among the devices (methods/device_split.h), each device
 // depositing into its own fixed-point sums; the sums are added on the host and uploaded to the
 // frame's device. Integer addition is exact in any order, so the grid, and every image read from

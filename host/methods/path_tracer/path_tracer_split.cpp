@@ -1,4 +1,4 @@
-// The path tracer on several devices (issue 14; PathTracer::render with the frame's peers): the
+// The path tracer on several devices (PathTracer::render with the frame's peers): the
 // image's rows in chunks shared among the devices (methods/device_split.h), every pass of a chunk
 // on the device that took it, the films merged by chunk.
 #include <algorithm>

@@ -104,7 +104,7 @@ bool finite_in(float value, float min, float max) {
     return std::isfinite(value) && value >= min && value <= max;
 }
 
-// A record's values where they must lie (issue 17: a file is untrusted input; its checksum
+// A record's values where they must lie (a file is untrusted input; its checksum
 // guards against accidents only). Record positions lie in the scene's world range, normals are
 // unit, radii positive; distances may be infinite (no hit); payloads are floats, all finite.
 void check_record(const std::string& name, const CacheFileKey& key, uint64_t index,

@@ -291,7 +291,7 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
 
 void TemporalIrradianceCache::place_through(int last, const FrameScene& frame,
                                             const FrameHooks& hooks) {
-    // long long: a range ending at the largest frame number stops (issue 17).
+    // long long: a range ending at the largest frame number stops.
     for (long long next = static_cast<long long>(placed_until_) + 1; next <= last; ++next) {
         const int f = static_cast<int>(next);
         if (f == frame.frame) {
