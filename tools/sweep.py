@@ -740,9 +740,19 @@ def parse_arguments(argv):
     return args
 
 
-def check_tools(repeats):
+def radcache_tables():
+    """radcache's option tables, once, the curated curves checked against them."""
     if not os.access(RADCACHE, os.X_OK):
         fail("build radcache first (see README): %s is missing" % RADCACHE)
+    tables = sweep_knobs.read_tables(run_radcache)
+    try:
+        check_curated(tables)
+    except sweep_knobs.KnobError as e:
+        fail(str(e))
+    return tables
+
+
+def check_tools(repeats):
     if not flip_available():
         print("sweep: warning: flip-evaluator is not installed (python3 -m pip install -r "
               "tools/requirements.txt): the flip column stays empty", file=sys.stderr)
@@ -780,14 +790,10 @@ def write_outputs(report, out, crop):
 
 def main(argv):
     args = parse_arguments(argv)
-    check_tools(args.repeats)
-    tables = sweep_knobs.read_tables(run_radcache)
-    try:
-        check_curated(tables)
-    except sweep_knobs.KnobError as e:
-        fail(str(e))
+    tables = radcache_tables()
     methods = selected_methods(args.methods, tables)
     ladders = sweep_ladders(args, methods, tables)
+    check_tools(args.repeats)
     scene, reference, frame, animated = scene_paths(args.scene, args.reference, args.frame)
     check_reference_size(reference, args.width, args.height)
     scene_name = os.path.basename(os.path.dirname(scene))
