@@ -119,7 +119,8 @@ def knob_names(tables, method):
 
 
 def ladder(spec, tables, variants):
-    """The Ladder of `--ladder spec`; `variants`: name -> (method, flags) of the sweep's variants."""
+    """The Ladder of `--ladder spec`; `variants`: name -> (method, flags) of the sweep's
+    variants."""
     found = LADDER_FORM.match(spec)
     if not found:
         raise KnobError("--ladder %s: expected METHOD:OPTION or METHOD:OPTION=V1,V2,... (e.g. "
