@@ -3,7 +3,11 @@
 per point, errors that fall with the sample count, medians and spreads over the repeats, grids
 scaled from the auto grid, and the chart and report are written; a render that is not the same
 on a repeat (a wrapper that changes the seed) fails the sweep; an animated scene's frame finds its
-own reference; bad input is refused. Run by CTest with $RADCACHE set to the built executable."""
+own reference; bad input is refused. The methods and knobs come from radcache's option tables:
+a --ladder curve of one knob, ladders generated from a knob's default, direction and range, and
+the refusals (an option that is not a knob of the method, an unknown method, a curated curve whose
+knob the table no longer marks) with one line and no output. Run by CTest with $RADCACHE set to
+the built executable."""
 
 import csv
 import json
@@ -17,6 +21,8 @@ import unittest
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 SWEEP = os.path.join(ROOT, "tools", "sweep.py")
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+import sweep_knobs  # noqa: E402
 SCRATCH = os.path.join(os.environ.get("RADCACHE_TEST_SCRATCH_DIR") or "/tmp", "sweep_test")
 # The columns docs/results.md and the sweep's docstring document, in order.
 DOCUMENTED_COLUMNS = ["scene", "frame", "method", "curve", "setting", "spp", "accuracy",
@@ -33,6 +39,21 @@ count=$(cat "$0.count" 2>/dev/null || echo 0)
 echo $((count + 1)) > "$0.count"
 if [ "$1" = render ]; then exec "%s" "$@" --seed "$count"; fi
 exec "%s" "$@"
+"""
+
+# A radcache whose ic table no longer marks --ic-rays a quality knob.
+DROPS_A_KNOB = """#!%s
+import json, os, subprocess, sys
+real = %r
+if "--list-knobs" in sys.argv:
+    listing = json.loads(subprocess.run([real] + sys.argv[1:], capture_output=True, text=True,
+                                        check=True).stdout)
+    for entry in listing:
+        if entry["method"] == "ic":
+            entry["knobs"] = [k for k in entry["knobs"] if k["name"] != "--ic-rays"]
+    print(json.dumps(listing))
+    sys.exit(0)
+os.execv(real, [real] + sys.argv[1:])
 """
 
 
@@ -194,6 +215,103 @@ class SweepTest(unittest.TestCase):
                            "--out", os.path.join(SCRATCH, "bad")] + bad)
             self.assertNotEqual(refused.returncode, 0)
             self.assertIn(option, refused.stderr)
+
+
+class LadderTest(unittest.TestCase):
+    """--ladder and the checks against the option tables."""
+    @classmethod
+    def setUpClass(cls):
+        os.makedirs(SCRATCH, exist_ok=True)
+        cls.reference = os.path.join(SCRATCH, "ladder-reference.exr")
+        result = run([RADCACHE, "render",
+                      os.path.join(ROOT, "scenes", "cornell-box", "scene.json"), "-o",
+                      cls.reference, "--width", "16", "--height", "16", "--spp", "64", "--quiet"])
+        assert result.returncode == 0, result.stdout + result.stderr
+
+    def sweep(self, options, out, radcache=RADCACHE):
+        return run([sys.executable, SWEEP, os.path.join(ROOT, "scenes", "cornell-box"),
+                    "--reference", self.reference, "--width", "16", "--height", "16",
+                    "--repeats", "1", "--out", out] + options, radcache)
+
+    def test_a_ladder_draws_one_curve_of_a_knob(self):
+        out = os.path.join(SCRATCH, "ladder")
+        result = self.sweep(["--ladder", "ic:--ic-rays=64,256", "--ladder-spp", "1"], out)
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        with open(os.path.join(out, "sweep.csv")) as f:
+            rows = list(csv.DictReader(f))
+        # Only the ladder: no --methods given.
+        self.assertEqual([(r["method"], r["curve"], r["setting"], r["ic_rays"], r["spp"])
+                          for r in rows],
+                         [("ic", "ic --ic-rays ladder", "--ic-rays=64", "64", "1"),
+                          ("ic", "ic --ic-rays ladder", "--ic-rays=256", "256", "1")])
+        for r in rows:
+            self.assertGreater(float(r["relmse"]), 0.0)
+            self.assertGreater(int(r["records"]), 0)
+            self.assertEqual(r["accuracy"], "")
+        with open(os.path.join(out, "sweep.json")) as f:
+            report = json.load(f)
+        self.assertEqual([r["ic_rays"] for r in report["rows"]], [64, 256])
+        self.assertTrue(os.path.isfile(os.path.join(out, "error-vs-time.png")))
+
+    def test_generated_ladders_follow_the_table(self):
+        tables = sweep_knobs.read_tables(
+            lambda args: subprocess.run([RADCACHE] + args, capture_output=True, text=True,
+                                        check=True).stdout)
+        rays = tables.knobs["ic"]["--ic-rays"]
+        self.assertEqual(sweep_knobs.ladder("ic:--ic-rays", tables, {}).values,
+                         [str(min(int(rays["default"]) * 2 ** k, rays["max"]))
+                          for k in range(4)])
+        # Hand-worked: /1.5 a step from 0.35 ("decrease"); x2 from 40 clamped to 100 and
+        # de-duplicated; rounded integers; a choice knob's choices.
+        knob = {"name": "--k", "type": "number", "default": "0.35", "knob": "decrease",
+                "min": 0.001, "max": 1.0}
+        self.assertEqual(sweep_knobs.generated_values(knob), ["0.35", "0.233", "0.156", "0.104"])
+        knob.update(type="integer", default="40", knob="increase", min=1, max=100)
+        self.assertEqual(sweep_knobs.generated_values(knob), ["40", "80", "100"])
+        knob.update(default="5", knob="decrease")
+        self.assertEqual(sweep_knobs.generated_values(knob), ["5", "3", "2", "1"])
+        self.assertEqual(sweep_knobs.generated_values(
+            {"type": "choice", "choices": ["low", "high"], "default": "low",
+             "knob": "increase"}), ["low", "high"])
+        # A default that depends on other options, a length: their values must be given.
+        for spec, words in (("ivg:--photons", "depends on other options"),
+                            ("ic:--ic-min-spacing", "length knob")):
+            with self.assertRaises(sweep_knobs.KnobError) as refused:
+                sweep_knobs.ladder(spec, tables, {})
+            self.assertIn(words, str(refused.exception))
+        self.assertEqual(sweep_knobs.ladder("ivg:--photons=10,20", tables, {}).values,
+                         ["10", "20"])
+
+    def assertRefused(self, result, out, *names):
+        self.assertNotEqual(result.returncode, 0)
+        # One error line (beside the warning of a missing flip-evaluator, if any).
+        lines = [l for l in result.stderr.strip().splitlines() if "warning" not in l]
+        self.assertEqual(len(lines), 1, result.stderr)
+        for name in names:
+            self.assertIn(name, lines[0])
+        self.assertFalse(os.path.exists(out), out)
+
+    def test_refuses_what_the_tables_do_not_have(self):
+        out = os.path.join(SCRATCH, "refused")
+        shutil.rmtree(out, ignore_errors=True)
+        for options, names in (
+                (["--ladder", "pt:--ic-rays"], ["not a quality knob of pt", "--ic-rays"]),
+                (["--ladder", "nosuch:--ic-rays"], ["unknown method 'nosuch'"]),
+                (["--methods", "nosuch"], ["--methods nosuch", "unknown method"]),
+                (["--methods", "normals"], ["normals", "no quality knobs"]),
+                (["--ladder", "ic:--ic-rays=64,2"], ["--ic-rays 2", "[4, 65536]"])):
+            self.assertRefused(self.sweep(options, out), out, *names)
+
+    def test_a_curated_knob_the_table_drops_fails_the_sweep(self):
+        wrapper = os.path.join(SCRATCH, "drops-a-knob-radcache")
+        with open(wrapper, "w") as f:
+            f.write(DROPS_A_KNOB % (sys.executable, RADCACHE))
+        os.chmod(wrapper, 0o755)
+        out = os.path.join(SCRATCH, "dropped")
+        shutil.rmtree(out, ignore_errors=True)
+        # Even a sweep of pt alone: the tool and the tables must agree.
+        result = self.sweep(["--methods", "pt", "--pt-spp", "1"], out, radcache=wrapper)
+        self.assertRefused(result, out, "ic: the sweep varies --ic-rays", "quality knob")
 
 
 if __name__ == "__main__":

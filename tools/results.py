@@ -2,8 +2,9 @@
 """Regenerates docs/results.md: error-against-time charts and tables of every method on every
 shipped scene with a reference, the POV-Ray peer on the Cornell box, and `radcache bench all`.
 
-Runs tools/sweep.py for each scene at its default knobs and repeats (outputs under OUT/SCENE,
-charts copied to docs/results/SCENE-*.png), then `radcache bench all`, and writes
+Runs tools/sweep.py for each scene with every method (--methods all: each method of radcache's
+registry that has quality knobs, and ic-ivg) at the sweep's default knobs and repeats (outputs
+under OUT/SCENE, charts copied to docs/results/SCENE-*.png), then `radcache bench all`, and writes
 docs/results.md with the machine, device, date and git revision. Each sweep renders every point
 --repeats times (default 3): the tables give the median render time and the fastest and slowest
 repeat. Every figure is a time: run it on an otherwise idle machine. Estimated from timed single
@@ -32,8 +33,6 @@ import sys
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 DOCS = os.path.join(ROOT, "docs")
-# Every method at tools/sweep.py's default knobs.
-METHODS = ["pt", "ic", "ic-ivg", "rc", "sdrc", "ivg", "ivg-gather", "decomposition"]
 # tools/sweep.py's knobs under --quick.
 QUICK = ["--pt-spp", "1", "2", "4", "8", "16", "32", "64", "128", "256", "--ic-rays", "1024",
          "--ic-min-spacing", "default", "--rc-rays", "1024", "--ivg-grid", "auto",
@@ -173,7 +172,7 @@ def main(argv):
         out = os.path.join(args.out, scene)
         command = [sys.executable, os.path.join(ROOT, "tools", "sweep.py"),
                    os.path.join("scenes", scene), "--out", out, "--repeats", str(args.repeats),
-                   "--methods"] + METHODS + (QUICK if args.quick else [])
+                   "--methods", "all"] + (QUICK if args.quick else [])
         if scene == "cornell-box" and not args.no_povray and shutil.which("povray"):
             command.append("--povray")
         if extra:

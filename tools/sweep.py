@@ -15,20 +15,48 @@ warning) and writes
   OUT/index.html                  both charts, equal-time crops of every curve beside the
                                   reference's, and false-colour relMSE images
 
-Methods and their knobs: pt (--pt-spp); ic (one curve per --ic-rays x --ic-spp x
---ic-min-spacing, --ic-accuracy along it); ic-ivg (ic whose records read the irradiance vector
-grid: --ic-accuracy at the first --ic-spp, --ic-rays and --ic-min-spacing); rc (radiance caching
-for glossy lobes beside ic's defaults for diffuse ones: one curve per --rc-rays, --ic-accuracy
-along it at the first --ic-spp); sdrc (spatial directional radiance caching for glossy lobes,
-the same way: one curve per --sdrc-interp, --ic-accuracy along it at the first --ic-spp); ivg
-(one curve per
---ivg-grid, --ivg-photons along it, at --ivg-spp camera samples); ivg-gather (--gather-rays per
-camera sample at --gather-spp camera samples, the grid at its defaults); decomposition (irradiance
-decomposition, docs/decomposition.md: one curve per --decomp-rays x --decomp-alpha, the smallest
-cluster --decomp-cluster along it, at --decomp-spp camera samples; its knobs are named in the
-curve and setting columns). A grid is auto (about
-32k vertices), auto*K (K times auto's voxels per axis, read off the untimed warm-up render) or
-NxMxK; a min spacing is `default` (the method's) or what --ic-min-spacing takes (8px, 5u).
+Methods and knobs come from radcache's option tables, read once at start through the same
+radcache: the methods, in the registry's order, and each one's quality knobs (options that trade
+time for accuracy, each with its default, range or choices and the direction that buys accuracy)
+from `radcache render --list-knobs --json`, the options each table declares from `radcache
+reference`. --methods takes every method with knobs (a method without any, such as normals, is
+not swept), ic-ivg (ic with its --ic-ivg flag: ic's records' hemisphere rays read the irradiance
+vector grid) or all. Each method has curated curves, below; every option they vary is checked
+against the method's knobs at start and the sweep fails naming the method and the option when
+its table does not mark it a knob (what they set and do not vary, --ic-ivg and decomposition's
+--alpha, must be declared by the table), so the sweep and the tables cannot drift. --spp, which
+every curve sets and pt's varies, is the render's own setting, not a method's knob. A method the
+tables have and the sweep has no curated curves for is swept along a generated ladder (below) of
+each of its knobs that has one.
+
+The curated curves: pt (--pt-spp); ic (one curve per --ic-rays x --ic-spp x --ic-min-spacing,
+--ic-accuracy along it); ic-ivg (--ic-accuracy at the first --ic-spp, --ic-rays and
+--ic-min-spacing); rc (radiance caching for glossy lobes beside ic's defaults for diffuse ones:
+one curve per --rc-rays, --ic-accuracy along it at the first --ic-spp); sdrc (spatial
+directional radiance caching for glossy lobes, the same way: one curve per --sdrc-interp,
+--ic-accuracy along it at the first --ic-spp); ivg (one curve per --ivg-grid, --ivg-photons
+along it, at --ivg-spp camera samples); ivg-gather (--gather-rays per camera sample at
+--gather-spp camera samples, the grid at its defaults); decomposition (irradiance
+decomposition, docs/decomposition.md: one curve per --decomp-rays x --decomp-alpha, the
+smallest cluster --decomp-cluster along it, at --decomp-spp camera samples; its knobs are named
+in the curve and setting columns). A grid is auto (about 32k vertices), auto*K (K times auto's
+voxels per axis, read off the untimed warm-up render) or NxMxK; a min spacing is `default` (the
+method's) or what --ic-min-spacing takes (8px, 5u).
+
+Ladders. --ladder METHOD:OPTION=V1,V2,... (repeatable) adds one curve of METHOD (or ic-ivg)
+with its quality knob OPTION at each value in turn, every other option at its default and
+--spp at --ladder-spp (default: the scene's): method column METHOD, curve "METHOD OPTION
+ladder", setting "OPTION=VALUE" (and the column of that name, ic_rays for --ic-rays, where the
+CSV has one). Without values (--ladder METHOD:OPTION) the ladder is generated from the table: 4
+values from the default towards accuracy, x2 a step for an "increase" knob and /1.5 for a
+"decrease" one (integers rounded), clamped to the knob's range and de-duplicated; a choice knob
+takes each of its choices. A knob whose default depends on other options (--photons: 8 per grid
+vertex) or that is not a number (a length, a resolution, auto) needs its values. An option that
+is not a knob of METHOD, an unknown method, and a value radcache's own parser refuses (each
+value is checked before anything renders) stop the sweep with one line and no output. E.g.
+`--ladder ic:--ic-rays` renders ic at 1024, 2048, 4096 and 8192 rays per record;
+`--ladder ivg:--photons=65536,262144`; `--ladder ivg:--grid=auto,auto*2`. With --ladder and no
+--methods only the ladders are drawn.
 
 The defaults reach settings tight enough that each caching method's error keeps falling:
 ic's accuracy goes to 0.15 on curves of 1024 and 4096 rays per record, each with the method's
@@ -66,7 +94,8 @@ and lets the device generate code for the launch shapes, and compile_seconds (th
 program builds, from that cache; median) says what was left. Peers (POV-Ray, `--povray`) run once
 (repeats 1), timed by the wall clock of the whole peer process, parsing included.
 
-Usage: tools/sweep.py SCENE [--frame F] [--reference EXR] [--repeats N] [--methods pt ic ...]
+Usage: tools/sweep.py SCENE [--frame F] [--reference EXR] [--repeats N] [--methods pt ic ...|all]
+           [--ladder METHOD:OPTION[=V1,V2,...] ...] [--ladder-spp N]
            [--pt-spp 1 2 4 ...] [--ic-accuracy ...] [--ic-rays ...] [--ic-spp ...]
            [--ic-min-spacing ...] [--ivg-photons ...] [--ivg-grid ...] [--ivg-spp N]
            [--gather-rays ...] [--gather-spp N] [--decomp-alpha ...] [--decomp-cluster ...]
@@ -81,6 +110,7 @@ docs/benchmarks.md, "Error against time", from timed single points).
 """
 
 import argparse
+import collections
 import csv
 import datetime
 import json
@@ -94,6 +124,7 @@ import sys
 import time
 
 import references
+import sweep_knobs
 import sweep_report
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
@@ -104,7 +135,15 @@ COLUMNS = ["scene", "frame", "method", "curve", "setting", "spp", "accuracy", "i
            "%s%s" % (t, suffix) for t in TIMES for suffix in ("", "_min", "_max")] + [
            "compile_seconds", "rmse", "relmse", "relmse_net", "flip", "indirect_relmse",
            "records", "device", "image"]
-METHODS = ["pt", "ic", "ic-ivg", "rc", "sdrc", "ivg", "ivg-gather", "decomposition"]
+# The columns a point's knobs fill (the rest come from its --stats); a ladder of the option
+# --NAME-WITH-DASHES fills the column NAME_WITH_DASHES when there is one.
+KNOB_COLUMNS = ["spp", "accuracy", "ic_rays", "ic_min_spacing", "rc_rays", "sdrc_interp",
+                "gather_rays"]
+# ic's flag that makes the ic-ivg curves: its records' hemisphere rays read the grid.
+IVG_FLAG = "--ic-ivg"
+# The curves a sweep without --methods and --ladder draws (checked against the registry like any
+# --methods).
+DEFAULT_METHODS = ["pt", "ic"]
 GRID_FORM = re.compile(r"^(auto|auto\*(\d+(\.\d+)?)|\d+x\d+x\d+)$")
 SPACING_FORM = re.compile(r"^(default|\d+(\.\d+)?(px|u)?)$")
 LENGTH_FORM = re.compile(r"^\d*\.?\d+(%|u)?$")
@@ -213,10 +252,12 @@ def render(scene, image, options):
 
 def grid_option(grid, auto_cells):
     """--grid's value for a sweep grid: auto*K becomes K times the auto grid's voxels."""
-    scale = GRID_FORM.match(grid).group(2)
-    if scale is None:
+    found = GRID_FORM.match(grid)
+    if found is None or found.group(2) is None:
         return grid
-    return "x".join(str(max(1, round(float(scale) * c))) for c in auto_cells)
+    if auto_cells is None:
+        fail("grid %s: no warm-up render built the auto grid to scale" % grid)
+    return "x".join(str(max(1, round(float(found.group(2)) * c))) for c in auto_cells)
 
 
 def spacing_options(spacing):
@@ -227,108 +268,223 @@ def spacing_label(spacing):
     return "" if spacing == "default" else ", min spacing %s" % spacing
 
 
-def ic_runs(args):
+def pt_runs(args, auto_cells):
+    return [("pt", "pt", "spp=%d" % spp, {"spp": spp}, ["--method", "pt", "--spp", str(spp)])
+            for spp in args.pt_spp]
+
+
+def ic_runs(args, auto_cells):
     runs = []
-    if "ic" in args.methods:
-        for rays in args.ic_rays:
-            for spp in args.ic_spp:
-                for spacing in args.ic_min_spacing:
-                    curve = "ic %d rays, %d spp%s" % (rays, spp, spacing_label(spacing))
-                    for accuracy in args.ic_accuracy:
-                        runs.append(("ic", curve, "accuracy=%g rays=%d spp=%d spacing=%s" % (
-                                         accuracy, rays, spp, spacing),
-                                     {"spp": spp, "accuracy": accuracy, "ic_rays": rays,
-                                      "ic_min_spacing": spacing},
-                                     ["--method", "ic", "--spp", str(spp), "--accuracy",
-                                      str(accuracy), "--ic-rays", str(rays)] +
-                                     spacing_options(spacing)))
-    if "ic-ivg" in args.methods:
-        rays, spp, spacing = args.ic_rays[0], args.ic_spp[0], args.ic_min_spacing[0]
-        for accuracy in args.ic_accuracy:
-            runs.append(("ic-ivg", "ic + grid, %d spp%s" % (spp, spacing_label(spacing)),
-                         "accuracy=%g rays=%d spp=%d spacing=%s" % (accuracy, rays, spp, spacing),
-                         {"spp": spp, "accuracy": accuracy, "ic_rays": rays, "grid": "auto",
-                          "ic_min_spacing": spacing},
-                         ["--method", "ic", "--ic-ivg", "--spp", str(spp), "--accuracy",
-                          str(accuracy), "--ic-rays", str(rays)] + spacing_options(spacing)))
-    if "rc" in args.methods:
-        spp = args.ic_spp[0]
-        for rays in args.rc_rays:
-            for accuracy in args.ic_accuracy:
-                runs.append(("rc", "rc %d rays, %d spp" % (rays, spp),
-                             "accuracy=%g rc_rays=%d spp=%d" % (accuracy, rays, spp),
-                             {"spp": spp, "accuracy": accuracy, "rc_rays": rays},
-                             ["--method", "rc", "--spp", str(spp), "--accuracy", str(accuracy),
-                              "--rc-rays", str(rays)]))
-    if "sdrc" in args.methods:
-        spp = args.ic_spp[0]
-        for interp in args.sdrc_interp:
-            for accuracy in args.ic_accuracy:
-                runs.append(("sdrc", "sdrc %d directions, %d spp" % (interp, spp),
-                             "accuracy=%g sdrc_interp=%d spp=%d" % (accuracy, interp, spp),
-                             {"spp": spp, "accuracy": accuracy, "sdrc_interp": interp},
-                             ["--method", "sdrc", "--spp", str(spp), "--accuracy", str(accuracy),
-                              "--sdrc-interp", str(interp)]))
+    for rays in args.ic_rays:
+        for spp in args.ic_spp:
+            for spacing in args.ic_min_spacing:
+                curve = "ic %d rays, %d spp%s" % (rays, spp, spacing_label(spacing))
+                for accuracy in args.ic_accuracy:
+                    runs.append(("ic", curve, "accuracy=%g rays=%d spp=%d spacing=%s" % (
+                                     accuracy, rays, spp, spacing),
+                                 {"spp": spp, "accuracy": accuracy, "ic_rays": rays,
+                                  "ic_min_spacing": spacing},
+                                 ["--method", "ic", "--spp", str(spp), "--accuracy",
+                                  str(accuracy), "--ic-rays", str(rays)] +
+                                 spacing_options(spacing)))
     return runs
 
 
-def radcache_runs(args, auto_cells):
-    """(method, curve, setting, knobs, options) for every radcache point of the sweep."""
-    runs = []
-    if "pt" in args.methods:
-        for spp in args.pt_spp:
-            runs.append(("pt", "pt", "spp=%d" % spp, {"spp": spp},
-                         ["--method", "pt", "--spp", str(spp)]))
-    runs += ic_runs(args)
-    if "ivg" in args.methods:
-        for grid in args.ivg_grid:
-            curve = "ivg, grid %s, %d spp" % (grid, args.ivg_spp)
-            for photons in args.ivg_photons:
-                runs.append(("ivg", curve, "photons=%d grid=%s" % (photons, grid),
-                             {"spp": args.ivg_spp, "photons": photons},
-                             ["--method", "ivg", "--spp", str(args.ivg_spp), "--photons",
-                              str(photons), "--grid", grid_option(grid, auto_cells)]))
-    if "ivg-gather" in args.methods:
-        spp = args.gather_spp
-        for gathers in args.gather_rays:
-            runs.append(("ivg-gather", "ivg-gather, %d spp" % spp,
-                         "gather_rays=%d spp=%d" % (gathers, spp),
-                         {"spp": spp, "gather_rays": gathers},
-                         ["--method", "ivg-gather", "--spp", str(spp), "--gather-rays",
-                          str(gathers)]))
-    return runs + decomposition_runs(args)
+def ic_ivg_runs(args, auto_cells):
+    rays, spp, spacing = args.ic_rays[0], args.ic_spp[0], args.ic_min_spacing[0]
+    return [("ic-ivg", "ic + grid, %d spp%s" % (spp, spacing_label(spacing)),
+             "accuracy=%g rays=%d spp=%d spacing=%s" % (accuracy, rays, spp, spacing),
+             {"spp": spp, "accuracy": accuracy, "ic_rays": rays, "grid": "auto",
+              "ic_min_spacing": spacing},
+             ["--method", "ic", IVG_FLAG, "--spp", str(spp), "--accuracy", str(accuracy),
+              "--ic-rays", str(rays)] + spacing_options(spacing))
+            for accuracy in args.ic_accuracy]
 
 
-def decomposition_runs(args):
+def rc_runs(args, auto_cells):
+    spp = args.ic_spp[0]
+    return [("rc", "rc %d rays, %d spp" % (rays, spp),
+             "accuracy=%g rc_rays=%d spp=%d" % (accuracy, rays, spp),
+             {"spp": spp, "accuracy": accuracy, "rc_rays": rays},
+             ["--method", "rc", "--spp", str(spp), "--accuracy", str(accuracy), "--rc-rays",
+              str(rays)])
+            for rays in args.rc_rays for accuracy in args.ic_accuracy]
+
+
+def sdrc_runs(args, auto_cells):
+    spp = args.ic_spp[0]
+    return [("sdrc", "sdrc %d directions, %d spp" % (interp, spp),
+             "accuracy=%g sdrc_interp=%d spp=%d" % (accuracy, interp, spp),
+             {"spp": spp, "accuracy": accuracy, "sdrc_interp": interp},
+             ["--method", "sdrc", "--spp", str(spp), "--accuracy", str(accuracy),
+              "--sdrc-interp", str(interp)])
+            for interp in args.sdrc_interp for accuracy in args.ic_accuracy]
+
+
+def ivg_runs(args, auto_cells):
+    return [("ivg", "ivg, grid %s, %d spp" % (grid, args.ivg_spp),
+             "photons=%d grid=%s" % (photons, grid), {"spp": args.ivg_spp, "photons": photons},
+             ["--method", "ivg", "--spp", str(args.ivg_spp), "--photons", str(photons),
+              "--grid", grid_option(grid, auto_cells)])
+            for grid in args.ivg_grid for photons in args.ivg_photons]
+
+
+def gather_runs(args, auto_cells):
+    spp = args.gather_spp
+    return [("ivg-gather", "ivg-gather, %d spp" % spp, "gather_rays=%d spp=%d" % (gathers, spp),
+             {"spp": spp, "gather_rays": gathers},
+             ["--method", "ivg-gather", "--spp", str(spp), "--gather-rays", str(gathers)])
+            for gathers in args.gather_rays]
+
+
+def decomposition_runs(args, auto_cells):
     """Irradiance decomposition: a curve per rays per cluster and alpha, the smallest cluster
     along it (its knobs live in the curve and setting columns)."""
-    runs = []
-    if "decomposition" not in args.methods:
-        return runs
     spp = args.decomp_spp
-    for rays in args.decomp_rays:
-        for alpha in args.decomp_alpha:
-            curve = "decomposition alpha %s, %d rays, %d spp" % (alpha, rays, spp)
-            for size in args.decomp_cluster:
-                runs.append(("decomposition", curve,
-                             "alpha=%s cluster=%s rays=%d spp=%d" % (alpha, size, rays, spp),
-                             {"spp": spp},
-                             ["--method", "decomposition", "--spp", str(spp), "--alpha", alpha,
-                              "--decomp-cluster", size, "--decomp-rays", str(rays)]))
+    return [("decomposition", "decomposition alpha %s, %d rays, %d spp" % (alpha, rays, spp),
+             "alpha=%s cluster=%s rays=%d spp=%d" % (alpha, size, rays, spp), {"spp": spp},
+             ["--method", "decomposition", "--spp", str(spp), "--alpha", alpha,
+              "--decomp-cluster", size, "--decomp-rays", str(rays)])
+            for rays in args.decomp_rays for alpha in args.decomp_alpha
+            for size in args.decomp_cluster]
+
+
+# The sweep's curated curves, by the name --methods takes: the method they render, the flags
+# every point passes (a variant: ic-ivg is ic with --ic-ivg), the options their points vary (each
+# must be a quality knob of the method's table), the other options they set (each must be
+# declared by the table), and the points. Both lists are checked against the tables at start,
+# so the sweep and the tables cannot drift. Every curve also sets --spp (pt's curve varies it):
+# the render's own setting, which every method takes and no method's table declares.
+# decomposition's --alpha is the near/far split of the model, not a trade of time for accuracy
+# (the error is least near its default and grows either way, docs/lab/decomposition.md): its
+# table does not mark it a knob.
+Curated = collections.namedtuple("Curated", "method flags varies sets runs")
+CURATED = collections.OrderedDict([
+    ("pt", Curated("pt", [], [], [], pt_runs)),
+    ("ic", Curated("ic", [], ["--accuracy", "--ic-rays", "--ic-min-spacing"], [], ic_runs)),
+    ("ic-ivg", Curated("ic", [IVG_FLAG], ["--accuracy", "--ic-rays", "--ic-min-spacing"], [],
+                       ic_ivg_runs)),
+    ("rc", Curated("rc", [], ["--accuracy", "--rc-rays"], [], rc_runs)),
+    ("sdrc", Curated("sdrc", [], ["--accuracy", "--sdrc-interp"], [], sdrc_runs)),
+    ("ivg", Curated("ivg", [], ["--photons", "--grid"], [], ivg_runs)),
+    ("ivg-gather", Curated("ivg-gather", [], ["--gather-rays"], [], gather_runs)),
+    ("decomposition", Curated("decomposition", [], ["--decomp-rays", "--decomp-cluster"],
+                              ["--alpha"], decomposition_runs)),
+])
+
+
+def variants():
+    """name -> (method, flags) of the curated curves that are not a method of their own."""
+    return {name: (c.method, c.flags) for name, c in CURATED.items() if name != c.method}
+
+
+def check_curated(tables):
+    """Every curated curve against the tables: its method, the knobs it varies, what it sets."""
+    for name, curated in CURATED.items():
+        sweep_knobs.check_curated(name, curated.method, curated.varies,
+                                  curated.flags + curated.sets, tables)
+
+
+def sweepable(tables):
+    """What --methods takes, in the registry's order: each method with quality knobs, its
+    variants beside it."""
+    names = []
+    for method, knobs in tables.knobs.items():
+        if knobs:
+            names += [method] + [v for v, (base, _) in variants().items() if base == method]
+    return names
+
+
+def selected_methods(requested, tables):
+    """--methods in the registry's order ("all": every sweepable one); fails on a name radcache
+    does not have, or a method without quality knobs."""
+    names = sweepable(tables)
+    for name in requested:
+        if name in tables.knobs and name not in names:
+            fail("--methods %s: its option table has no quality knobs, nothing to sweep" % name)
+        if name != "all" and name not in names:
+            fail("--methods %s: unknown method (radcache's methods with quality knobs and the "
+                 "sweep's variants: %s, or all)" % (name, ", ".join(names)))
+    return [n for n in names if n in requested or "all" in requested]
+
+
+def method_of(name):
+    """(method, flags) that render a sweep name (a method or a variant)."""
+    return variants().get(name, (name, []))
+
+
+def sweep_ladders(args, methods, tables):
+    """The --ladder curves, then a generated ladder of each knob of a method with no curated
+    curves."""
+    try:
+        ladders = [sweep_knobs.ladder(spec, tables, variants()) for spec in args.ladder]
+        for name in methods:
+            if name not in CURATED:
+                generated = sweep_knobs.generated_ladders(name, *method_of(name), tables)
+                if not generated:
+                    fail("--methods %s: no curated curves and no knob with a generated ladder: "
+                         "give one, --ladder %s:OPTION=V1,V2,..." % (name, name))
+                ladders += generated
+    except sweep_knobs.KnobError as e:
+        fail(str(e))
+    return ladders
+
+
+def ladder_runs(ladder, args, auto_cells):
+    """One curve: the ladder's option at each value, every other option at its default (--spp:
+    --ladder-spp, else the scene's)."""
+    curve = "%s %s ladder" % (ladder.name, ladder.option)
+    column = ladder.option.lstrip("-").replace("-", "_")
+    spp = ["--spp", str(args.ladder_spp)] if args.ladder_spp else []
+    runs = []
+    for value in ladder.values:
+        given = grid_option(value, auto_cells) if ladder.knob["type"] == "resolution" else value
+        runs.append((ladder.name, curve, "%s=%s" % (ladder.option, value),
+                     {column: typed(value)} if column in KNOB_COLUMNS else {},
+                     ["--method", ladder.method] + ladder.flags + [ladder.option, given] + spp))
     return runs
 
 
-def warm_up(scene, out, methods, options):
+def typed(value):
+    """A ladder's value for the CSV and JSON: an int or float where it is one."""
+    for kind in (int, float):
+        try:
+            return kind(value)
+        except ValueError:
+            pass
+    return value
+
+
+def radcache_runs(args, methods, ladders, auto_cells):
+    """(method, curve, setting, knobs, options) for every radcache point of the sweep."""
+    runs = []
+    for name in methods:
+        if name in CURATED:
+            runs += CURATED[name].runs(args, auto_cells)
+    for ladder in ladders:
+        runs += ladder_runs(ladder, args, auto_cells)
+    return runs
+
+
+def reads_grid(method, flags, tables):
+    """Whether a method's renders build the irradiance vector grid: it has the grid's --photons
+    knob, and takes it with --ic-ivg where its table has that flag (ic)."""
+    return "--photons" in tables.knobs[method] and (
+        IVG_FLAG not in tables.declared.get(method, ()) or IVG_FLAG in flags)
+
+
+def warm_up(scene, out, names, tables, options):
     """Untimed: one render per method at the sweep's resolution and one sample per pixel fills
     the kernel binary cache and lets the device generate code for the launch shapes the timed
     runs use (PoCL does that on a shape's first launch). Returns the auto grid's voxels per axis
     (None when no method builds a grid)."""
     auto_cells = None
-    for method in sorted(set(methods)):
-        warm = ["--method", "ic", "--ic-ivg"] if method == "ic-ivg" else ["--method", method]
-        if method in ("ivg", "ivg-gather", "ic-ivg", "decomposition"):
+    for name in names:
+        method, flags = method_of(name)
+        warm = ["--method", method] + flags
+        if reads_grid(method, flags, tables):
             warm += ["--photons", "1000"]
-        _, stats = render(scene, os.path.join(out, "warm-%s.exr" % method),
+        _, stats = render(scene, os.path.join(out, "warm-%s.exr" % name),
                           warm + ["--spp", "1"] + options)
         grid = (stats.get("frames") or [{}])[0].get("grid")
         if grid:
@@ -415,15 +571,12 @@ def radcache_rows(runs, measured, first_stats, reference, out):
         stats = first_stats[index]
         frame = stats["frames"][0] if stats.get("frames") else {}
         grid = frame.get("grid", {})
-        row = {"method": method, "curve": curve, "setting": setting,
-               "spp": knobs.get("spp", ""), "accuracy": knobs.get("accuracy", ""),
-               "ic_rays": knobs.get("ic_rays", ""),
-               "ic_min_spacing": knobs.get("ic_min_spacing", ""),
-               "rc_rays": knobs.get("rc_rays", ""),
-               "sdrc_interp": knobs.get("sdrc_interp", ""),
-               "grid": "x".join(str(c) for c in grid["cells"]) if grid else "",
-               "photons": grid.get("photons", ""), "gather_rays": knobs.get("gather_rays", ""),
-               "records": frame.get("records", ""), "device": stats["device"]}
+        row = {column: knobs.get(column, "") for column in KNOB_COLUMNS}
+        row.update({"method": method, "curve": curve, "setting": setting,
+                    "spp": knobs.get("spp", stats.get("spp", "")),
+                    "grid": "x".join(str(c) for c in grid["cells"]) if grid else "",
+                    "photons": grid.get("photons", ""), "records": frame.get("records", ""),
+                    "device": stats["device"]})
         row.update(time_columns(measured[index]))
         measure(row, os.path.join(out, name + ".exr"), reference, out, name)
         rows.append(row)
@@ -489,8 +642,20 @@ def parse_arguments(argv):
                         help="reference image (default: the scene's shipped one for the frame)")
     parser.add_argument("--repeats", type=int, default=3,
                         help="timed renders of every point (default 3; at least 1)")
-    parser.add_argument("--methods", nargs="+", default=["pt", "ic"], choices=METHODS,
-                        help="default: %(default)s")
+    parser.add_argument("--methods", nargs="+", metavar="METHOD",
+                        help="radcache's methods with quality knobs (render --list-knobs), in "
+                             "its order, ic-ivg (ic with --ic-ivg) beside ic, or all (default: "
+                             "%s; none with --ladder)" % " ".join(DEFAULT_METHODS))
+    parser.add_argument("--ladder", action="append", default=[],
+                        metavar="METHOD:OPTION[=V1,V2,...]",
+                        help="one more curve: METHOD with its quality knob OPTION at each value "
+                             "in turn, every other option at its default; without values, %d "
+                             "from the knob's default towards accuracy (x%g or /%g a step, "
+                             "within its range) or a choice knob's choices; repeatable" % (
+                                 sweep_knobs.LADDER_STEPS, sweep_knobs.INCREASE_STEP,
+                                 sweep_knobs.DECREASE_STEP))
+    parser.add_argument("--ladder-spp", type=int,
+                        help="--ladder curves' camera samples per pixel (default: the scene's)")
     parser.add_argument("--pt-spp", nargs="+", type=int,
                         default=[1, 2, 4, 8, 16, 32, 64, 128, 256, 512],
                         help="pt's samples per pixel (default: %(default)s)")
@@ -549,6 +714,10 @@ def parse_arguments(argv):
     else:
         args = parser.parse_args(argv)
         args.extra = []
+    if args.methods is None:
+        args.methods = [] if args.ladder else DEFAULT_METHODS
+    if args.ladder_spp is not None and args.ladder_spp < 1:
+        parser.error("--ladder-spp: must be positive, got %d" % args.ladder_spp)
     for name in ("pt_spp", "ic_rays", "ic_spp", "rc_rays", "sdrc_interp", "ivg_photons",
                  "gather_rays", "decomp_rays"):
         if any(v < 1 for v in getattr(args, name)):
@@ -571,9 +740,19 @@ def parse_arguments(argv):
     return args
 
 
-def check_tools(repeats):
+def radcache_tables():
+    """radcache's option tables, once, the curated curves checked against them."""
     if not os.access(RADCACHE, os.X_OK):
         fail("build radcache first (see README): %s is missing" % RADCACHE)
+    tables = sweep_knobs.read_tables(run_radcache)
+    try:
+        check_curated(tables)
+    except sweep_knobs.KnobError as e:
+        fail(str(e))
+    return tables
+
+
+def check_tools(repeats):
     if not flip_available():
         print("sweep: warning: flip-evaluator is not installed (python3 -m pip install -r "
               "tools/requirements.txt): the flip column stays empty", file=sys.stderr)
@@ -611,22 +790,30 @@ def write_outputs(report, out, crop):
 
 def main(argv):
     args = parse_arguments(argv)
+    tables = radcache_tables()
+    methods = selected_methods(args.methods, tables)
+    ladders = sweep_ladders(args, methods, tables)
     check_tools(args.repeats)
     scene, reference, frame, animated = scene_paths(args.scene, args.reference, args.frame)
     check_reference_size(reference, args.width, args.height)
     scene_name = os.path.basename(os.path.dirname(scene))
     out = os.path.abspath(args.out or os.path.join(ROOT, "build", "sweep", scene_name))
-    os.makedirs(out, exist_ok=True)
     options = ["--frames", "%d:%d" % (frame, frame)] if animated else []
     if args.width:
         options += ["--width", str(args.width)]
     if args.height:
         options += ["--height", str(args.height)]
     options += args.extra
+    ladder_spp = ["--spp", str(args.ladder_spp)] if args.ladder_spp else []
+    try:
+        sweep_knobs.check_values(ladders, RADCACHE, ladder_spp + options)
+    except sweep_knobs.KnobError as e:
+        fail(str(e))
+    os.makedirs(out, exist_ok=True)
 
-    methods = [m for m in METHODS if m in args.methods]
-    auto_cells = warm_up(scene, out, methods, options)
-    runs = radcache_runs(args, auto_cells)
+    names = list(collections.OrderedDict.fromkeys(methods + [l.name for l in ladders]))
+    auto_cells = warm_up(scene, out, names, tables, options)
+    runs = radcache_runs(args, methods, ladders, auto_cells)
     measured, first_stats = run_points(scene, runs, out, options, args.repeats)
     rows = radcache_rows(runs, measured, first_stats, reference, out)
     if args.povray is not None:
