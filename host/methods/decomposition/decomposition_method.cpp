@@ -172,6 +172,7 @@ OptionTable<DecompositionOptions> decomposition_table() {
         .integer("--decomp-traced-points", "N", &O::traced_samples, 1, 1024,
                  "gathered radiosity: points per split triangle at which the B(t) of those no "
                  "far-field sample covers is path traced")
+        .knob(KnobDirection::kIncrease)
         .choice<bool>("--decomp-visibility", &O::visibility_rays,
                       {{"heuristic", false}, {"rays", true}},
                       "which near triangles count: heuristic (the paper's: all but the "
@@ -187,6 +188,7 @@ OptionTable<DecompositionOptions> decomposition_table() {
         .integer("--decomp-iterations", "K", &O::source_iterations, 1, 64,
                  "--decomp-source radiosity: iterations of the split triangles' radiosity and the "
                  "far field's fits, no ray each")
+        .knob(KnobDirection::kIncrease)
         .on_off("--decomp-extrapolate", &O::source_extrapolate,
                 "--decomp-source radiosity: add the bounces the iterations left out as a "
                 "geometric tail, its ratio that of the last two changes (on) or stop at the last "
