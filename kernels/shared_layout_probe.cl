@@ -1,5 +1,5 @@
-// Test kernel (tests/shared_layout_test.cpp): reports sizeof and offsetof of every shared struct
-// as the device compiler lays them out, in the order of RC_SHARED_LAYOUTS.
+// Test kernel (tests/shared/shared_layout_test.cpp): reports sizeof and offsetof of every shared
+// struct as the device compiler lays them out, in the order of RC_SHARED_LAYOUTS.
 #include "shared/types.h"
 
 __kernel void report_shared_layouts(uint begin, uint end, __global uint* out) {

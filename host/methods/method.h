@@ -85,7 +85,7 @@ class Method {
     virtual FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) = 0;
     // Every program its frames will build (Context::program's entry and options), for the
     // render to start them all at once in the background (issue 14). Exactly those: a test
-    // renders every method and compares (tests/prebuild_test.cpp).
+    // renders every method and compares (tests/methods/prebuild_test.cpp).
     virtual std::vector<ProgramRequest> programs() const = 0;
     // The device memory its buffers hold together at their peak while it renders a frame of
     // `scene`, beside the scene's and the BVH's (device/memory_need.h), from its options before

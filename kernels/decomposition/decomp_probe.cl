@@ -1,5 +1,5 @@
-// Test kernels of irradiance decomposition (tests/decomposition_test.cpp,
-// tests/shared_layout_test.cpp): the shared layouts, the form factor, the distant term, the
+// Test kernels of irradiance decomposition (tests/decomposition/decomposition_test.cpp,
+// tests/shared/shared_layout_test.cpp): the shared layouts, the form factor, the distant term, the
 // near correction, the hidden distant power and the split triangles' radiosity points, each on
 // given inputs (the fit's own kernel, decomp_fit, is the method's).
 #include "decomposition/decomp_far.h"

@@ -1,5 +1,6 @@
-// Test kernels of radiance caching's foundations (tests/sh_*_test.cpp, tests/brdf_table_test.cpp,
-// tests/rc_layout_test.cpp; `radcache bench sh`). Item index: begin + get_global_id(0).
+// Test kernels of radiance caching's foundations (tests/radiance_cache/,
+// tests/shared/sh_*_test.cpp, tests/shared/shared_layout_test.cpp; `radcache bench sh`). Item
+// index: begin + get_global_id(0).
 #include "radiance_cache/rc_brdf_table.h"
 #include "radiance_cache/rc_gradients.h"
 #include "radiance_cache/rc_interpolation.h"

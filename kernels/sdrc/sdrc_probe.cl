@@ -1,5 +1,5 @@
-// Test kernels of SDRC's L-tree (tests/shared_layout_test.cpp, tests/sdrc_ltree_test.cpp). Item
-// index: begin + get_global_id(0).
+// Test kernels of SDRC's L-tree (tests/shared/shared_layout_test.cpp,
+// tests/sdrc/sdrc_ltree_test.cpp). Item index: begin + get_global_id(0).
 #include "sdrc/ltree.h"
 #include "shared/sdrc.h"
 

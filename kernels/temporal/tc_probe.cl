@@ -1,5 +1,5 @@
-// Test kernels of temporal caching (tests/shared_layout_test.cpp, tests/temporal_kernels_test.cpp).
-// Item index: begin + get_global_id(0).
+// Test kernels of temporal caching (tests/shared/shared_layout_test.cpp,
+// tests/temporal/temporal_kernels_test.cpp). Item index: begin + get_global_id(0).
 #include "shared/temporal.h"
 #include "temporal/tc_reprojection.h"
 
