@@ -99,6 +99,15 @@ class Method {
     virtual bool splits_across_devices() const { return false; }
 };
 
+// What a method's beauty layer holds.
+enum class Beauty {
+    kRadiance,  // the radiance the camera sees: the scene's light, in its units
+    // A geometry preview, not light: the first hit's shading normal n, turned to face the
+    // camera, as (n + 1) / 2 times 0.25 + 0.75 |c| (c the cosine between n and the camera ray);
+    // black where the ray escapes.
+    kNormalPreview,
+};
+
 // A method as the registry lists it.
 struct MethodEntry {
     std::string name;     // --method NAME
@@ -112,6 +121,7 @@ struct MethodEntry {
     std::function<std::unique_ptr<Method>(const ParsedArguments& arguments,
                                           const MethodSettings& settings)>
         create;
+    Beauty beauty = Beauty::kRadiance;
 };
 
 }  // namespace rc

@@ -59,7 +59,8 @@ MethodEntry normals_method_entry() {
             {"beauty"},
             [](const ParsedArguments&, const MethodSettings& settings) {
                 return std::make_unique<NormalsPreview>(settings);
-            }};
+            },
+            Beauty::kNormalPreview};
 }
 
 }  // namespace rc
