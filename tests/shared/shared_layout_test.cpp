@@ -1,8 +1,8 @@
-// Host and device agree on the layout of every shared struct: RC_SHARED_LAYOUTS
-// (kernels/shared/types.h) and radiance caching's RC_RADIANCE_CACHE_LAYOUTS
-// (kernels/shared/radiance_cache.h), SDRC's RC_SDRC_LAYOUTS (kernels/shared/sdrc.h), temporal
-// caching's RC_TEMPORAL_LAYOUTS (kernels/shared/temporal.h) and irradiance decomposition's
-// RC_DECOMP_LAYOUTS (kernels/shared/decomposition.h), each reported by its probe kernel.
+// Host and device agree on the layout of every shared struct: each header of kernels/shared/ lists
+// its structs and fields in an X-macro (RC_SHARED_LAYOUTS in types.h, RC_RADIANCE_CACHE_LAYOUTS,
+// RC_SDRC_LAYOUTS, RC_TEMPORAL_LAYOUTS, RC_DECOMP_LAYOUTS), whose sizes and offsets the host
+// compiler gives here and the device's one probe kernel reports (kernels/shared_layout_probe.cl,
+// built once per list with the list's name).
 #include <gtest/gtest.h>
 
 #include "shared/decomposition.h"
@@ -34,44 +34,44 @@ struct Layouts {
     host.values.push_back(static_cast<unsigned>(offsetof(shared::type, field))); \
     host.names.push_back("offsetof(" #type ", " #field ")");
 
-void expect_device_matches(const Layouts& host, const std::string& file,
-                           const std::string& kernel_name) {
+struct LayoutList {
+    std::string name;  // the X-macro's
+    Layouts host;
+};
+
+void PrintTo(const LayoutList& list, std::ostream* out) { *out << list.name; }
+
+#define RC_LAYOUT_LIST(LIST) \
+    LayoutList { #LIST, RC_HOST_LAYOUTS(LIST) }
+
+const LayoutList kLayoutLists[] = {
+    RC_LAYOUT_LIST(RC_SHARED_LAYOUTS), RC_LAYOUT_LIST(RC_RADIANCE_CACHE_LAYOUTS),
+    RC_LAYOUT_LIST(RC_SDRC_LAYOUTS),   RC_LAYOUT_LIST(RC_TEMPORAL_LAYOUTS),
+    RC_LAYOUT_LIST(RC_DECOMP_LAYOUTS),
+};
+
+class SharedLayout : public testing::TestWithParam<LayoutList> {};
+
+TEST_P(SharedLayout, DeviceMatchesHost) {
+    const LayoutList& list = GetParam();
     Context& context = test::shared_context();
-    Kernel kernel = context.kernel(file, kernel_name);
-    Buffer<unsigned> out(context, host.values.size(), "layouts");
+    Kernel kernel =
+        context.kernel("shared_layout_probe.cl", "report_layouts", "-DRC_LAYOUT_LIST=" + list.name);
+    Buffer<unsigned> out(context, list.host.values.size(), "layouts");
     out.fill_zero();
     context.launch(kernel, 1, out);
     const std::vector<unsigned> device = out.download();
-    ASSERT_EQ(device.size(), host.values.size());
-    for (size_t i = 0; i < host.values.size(); ++i) {
-        EXPECT_EQ(device[i], host.values[i]) << host.names[i];
+    ASSERT_EQ(device.size(), list.host.values.size());
+    ASSERT_GT(device.size(), 1u);
+    for (size_t i = 0; i < device.size(); ++i) {
+        EXPECT_EQ(device[i], list.host.values[i]) << list.host.names[i];
     }
 }
 
-TEST(SharedLayout, DeviceMatchesHost) {
-    expect_device_matches(RC_HOST_LAYOUTS(RC_SHARED_LAYOUTS), "shared_layout_probe.cl",
-                          "report_shared_layouts");
-}
-
-TEST(SharedLayout, RadianceCacheDeviceMatchesHost) {
-    expect_device_matches(RC_HOST_LAYOUTS(RC_RADIANCE_CACHE_LAYOUTS), "radiance_cache/rc_probe.cl",
-                          "rc_report_layouts");
-}
-
-TEST(SharedLayout, SdrcDeviceMatchesHost) {
-    expect_device_matches(RC_HOST_LAYOUTS(RC_SDRC_LAYOUTS), "sdrc/sdrc_probe.cl",
-                          "sdrc_report_layouts");
-}
-
-TEST(SharedLayout, DecompositionDeviceMatchesHost) {
-    expect_device_matches(RC_HOST_LAYOUTS(RC_DECOMP_LAYOUTS), "decomposition/decomp_probe.cl",
-                          "decomp_report_layouts");
-}
-
-TEST(SharedLayout, TemporalDeviceMatchesHost) {
-    expect_device_matches(RC_HOST_LAYOUTS(RC_TEMPORAL_LAYOUTS), "temporal/tc_probe.cl",
-                          "tc_report_layouts");
-}
+INSTANTIATE_TEST_SUITE_P(EveryHeader, SharedLayout, testing::ValuesIn(kLayoutLists),
+                         [](const testing::TestParamInfo<LayoutList>& info) {
+                             return info.param.name;
+                         });
 
 }  // namespace
 }  // namespace rc
