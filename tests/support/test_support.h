@@ -69,8 +69,9 @@ std::filesystem::path scratch_dir(const std::string& name);
 bool declares(const MethodEntry& method, const std::string& option);
 
 // Options that make a render with `method` small and quick: its costliest knobs turned down
-// (record rays, photons, gather rays, ...) where it declares them and `options`, the render's
-// other options, leave them unset; the grid's photons only where `options` make a grid.
+// (record rays, photons, gather rays, split triangles, ...) where it declares them and `options`,
+// the render's other options, leave them unset; the grid's photons only where `options` make a
+// grid.
 std::vector<std::string> quick_method_options(const MethodEntry& method,
                                               const std::vector<std::string>& options = {});
 
