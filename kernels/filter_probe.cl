@@ -1,4 +1,5 @@
-// Test kernel (tests/pixel_filter_test.cpp): camera sample positions drawn from the pixel filter.
+// Test kernel (tests/common/pixel_filter_test.cpp): camera sample positions drawn from the pixel
+// filter.
 #include "common/pixel_filter.h"
 
 // out[i]: the position of the sample of pixels[i] drawn with uvs[i].

@@ -1,6 +1,7 @@
-// Test kernel (tests/ivg_visibility_test.cpp): the corners of its grid cell a lookup's surface
-// point sees, by rc_ivg_visible_corners (the cell's supporting planes, shadow rays for the rest)
-// and by a shadow ray to every corner, as the lookup traced them before the cells had planes.
+// Test kernel (tests/irradiance_vector_grid/ivg_visibility_test.cpp): the corners of its grid cell
+// a lookup's surface point sees, by rc_ivg_visible_corners (the cell's supporting planes, shadow
+// rays for the rest) and by a shadow ray to every corner, as the lookup traced them before the
+// cells had planes.
 #include "common/ivg_visibility.h"
 #include "scene_arguments.h"
 

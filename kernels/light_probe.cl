@@ -1,6 +1,6 @@
-// Test kernels (tests/light_sampling_test.cpp, tests/direct_light_test.cpp): next-event
-// estimation's light sampling from one point, the density MIS evaluates for a direction, the
-// spherical-triangle sampler, and the direct light of a Lambertian point.
+// Test kernels (tests/common/light_sampling_test.cpp, tests/common/direct_light_test.cpp):
+// next-event estimation's light sampling from one point, the density MIS evaluates for a direction,
+// the spherical-triangle sampler, and the direct light of a Lambertian point.
 #include "common/light.h"
 #include "common/path_radiance.h"
 #include "scene_arguments.h"

@@ -1,5 +1,5 @@
-// Test kernels (tests/material_test.cpp): sampling, evaluation and pdf of one material for one
-// outgoing direction, in the local shading frame.
+// Test kernels (tests/common/material_test.cpp): sampling, evaluation and pdf of one material for
+// one outgoing direction, in the local shading frame.
 #include "common/material.h"
 #include "shared/rng.h"
 

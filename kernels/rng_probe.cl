@@ -1,4 +1,5 @@
-// Test kernels (tests/rng_test.cpp): the device's counter-based RNG, for comparison with the host.
+// Test kernels (tests/shared/rng_test.cpp): the device's counter-based RNG, for comparison with the
+// host.
 #include "shared/rng.h"
 
 // Philox4x32-10 of the counter and key in inputs[6i .. 6i+5] into outputs[4i .. 4i+3].

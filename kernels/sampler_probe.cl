@@ -1,4 +1,5 @@
-// Test kernel (tests/pixel_filter_test.cpp): camera sample positions drawn by the pixel sampler.
+// Test kernel (tests/common/pixel_filter_test.cpp): camera sample positions drawn by the pixel
+// sampler.
 #include "common/pixel_sampler.h"
 
 // out[i]: the image position of camera sample samples[i] of pixels[i] with seed (seed_lo, seed_hi).

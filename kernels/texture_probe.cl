@@ -1,4 +1,4 @@
-// Test kernel (tests/texture_test.cpp): texture lookups at given coordinates.
+// Test kernel (tests/scene/texture_test.cpp): texture lookups at given coordinates.
 #include "common/texture.h"
 
 __kernel void texture_lookup_probe(uint begin, uint end, TextureInfo info,

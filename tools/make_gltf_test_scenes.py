@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the glTF 2.0 test scenes of tests/data/gltf/ (tests/gltf_test.cpp): json with base64
+"""Writes the glTF 2.0 test scenes of tests/data/gltf/ (tests/scene/gltf_test.cpp): json with base64
 buffers, written from scratch (no library):
 
   cornell-box.gltf   scenes/cornell-box as glTF: the same meshes (quads split 0-1-2, 0-2-3), the

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the pbrt-v4 test scenes of tests/data/pbrt/ (tests/pbrt_test.cpp), from scratch (no
+"""Writes the pbrt-v4 test scenes of tests/data/pbrt/ (tests/scene/pbrt_test.cpp), from scratch (no
 library):
 
   cornell-box.pbrt   scenes/cornell-box in pbrt-v4's format: the same meshes as "trianglemesh"

@@ -71,7 +71,7 @@ class Method {
     virtual FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) = 0;
     // Every program its frames will build (Context::program's entry and options), for the
     // render to start them all at once in the background. Exactly those: a test
-    // renders every method and compares (tests/prebuild_test.cpp).
+    // renders every method and compares (tests/methods/prebuild_test.cpp).
     virtual std::vector<ProgramRequest> programs() const = 0;
     // The device memory its buffers hold together at their peak while it renders a frame of
     // `scene`, beside the scene's and the BVH's (device/memory_need.h), from its options before
@@ -83,6 +83,15 @@ class Method {
     // Whether its frames can share their work among several devices (FrameScene::peers) with an
     // image that does not depend on the split; a render on several devices refuses the others.
     virtual bool splits_across_devices() const { return false; }
+};
+
+// What a method's beauty layer holds.
+enum class Beauty {
+    kRadiance,  // the radiance the camera sees: the scene's light, in its units
+    // A geometry preview, not light: the first hit's shading normal n, turned to face the
+    // camera, as (n + 1) / 2 times 0.25 + 0.75 |c| (c the cosine between n and the camera ray);
+    // black where the ray escapes.
+    kNormalPreview,
 };
 
 // A method's options as read from the command line, once (its own options struct).
@@ -111,6 +120,7 @@ struct MethodEntry {
     // The value of each option of `table` in `options`, in the table's order, as the option
     // takes it ("0.35", "auto", "8px").
     std::function<std::vector<std::string>(const MethodOptions& options)> values;
+    Beauty beauty = Beauty::kRadiance;
 };
 
 // What a method's folder declares: its table over its options struct, the rules its options
@@ -122,6 +132,7 @@ struct MethodDefinition {
     std::string name;
     std::string summary;
     std::vector<std::string> aovs;
+    Beauty beauty = Beauty::kRadiance;
     OptionTable<Options> table;
     std::function<void(Options& options, const ParsedArguments& arguments)> finish;
     std::function<void(const Options& options, const MethodSettings& settings)> check;
@@ -135,6 +146,7 @@ MethodEntry method_entry(MethodDefinition<Options> definition) {
     entry.name = definition.name;
     entry.summary = definition.summary;
     entry.aovs = definition.aovs;
+    entry.beauty = definition.beauty;
     entry.table = definition.table.infos();
     for (const OptionInfo& info : entry.table) {
         entry.options.push_back(info.spec);

@@ -1,26 +1,13 @@
-// Test kernels of irradiance decomposition (tests/decomposition_test.cpp,
-// tests/shared_layout_test.cpp): the shared layouts, the form factor, the distant term, the
-// near correction, the hidden distant power and the split triangles' radiosity points, each on
-// given inputs (the fit's own kernel, decomp_fit, is the method's).
+// Test kernels of irradiance decomposition (tests/decomposition/decomposition_test.cpp): the form
+// factor, the distant term, the near correction, the hidden distant power and the split
+// triangles' radiosity points, each on given inputs (the fit's own kernel, decomp_fit, is the
+// method's).
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_form_factor.h"
 #include "decomposition/decomp_near.h"
 #include "decomposition/decomp_radiosity.h"
 #include "scene_arguments.h"
 #include "shared/decomposition.h"
-
-// sizeof and offsetof of every struct of RC_DECOMP_LAYOUTS, in its order.
-__kernel void decomp_report_layouts(uint begin, uint end, __global uint* out) {
-    if (begin + (uint)get_global_id(0) != 0u || end == 0u) {
-        return;
-    }
-    uint i = 0;
-#define RC_REPORT_STRUCT(type) out[i++] = (uint)sizeof(type);
-#define RC_REPORT_FIELD(type, field) out[i++] = (uint)rc_offsetof(type, field);
-    RC_DECOMP_LAYOUTS(RC_REPORT_STRUCT, RC_REPORT_FIELD)
-#undef RC_REPORT_STRUCT
-#undef RC_REPORT_FIELD
-}
 
 // Item i: FF of triangles[i] to the differential area at points[i] with unit normal normals[i].
 __kernel void decomp_form_factors(uint begin, uint end, __global const float4* points,

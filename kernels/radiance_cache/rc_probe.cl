@@ -1,5 +1,5 @@
-// Test kernels of radiance caching's foundations (tests/sh_*_test.cpp, tests/brdf_table_test.cpp,
-// tests/rc_layout_test.cpp; `radcache bench sh`). Item index: begin + get_global_id(0).
+// Test kernels of radiance caching's foundations (tests/radiance_cache/,
+// tests/shared/sh_*_test.cpp; `radcache bench sh`). Item index: begin + get_global_id(0).
 #include "radiance_cache/rc_brdf_table.h"
 #include "radiance_cache/rc_gradients.h"
 #include "radiance_cache/rc_interpolation.h"
@@ -161,19 +161,6 @@ __kernel void rc_brdf_lookup_probe(uint begin, uint end, BrdfTableInfo info, int
         out[i * count + k] = c[k];
     }
     out_orders[i] = rc_brdf_table_order(orders, &info, wo[i].xyz);
-}
-
-// sizeof and offsetof of every radiance-caching shared struct, in RC_RADIANCE_CACHE_LAYOUTS order.
-__kernel void rc_report_layouts(uint begin, uint end, __global uint* out) {
-    if (begin + (uint)get_global_id(0) != 0u || end == 0u) {
-        return;
-    }
-    uint i = 0;
-#define RC_REPORT_STRUCT(type) out[i++] = (uint)sizeof(type);
-#define RC_REPORT_FIELD(type, field) out[i++] = (uint)rc_offsetof(type, field);
-    RC_RADIANCE_CACHE_LAYOUTS(RC_REPORT_STRUCT, RC_REPORT_FIELD)
-#undef RC_REPORT_STRUCT
-#undef RC_REPORT_FIELD
 }
 
 // Item i = record * m n + cell: the radiance and distance (w) that cell `cell`'s ray brings to a

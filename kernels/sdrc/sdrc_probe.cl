@@ -1,20 +1,7 @@
-// Test kernels of SDRC's L-tree (tests/shared_layout_test.cpp, tests/sdrc_ltree_test.cpp). Item
-// index: begin + get_global_id(0).
+// Test kernels of SDRC's L-tree (tests/sdrc/sdrc_ltree_test.cpp). Item index: begin +
+// get_global_id(0).
 #include "sdrc/ltree.h"
 #include "shared/sdrc.h"
-
-// sizeof and offsetof of every SDRC shared struct, in RC_SDRC_LAYOUTS order.
-__kernel void sdrc_report_layouts(uint begin, uint end, __global uint* out) {
-    if (begin + (uint)get_global_id(0) != 0u || end == 0u) {
-        return;
-    }
-    uint i = 0;
-#define RC_REPORT_STRUCT(type) out[i++] = (uint)sizeof(type);
-#define RC_REPORT_FIELD(type, field) out[i++] = (uint)rc_offsetof(type, field);
-    RC_SDRC_LAYOUTS(RC_REPORT_STRUCT, RC_REPORT_FIELD)
-#undef RC_REPORT_STRUCT
-#undef RC_REPORT_FIELD
-}
 
 // Item q: rc_ltree_query of record records[q]'s L-tree (trees[records[q]] over `nodes`) at
 // queries[q] (x: u, y: v, z: radius). counts[q]: the samples found; sums[q]: xyz the weighted

@@ -153,7 +153,7 @@ typedef struct DecompIrradiance {
 RC_SHARED_END
 
 // The decomposition's structs and fields, for the host/device layout comparison
-// (tests/shared_layout_test.cpp).
+// (tests/shared/shared_layout_test.cpp).
 // clang-format off
 #define RC_DECOMP_LAYOUTS(STRUCT, FIELD)        \
     STRUCT(DecompParams)                        \

@@ -94,7 +94,7 @@ typedef struct RcParams {
 RC_SHARED_END
 
 // The radiance-caching structs and fields, for the host/device layout comparison
-// (tests/shared_layout_test.cpp).
+// (tests/shared/shared_layout_test.cpp).
 // clang-format off
 #define RC_RADIANCE_CACHE_LAYOUTS(STRUCT, FIELD)    \
     STRUCT(BrdfTableInfo)                           \

@@ -87,7 +87,7 @@ typedef struct SdrcParams {
 RC_SHARED_END
 
 // The SDRC structs and fields, for the host/device layout comparison
-// (tests/shared_layout_test.cpp).
+// (tests/shared/shared_layout_test.cpp).
 // clang-format off
 #define RC_SDRC_LAYOUTS(STRUCT, FIELD)  \
     STRUCT(LTreeNode)                   \
@@ -151,7 +151,7 @@ RC_FUNC uint rc_ltree_node_v(uint position) { return (position >> 8) & 255u; }
 // Ward's shared-exponent RGB (Ward, "Real Pixels", Graphics Gems II, 1991): with m the largest
 // channel, m = f 2^e, f in [0.5, 1), each channel c is stored as floor(c 256 / 2^e) and e + 128;
 // decoding returns the cell's centre, (byte + 0.5) 2^(e - 8), so every channel is within
-// m / 256 of its value (the bound tests/sdrc_ltree_test.cpp checks). Below 1e-32 (and for
+// m / 256 of its value (the bound tests/sdrc/sdrc_ltree_test.cpp checks). Below 1e-32 (and for
 // negative or NaN input) the colour is black, a NaN channel beside finite ones reads 0; m is
 // capped below 2^127.
 RC_FUNC uint rc_rgbe_encode(float r, float g, float b) {

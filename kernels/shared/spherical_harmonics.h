@@ -28,8 +28,8 @@ using std::sqrt;  // the float overload, as OpenCL C's sqrt
 RC_SHARED_BEGIN
 
 // The recurrence's constants (see rc_sh_eval), in single precision: Q_m^m, sqrt(2m + 3), and
-// a_l^m, b_l^m at [l RC_SH_MAX_ORDER + m] (zero where unused). tests/sh_basis_test.cpp checks
-// every entry against its formula.
+// a_l^m, b_l^m at [l RC_SH_MAX_ORDER + m] (zero where unused). tests/shared/sh_basis_test.cpp
+// checks every entry against its formula.
 // clang-format off
 RC_CONSTANT const float rc_sh_diagonal[RC_SH_MAX_ORDER] = {
     0.282094792f, 0.345494149f, 0.386274202f, 0.417223824f, 0.442532692f,

@@ -53,7 +53,8 @@ typedef struct TcCarriedSample {
 
 RC_SHARED_END
 
-// The temporal structs and fields, for tests/shared_layout_test.cpp (kernels/temporal/tc_probe.cl).
+// The temporal structs and fields, for the host/device layout comparison
+// (tests/shared/shared_layout_test.cpp).
 // clang-format off
 #define RC_TEMPORAL_LAYOUTS(STRUCT, FIELD)   \
     STRUCT(TcEmitter)                        \

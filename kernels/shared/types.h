@@ -1,7 +1,7 @@
 // Plain structs shared by the host (C++) and the kernels (OpenCL C). Only float, int, uint, uchar
 // arrays and 4-wide vectors, explicitly padded: no float3, whose size differs between host and
-// device. tests/shared_layout_test.cpp compares every layout listed in RC_SHARED_LAYOUTS on the
-// device.
+// device. tests/shared/shared_layout_test.cpp compares every layout listed in RC_SHARED_LAYOUTS on
+// the device.
 #pragma once
 
 #include "compat.h"

@@ -1,20 +1,7 @@
-// Test kernels of temporal caching (tests/shared_layout_test.cpp, tests/temporal_kernels_test.cpp).
-// Item index: begin + get_global_id(0).
+// Test kernels of temporal caching (tests/temporal/temporal_kernels_test.cpp). Item index: begin +
+// get_global_id(0).
 #include "shared/temporal.h"
 #include "temporal/tc_reprojection.h"
-
-// sizeof and offsetof of every temporal shared struct, in RC_TEMPORAL_LAYOUTS order.
-__kernel void tc_report_layouts(uint begin, uint end, __global uint* out) {
-    if (begin + (uint)get_global_id(0) != 0u || end == 0u) {
-        return;
-    }
-    uint i = 0;
-#define RC_REPORT_STRUCT(type) out[i++] = (uint)sizeof(type);
-#define RC_REPORT_FIELD(type, field) out[i++] = (uint)rc_offsetof(type, field);
-    RC_TEMPORAL_LAYOUTS(RC_REPORT_STRUCT, RC_REPORT_FIELD)
-#undef RC_REPORT_STRUCT
-#undef RC_REPORT_FIELD
-}
 
 // Item q: the unshadowed irradiance from emitters[0 .. count) at point queries[2q] with normal
 // queries[2q + 1], into out[q].

@@ -60,6 +60,7 @@ MethodEntry normals_method_entry() {
         {.name = "normals",
          .summary = "geometry preview: the first hit's shading normal",
          .aovs = {"beauty"},
+         .beauty = Beauty::kNormalPreview,
          .table = {},
          .finish = nullptr,
          .check = nullptr,

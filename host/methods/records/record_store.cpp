@@ -159,7 +159,7 @@ size_t RecordStore::insert_batch(const std::vector<NewRecord>& batch) {
     // none lowers another. Each round reads the radii of the round before (the bounds are
     // collected before any is applied) and takes the least bound per record, and float addition
     // is monotone, so every order, split over threads or not, ends at the same fixed point, bit
-    // for bit (tests/record_store_test.cpp checks it against brute force over every pair).
+    // for bit (tests/records/record_store_test.cpp checks it against brute force over every pair).
     lower(pulled_bounds(added));
     std::vector<uint32_t> changed = std::move(added);
     while (!changed.empty()) {

@@ -1,6 +1,6 @@
 // Light sampling for next-event estimation (kernels/common/light.h): lights chosen in
 // proportion to power, points uniform by area on area lights (the strategy for triangles under a
-// small solid angle; tests/solid_angle_sampling_test.cpp tests the other), pdfs that are the
+// small solid angle; tests/common/solid_angle_sampling_test.cpp tests the other), pdfs that are the
 // solid-angle densities, and the radiance of point and spot lights.
 #include <gtest/gtest.h>
 

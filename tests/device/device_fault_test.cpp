@@ -1,8 +1,9 @@
-// Device faults (issue 17): every OpenCL call site that a small render of each method reaches is
-// made to fail in turn (host/device/fault_injection.h), at its first call and at its last. Each
-// failure must name the call and the error in one line, end the render with exit status 1, leave
-// no output file (nor a temporary) behind, and release every OpenCL object it created. The only
-// faults a render survives are those of a kernel cache entry, which is rebuilt from source.
+// Device faults (issue 17): every OpenCL call site that a small render of each registered method
+// reaches is made to fail in turn (host/device/fault_injection.h), at its first call and at its
+// last. Each failure must name the call and the error in one line, end the render with exit
+// status 1, leave no output file (nor a temporary) behind, and release every OpenCL object it
+// created. The only faults a render survives are those of a kernel cache entry, which is rebuilt
+// from source.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include "app/commands.h"
 #include "device/cl_error.h"
 #include "device/fault_injection.h"
+#include "methods/registry.h"
 #include "test_support.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -308,49 +310,58 @@ SmallRender only_first_calls(SmallRender render) {
     return render;
 }
 
-const SmallRender kRadianceCache = {
-    "rc", "rc", "phong", {"--ic-rays", "16", "--ic-bounces", "1", "--rc-rays", "16"}, {}};
+// A small render of every registered method: its costliest knobs turned down, one cache level
+// where it has levels, a method with a glossy layer on the Phong scene and in two cases (its
+// first calls, its last calls), each of whose renders builds the scene's BRDF tables. Then the
+// options that reach more call sites.
+std::vector<SmallRender> small_renders() {
+    std::vector<SmallRender> renders;
+    for (const MethodEntry& method : method_registry()) {
+        std::vector<std::string> options = test::quick_method_options(method);
+        if (test::declares(method, "--ic-bounces")) {
+            options.insert(options.end(), {"--ic-bounces", "1"});
+        }
+        const bool glossy = std::find(method.aovs.begin(), method.aovs.end(), "glossy-indirect") !=
+                            method.aovs.end();
+        const SmallRender render{
+            method.name, method.name, glossy ? "phong" : "cornell-box/scene.json", options, {}};
+        if (glossy) {
+            renders.push_back(only_first_calls(render));
+            renders.push_back(only_last_calls(render));
+        } else {
+            renders.push_back(render);
+        }
+    }
+    // Every program built from source: the compiler's call sites.
+    renders.push_back(
+        {"normals-uncached", "normals", "cornell-box/scene.json", {"--no-kernel-cache"}, {}});
+    // The record cache written.
+    renders.push_back({"ic-cache-out",
+                       "ic",
+                       "cornell-box/scene.json",
+                       {"--ic-rays", "16", "--ic-bounces", "1", "--cache-out", "DIR/cache.rcc"},
+                       {"cache.rcc"}});
+    // Temporal caching: the reprojection's kernels and buffers, placed on the moving sphere.
+    renders.push_back({"ic-temporal",
+                       "ic",
+                       "moving-sphere/scene.json",
+                       {"--ic-rays", "16", "--ic-bounces", "1", "--temporal", "--frames", "0:0"},
+                       {}});
+    // The grid written.
+    renders.push_back({"ivg-grid-out",
+                       "ivg",
+                       "cornell-box/scene.json",
+                       {"--photons", "2000", "--grid", "4x4x4", "--grid-out", "DIR/grid.rcg"},
+                       {"grid.rcg"}});
+    return renders;
+}
 
-INSTANTIATE_TEST_SUITE_P(
-    Methods, DeviceFaultSweep,
-    testing::Values(
-        SmallRender{"pt", "pt", "cornell-box/scene.json", {}, {}},
-        SmallRender{"normals", "normals", "cornell-box/scene.json", {}, {}},
-        // Every program built from source: the compiler's call sites.
-        SmallRender{
-            "normals-uncached", "normals", "cornell-box/scene.json", {"--no-kernel-cache"}, {}},
-        SmallRender{"ic",
-                    "ic",
-                    "cornell-box/scene.json",
-                    {"--ic-rays", "16", "--ic-bounces", "1", "--cache-out", "DIR/cache.rcc"},
-                    {"cache.rcc"}},
-        // Temporal caching: the reprojection's kernels and buffers, placed on the moving sphere.
-        SmallRender{"ic-temporal",
-                    "ic",
-                    "moving-sphere/scene.json",
-                    {"--ic-rays", "16", "--ic-bounces", "1", "--temporal", "--frames", "0:0"},
-                    {}},
-        only_first_calls(kRadianceCache), only_last_calls(kRadianceCache),
-        SmallRender{"sdrc",
-                    "sdrc",
-                    "glossy-box/scene.json",
-                    {"--ic-rays", "16", "--ic-bounces", "1", "--sdrc-samples", "16"},
-                    {}},
-        SmallRender{"ivg",
-                    "ivg",
-                    "cornell-box/scene.json",
-                    {"--photons", "2000", "--grid", "4x4x4", "--grid-out", "DIR/grid.rcg"},
-                    {"grid.rcg"}},
-        SmallRender{"ivg-gather",
-                    "ivg-gather",
-                    "cornell-box/scene.json",
-                    {"--photons", "2000", "--grid", "4x4x4", "--gather-rays", "4"},
-                    {}}),
-    [](const testing::TestParamInfo<SmallRender>& info) {
-        std::string name = info.param.name;
-        std::replace(name.begin(), name.end(), '-', '_');
-        return name;
-    });
+INSTANTIATE_TEST_SUITE_P(Methods, DeviceFaultSweep, testing::ValuesIn(small_renders()),
+                         [](const testing::TestParamInfo<SmallRender>& info) {
+                             std::string name = info.param.name;
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
 
 }  // namespace
 }  // namespace rc

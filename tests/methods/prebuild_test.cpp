@@ -27,7 +27,10 @@ void PrintTo(const Case& c, std::ostream* out) { *out << c.name; }
 std::vector<Case> cases() {
     std::vector<Case> all;
     for (const MethodEntry& method : method_registry()) {
-        const bool glossy = method.name == "rc" || method.name == "sdrc";
+        // A method with a glossy layer renders a scene with glossy materials, whose programs it
+        // builds only there.
+        const bool glossy = std::find(method.aovs.begin(), method.aovs.end(), "glossy-indirect") !=
+                            method.aovs.end();
         all.push_back(
             {method.name, glossy ? "glossy-box" : "cornell-box", {"--method", method.name}});
     }
@@ -69,20 +72,9 @@ TEST_P(EveryMethodsPrograms, AreExactlyThoseItPrebuilds) {
         "--stats",  stats,
         "-q"};
     // Small settings for the options the method declares.
-    const MethodEntry& method = find_method(c.options.at(1));
-    const auto declares = [&](const std::string& option) {
-        return std::any_of(method.options.begin(), method.options.end(),
-                           [&](const OptionSpec& spec) { return spec.name == option; });
-    };
-    if (declares("--ic-rays")) {
-        args.insert(args.end(), {"--ic-rays", "32"});
-    }
-    const bool grid =
-        std::find(c.options.begin(), c.options.end(), "--ic-ivg") != c.options.end() ||
-        ((c.name == "ivg" || c.name == "ivg-gather" || c.name == "decomposition"));
-    if (grid && declares("--photons")) {
-        args.insert(args.end(), {"--photons", "2000"});
-    }
+    const std::vector<std::string> quick =
+        test::quick_method_options(find_method(c.options.at(1)), c.options);
+    args.insert(args.end(), quick.begin(), quick.end());
     std::string output = (dir / "out.exr").string();
     for (size_t i = 0; i < c.options.size(); ++i) {
         if (c.options[i] == "-o") {

@@ -10,6 +10,7 @@
 #include "device/context.h"
 #include "image/image.h"
 #include "methods/frame_scene.h"
+#include "methods/method.h"
 #include "scene/device_scene.h"
 #include "scene/scene.h"
 
@@ -63,6 +64,16 @@ struct DeviceFrame {
 // A new empty directory under the build tree's test scratch area, removed by nobody: each test
 // names its own.
 std::filesystem::path scratch_dir(const std::string& name);
+
+// Whether `method` declares the command-line option `option` ("--ic-rays").
+bool declares(const MethodEntry& method, const std::string& option);
+
+// Options that make a render with `method` small and quick: its costliest knobs turned down
+// (record rays, photons, gather rays, split triangles, ...) where it declares them and `options`,
+// the render's other options, leave them unset; the grid's photons only where `options` make a
+// grid.
+std::vector<std::string> quick_method_options(const MethodEntry& method,
+                                              const std::vector<std::string>& options = {});
 
 struct CommandResult {
     int exit_code = -1;

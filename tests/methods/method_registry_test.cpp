@@ -4,7 +4,6 @@
 // and an option of another method is refused by name.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -21,23 +20,14 @@ std::string cornell_box() {
     return (test::source_dir() / "scenes/cornell-box/scene.json").string();
 }
 
-bool declares(const MethodEntry& method, const std::string& option) {
-    return std::any_of(method.options.begin(), method.options.end(),
-                       [&](const OptionSpec& spec) { return spec.name == option; });
-}
-
-// A small, quick render with `method`: its costliest knobs turned down where it declares them.
+// A small, quick render with `method`.
 std::vector<std::string> quick_render(const MethodEntry& method,
                                       const std::filesystem::path& output) {
     std::vector<std::string> args = {"render",    cornell_box(), "-o", output.string(), "--method",
                                      method.name, "--spp",       "1",  "--width",       "12",
                                      "--height",  "10",          "-q"};
-    if (declares(method, "--photons") && !declares(method, "--ic-ivg")) {  // ic: with --ic-ivg only
-        args.insert(args.end(), {"--photons", "2000"});
-    }
-    if (declares(method, "--ic-rays")) {
-        args.insert(args.end(), {"--ic-rays", "16"});
-    }
+    const std::vector<std::string> quick = test::quick_method_options(method);
+    args.insert(args.end(), quick.begin(), quick.end());
     return args;
 }
 
@@ -97,7 +87,7 @@ TEST(MethodRegistry, HelpListsEveryMethodAndOptionsOfOthersAreRefused) {
     for (const MethodEntry& method : method_registry()) {
         for (const MethodEntry& other : method_registry()) {
             for (const OptionSpec& spec : other.options) {
-                if (declares(method, spec.name) || !spec.value_name.empty()) {
+                if (test::declares(method, spec.name) || !spec.value_name.empty()) {
                     continue;  // flags only: no value to invent
                 }
                 const test::CommandResult result =

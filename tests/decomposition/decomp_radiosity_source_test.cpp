@@ -207,9 +207,9 @@ TEST(DecompositionRadiositySource, ClusterRaysFindTheSplitTriangleTheyHit) {
 }
 
 // A closed box of one diffuse material (reflectance rho) whose every surface emits Le, with a
-// smaller emitting box inside (the furnace of tests/decomposition_test.cpp): leaving emission
-// out, every surface sends L* = rho Le / (1 - rho), whatever the geometry, and after k bounces
-// of light L_k = rho Le (1 + rho + ... + rho^k) = L* (1 - rho^(k+1)). With --decomp-source
+// smaller emitting box inside (the furnace of tests/decomposition/decomposition_test.cpp): leaving
+// emission out, every surface sends L* = rho Le / (1 - rho), whatever the geometry, and after k
+// bounces of light L_k = rho Le (1 + rho + ... + rho^k) = L* (1 - rho^(k+1)). With --decomp-source
 // radiosity, B^0 / pi is the direct part rho Le where the far field covers a triangle and the
 // path-traced L* where it does not, and iteration k gathers B^k / pi = rho Le + rho x (the
 // far field's and near field's B^(k-1) / pi): the covered triangles' B^k lies between L_k (had

@@ -48,7 +48,7 @@ std::string describe(const shared::Ray& ray) {
 }
 
 // Every ray: the device's answer against Embree's; where they differ, the device's answer must
-// be one that single-precision rounding allows (tests/reference_intersector.h).
+// be one that single-precision rounding allows (tests/support/reference_intersector.h).
 Agreement compare(Tracers& tracers, const TriangleMesh& mesh, const std::vector<shared::Ray>& rays,
                   const char* label) {
     const std::vector<shared::Hit> device_hits = tracers.device.trace_closest(rays);

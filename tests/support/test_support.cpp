@@ -2,6 +2,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -124,6 +125,41 @@ std::filesystem::path scratch_dir(const std::string& name) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
+}
+
+bool declares(const MethodEntry& method, const std::string& option) {
+    return std::any_of(method.options.begin(), method.options.end(),
+                       [&](const OptionSpec& spec) { return spec.name == option; });
+}
+
+std::vector<std::string> quick_method_options(const MethodEntry& method,
+                                              const std::vector<std::string>& options) {
+    const auto given = [&](const std::string& option) {
+        return std::find(options.begin(), options.end(), option) != options.end();
+    };
+    // The grid's options are refused where no grid is made: without --ic-ivg where the grid is
+    // optional, with a --decomp-source other than the grid.
+    const auto source = std::find(options.begin(), options.end(), "--decomp-source");
+    const bool grid =
+        (!declares(method, "--ic-ivg") || given("--ic-ivg")) &&
+        (source == options.end() || source + 1 == options.end() || source[1] == "grid");
+    std::vector<std::string> quick;
+    const auto turn_down = [&](const std::string& option, const std::string& value) {
+        if (declares(method, option) && !given(option)) {
+            quick.insert(quick.end(), {option, value});
+        }
+    };
+    turn_down("--ic-rays", "16");
+    turn_down("--rc-rays", "16");
+    turn_down("--sdrc-samples", "16");
+    turn_down("--gather-rays", "2");
+    // Fewer split triangles: every launch within the first chunk (2^16 items), so a render makes
+    // the same device calls however long they take (the device-fault sweep counts on it).
+    turn_down("--alpha", "4%");
+    if (grid) {
+        turn_down("--photons", "4000");
+    }
+    return quick;
 }
 
 namespace {

@@ -4,7 +4,7 @@
 // the rays nearer than alpha left out of the fit (against the analytic hit distance); the limits
 // alpha -> 0 (SH-interpolated final gathering, beside ic) and alpha beyond the scene (no far field)
 // on the Cornell box; accuracy on the Cornell box and the relief scene against their references;
-// determinism whatever the chunking and work-group size. Bad options: tests/cli_test.cpp style,
+// determinism whatever the chunking and work-group size. Bad options: tests/app/cli_test.cpp style,
 // through the executable (end of this file).
 #include "methods/decomposition/decomposition.h"
 
