@@ -2,15 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/trigonometric.hpp>
 #include <map>
 #include <set>
+#include <string_view>
 
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_materials.h"
+#include "scene/json_parse.h"
 #include "util/error.h"
 #include "util/log.h"
 #include "util/text.h"
@@ -64,6 +68,20 @@ bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::stri
     return true;
 }
 
+// The JSON text of a glTF file: the whole file, or a .glb's first chunk (header: magic, version,
+// length; chunk: length, type, data), clamped to the bytes there are.
+std::string_view gltf_json_text(const std::string& bytes, bool binary) {
+    if (!binary) {
+        return bytes;
+    }
+    if (bytes.size() < 20) {
+        return {};
+    }
+    uint32_t length = 0;
+    std::memcpy(&length, bytes.data() + 12, sizeof(length));
+    return std::string_view(bytes).substr(20, length);
+}
+
 tinygltf::Model read_model(const std::filesystem::path& path, const SceneFiles& files) {
     const std::string name = path.string();
     if (!files.exists(path)) {
@@ -78,6 +96,12 @@ tinygltf::Model read_model(const std::filesystem::path& path, const SceneFiles& 
     std::string warning;
     const std::string base = path.parent_path().string();
     const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+    // tinygltf converts `extras` recursively: a document nested thousands deep overflows the
+    // stack, so the JSON (a .glb's first chunk) is bounded as radcache's own scene files are.
+    if (json_nesting_depth(gltf_json_text(bytes, binary)) > kMaxJsonDepth) {
+        throw Error(name + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
+                    " levels");
+    }
     const bool read =
         binary ? reader.LoadBinaryFromMemory(&model, &error, &warning,
                                              reinterpret_cast<const unsigned char*>(bytes.data()),

@@ -1,5 +1,6 @@
 #include "scene/json_parse.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "util/error.h"
@@ -183,6 +184,29 @@ std::string describe_json(const Json& value) {
         text = text.substr(0, kQuoteLimit - 3) + "...";
     }
     return text;
+}
+
+int json_nesting_depth(std::string_view text) {
+    int depth = 0;
+    int deepest = 0;
+    bool in_string = false;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (in_string) {
+            if (c == '\\') {
+                ++i;  // the escaped character, a quote included
+            } else if (c == '"') {
+                in_string = false;
+            }
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return deepest;
 }
 
 }  // namespace rc

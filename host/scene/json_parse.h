@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 
 namespace rc {
 
@@ -15,6 +16,11 @@ inline constexpr int kMaxJsonDepth = 64;
 // the file, line and column; nesting deeper than kMaxJsonDepth and a key given twice in one object
 // throw Error with the file and the key path.
 nlohmann::json parse_json(const std::string& text, const std::string& file);
+
+// The deepest nesting of arrays and objects in JSON text, counted without parsing it (brackets
+// inside strings skipped), so that a document can be refused before a library that walks it
+// recursively (tinygltf's conversion of `extras`) overflows the stack.
+int json_nesting_depth(std::string_view text);
 
 // A JSON value for an error line: serialised, and cut to about kQuoteLimit characters without
 // serialising more of it than that.

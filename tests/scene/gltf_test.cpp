@@ -11,6 +11,7 @@
 
 #include "image/image_io.h"
 #include "scene/gltf_materials.h"
+#include "scene/json_parse.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
 #include "util/error.h"
@@ -219,6 +220,13 @@ TEST(Gltf, MalformedFilesAreRefusedCleanly) {
         }
         cases.push_back({name, m.dump(), "names no existing light"});
     }
+    // Nested 20 000 deep in `extras` (30 KB): refused before tinygltf's recursive conversion of
+    // `extras` would overflow the stack; brackets inside strings do not count.
+    m = model;
+    m["extras"] = {{"note", std::string(300, '[')}};
+    std::string deep = m.dump();
+    deep.insert(deep.size() - 1, ",\"more\":" + std::string(20000, '[') + std::string(20000, ']'));
+    cases.push_back({"deep_extras", deep, "nested deeper than 64 levels"});
     for (const Case& c : cases) {
         const auto file = dir / (c.name + ".gltf");
         write_file_atomically(file, c.text);
@@ -232,6 +240,21 @@ TEST(Gltf, MalformedFilesAreRefusedCleanly) {
         EXPECT_FALSE(std::filesystem::exists(dir / "out.png")) << c.name;
         std::filesystem::remove(dir / "out.png");
     }
+    // The same in a .glb's JSON chunk.
+    std::string chunk = deep + std::string((4 - deep.size() % 4) % 4, ' ');
+    const auto word = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+    const std::string glb = "glTF" + word(2) + word(static_cast<uint32_t>(20 + chunk.size())) +
+                            word(static_cast<uint32_t>(chunk.size())) + "JSON" + chunk;
+    write_file_atomically(dir / "deep.glb", glb);
+    const test::CommandResult deep_glb = test::run_radcache(
+        {"render", (dir / "deep.glb").string(), "-o", (dir / "out.png").string(), "--spp", "1"});
+    EXPECT_EQ(deep_glb.exit_code, 1) << deep_glb.output;
+    EXPECT_NE(deep_glb.output.find("deep.glb: JSON nested deeper than 64 levels"),
+              std::string::npos)
+        << deep_glb.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+    // Brackets inside strings (an escaped quote among them) are no nesting.
+    EXPECT_EQ(json_nesting_depth("{\"a\": \"[[[[\\\"[[\", \"b\": [[1], {\"c\": []}]}"), 4);
     const test::CommandResult json_camera = test::run_radcache(
         {"render", (test::source_dir() / "scenes/cornell-box/scene.json").string(), "-o",
          (dir / "out.png").string(), "--camera", "main"});
