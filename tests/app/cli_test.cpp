@@ -629,7 +629,7 @@ TEST(Cli, FramesEndingAtTheLargestFrameNumberStop) {
 }
 
 // Temporal caching places frames ahead of the one it shades (hooks.visit_frame): its own frame
-// loop must stop at the largest frame number too (issue 17's overflow, in the merged code).
+// loop must stop at the largest frame number too (the frame range's overflow, in the merged code).
 TEST(Cli, TemporalFramesEndingAtTheLargestFrameNumberStop) {
     const auto dir = test::scratch_dir("cli_temporal_frames_max");
     const test::CommandResult result =

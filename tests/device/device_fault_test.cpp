@@ -1,4 +1,4 @@
-// Device faults (issue 17): every OpenCL call site that a small render of each registered method
+// Device faults: every OpenCL call site that a small render of each registered method
 // reaches is made to fail in turn (host/device/fault_injection.h), at its first call and at its
 // last. Each failure must name the call and the error in one line, end the render with exit
 // status 1, leave no output file (nor a temporary) behind, and release every OpenCL object it
@@ -200,7 +200,7 @@ TEST_P(DeviceFaultSweep, EveryCallSiteFailsCleanly) {
     set_quiet(false);
 }
 
-// Data loss (issue 17): a run that fails after it has produced some of its outputs (here the
+// Data loss: a run that fails after it has produced some of its outputs (here the
 // irradiance cache, saved before the image is read back) leaves every old file as it was and no
 // new one: the outputs are committed together at the end.
 TEST(DeviceFault, AFailureAtTheEndKeepsEveryOldOutput) {

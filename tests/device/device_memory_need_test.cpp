@@ -1,4 +1,4 @@
-// The device memory a render needs, checked up front (issue 17, device/memory_need.h): a render
+// The device memory a render needs, checked up front (device/memory_need.h): a render
 // that cannot fit in --device-memory is refused before its first buffer with the whole figure,
 // and the figure is tested against the peak the run measures (Context::device_memory, reported
 // by --stats) for every registered method: equal to it where the figure leaves nothing out (the

@@ -1,4 +1,4 @@
-// Rendering on several devices (issue 14; `--device all`, `--device P:D,P:D`): with PoCL
+// Rendering on several devices (`--device all`, `--device P:D,P:D`): with PoCL
 // exposing two CPU devices (POCL_DEVICES="pthread pthread"), the path tracer's image is bitwise
 // the single-device image whatever the devices' order, chunking and work-group size, both devices
 // render a share that adds up to the image (stats); so are the grid methods' images, their

@@ -1,4 +1,4 @@
-// Convergence of the caching methods with their quality knobs (issue 16, item 5): on the Cornell
+// Convergence of the caching methods with their quality knobs: on the Cornell
 // box, each method's indirect light moves towards the path-traced reference as a knob tightens —
 // irradiance caching's accuracy, hemisphere rays and record spacing; the irradiance vector
 // grid's photons and grid resolution. The oracle is the shipped path-traced reference, box

@@ -1,4 +1,4 @@
-// Programs started in the background at start-up (issue 14; Context::prebuild, Method::programs):
+// Programs started in the background at start-up (Context::prebuild, Method::programs):
 // a small render of every method, and of the options that change its programs, builds exactly
 // the programs it started in the background (render --stats: program_builds against
 // prebuilt_programs), so a cold render builds all of them at once and none in vain.

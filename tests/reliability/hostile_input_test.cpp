@@ -1,6 +1,7 @@
-// The hostile inputs of issue 17, one regression test each: what crashed, hung, lost data, was
-// silently wrong or gave a poor message, now refused (or warned about) with one clear line, the
-// right exit status and no output file. The inputs the fuzzers found are in fuzz_regression_test.
+// The hostile inputs of the first reliability probe, one regression test each: what crashed, hung,
+// lost data, was silently wrong or gave a poor message, now refused (or warned about) with one
+// clear line, the right exit status and no output file. The inputs the fuzzers found are in
+// fuzz_regression_test.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -68,7 +69,7 @@ std::string load_error(const std::string& name, const std::string& text) {
 // w, against the documented range.
 TEST(HostileInput, WorldSpaceOverflowIsRefusedBeforeTheBvh) {
     // Each error names the shape (or emitter) by name and index, the vertex in object space and
-    // the offending value: never the NaN of a divide by w = 0 (issue 17's follow-up: the error
+    // the offending value: never the NaN of a divide by w = 0 (a follow-up of that probe: the error
     // printed "(-nan, -nan, -nan)").
     const auto expect_world_error = [](const std::string& message,
                                        std::initializer_list<std::string> parts) {

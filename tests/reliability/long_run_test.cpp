@@ -1,4 +1,4 @@
-// Long runs (issue 17): a 24-frame animation with a caching method keeps its memory bounded. The
+// Long runs: a 24-frame animation with a caching method keeps its memory bounded. The
 // --stats file reports each frame's host and device memory; device memory held at the end of a
 // frame must not grow over the frames, nor the peak within a frame, nor the host's resident
 // memory beyond allocator noise. (Radiance caching rebuilds its BRDF tables each frame, about

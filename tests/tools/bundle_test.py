@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""tools/bundle.sh (issue 14): the bundle's executable, run through its launcher, loads every
+"""tools/bundle.sh: the bundle's executable, run through its launcher, loads every
 shared library from the bundle except the C library's own (ldd with the launcher's library path:
 each resolves inside the bundle or to the allowed glibc set, none is missing); the launcher
 lists the devices and renders a bundled scene; the scenes come without their references; a

@@ -1,4 +1,4 @@
-// host/util's defences against hostile files (issue 17): reads of regular files only, within a
+// host/util's defences against hostile files: reads of regular files only, within a
 // size limit; the output batch that commits a run's files together or not at all; values quoted
 // short in error lines; a library's stderr captured into the error line.
 #include "util/file_io.h"
