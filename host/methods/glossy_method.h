@@ -14,6 +14,16 @@ namespace rc {
 // Irradiance caching's layers, glossy-indirect and the cache's own `layer`.
 std::vector<std::string> glossy_method_aovs(const std::string& layer);
 
+// What a glossy cache's records take from the irradiance records of the same render: the
+// accuracy a, the bounds on a record's radius and the shared settings.
+template <class GlossyOptions>
+void share_record_settings(const IrradianceCacheOptions& ic, GlossyOptions* glossy) {
+    glossy->accuracy = ic.accuracy;
+    glossy->min_spacing = ic.min_spacing;
+    glossy->max_spacing = ic.max_spacing;
+    glossy->share(ic);
+}
+
 // One frame by irradiance caching with `glossy` serving the specular lobes: the image, its spp,
 // irradiance caching's rays, non-finite samples and statistics into the result (the caller adds
 // its cache's rays and statistics); irradiance caching's statistics into *stats.

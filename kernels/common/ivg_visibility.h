@@ -9,8 +9,8 @@
 // of its ends lie strictly on a plane's free side, none of them can.
 #pragma once
 
-#include "common/path_radiance.h"
 #include "common/ivg_lookup.h"
+#include "common/path_radiance.h"
 
 // Whether x lies in the cell at `base` grown by `margin` on every side.
 RC_FUNC bool rc_ivg_in_grown_cell(const IvgParams* p, int3 base, float3 x, float margin) {

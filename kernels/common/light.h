@@ -13,8 +13,8 @@
 #include "shared/types.h"
 
 // The smallest solid angle (steradians) under which a light triangle is sampled in solid angle
-// rather than by area. Measured (docs/lab/path-tracer.md, "The solid-angle sampling threshold"): the
-// direct light's error falls as the threshold falls to 1e-3 sr and no further below it, where
+// rather than by area. Measured (docs/lab/path-tracer.md, "The solid-angle sampling threshold"):
+// the direct light's error falls as the threshold falls to 1e-3 sr and no further below it, where
 // the two densities are nearly equal and sampling by area is cheaper. Tests build their probes
 // with -D to compare the two strategies.
 #ifndef RC_SOLID_ANGLE_SAMPLING_MIN

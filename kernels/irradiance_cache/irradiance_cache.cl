@@ -2,8 +2,8 @@
 // G-buffer, the hemisphere hits a deeper level must cover, the reduction of a record's hemisphere
 // samples (the sampling itself: ic_record_cells.cl), record gathering (coverage and
 // interpolation), and the final shading pass.
-#include "records/ic_shading.h"
 #include "irradiance_cache/ic_splat.h"
+#include "records/ic_shading.h"
 #include "scene_arguments.h"
 
 // The G-buffer entry of a ray's first hit, with the hit distance as its footprint (to be scaled

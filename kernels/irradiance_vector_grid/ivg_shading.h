@@ -4,9 +4,9 @@
 
 #include "common/camera.h"
 #include "common/camera_film.h"
+#include "common/ivg_radiance.h"
 #include "common/pixel_sampler.h"
 #include "common/sampling.h"
-#include "common/ivg_radiance.h"
 
 // The camera ray of sample s of a pixel, and its random stream.
 RC_FUNC Ray rc_ivg_camera_ray(const IvgParams* p, const CameraParams* camera, uint pixel, uint s,

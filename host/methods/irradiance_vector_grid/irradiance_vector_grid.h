@@ -15,10 +15,10 @@
 #include "device/buffer.h"
 #include "device/kernel.h"
 #include "device/memory_need.h"
-#include "methods/shared_settings.h"
 #include "methods/frame_scene.h"
 #include "methods/irradiance_vector_grid/ivg_cell_planes.h"
 #include "methods/radiance_source.h"
+#include "methods/shared_settings.h"
 #include "shared/types.h"
 
 namespace rc {
@@ -29,7 +29,7 @@ struct IvgOptions : SharedSettings {
     uint64_t photons = 0;               // 0: chosen from the grid's size
     bool include_direct = false;        // record unbounced photon segments (direct light)
     int interpolation = RC_IVG_TRILINEAR;
-    bool compressed = false;  // read the 16-bit colour + direction layout (§4.2)
+    bool compressed = false;         // read the 16-bit colour + direction layout (§4.2)
     std::filesystem::path grid_in;   // load instead of tracing photons
     std::filesystem::path grid_out;  // save after building
 };

@@ -9,8 +9,8 @@
 
 #include "image/image.h"
 #include "methods/frame_scene.h"
-#include "methods/shared_settings.h"
 #include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
+#include "methods/shared_settings.h"
 
 namespace rc {
 

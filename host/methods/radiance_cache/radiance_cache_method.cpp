@@ -85,10 +85,7 @@ void finish_radiance_caching(RadianceCachingOptions& options, const ParsedArgume
 RadianceCacheOptions radiance_record_options(RadianceCacheOptions rc,
                                              const IrradianceCacheOptions& ic,
                                              const MethodSettings& settings) {
-    rc.accuracy = ic.accuracy;
-    rc.min_spacing = ic.min_spacing;
-    rc.max_spacing = ic.max_spacing;
-    rc.share(ic);
+    share_record_settings(ic, &rc);
     if (settings.frame_count > 1 && (!rc.cache_in.empty() || !rc.cache_out.empty())) {
         throw Error("--rc-cache-in/--rc-cache-out take one frame", kExitUsage);
     }

@@ -17,13 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "methods/shared_settings.h"
 #include "methods/frame_scene.h"
 #include "methods/glossy_cache.h"
 #include "methods/glossy_placement.h"
 #include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/records/record_store.h"
 #include "methods/sdrc/ltree.h"
+#include "methods/shared_settings.h"
 #include "shared/sdrc.h"
 
 namespace rc {

@@ -48,10 +48,7 @@ OptionTable<SdrcMethodOptions> sdrc_option_table() {
 // SDRC's options with the irradiance records' they share (a, the spacing) and the shared
 // settings.
 SdrcOptions sdrc_options(SdrcOptions sdrc, const IrradianceCacheOptions& ic) {
-    sdrc.accuracy = ic.accuracy;
-    sdrc.min_spacing = ic.min_spacing;
-    sdrc.max_spacing = ic.max_spacing;
-    sdrc.share(ic);
+    share_record_settings(ic, &sdrc);
     return sdrc;
 }
 
