@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
-#include "methods/irradiance_cache/irradiance_records.h"
 #include "methods/records/cache_file.h"
+#include "methods/records/irradiance_cache.h"
+#include "methods/records/irradiance_records.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
 #include "util/file_io.h"

@@ -1,6 +1,6 @@
 #include "methods/glossy_method.h"
 
-#include "methods/irradiance_cache/ic_stats.h"
+#include "methods/records/ic_stats.h"
 
 namespace rc {
 

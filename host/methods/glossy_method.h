@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "methods/glossy_cache.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/method.h"
+#include "methods/records/irradiance_cache.h"
 
 namespace rc {
 

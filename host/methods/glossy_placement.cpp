@@ -2,9 +2,10 @@
 
 #include <algorithm>
 
-#include "methods/records/candidate_thinning.h"
+#include "methods/records/placement_passes.h"
 #include "methods/records/record_grid.h"
 #include "util/glm_helpers.h"
+#include "util/log.h"
 #include "util/timing.h"
 
 namespace rc {
@@ -83,31 +84,44 @@ void GlossyPlacement::cover(const Buffer<shared::RcQuery>& queries, const Record
     if (candidates.empty()) {
         return;
     }
-    // A record covers its own position, so passes until all are covered end.
-    for (int pass = 0; until_covered || pass < 1; ++pass) {
-        auto start = SteadyClock::now();
-        const std::vector<uint32_t> open = uncovered(queries, store, candidates);
-        std::vector<glm::vec3> positions(open.size());
-        std::vector<glm::vec3> normals(open.size());
-        std::vector<float> min_influence(open.size());
+    std::vector<uint32_t> open;
+    auto start = SteadyClock::now();
+    // Step 1 of a pass: the candidates no record covers, with their minimum influence radii.
+    const auto find = [&]() {
+        start = SteadyClock::now();
+        open = uncovered(queries, store, candidates);
+        UncoveredCandidates found;
+        found.positions.resize(open.size());
+        found.normals.resize(open.size());
+        found.min_influence.resize(open.size());
         for (size_t c = 0; c < open.size(); ++c) {
             const shared::RcQuery& q = copy(open[c]);
-            positions[c] = vec3_of(q.position);
-            normals[c] = vec3_of(q.normal);
-            min_influence[c] = store.accuracy() * spacing_bound(min_spacing, q.footprint);
+            found.positions[c] = vec3_of(q.position);
+            found.normals[c] = vec3_of(q.normal);
+            found.min_influence[c] = store.accuracy() * spacing_bound(min_spacing, q.footprint);
         }
+        return found;
+    };
+    // Step 2: records at the candidates thinning kept.
+    const auto add = [&](const std::vector<size_t>& chosen) {
         std::vector<shared::RcQuery> sites;
-        for (size_t c : thin_candidates(positions, normals, min_influence)) {
+        for (size_t c : chosen) {
             sites.push_back(copy(open[c]));
         }
         stats->placement_seconds += seconds_since(start);
-        if (sites.empty()) {
-            break;
-        }
         stats->passes.push_back({0, stride, candidates.size(), open.size(), sites.size()});
         start = SteadyClock::now();
         add_records(sites);
         stats->record_seconds += seconds_since(start);
+        start = SteadyClock::now();
+    };
+    const size_t left = run_placement_passes(until_covered, find, add);
+    stats->placement_seconds += seconds_since(start);
+    if (left > 0) {
+        log_warning("glossy placement: " + std::to_string(left) +
+                    " camera sample(s) left uncovered after " +
+                    std::to_string(kMaxPlacementPasses) +
+                    " placement passes (records smaller than the scene's float precision?)");
     }
 }
 

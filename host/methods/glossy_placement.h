@@ -12,7 +12,7 @@
 
 #include "device/buffer.h"
 #include "device/context.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
+#include "methods/records/irradiance_cache.h"
 #include "methods/records/record_store.h"
 #include "shared/radiance_cache.h"
 

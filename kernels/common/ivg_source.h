@@ -8,7 +8,7 @@
 
 typedef VectorGrid RadianceSource;
 
-// As host/methods/irradiance_vector_grid/irradiance_vector_grid.h binds them (not formatted:
+// As host/methods/grid/irradiance_vector_grid.h binds them (not formatted:
 // clang-format reads the macro's pointers as the file's style and would flip the functions').
 // clang-format off
 #define RC_RADIANCE_SOURCE_PARAMETERS                                                             \

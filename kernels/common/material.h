@@ -108,6 +108,23 @@ RC_FUNC float3 rc_ward_sample(float alpha_x, float alpha_y, float3 wo, float u1,
     return 2.0f * wo_h * h - wo;
 }
 
+// F(w_i) = f_s(w_o, w_i) cos(theta_i) of a material's specular lobe with unit specular
+// reflectance (the Phong or Ward lobe times the cosine): zero below the horizon and for materials
+// without a specular lobe. The lobe both glossy caches represent (radiance caching's BRDF tables,
+// SDRC's importance sampling).
+RC_FUNC float rc_specular_lobe(const Material* material, float3 wo, float3 wi) {
+    if (wi.z <= 0.0f) {
+        return 0.0f;
+    }
+    if (material->model == RC_MATERIAL_PHONG) {
+        return rc_phong_specular(material->exponent, wo, wi) * wi.z;
+    }
+    if (material->model == RC_MATERIAL_WARD) {
+        return rc_ward_specular(material->alpha_x, material->alpha_y, wo, wi) * wi.z;
+    }
+    return 0.0f;
+}
+
 // The BRDF value f(wo, wi) (without the cosine).
 RC_FUNC float3 rc_material_eval(const SurfaceMaterial* m, float3 wo, float3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) {

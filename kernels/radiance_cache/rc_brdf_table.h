@@ -13,19 +13,9 @@
 #include "shared/radiance_cache.h"
 #include "shared/spherical_harmonics.h"
 
-// F(w_i) for unit specular reflectance: the Phong or Ward lobe times cos(theta_i); zero below the
-// horizon and for materials without a specular lobe.
+// F(w_i) for unit specular reflectance (rc_specular_lobe).
 RC_FUNC float rc_brdf_table_lobe(const Material* material, float3 wo, float3 wi) {
-    if (wi.z <= 0.0f) {
-        return 0.0f;
-    }
-    if (material->model == RC_MATERIAL_PHONG) {
-        return rc_phong_specular(material->exponent, wo, wi) * wi.z;
-    }
-    if (material->model == RC_MATERIAL_WARD) {
-        return rc_ward_specular(material->alpha_x, material->alpha_y, wo, wi) * wi.z;
-    }
-    return 0.0f;
+    return rc_specular_lobe(material, wo, wi);
 }
 
 // The coefficients c[0 .. RC_SH_MAX_COEFFICIENTS) of texel `texel` and its representation error

@@ -37,16 +37,7 @@ RC_FUNC bool rc_sdrc_lobe_sample(const Material* material, float3 wo, float u1, 
 
 // f_s(w_o, w_i) cos(theta_i) / rho_s of the material's specular lobe (zero below the surface).
 RC_FUNC float rc_sdrc_lobe_value(const Material* material, float3 wo, float3 wi) {
-    if (wo.z <= 0.0f || wi.z <= 0.0f) {
-        return 0.0f;
-    }
-    if (material->model == RC_MATERIAL_PHONG) {
-        return rc_phong_specular(material->exponent, wo, wi) * wi.z;
-    }
-    if (material->model == RC_MATERIAL_WARD) {
-        return rc_ward_specular(material->alpha_x, material->alpha_y, wo, wi) * wi.z;
-    }
-    return 0.0f;
+    return wo.z <= 0.0f ? 0.0f : rc_specular_lobe(material, wo, wi);
 }
 
 // The uniform numbers of direction `index` of stream `stream` under `key` (words 0 and 1).

@@ -52,7 +52,7 @@ typedef struct RecordGrid {
 // Pixels per side of radiance cache splatting's screen tiles.
 #define RC_SPLAT_TILE_SIZE 8
 
-// Radiance cache splatting's screen tiles (host/methods/irradiance_cache/splat_tiles.h): the
+// Radiance cache splatting's screen tiles (host/methods/records/splat_tiles.h): the
 // image in tiles of tile_size pixels, tile (tx, ty) listing the records whose influence sphere's
 // projection touches it as tile_records[tile_start[t] .. tile_start[t + 1]), t = ty tiles_x + tx.
 typedef struct SplatTileGrid {

@@ -29,6 +29,10 @@ typedef struct TcParams {
     int hole_passes;      // 3 x 3 hole-filling passes (the report's §4.3)
     int emitters_change;  // 0: the two emitter lists are the same
     int cell_layout;      // the records' hemisphere cells: RC_TC_CELLS_COSINE or _UNIFORM
+    int strata_m;         // the records' M x N hemisphere cells
+    int strata_n;
+    uint key_lo;  // the key of the cells' random streams (the jitter of their rays)
+    uint key_hi;
 } TcParams;
 
 // How a record's M x N hemisphere cells divide it: irradiance caching's cosine-weighted strata
@@ -69,6 +73,10 @@ RC_SHARED_END
     FIELD(TcParams, hole_passes)             \
     FIELD(TcParams, emitters_change)         \
     FIELD(TcParams, cell_layout)             \
+    FIELD(TcParams, strata_m)                \
+    FIELD(TcParams, strata_n)                \
+    FIELD(TcParams, key_lo)                  \
+    FIELD(TcParams, key_hi)                  \
     STRUCT(TcCarriedSample)                  \
     FIELD(TcCarriedSample, radiance)         \
     FIELD(TcCarriedSample, depth)            \
@@ -80,6 +88,6 @@ RC_SHARED_END
 
 #ifndef __OPENCL_VERSION__
 static_assert(sizeof(rc::shared::TcEmitter) == sizeof(rc::shared::Light) + 48);
-static_assert(sizeof(rc::shared::TcParams) == 48);
+static_assert(sizeof(rc::shared::TcParams) == 64);
 static_assert(sizeof(rc::shared::TcCarriedSample) == 48);
 #endif

@@ -72,6 +72,22 @@ RC_FUNC void rc_tc_cell_jitter(const TcCellJitter* jitter, int cell, float* zeta
         rc_rng_word(jitter->key_lo, jitter->key_hi, jitter->record, (uint)cell, 1u));
 }
 
+// The direction of cell `cell`'s ray in world space, in the frame of the record's normal
+// (rc_ic_record_frame): the cell's jitter (rc_tc_cell_jitter) within irradiance caching's
+// cosine-weighted strata (rc_ic_cell_direction, as rc_ic_cell_ray places it) or radiance caching's
+// uniform ones (rc_uniform_stratum_direction, as rc_grid_stratum_direction places it).
+RC_FUNC float3 rc_tc_cell_direction(const TcCellJitter* jitter, int cell, float3 normal) {
+    float zeta, xi;
+    rc_tc_cell_jitter(jitter, cell, &zeta, &xi);
+    const int j = cell / jitter->n;
+    const int k = cell % jitter->n;
+    const float3 d = jitter->layout == RC_TC_CELLS_UNIFORM
+                         ? rc_uniform_stratum_direction(j, k, jitter->m, jitter->n, zeta, xi)
+                         : rc_ic_cell_direction(j, k, jitter->m, jitter->n, zeta, xi);
+    const Frame frame = rc_ic_record_frame(normal);
+    return rc_from_local(&frame, d);
+}
+
 // Whether the segment of `ray` from its origin to distance t_max meets the box [lower, upper]
 // (slabs, widened by a small margin; an empty box, lower > upper, meets nothing).
 RC_FUNC bool rc_tc_segment_meets_box(Ray ray, float t_max, float3 lower, float3 upper) {

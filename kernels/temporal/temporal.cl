@@ -1,16 +1,27 @@
-// Entry kernels of temporal caching's reprojection (host/methods/temporal/tc_reprojection.cpp):
-// a batch of first-level irradiance records, their hemisphere samples carried to the next frame
-// and assembled into the hemisphere the next frame is estimated to show them
-// (temporal/tc_reprojection.h). ic_record_reduce then reduces it as it reduces a record's cells.
+// Entry kernels of temporal caching's reprojection (host/methods/temporal/tc_cells.cpp), for any
+// record whose payload is computed from M x N hemisphere cells (irradiance records' cosine-weighted
+// cells, radiance records' uniform ones: tc.cell_layout): a batch of records, their hemisphere
+// samples carried to the next frame and assembled into the hemisphere the next frame is estimated
+// to show them (temporal/tc_reprojection.h). The record's own reduction (ic_record_reduce,
+// rc_record_project) then turns the assembled cells into its payload one frame later.
 #include "scene_arguments.h"
 #include "temporal/tc_reprojection.h"
 
-// Item i: cell i % (M N) of batch record i / (M N) (random stream streams[i / (M N)]),
-// whose ray saw cells[i] = (L.rgb, distance) at this frame: carried[i], the sample carried to the
-// next frame (rc_tc_carry_sample).
-__kernel void tc_carry_cells(uint begin, uint end, IcParams params, TcParams tc,
-                             RC_SCENE_PARAMETERS, __global const Record* records,
-                             __global const float4* origins, __global const uint* streams,
+// The cells' jitter of batch record b (random stream `stream`).
+RC_FUNC TcCellJitter tc_record_jitter(const TcParams* tc, uint stream) {
+    const TcCellJitter jitter = {tc->strata_m, tc->strata_n, tc->cell_layout,
+                                 tc->key_lo,   tc->key_hi,   stream};
+    return jitter;
+}
+
+// Item i: cell i % (M N) of batch record b = i / (M N), leaving origins[b] in the frame whose z
+// axis is frames[b].xyz (random stream streams[b]), whose ray saw cells[i] = (L.rgb, distance)
+// at this frame: carried[i], the sample carried to the next frame (rc_tc_carry_sample). Where
+// surfaces[b].w is 1, a cell whose direction lies below the plane of surfaces[b].xyz (the
+// surface's own normal) traced no ray and stays as it is.
+__kernel void tc_carry_cells(uint begin, uint end, TcParams tc, RC_SCENE_PARAMETERS,
+                             __global const float4* origins, __global const float4* frames,
+                             __global const float4* surfaces, __global const uint* streams,
                              __global const float4* cells, __global const int* moved_slot,
                              __global const Triangle* moved_triangles,
                              __global const TcEmitter* emitters_now,
@@ -21,22 +32,34 @@ __kernel void tc_carry_cells(uint begin, uint end, IcParams params, TcParams tc,
         return;
     }
     const SceneData scene = RC_SCENE_DATA();
-    const uint per_record = (uint)(params.strata_m * params.strata_n);
+    const uint per_record = (uint)(tc.strata_m * tc.strata_n);
     const uint b = i / per_record;
-    const uint cell = i % per_record;
-    const float3 normal = records[b].normal.xyz;
-    RngStream rng;
-    const Ray ray = rc_ic_cell_ray(&params, streams[b], cell, normal, origins[b].xyz, &rng);
+    const int cell = (int)(i % per_record);
+    const float3 normal = frames[b].xyz;
+    const TcCellJitter jitter = tc_record_jitter(&tc, streams[b]);
+    const float3 direction = rc_tc_cell_direction(&jitter, cell, normal);
+    if (surfaces[b].w != 0.0f && dot(direction, surfaces[b].xyz) <= 0.0f) {
+        TcCarriedSample s;
+        s.radiance = (float4)(cells[i].xyz, 0.0f);
+        s.depth = cells[i].w;
+        s.cell = cell;
+        s.row = s.column = s.size = 0.0f;
+        s.pad0 = s.pad1 = s.pad2 = 0;
+        carried[i] = s;
+        return;
+    }
+    Ray ray;
+    ray.origin = (float4)(origins[b].xyz, 0.0f);
+    ray.direction = (float4)(direction, INFINITY);
     const MovedTriangles moved = {moved_slot, moved_triangles};
-    carried[i] = rc_tc_carry_sample(&scene, moved, emitters_now, emitters_next, &tc,
-                                    params.strata_m, params.strata_n, rc_ic_record_frame(normal),
-                                    origins[b].xyz, (int)cell, ray, cells[i]);
+    carried[i] = rc_tc_carry_sample(&scene, moved, emitters_now, emitters_next, &tc, tc.strata_m,
+                                    tc.strata_n, rc_ic_record_frame(normal), origins[b].xyz, cell,
+                                    ray, cells[i]);
 }
 
 // Item b: batch record b's hemisphere at the next frame into next_cells (rc_tc_assemble; random
 // stream streams[b]; marks: scratch, one per cell).
-__kernel void tc_assemble_cells(uint begin, uint end, IcParams params, TcParams tc,
-                                __global const uint* streams,
+__kernel void tc_assemble_cells(uint begin, uint end, TcParams tc, __global const uint* streams,
                                 __global const TcCarriedSample* carried,
                                 __global const float4* cells, __global float4* next_cells,
                                 __global uint* marks) {
@@ -44,10 +67,8 @@ __kernel void tc_assemble_cells(uint begin, uint end, IcParams params, TcParams 
     if (b >= end) {
         return;
     }
-    const size_t first = (size_t)b * (size_t)(params.strata_m * params.strata_n);
-    const TcCellJitter jitter = {params.strata_m,          params.strata_n,
-                                 RC_TC_CELLS_COSINE,       params.seed_lo ^ RC_IC_RNG_DOMAIN,
-                                 rc_ic_level_key(&params), streams[b]};
+    const size_t first = (size_t)b * (size_t)(tc.strata_m * tc.strata_n);
+    const TcCellJitter jitter = tc_record_jitter(&tc, streams[b]);
     rc_tc_assemble(&jitter, tc.hole_passes, carried + first, cells + first, next_cells + first,
                    marks + first);
 }

@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "fuzz_targets.h"
-#include "methods/irradiance_vector_grid/irradiance_vector_grid_file.h"
+#include "methods/grid/irradiance_vector_grid_file.h"
 #include "util/error.h"
 
 namespace rc::fuzz {

@@ -27,8 +27,8 @@
 
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
-#include "methods/irradiance_cache/irradiance_records.h"
+#include "methods/records/irradiance_cache.h"
+#include "methods/records/irradiance_records.h"
 #include "scene/device_scene.h"
 #include "test_support.h"
 

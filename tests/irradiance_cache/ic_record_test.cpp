@@ -13,7 +13,7 @@
 
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
+#include "methods/records/irradiance_cache.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
 #include "shared/rng.h"

@@ -1,7 +1,7 @@
 // Irradiance caching as a method (host/methods/irradiance_cache.cpp): coverage after placement,
 // determinism, accuracy against the white furnace's analytic radiance and the Cornell box's
 // path-traced reference, and cache files.
-#include "methods/irradiance_cache/irradiance_cache.h"
+#include "methods/records/irradiance_cache.h"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@
 #include "bvh/device_bvh.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
-#include "methods/irradiance_cache/irradiance_records.h"
 #include "methods/records/cache_file.h"
+#include "methods/records/irradiance_records.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"

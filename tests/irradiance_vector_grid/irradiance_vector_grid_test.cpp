@@ -2,7 +2,7 @@
 // host/methods/ivg_method.cpp): determinism of photon tracing, grid files, accuracy of `ivg-gather`
 // and of irradiance caching with the grid against the Cornell box's reference, and geometric
 // robustness (RR-6983 §5.1: one grid from a coarse and from a finely tessellated object).
-#include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
+#include "methods/grid/irradiance_vector_grid.h"
 
 #include <gtest/gtest.h>
 
@@ -15,9 +15,9 @@
 #include "bvh/device_bvh.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
-#include "methods/irradiance_vector_grid/irradiance_vector_grid_file.h"
+#include "methods/grid/irradiance_vector_grid_file.h"
 #include "methods/irradiance_vector_grid/ivg_method.h"
+#include "methods/records/irradiance_cache.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"

@@ -13,7 +13,7 @@
 
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
-#include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
+#include "methods/grid/irradiance_vector_grid.h"
 #include "scene/device_scene.h"
 #include "test_support.h"
 

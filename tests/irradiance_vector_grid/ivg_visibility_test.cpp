@@ -1,5 +1,5 @@
 // The grid lookup's corner visibility (kernels/common/ivg_visibility.h, the cells'
-// planes of host/methods/irradiance_vector_grid/ivg_cell_planes.h) against the shadow rays it
+// planes of host/methods/grid/ivg_cell_planes.h) against the shadow rays it
 // skips: at the hits of random rays in three scenes, the corners it finds visible must be those
 // eight shadow rays find, and some lookups must trace fewer than eight. The triangle-box test
 // under the cells' planes against clipping the triangle to the box.
@@ -14,8 +14,8 @@
 
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
-#include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
-#include "methods/irradiance_vector_grid/triangle_box_overlap.h"
+#include "methods/grid/irradiance_vector_grid.h"
+#include "methods/grid/triangle_box_overlap.h"
 #include "methods/scene_arguments.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"

@@ -10,9 +10,9 @@
 #include <cstring>
 
 #include "image/image_io.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
-#include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
+#include "methods/grid/irradiance_vector_grid.h"
 #include "methods/irradiance_vector_grid/ivg_method.h"
+#include "methods/records/irradiance_cache.h"
 #include "test_support.h"
 #include "util/error.h"
 

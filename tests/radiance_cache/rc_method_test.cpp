@@ -10,9 +10,9 @@
 
 #include "glossy_scenes.h"
 #include "image/image_error.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/path_tracer/path_tracer.h"
 #include "methods/radiance_cache/radiance_cache.h"
+#include "methods/records/irradiance_cache.h"
 #include "scene/camera.h"
 #include "scene/scene_loader.h"
 #include "sh_quadrature.h"

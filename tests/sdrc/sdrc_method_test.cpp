@@ -11,8 +11,8 @@
 
 #include "glossy_scenes.h"
 #include "image/image_error.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/path_tracer/path_tracer.h"
+#include "methods/records/irradiance_cache.h"
 #include "methods/sdrc/sdrc_cache.h"
 #include "scene/camera.h"
 #include "scene/scene_loader.h"

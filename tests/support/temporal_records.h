@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "methods/irradiance_cache/irradiance_cache.h"
+#include "methods/records/irradiance_cache.h"
 #include "methods/temporal/tc_reprojection.h"
 
 namespace rc {

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "methods/irradiance_cache/irradiance_cache.h"
+#include "methods/records/irradiance_cache.h"
 #include "methods/temporal/tc_reprojection.h"
 #include "methods/temporal/temporal_cache.h"
 #include "methods/temporal/temporal_record.h"

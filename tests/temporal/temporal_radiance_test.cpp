@@ -17,10 +17,10 @@
 
 #include "image/image_io.h"
 #include "methods/radiance_cache/radiance_cache.h"
+#include "methods/radiance_cache/tc_radiance_reprojection.h"
+#include "methods/radiance_cache/temporal_radiance_record.h"
 #include "methods/radiance_source.h"
 #include "methods/temporal/tc_motion.h"
-#include "methods/temporal/tc_radiance_reprojection.h"
-#include "methods/temporal/temporal_radiance_record.h"
 #include "methods/temporal/temporal_record.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"

@@ -19,7 +19,7 @@
 
 #include "image/image_error.h"
 #include "image/image_io.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
+#include "methods/records/irradiance_cache.h"
 #include "methods/temporal/tc_reprojection.h"
 #include "methods/temporal/temporal_record.h"
 #include "scene/scene_loader.h"

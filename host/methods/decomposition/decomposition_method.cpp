@@ -10,7 +10,7 @@
 #include <regex>
 
 #include "methods/decomposition/decomposition.h"
-#include "methods/irradiance_vector_grid/ivg_options.h"
+#include "methods/grid/ivg_options.h"
 #include "methods/light_samples.h"
 #include "methods/method.h"
 #include "shared/decomposition.h"

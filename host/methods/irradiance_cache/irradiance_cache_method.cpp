@@ -3,13 +3,13 @@
 // hemisphere rays read beyond their hits.
 #include <memory>
 
-#include "methods/irradiance_cache/ic_memory.h"
-#include "methods/irradiance_cache/ic_options.h"
-#include "methods/irradiance_cache/ic_stats.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
-#include "methods/irradiance_vector_grid/ivg_options.h"
+#include "methods/grid/ivg_options.h"
 #include "methods/light_samples.h"
 #include "methods/method.h"
+#include "methods/records/ic_memory.h"
+#include "methods/records/ic_options.h"
+#include "methods/records/ic_stats.h"
+#include "methods/records/irradiance_cache.h"
 #include "methods/temporal/temporal_cache.h"
 #include "methods/temporal/temporal_options.h"
 #include "util/error.h"

@@ -2,8 +2,8 @@
 // into the grid) as registered methods (DESIGN.md §6.3).
 #include <memory>
 
+#include "methods/grid/ivg_options.h"
 #include "methods/irradiance_vector_grid/ivg_method.h"
-#include "methods/irradiance_vector_grid/ivg_options.h"
 #include "methods/light_samples.h"
 #include "methods/method.h"
 #include "shared/film.h"

@@ -9,7 +9,7 @@
 
 #include "image/image.h"
 #include "methods/frame_scene.h"
-#include "methods/irradiance_vector_grid/irradiance_vector_grid.h"
+#include "methods/grid/irradiance_vector_grid.h"
 #include "methods/shared_settings.h"
 
 namespace rc {

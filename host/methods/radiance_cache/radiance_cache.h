@@ -19,8 +19,8 @@
 #include "methods/frame_scene.h"
 #include "methods/glossy_cache.h"
 #include "methods/glossy_placement.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/radiance_cache/brdf_tables.h"
+#include "methods/records/irradiance_cache.h"
 #include "methods/records/record_store.h"
 #include "methods/shared_settings.h"
 
@@ -66,7 +66,7 @@ struct RadianceBatch {
 };
 
 // Shown every batch of records before their projection and insertion (temporal caching
-// reprojects their hemisphere samples: host/methods/temporal/tc_radiance_reprojection.h).
+// reprojects their hemisphere samples: host/methods/radiance_cache/tc_radiance_reprojection.h).
 class RadianceBatchObserver {
    public:
     virtual ~RadianceBatchObserver() = default;

@@ -6,13 +6,13 @@
 #include <memory>
 
 #include "methods/glossy_method.h"
-#include "methods/irradiance_cache/ic_memory.h"
-#include "methods/irradiance_cache/ic_options.h"
 #include "methods/method.h"
 #include "methods/radiance_cache/radiance_cache.h"
+#include "methods/radiance_cache/temporal_radiance_cache.h"
+#include "methods/records/ic_memory.h"
+#include "methods/records/ic_options.h"
 #include "methods/temporal/temporal_cache.h"
 #include "methods/temporal/temporal_options.h"
-#include "methods/temporal/temporal_radiance_cache.h"
 #include "shared/radiance_cache.h"
 #include "shared/sh_rotation_zxz.h"
 #include "util/error.h"
@@ -149,7 +149,6 @@ class RadianceCaching final : public Method {
         programs.push_back({"records/glossy_placement.cl", ""});
         if (temporal_) {
             programs.push_back({"temporal/temporal.cl", ""});
-            programs.push_back({"temporal/tc_radiance.cl", ""});
         }
         return programs;
     }

@@ -20,7 +20,7 @@
 #include "methods/frame_scene.h"
 #include "methods/glossy_cache.h"
 #include "methods/glossy_placement.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
+#include "methods/records/irradiance_cache.h"
 #include "methods/records/record_store.h"
 #include "methods/sdrc/ltree.h"
 #include "methods/shared_settings.h"

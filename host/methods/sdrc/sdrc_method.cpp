@@ -5,9 +5,9 @@
 #include <memory>
 
 #include "methods/glossy_method.h"
-#include "methods/irradiance_cache/ic_memory.h"
-#include "methods/irradiance_cache/ic_options.h"
 #include "methods/method.h"
+#include "methods/records/ic_memory.h"
+#include "methods/records/ic_options.h"
 #include "methods/sdrc/sdrc_cache.h"
 #include "shared/radiance_cache.h"
 #include "util/error.h"

@@ -9,25 +9,25 @@ TemporalReprojection::TemporalReprojection(const FrameScene& frame, const Scene&
                                            int hole_passes)
     : FrameBound(frame),
       motion_(frame.context, frame.scene, next, frame.frame, hole_passes),
-      carry_kernel_(frame.context.kernel("temporal/temporal.cl", "tc_carry_cells")),
-      assemble_kernel_(frame.context.kernel("temporal/temporal.cl", "tc_assemble_cells")),
+      cells_(frame),
       reduce_kernel_(
           frame.context.kernel("irradiance_cache/irradiance_cache.cl", "ic_record_reduce")) {}
 
 void TemporalReprojection::observe(const RecordBatch& batch) {
     const auto start = SteadyClock::now();
-    const size_t per_record = static_cast<size_t>(batch.params.strata_m) * batch.params.strata_n;
-    const size_t cells = batch.count * per_record;
-    Buffer<shared::TcCarriedSample> carried(context_, cells, "tc_carried");
-    const shared::TcParams params = motion_.params(RC_TC_CELLS_COSINE);
-    context_.launch(carry_kernel_, cells, batch.params, params, SceneArguments(bvh_, device_scene_),
-                    batch.records, batch.origins, batch.streams, batch.cells, motion_.moved_slot(),
-                    motion_.moved_triangles(), motion_.emitters_now(), motion_.emitters_next(),
-                    carried);
-    Buffer<shared::float4> next_cells(context_, cells, "tc_next_cells");
-    Buffer<unsigned> marks(context_, cells, "tc_marks");
-    context_.launch(assemble_kernel_, batch.count, batch.params, params, batch.streams, carried,
-                    batch.cells, next_cells, marks);
+    // The records' frames (their normals), with no cell below the surface: irradiance caching's
+    // cosine-weighted cells all lie above the record's plane.
+    std::vector<shared::float4> normal_values(batch.count);
+    for (size_t b = 0; b < batch.count; ++b) {
+        normal_values[b] = batch.record_values[b].normal;
+        normal_values[b].w = 0.0f;
+    }
+    const Buffer<shared::float4> normals(context_, normal_values, "tc_normals");
+    const Buffer<shared::float4> next_cells = cells_.next_cells(
+        motion_, {RC_TC_CELLS_COSINE, batch.params.strata_m, batch.params.strata_n,
+                  batch.params.seed_lo ^ RC_IC_RNG_DOMAIN,
+                  batch.params.seed_hi ^ (static_cast<unsigned>(batch.params.level) * 0x9e3779b9u),
+                  batch.origins, normals, normals, batch.streams, batch.cells, batch.count});
     Buffer<shared::IrradiancePayload> payloads(context_, batch.count, "tc_next_payloads");
     Buffer<shared::float4> distances(context_, batch.count, "tc_next_distances");
     context_.launch(reduce_kernel_, batch.count, batch.params, next_cells, batch.records,

@@ -12,7 +12,8 @@
 
 #include "device/buffer.h"
 #include "methods/frame_scene.h"
-#include "methods/irradiance_cache/irradiance_cache.h"
+#include "methods/records/irradiance_cache.h"
+#include "methods/temporal/tc_cells.h"
 #include "methods/temporal/tc_motion.h"
 #include "shared/temporal.h"
 
@@ -47,8 +48,7 @@ class TemporalReprojection final : public RecordBatchObserver, private FrameBoun
 
    private:
     TcMotion motion_;
-    Kernel carry_kernel_;
-    Kernel assemble_kernel_;
+    TcCellCarrier cells_;
     Kernel reduce_kernel_;
     std::map<int, std::vector<CarriedRecord>> carried_;  // by level
     double seconds_ = 0.0;

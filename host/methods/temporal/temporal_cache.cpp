@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
-#include "methods/irradiance_cache/ic_stats.h"
-#include "methods/irradiance_cache/record_level_source.h"
+#include "methods/records/ic_stats.h"
+#include "methods/records/record_level_source.h"
 #include "util/error.h"
 #include "util/timing.h"
 

@@ -15,11 +15,11 @@
 #include <optional>
 #include <vector>
 
-#include "methods/irradiance_cache/irradiance_cache.h"
 #include "methods/method.h"
+#include "methods/records/irradiance_cache.h"
 #include "methods/temporal/tc_reprojection.h"
+#include "methods/temporal/temporal_glossy.h"
 #include "methods/temporal/temporal_options.h"
-#include "methods/temporal/temporal_radiance_cache.h"
 #include "methods/temporal/temporal_record.h"
 
 namespace rc {
@@ -57,7 +57,7 @@ class TemporalIrradianceCache {
                             int frame_count);
     // With `glossy` (`--method rc --temporal`), the glossy lobes come from its radiance records:
     // placed in pass 1 after each frame's irradiance records, read in pass 2.
-    void set_glossy(TemporalRadianceCache* glossy) { glossy_ = glossy; }
+    void set_glossy(TemporalGlossyRecords* glossy) { glossy_ = glossy; }
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks);
 
@@ -123,7 +123,7 @@ class TemporalIrradianceCache {
     std::vector<Level> levels_;                    // 0: the camera's
     std::vector<std::vector<Serving>> serving_;    // per frame from first_frame_: first level
     std::vector<TemporalFrameStats> frame_stats_;  // per frame from first_frame_
-    TemporalRadianceCache* glossy_ = nullptr;
+    TemporalGlossyRecords* glossy_ = nullptr;
 };
 
 }  // namespace rc

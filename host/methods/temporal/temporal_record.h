@@ -4,8 +4,9 @@
 // from which its value at any frame it serves follows (temporal gradients).
 #pragma once
 
-#include "methods/irradiance_cache/irradiance_cache.h"
-#include "methods/irradiance_cache/irradiance_records.h"
+#include "methods/records/irradiance_cache.h"
+#include "methods/records/irradiance_records.h"
+#include "methods/temporal/temporal_lifespan.h"
 #include "methods/temporal/temporal_options.h"
 
 namespace rc {
@@ -25,12 +26,6 @@ struct TemporalRecord {
 // channels holding at least 1e-3 of E_0's largest; infinite when E_0 is black and E_1 is not.
 float temporal_change(const shared::IrradiancePayload& now, const shared::IrradiancePayload& next);
 
-// How many frames a record with that change serves, counting its own: the temporal weight
-// w^t(t) = 1 / (|tau - 1| (t - t_0)) (eq. 9) stays at least 1 / a^t (eq. 10) for
-// t - t_0 <= a^t / |tau - 1|, and t - t_0 < delta t_max (eq. 12). A record whose own surface moves
-// serves one frame.
-int temporal_lifespan(float change, const TemporalOptions& options, bool site_moves);
-
 // The curvature of a record's irradiance over its first frames, relative: the largest over the
 // RGB channels holding at least 1e-3 of E_0's largest of |E_2 - 2 E_1 + E_0| / E_0 (the second
 // difference of E at t_0, t_0 + 1, t_0 + 2: E_1 and E_2 reprojected one and two frames ahead);
@@ -38,28 +33,6 @@ int temporal_lifespan(float change, const TemporalOptions& options, bool site_mo
 float temporal_curvature(const shared::IrradiancePayload& now,
                          const shared::IrradiancePayload& next,
                          const shared::IrradiancePayload& ahead);
-
-// How many frames a record serves when the bound is its departure from the line towards its
-// replacement (interpolated gradients, the report's eqs. 21-23 with a replacement at t_0 + L):
-// for E(t) = E_0 + b (t - t_0) + c (t - t_0)^2 / 2 the line from E(t_0) to E(t_0 + L) departs
-// from E by c (t - t_0)(t_0 + L - t) / 2, at most |c| L^2 / 8 (at t_0 + L / 2), which stays
-// within a^t (eq. 10's bound on the relative error) for L <= sqrt(8 a^t / |c|); at most
-// delta t_max (eq. 12), at least 1. A change linear in time (c = 0) serves delta t_max. A record
-// whose own surface moves serves one frame.
-int departure_lifespan(float curvature, const TemporalOptions& options, bool site_moves);
-
-// `lifespan` of a record created at `frame` of a clip ending at `last_frame`, cut as
-// temporal_lifespan_in_clip cuts it (`change`: the record's one-frame change).
-int lifespan_in_clip(int lifespan, float change, const TemporalOptions& options, int frame,
-                     int last_frame);
-
-// temporal_lifespan of a record created at `frame` of a clip ending at `last_frame`, where with
-// interpolated gradients a changing record that would outlive the clip expires at its last frame
-// instead, so that it is replaced there and the frames before blend towards the replacement
-// rather than extrapolate the record's one-frame change over several (a record that sees no
-// change keeps its value either way).
-int temporal_lifespan_in_clip(float change, const TemporalOptions& options, bool site_moves,
-                              int frame, int last_frame);
 
 // Record r's payload at `frame` (created <= frame < created + lifespan): with `successor` (the
 // record replacing it; may be null) and the chosen temporal gradients, E, grad_r and grad_t of
