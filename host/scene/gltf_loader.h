@@ -2,7 +2,7 @@
 // radcache scene: meshes with their node transforms, the camera, metallic-roughness materials
 // mapped to ours, base-colour textures, emissive materials as area lights, KHR_lights_punctual
 // point and spot lights. What it cannot honour is warned about once per feature; what makes the
-// file unreadable is an Error naming the file. Mapping: docs/scene-format.md#gltf-20-import.
+// file unreadable is an Error naming the file. Mapping: docs/importing.md#gltf-20-import.
 #pragma once
 
 #include <filesystem>

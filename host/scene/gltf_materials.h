@@ -1,4 +1,4 @@
-// glTF 2.0 metallic-roughness materials mapped to radcache's (docs/scene-format.md#gltf-20-import):
+// glTF 2.0 metallic-roughness materials mapped to radcache's (docs/importing.md#gltf-20-import):
 // base colour to the diffuse lobe, metallic and roughness to a Phong lobe, the base-colour texture
 // to the diffuse texture, the emissive factor (times KHR_materials_emissive_strength) to an area
 // light's radiance.

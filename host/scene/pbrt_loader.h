@@ -1,5 +1,5 @@
 // Reads a pbrt-v4 scene (.pbrt, with the files it includes, its PLY meshes and image textures)
-// into a radcache scene (docs/scene-format.md#pbrt-v4-import): the graphics state (the current
+// into a radcache scene (docs/importing.md#pbrt-v4-import): the graphics state (the current
 // transform, attributes, named coordinate systems, materials, area lights, object instances)
 // is followed directive by directive; the camera, film, sampler, integrator and pixel filter
 // become the scene's camera and render defaults. A directive or parameter radcache cannot

@@ -1,4 +1,4 @@
-// pbrt-v4 materials and textures mapped to radcache's (docs/scene-format.md#pbrt-v4-import):
+// pbrt-v4 materials and textures mapped to radcache's (docs/importing.md#pbrt-v4-import):
 // "diffuse" as is; "coateddiffuse" as a Phong lobe of the coat's Fresnel reflectance at normal
 // incidence over the diffuse base; "conductor" as a Phong lobe of the metal's reflectance at
 // normal incidence; roughness to the Phong exponent through the Beckmann-Phong correspondence.

@@ -1,5 +1,5 @@
 // pbrt-v4's scene description read into a flat list of directives with their arguments and
-// typed parameter lists (docs/scene-format.md#pbrt-v4-import). Include and Import are followed
+// typed parameter lists (docs/importing.md#pbrt-v4-import). Include and Import are followed
 // here, in place, relative to the main file's folder (as pbrt resolves them), so the list is
 // the whole scene in reading order. The meaning of the directives is scene/pbrt_loader.cpp's.
 #pragma once

@@ -1,4 +1,4 @@
-// The triangles of pbrt-v4's shapes (docs/scene-format.md#pbrt-v4-import): "trianglemesh"
+// The triangles of pbrt-v4's shapes (docs/importing.md#pbrt-v4-import): "trianglemesh"
 // (P, indices, N, uv), "bilinearmesh" (each planar patch as two triangles), "plymesh" (read
 // through Assimp) and "sphere" (tessellated), in object space. Errors name the directive.
 #pragma once

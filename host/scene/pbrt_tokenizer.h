@@ -1,4 +1,4 @@
-// The tokens of pbrt-v4's scene description format (docs/scene-format.md#pbrt-v4-import): words
+// The tokens of pbrt-v4's scene description format (docs/importing.md#pbrt-v4-import): words
 // (directives and bare true/false), quoted strings, numbers and square brackets; '#' starts a
 // comment that runs to the end of the line. Every token knows its line, so errors name
 // "file:line".

@@ -1,4 +1,4 @@
-// The irradiance vector grid as a radiance source (common/radiance_source.h,
+// The irradiance vector grid as a radiance source (records/radiance_source.h,
 // RC_RADIANCE_GRID; --ic-ivg): at a ray's hit, direct light by next-event estimation (unless the
 // grid holds it), rho_d / pi E from the grid, the other lobes by path tracing (rc_ivg_radiance,
 // with the grid's own depth limits).

@@ -9,6 +9,7 @@
 #include "common/pixel_sampler.h"
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_near.h"
+#include "records/ic_shading.h"
 
 // The camera ray of sample s of a pixel (the G-buffer and the render pass draw the same one).
 RC_FUNC Ray rc_decomp_camera_ray(const DecompParams* params, const CameraParams* camera, uint pixel,
@@ -28,26 +29,11 @@ RC_FUNC GBufferSample rc_decomp_gbuffer_sample(const DecompParams* params, const
     RngStream rng;
     float x, y;
     const Ray ray = rc_decomp_camera_ray(params, camera, pixel, s, &rng, &x, &y);
-    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
-    GBufferSample g;
-    g.position = g.normal = g.origin = (float4)(0.0f);
-    g.footprint = g.diffuse = 0.0f;
-    g.primitive = -1;
-    g.served = 0;
-    if (hit.primitive == RC_NO_HIT) {
-        return g;
+    GBufferSample g = rc_ic_gbuffer_sample(scene, ray);
+    if (g.primitive >= 0) {
+        g.footprint = rc_ic_pixel_footprint(camera, x, y, g.footprint);
     }
-    const SurfacePoint sp = rc_surface_point(scene, ray, hit);
-    const SurfaceMaterial material = rc_surface_material(scene, &sp);
-    const float3 d = camera->top_left.xyz + camera->right.xyz * (x / (float)camera->resolution.x) +
-                     camera->down.xyz * (y / (float)camera->resolution.y);
-    g.position = (float4)(sp.position, 0.0f);
-    g.normal = (float4)(sp.shading.n, 0.0f);
-    g.origin = (float4)(sp.origin, 0.0f);
-    g.footprint = hit.t * length(camera->right.xyz) / ((float)camera->resolution.x * length(d));
-    g.diffuse = rc_luminance(material.diffuse);
-    g.primitive = (int)hit.primitive;
-    g.served = g.diffuse > 0.0f && params->max_depth >= 2 ? 1 : 0;
+    g.served = g.served != 0 && params->max_depth >= 2 ? 1 : 0;
     return g;
 }
 

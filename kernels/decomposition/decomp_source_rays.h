@@ -1,11 +1,11 @@
 // The decomposition's rays that read the coarse global-illumination solution (the paper, §4:
 // "Wherever these rays hit, we lookup the proxy global illumination"; here the source the program
 // is built for, the irradiance vector grid): a cluster's far-field rays and the radiosity B(t) of
-// the split triangles. Includes common/radiance_source.h: include this header after the
+// the split triangles. Includes records/radiance_source.h: include this header after the
 // program's other headers (see there).
 #pragma once
 
-#include "common/radiance_source.h"
+#include "records/radiance_source.h"
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_radiosity.h"
 #include "decomposition/decomp_radiosity_rays.h"

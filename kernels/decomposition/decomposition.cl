@@ -6,7 +6,7 @@
 #include "decomposition/decomp_radiosity_rays.h"
 #include "decomposition/decomp_shading.h"
 #include "scene_arguments.h"
-// The source after the method's own headers (see common/radiance_source.h).
+// The source after the method's own headers (see records/radiance_source.h).
 #include "decomposition/decomp_source_rays.h"
 
 // Entry i = pixel * spp + s: the first hit of that camera sample.

@@ -6,30 +6,6 @@
 #include "records/ic_shading.h"
 #include "scene_arguments.h"
 
-// The G-buffer entry of a ray's first hit, with the hit distance as its footprint (to be scaled
-// by the caller).
-RC_FUNC GBufferSample rc_ic_gbuffer_sample(const SceneData* scene, Ray ray) {
-    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
-    GBufferSample g;
-    g.position = g.normal = g.origin = (float4)(0.0f);
-    g.footprint = g.diffuse = 0.0f;
-    g.primitive = -1;
-    g.served = 0;
-    if (hit.primitive != RC_NO_HIT) {
-        const SurfacePoint sp = rc_surface_point(scene, ray, hit);
-        const SurfaceMaterial material = rc_surface_material(scene, &sp);
-        const float diffuse = rc_luminance(material.diffuse);
-        g.position = (float4)(sp.position, 0.0f);
-        g.normal = (float4)(sp.shading.n, 0.0f);
-        g.origin = (float4)(sp.origin, 0.0f);
-        g.footprint = hit.t;
-        g.diffuse = diffuse;
-        g.primitive = (int)hit.primitive;
-        g.served = diffuse > 0.0f ? 1 : 0;
-    }
-    return g;
-}
-
 // Entry i = pixel * spp + s: the first hit of that camera sample.
 __kernel void ic_gbuffer(uint begin, uint end, IcParams params, CameraParams camera,
                          RC_SCENE_PARAMETERS, __global GBufferSample* gbuffer) {

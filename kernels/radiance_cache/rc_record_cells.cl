@@ -1,10 +1,10 @@
 // Entry kernel of radiance caching's hemisphere sampling (host/methods/radiance_cache/): the
 // radiance arriving through each cell of a batch of records, the light beyond the hemisphere
-// rays' hits read from the source the program is built for (common/radiance_source.h).
+// rays' hits read from the source the program is built for (records/radiance_source.h).
 #include "radiance_cache/rc_records.h"
 #include "scene_arguments.h"
-// The source after the method's own headers (see common/radiance_source.h).
-#include "common/radiance_source.h"
+// The source after the method's own headers (see records/radiance_source.h).
+#include "records/radiance_source.h"
 
 // Item i: cell i % (M N) of batch record i / (M N) (random stream streams[i / (M N)]), the
 // record at sites[i / (M N)]: (L.rgb, distance to the hit) in cells[i], a NaN or infinite

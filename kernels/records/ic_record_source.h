@@ -1,4 +1,4 @@
-// A deeper cache level of irradiance records as a radiance source (common/radiance_source.h,
+// A deeper cache level of irradiance records as a radiance source (records/radiance_source.h,
 // RC_RADIANCE_RECORDS; --ic-bounces): at a ray's hit, direct light by next-event estimation, the
 // diffuse lobe's indirect light interpolated from the level's records, the other lobes (and the
 // diffuse lobe where no record covers the hit) by path tracing (rc_ic_cached_radiance).

@@ -17,6 +17,31 @@ RC_FUNC float rc_ic_pixel_footprint(const CameraParams* camera, float x, float y
     return t * length(camera->right.xyz) / ((float)camera->resolution.x * length(d));
 }
 
+// The G-buffer entry of a ray's first hit (irradiance caching's camera samples and hemisphere
+// hits, the decomposition's camera samples), with the hit distance as its footprint (to be scaled
+// by the caller: rc_ic_pixel_footprint for a camera ray). served: it has a diffuse lobe.
+RC_FUNC GBufferSample rc_ic_gbuffer_sample(const SceneData* scene, Ray ray) {
+    const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
+    GBufferSample g;
+    g.position = g.normal = g.origin = (float4)(0.0f);
+    g.footprint = g.diffuse = 0.0f;
+    g.primitive = -1;
+    g.served = 0;
+    if (hit.primitive != RC_NO_HIT) {
+        const SurfacePoint sp = rc_surface_point(scene, ray, hit);
+        const SurfaceMaterial material = rc_surface_material(scene, &sp);
+        const float diffuse = rc_luminance(material.diffuse);
+        g.position = (float4)(sp.position, 0.0f);
+        g.normal = (float4)(sp.shading.n, 0.0f);
+        g.origin = (float4)(sp.origin, 0.0f);
+        g.footprint = hit.t;
+        g.diffuse = diffuse;
+        g.primitive = (int)hit.primitive;
+        g.served = diffuse > 0.0f ? 1 : 0;
+    }
+    return g;
+}
+
 // A deeper cache level's "pixel", per unit distance: a quarter of the angular width of one of the
 // M N strata of a record's hemisphere (sqrt(2 pi / (M N)) radians). Records at deeper levels are
 // spaced more finely than the hemisphere rays that read them: spacing them by whole strata left

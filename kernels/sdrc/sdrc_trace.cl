@@ -1,12 +1,12 @@
 // Entry kernels of SDRC's rays (host/methods/sdrc/; DESIGN.md §6.5): a new record's N samples and
 // the interpolation's misses, the light beyond each ray's hit read from the source the program is
-// built for (common/radiance_source.h). The rays are the camera hit's first bounce: the emission
+// built for (records/radiance_source.h). The rays are the camera hit's first bounce: the emission
 // they see is direct light, left to the render pass's next-event estimation unless the tests ask
 // for it.
 #include "scene_arguments.h"
 #include "sdrc/sdrc_records.h"
-// The source after the method's own headers (see common/radiance_source.h).
-#include "common/radiance_source.h"
+// The source after the method's own headers (see records/radiance_source.h).
+#include "records/radiance_source.h"
 
 // The light along a ray from `origin` in direction w (NaN or infinite radiance stored as black),
 // its hit distance in w; rays counted into *rays.

@@ -65,7 +65,7 @@ TEST(ProgramBuild, IrradianceCachingLeavesTheGridsDepositionOut) {
     EXPECT_EQ(occurrences(grid, "#line 1 \"irradiance_vector_grid/ivg_deposit.h\""), 1u);
 }
 
-// The hemisphere rays' kernel builds for every radiance source (common/radiance_source.h).
+// The hemisphere rays' kernel builds for every radiance source (records/radiance_source.h).
 TEST(ProgramBuild, RecordCellsBuildForEveryRadianceSource) {
     Context& context = test::shared_context();
     for (int source : {RC_RADIANCE_PATH, RC_RADIANCE_RECORDS, RC_RADIANCE_GRID}) {
