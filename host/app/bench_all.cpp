@@ -411,9 +411,7 @@ int bench_all(const ParsedArguments& arguments) {
 CommandSpec bench_all_command() {
     return {
         .name = "bench all",
-        .synopsis = "bench all",
         .summary = "every kernel family on every device, side by side",
-        .usage = "radcache bench all [options]",
         .description =
             "Every kernel family on every OpenCL device (or those --device names), side by\n"
             "side: traversal Mrays/s (coherent and incoherent, closest and any hit) with Embree's\n"

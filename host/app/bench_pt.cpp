@@ -103,9 +103,7 @@ int bench_pt(const ParsedArguments& arguments) {
 CommandSpec bench_pt_command() {
     return {
         .name = "bench pt",
-        .synopsis = "bench pt",
         .summary = "path-tracing throughput",
-        .usage = "radcache bench pt [options]",
         .description =
             "Path-traces the scene and reports path samples/s and Mrays/s (device kernel time),\n"
             "and the ratio of its ray throughput to raw traversal of incoherent rays on the same\n"

@@ -162,9 +162,7 @@ int bench_rays(const ParsedArguments& arguments) {
 CommandSpec bench_rays_command() {
     return {
         .name = "bench rays",
-        .synopsis = "bench rays",
         .summary = "traversal throughput against Embree",
-        .usage = "radcache bench rays [options]",
         .description =
             "Measures closest-hit and any-hit throughput (Mrays/s) of the device traversal on\n"
             "coherent (camera) and incoherent (diffuse bounce) rays, in each BVH layout (bvh4 and\n"

@@ -172,9 +172,7 @@ int bench_sh(const ParsedArguments& arguments) {
 CommandSpec bench_sh_command() {
     return {
         .name = "bench sh",
-        .synopsis = "bench sh",
         .summary = "radiance caching's spherical harmonics: projection, rotation, BRDF tables",
-        .usage = "radcache bench sh [options]",
         .description =
             "Radiance caching's spherical harmonics at order 10 on one device (kernel time):\n"
             "coefficients projected/s from stratified hemisphere samples, r, g, b vector triples\n"

@@ -77,7 +77,6 @@ int warmup(const ParsedArguments& arguments) {
 
 CommandSpec warmup_command() {
     return {.name = "warmup",
-            .synopsis = "warmup",
             .summary = "build the kernel programs a render needs into the binary cache",
             .usage = "radcache warmup [--method NAME [its options]] [options]",
             .description =
