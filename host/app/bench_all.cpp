@@ -269,7 +269,7 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
 }
 
 std::vector<OptionSpec> bench_all_options() {
-    std::vector<OptionSpec> specs = {
+    return with_device_options({
         {"--scene", "", "FILE", "scene (default scenes/cornell-box/scene.json)"},
         OptionSpec{"--width", "", "N", "image width (default 512)"}.integers(1, 1 << 14),
         OptionSpec{"--height", "", "N", "image height (default 512)"}.integers(1, 1 << 14),
@@ -282,11 +282,7 @@ std::vector<OptionSpec> bench_all_options() {
                    "photons traced into the irradiance vector grid (default 2^18)"}
             .integers(1, 1LL << 31),
         {"--json", "", "FILE", "also write the results as JSON"},
-    };
-    for (OptionSpec& spec : device_option_specs()) {
-        specs.push_back(std::move(spec));
-    }
-    return specs;
+    });
 }
 
 int bench_all(const ParsedArguments& arguments) {

@@ -18,17 +18,13 @@ namespace rc {
 namespace {
 
 std::vector<OptionSpec> bench_pt_options() {
-    std::vector<OptionSpec> specs = {
+    return with_device_options({
         {"--scene", "", "FILE", "scene (default scenes/cornell-box/scene.json)"},
         OptionSpec{"--width", "", "N", "image width (default 512)"}.integers(1, 1 << 14),
         OptionSpec{"--height", "", "N", "image height (default 512)"}.integers(1, 1 << 14),
         OptionSpec{"--spp", "", "N", "timed samples per pixel (default 16)"}.integers(1, 1 << 16),
         {"--json", "", "FILE", "also write the results as JSON"},
-    };
-    for (OptionSpec& spec : device_option_specs()) {
-        specs.push_back(std::move(spec));
-    }
-    return specs;
+    });
 }
 
 int bench_pt(const ParsedArguments& arguments) {
