@@ -6,8 +6,8 @@
 
 #include "app/commands.h"
 #include "app/device_options.h"
+#include "app/path_tracing_bench.h"
 #include "app/ray_bench.h"
-#include "methods/path_tracer/path_tracer.h"
 #include "scene/camera.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
@@ -43,19 +43,10 @@ int bench_pt(const ParsedArguments& arguments) {
     // timed render.
     RayBench rays(context, scene, threads, 3);
     const DeviceScene device_scene(context, scene);
-    PathTracer tracer({context, scene, rays.device_bvh(), device_scene});
-    PathTracerOptions options;
-    options.width = width;
-    options.height = height;
-    options.spp = 1;
-    options.max_depth = scene.render.max_depth;
-    options.rr_depth = scene.render.rr_depth;
-    tracer.render(options);
-    const double before = context.kernel_times().at("path_trace_pass").seconds;
-    options.spp = spp;
-    PathTracerStats stats;
-    tracer.render(options, &stats);
-    const double seconds = context.kernel_times().at("path_trace_pass").seconds - before;
+    const PathTracingTime timed =
+        time_path_tracing({context, scene, rays.device_bvh(), device_scene}, width, height, spp);
+    const PathTracerStats& stats = timed.stats;
+    const double seconds = timed.seconds;
     const double paths = static_cast<double>(width) * height * spp;
 
     // Raw traversal on the same scene: camera rays and their diffuse bounces.
