@@ -640,11 +640,8 @@ class PbrtSceneBuilder {
 
 Scene load_pbrt_scene(const std::filesystem::path& path, const SceneFiles& files) {
     const std::vector<PbrtDirective> directives = parse_pbrt_file(path, files);
-    Scene scene;
-    scene.path = path;
-    PbrtSceneBuilder(path, files, scene).build(directives);
-    pose_loaded_scene(scene, 0.0);
-    return scene;
+    return imported_scene(
+        path, [&](Scene& scene) { PbrtSceneBuilder(path, files, scene).build(directives); });
 }
 
 }  // namespace rc
