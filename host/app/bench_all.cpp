@@ -2,7 +2,6 @@
 // one run (DESIGN.md §7), with Embree's native intersector on the same rays as the anchor.
 #include <algorithm>
 #include <cstdio>
-#include <functional>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -11,12 +10,12 @@
 #include "app/bench_together.h"
 #include "app/commands.h"
 #include "app/device_options.h"
+#include "app/path_tracing_bench.h"
 #include "app/ray_bench.h"
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "device/device_list.h"
 #include "methods/grid/irradiance_vector_grid.h"
-#include "methods/path_tracer/path_tracer.h"
 #include "methods/radiance_cache/radiance_cache.h"
 #include "methods/records/irradiance_cache.h"
 #include "methods/sdrc/sdrc_cache.h"
@@ -64,14 +63,12 @@ double kernel_seconds_since(const Context& context, const std::map<std::string, 
 // Irradiance caching on glossy-box (the shipped scene with glossy lobes: the benchmark's own
 // scene may have none) with a glossy cache serving the specular lobes, at the benchmark's size up
 // to 128², 2 camera samples, the diffuse records with 256 rays and one level (not what is
-// measured), after a 16² warm-up. `make_cache(frame)` makes the cache of a render and
-// `keep(cache)` reads its statistics; returns the kernel times before the timed render.
-template <class Cache, class Keep>
-std::map<std::string, KernelTime> render_glossy_box(
-    Context& context, int width, int height,
-    const std::function<std::unique_ptr<Cache>(const FrameScene&, int max_depth, int rr_depth)>&
-        make_cache,
-    const Keep& keep) {
+// measured), after a 16² warm-up. Each render makes a Cache with its Options at their defaults
+// but for the scene's path depths, and `keep(cache)` reads its statistics; returns the kernel
+// times before the timed render.
+template <class Cache, class Options, class Keep>
+std::map<std::string, KernelTime> render_glossy_box(Context& context, int width, int height,
+                                                    const Keep& keep) {
     const Scene scene = load_scene(shipped_scene("glossy-box"));
     const Bvh bvh = build_bvh(scene.mesh, context.bvh_layout());
     const DeviceBvh device_bvh(context, bvh);
@@ -89,7 +86,10 @@ std::map<std::string, KernelTime> render_glossy_box(
         ic.max_depth = scene.render.max_depth;
         ic.rr_depth = scene.render.rr_depth;
         ic.records_overlay = false;
-        const std::unique_ptr<Cache> cache = make_cache(frame, ic.max_depth, ic.rr_depth);
+        Options options;
+        options.max_depth = ic.max_depth;
+        options.rr_depth = ic.rr_depth;
+        const auto cache = std::make_unique<Cache>(frame, options);
         ic.glossy = cache.get();
         IrradianceCache(frame).render(ic);
         keep(*cache);
@@ -103,15 +103,8 @@ std::map<std::string, KernelTime> render_glossy_box(
 // products each).
 void bench_radiance_cache(Context& context, int width, int height, DeviceResult* result) {
     RadianceCacheStats stats;
-    const auto before = render_glossy_box<RadianceCache>(
-        context, width, height,
-        [](const FrameScene& frame, int max_depth, int rr_depth) {
-            RadianceCacheOptions options;
-            options.max_depth = max_depth;
-            options.rr_depth = rr_depth;
-            return std::make_unique<RadianceCache>(frame, options);
-        },
-        [&](const RadianceCache& cache) { stats = cache.stats(); });
+    const auto before = render_glossy_box<RadianceCache, RadianceCacheOptions>(
+        context, width, height, [&](const RadianceCache& cache) { stats = cache.stats(); });
     const double project_seconds = kernel_seconds_since(context, before, {"rc_record_project"});
     const double coefficients = static_cast<double>(stats.records) * stats.strata_m *
                                 stats.strata_n * 3.0 * stats.order * stats.order;
@@ -127,15 +120,8 @@ void bench_radiance_cache(Context& context, int width, int height, DeviceResult*
 // per second.
 void bench_sdrc(Context& context, int width, int height, DeviceResult* result) {
     SdrcStats stats;
-    const auto before = render_glossy_box<SdrcCache>(
-        context, width, height,
-        [](const FrameScene& frame, int max_depth, int rr_depth) {
-            SdrcOptions options;
-            options.max_depth = max_depth;
-            options.rr_depth = rr_depth;
-            return std::make_unique<SdrcCache>(frame, options);
-        },
-        [&](const SdrcCache& cache) { stats = cache.stats(); });
+    const auto before = render_glossy_box<SdrcCache, SdrcOptions>(
+        context, width, height, [&](const SdrcCache& cache) { stats = cache.stats(); });
     const double seconds = kernel_seconds_since(context, before, {"sdrc_interpolate"});
     result->figures.push_back({"ltree_queries_per_second", "SDRC L-tree range queries/s (M)",
                                static_cast<double>(stats.range_queries) / seconds * 1e-6, 0.0});
@@ -168,24 +154,13 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
     const DeviceScene device_scene(context, scene);
 
     // Path tracing: a one-pass warm-up (kernel build, code generation), then the timed passes.
-    PathTracer tracer({context, scene, rays.device_bvh(), device_scene});
-    PathTracerOptions pt;
-    pt.width = width;
-    pt.height = height;
-    pt.spp = 1;
-    pt.max_depth = scene.render.max_depth;
-    pt.rr_depth = scene.render.rr_depth;
-    tracer.render(pt);
-    auto before = context.kernel_times();
-    pt.spp = pt_spp;
-    PathTracerStats pt_stats;
-    tracer.render(pt, &pt_stats);
-    const double pt_seconds = kernel_seconds_since(context, before, {"path_trace_pass"});
+    const PathTracingTime pt =
+        time_path_tracing({context, scene, rays.device_bvh(), device_scene}, width, height, pt_spp);
     const double paths = static_cast<double>(width) * height * pt_spp;
     result.figures.push_back(
-        {"path_samples_per_second", "path samples/s (M)", paths / pt_seconds * 1e-6, 0.0});
+        {"path_samples_per_second", "path samples/s (M)", paths / pt.seconds * 1e-6, 0.0});
     result.figures.push_back({"path_tracing_mrays", "path tracing Mrays/s",
-                              static_cast<double>(pt_stats.rays) / pt_seconds * 1e-6, 0.0});
+                              static_cast<double>(pt.stats.rays) / pt.seconds * 1e-6, 0.0});
 
     // Irradiance caching at its defaults, one camera sample per pixel: hemisphere samples (a
     // ray and its path-traced continuation each) of the record kernels, and camera samples of
@@ -199,7 +174,7 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
     ic.rr_depth = scene.render.rr_depth;
     ic.records_overlay = false;
     cache.render(ic);
-    before = context.kernel_times();
+    auto before = context.kernel_times();
     ic.width = width;
     ic.height = height;
     IrradianceCacheStats ic_stats;
@@ -269,7 +244,7 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
 }
 
 std::vector<OptionSpec> bench_all_options() {
-    std::vector<OptionSpec> specs = {
+    return with_device_options({
         {"--scene", "", "FILE", "scene (default scenes/cornell-box/scene.json)"},
         OptionSpec{"--width", "", "N", "image width (default 512)"}.integers(1, 1 << 14),
         OptionSpec{"--height", "", "N", "image height (default 512)"}.integers(1, 1 << 14),
@@ -282,11 +257,7 @@ std::vector<OptionSpec> bench_all_options() {
                    "photons traced into the irradiance vector grid (default 2^18)"}
             .integers(1, 1LL << 31),
         {"--json", "", "FILE", "also write the results as JSON"},
-    };
-    for (OptionSpec& spec : device_option_specs()) {
-        specs.push_back(std::move(spec));
-    }
-    return specs;
+    });
 }
 
 int bench_all(const ParsedArguments& arguments) {
@@ -411,9 +382,7 @@ int bench_all(const ParsedArguments& arguments) {
 CommandSpec bench_all_command() {
     return {
         .name = "bench all",
-        .synopsis = "bench all",
         .summary = "every kernel family on every device, side by side",
-        .usage = "radcache bench all [options]",
         .description =
             "Every kernel family on every OpenCL device (or those --device names), side by\n"
             "side: traversal Mrays/s (coherent and incoherent, closest and any hit) with Embree's\n"

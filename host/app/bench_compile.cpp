@@ -88,9 +88,7 @@ int bench_compile(const ParsedArguments& arguments) {
 CommandSpec bench_compile_command() {
     return {
         .name = "bench compile",
-        .synopsis = "bench compile",
         .summary = "cold and warm kernel build times",
-        .usage = "radcache bench compile [options]",
         .description =
             "Builds every kernel program twice in fresh, empty caches: cold (compiled from\n"
             "source; PoCL's own cache also empty) and warm (loaded from the binary cache the cold\n"

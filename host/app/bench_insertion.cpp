@@ -145,7 +145,6 @@ int bench_insertion(const ParsedArguments& arguments) {
 
 CommandSpec bench_insertion_command() {
     return {.name = "bench insertion",
-            .synopsis = "bench insertion",
             .summary = "the host's record insertion and neighbor clamping over a saved cache",
             .usage = "radcache bench insertion --cache-in FILE [options]",
             .description =

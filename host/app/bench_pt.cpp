@@ -6,8 +6,8 @@
 
 #include "app/commands.h"
 #include "app/device_options.h"
+#include "app/path_tracing_bench.h"
 #include "app/ray_bench.h"
-#include "methods/path_tracer/path_tracer.h"
 #include "scene/camera.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
@@ -18,17 +18,13 @@ namespace rc {
 namespace {
 
 std::vector<OptionSpec> bench_pt_options() {
-    std::vector<OptionSpec> specs = {
+    return with_device_options({
         {"--scene", "", "FILE", "scene (default scenes/cornell-box/scene.json)"},
         OptionSpec{"--width", "", "N", "image width (default 512)"}.integers(1, 1 << 14),
         OptionSpec{"--height", "", "N", "image height (default 512)"}.integers(1, 1 << 14),
         OptionSpec{"--spp", "", "N", "timed samples per pixel (default 16)"}.integers(1, 1 << 16),
         {"--json", "", "FILE", "also write the results as JSON"},
-    };
-    for (OptionSpec& spec : device_option_specs()) {
-        specs.push_back(std::move(spec));
-    }
-    return specs;
+    });
 }
 
 int bench_pt(const ParsedArguments& arguments) {
@@ -47,19 +43,10 @@ int bench_pt(const ParsedArguments& arguments) {
     // timed render.
     RayBench rays(context, scene, threads, 3);
     const DeviceScene device_scene(context, scene);
-    PathTracer tracer({context, scene, rays.device_bvh(), device_scene});
-    PathTracerOptions options;
-    options.width = width;
-    options.height = height;
-    options.spp = 1;
-    options.max_depth = scene.render.max_depth;
-    options.rr_depth = scene.render.rr_depth;
-    tracer.render(options);
-    const double before = context.kernel_times().at("path_trace_pass").seconds;
-    options.spp = spp;
-    PathTracerStats stats;
-    tracer.render(options, &stats);
-    const double seconds = context.kernel_times().at("path_trace_pass").seconds - before;
+    const PathTracingTime timed =
+        time_path_tracing({context, scene, rays.device_bvh(), device_scene}, width, height, spp);
+    const PathTracerStats& stats = timed.stats;
+    const double seconds = timed.seconds;
     const double paths = static_cast<double>(width) * height * spp;
 
     // Raw traversal on the same scene: camera rays and their diffuse bounces.
@@ -103,9 +90,7 @@ int bench_pt(const ParsedArguments& arguments) {
 CommandSpec bench_pt_command() {
     return {
         .name = "bench pt",
-        .synopsis = "bench pt",
         .summary = "path-tracing throughput",
-        .usage = "radcache bench pt [options]",
         .description =
             "Path-traces the scene and reports path samples/s and Mrays/s (device kernel time),\n"
             "and the ratio of its ray throughput to raw traversal of incoherent rays on the same\n"

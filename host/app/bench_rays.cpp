@@ -29,7 +29,7 @@ namespace {
 constexpr const char* kDenseSceneName = "generated:sphere-grid";
 
 std::vector<OptionSpec> bench_rays_specs() {
-    std::vector<OptionSpec> specs = {
+    return with_device_options({
         {"--scene", "", "FILE",
          "scene to measure (repeatable; default: scenes/cornell-box/scene.json and the generated "
          "512k-triangle sphere grid, named " +
@@ -45,11 +45,7 @@ std::vector<OptionSpec> bench_rays_specs() {
             .integers(1, 4096),
         OptionSpec{"--seed", "", "N", "seed of the bounce directions (default 1)"}.integers(
             0, 1LL << 62),
-    };
-    for (OptionSpec& spec : device_option_specs()) {
-        specs.push_back(std::move(spec));
-    }
-    return specs;
+    });
 }
 
 // One layout's figures on one scene: the BVH's size and the four cases.
@@ -162,9 +158,7 @@ int bench_rays(const ParsedArguments& arguments) {
 CommandSpec bench_rays_command() {
     return {
         .name = "bench rays",
-        .synopsis = "bench rays",
         .summary = "traversal throughput against Embree",
-        .usage = "radcache bench rays [options]",
         .description =
             "Measures closest-hit and any-hit throughput (Mrays/s) of the device traversal on\n"
             "coherent (camera) and incoherent (diffuse bounce) rays, in each BVH layout (bvh4 and\n"

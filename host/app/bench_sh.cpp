@@ -81,7 +81,7 @@ ShFigures measure(Context& context, int records, int m, int n) {
 }
 
 std::vector<OptionSpec> bench_sh_options() {
-    std::vector<OptionSpec> specs = {
+    return with_device_options({
         {"--scene", "", "FILE", "scene whose materials get BRDF tables (default glossy-box)"},
         OptionSpec{"--records", "", "N",
                    "records projected and vector triples rotated (default 4096)"}
@@ -94,11 +94,7 @@ std::vector<OptionSpec> bench_sh_options() {
         OptionSpec{"--resolution", "", "N", "BRDF table texels per side (default 32)"}.integers(
             2, 256),
         {"--json", "", "FILE", "also write the results as JSON"},
-    };
-    for (OptionSpec& spec : device_option_specs()) {
-        specs.push_back(std::move(spec));
-    }
-    return specs;
+    });
 }
 
 int bench_sh(const ParsedArguments& arguments) {
@@ -172,9 +168,7 @@ int bench_sh(const ParsedArguments& arguments) {
 CommandSpec bench_sh_command() {
     return {
         .name = "bench sh",
-        .synopsis = "bench sh",
         .summary = "radiance caching's spherical harmonics: projection, rotation, BRDF tables",
-        .usage = "radcache bench sh [options]",
         .description =
             "Radiance caching's spherical harmonics at order 10 on one device (kernel time):\n"
             "coefficients projected/s from stratified hemisphere samples, r, g, b vector triples\n"

@@ -208,6 +208,17 @@ int run_command(const CommandLine& line, const BoundCommand& bound,
 
 }  // namespace
 
+CommandSpec fill_in_usage(const std::string& program, CommandSpec command) {
+    if (command.synopsis.empty()) {
+        command.synopsis = command.name;
+    }
+    if (command.usage.empty()) {
+        command.usage =
+            program + " " + command.synopsis + (command.options.empty() ? "" : " [options]");
+    }
+    return command;
+}
+
 int run_command_line(const CommandLine& line, const std::vector<std::string>& words) {
     CommandTree tree(line);
     // The words after "--" are positional arguments of the command (CLI11 2.1 would hand them

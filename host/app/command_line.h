@@ -13,9 +13,9 @@ namespace rc {
 
 struct CommandSpec {
     std::string name;         // "render", or "bench rays": the subcommand rays of bench
-    std::string synopsis;     // its line in `radcache --help`: "render SCENE"
+    std::string synopsis;     // its line in `radcache --help`: "render SCENE" (unset: the name)
     std::string summary;      // what it does, on that line
-    std::string usage;        // "radcache render SCENE [options]"
+    std::string usage;        // "radcache render SCENE [options]" (unset: see fill_in_usage)
     std::string description;  // the paragraph of its --help
     std::vector<OptionSpec> options;
     // Runs the command on its checked options and positional arguments; returns the exit status.
@@ -35,6 +35,10 @@ struct CommandLine {
     std::vector<CommandGroup> groups;
     std::vector<CommandSpec> commands;
 };
+
+// `command` with its unset synopsis and usage filled in: the synopsis is the name, the usage line
+// "PROGRAM SYNOPSIS", followed by " [options]" when the command has options.
+CommandSpec fill_in_usage(const std::string& program, CommandSpec command);
 
 // Parses `words` (the arguments after the program's name) and runs the command they name.
 // --help prints the help of the command named (exit status 0); a bad command line is an

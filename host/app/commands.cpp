@@ -11,10 +11,13 @@ CommandLine radcache_command_line() {
     line.program = "radcache";
     line.version = "radcache 0.1.0";
     line.groups = {{"bench", "benchmark"}};
-    line.commands = {devices_command(),         render_command(),        compare_command(),
-                     convert_command(),         warmup_command(),        bench_all_command(),
-                     bench_rays_command(),      bench_pt_command(),      bench_sh_command(),
-                     bench_insertion_command(), bench_compile_command(), reference_command()};
+    for (const CommandSpec& command :
+         {devices_command(), render_command(), compare_command(), convert_command(),
+          warmup_command(), bench_all_command(), bench_rays_command(), bench_pt_command(),
+          bench_sh_command(), bench_insertion_command(), bench_compile_command(),
+          reference_command()}) {
+        line.commands.push_back(fill_in_usage(line.program, command));
+    }
     return line;
 }
 

@@ -40,7 +40,6 @@ CommandSpec convert_command() {
     return {.name = "convert",
             .synopsis = "convert IN OUT.json",
             .summary = "a glTF or pbrt-v4 scene in radcache's scene format",
-            .usage = "radcache convert IN OUT.json [options]",
             .description =
                 "Writes the glTF 2.0 scene IN (.gltf or .glb) or the pbrt-v4 scene "
                 "IN (.pbrt) in radcache's scene format: OUT.json, its meshes as "

@@ -28,6 +28,13 @@ std::vector<OptionSpec> device_option_specs() {
     };
 }
 
+std::vector<OptionSpec> with_device_options(std::vector<OptionSpec> specs) {
+    for (OptionSpec& spec : device_option_specs()) {
+        specs.push_back(std::move(spec));
+    }
+    return specs;
+}
+
 ContextOptions context_options(const ParsedArguments& arguments) {
     ContextOptions options;
     options.device_spec = arguments.value("--device");

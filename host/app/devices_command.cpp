@@ -19,9 +19,7 @@ int devices(const ParsedArguments& arguments) {
 
 CommandSpec devices_command() {
     return {.name = "devices",
-            .synopsis = "devices",
             .summary = "list the OpenCL platforms and devices",
-            .usage = "radcache devices",
             .description =
                 "Lists every OpenCL platform and device; the index P:D selects one "
                 "with --device.",

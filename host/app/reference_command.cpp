@@ -10,14 +10,11 @@ namespace rc {
 
 CommandSpec reference_command() {
     return {.name = "reference",
-            .synopsis = "reference",
             .summary = "print every command's and method's options in Markdown",
-            .usage = "radcache reference",
             .description =
                 "Prints the command-line reference (docs/command-line.md): every "
                 "command's options and every method's option table, with defaults, "
                 "ranges and quality knobs.",
-            .options = {},
             .run = [](const ParsedArguments& arguments) {
                 if (!arguments.positionals().empty()) {
                     throw Error("radcache reference takes no positional argument", kExitUsage);

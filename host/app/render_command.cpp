@@ -227,7 +227,6 @@ CommandSpec render_command() {
     return {.name = "render",
             .synopsis = "render SCENE",
             .summary = "render a scene to an image",
-            .usage = "radcache render SCENE [options]",
             .description =
                 "Renders SCENE (a scene.json file, or a glTF 2.0 .gltf/.glb file) to an image.",
             .options = render_option_specs(),

@@ -24,13 +24,10 @@ void add_programs(const MethodEntry& entry, const ParsedArguments& arguments,
 }
 
 std::vector<OptionSpec> warmup_options() {
-    std::vector<OptionSpec> specs = {
-        {"--method", "", "NAME",
-         "the method (with its options) whose programs to build (default: every method at its "
-         "defaults)"}};
-    for (OptionSpec& spec : device_option_specs()) {
-        specs.push_back(std::move(spec));
-    }
+    std::vector<OptionSpec> specs = with_device_options(
+        {{"--method", "", "NAME",
+          "the method (with its options) whose programs to build (default: every method at its "
+          "defaults)"}});
     for (OptionSpec& spec : method_option_specs()) {
         specs.push_back(std::move(spec));
     }
@@ -77,7 +74,6 @@ int warmup(const ParsedArguments& arguments) {
 
 CommandSpec warmup_command() {
     return {.name = "warmup",
-            .synopsis = "warmup",
             .summary = "build the kernel programs a render needs into the binary cache",
             .usage = "radcache warmup [--method NAME [its options]] [options]",
             .description =

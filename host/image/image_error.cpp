@@ -37,6 +37,12 @@ void check_mask(const PixelMask& mask, const Image& reference, const std::string
     }
 }
 
+void check_selected_any(const PixelMask& mask, size_t selected, const std::string& test_name) {
+    if (mask.mask != nullptr && selected == 0) {
+        throw Error(test_name + ": the mask selects no pixel", kExitUsage);
+    }
+}
+
 namespace {
 
 // sRGB transfer function, display value to linear.
@@ -63,18 +69,13 @@ NonfinitePixels count_nonfinite_pixels(const Image& test, const Image& reference
     check_comparable(test, reference, "image");
     check_mask(mask, reference, "image");
     NonfinitePixels counts;
-    for (int y = 0; y < test.height; ++y) {
-        for (int x = 0; x < test.width; ++x) {
-            if (!mask.selects(x, y)) {
-                continue;
-            }
-            const bool test_finite = pixel_finite(test, x, y);
-            const bool reference_finite = pixel_finite(reference, x, y);
-            counts.test += test_finite ? 0 : 1;
-            counts.reference += reference_finite ? 0 : 1;
-            counts.finite += test_finite && reference_finite ? 1 : 0;
-        }
-    }
+    mask.for_each_selected(test.width, test.height, [&](int x, int y) {
+        const bool test_finite = pixel_finite(test, x, y);
+        const bool reference_finite = pixel_finite(reference, x, y);
+        counts.test += test_finite ? 0 : 1;
+        counts.reference += reference_finite ? 0 : 1;
+        counts.finite += test_finite && reference_finite ? 1 : 0;
+    });
     return counts;
 }
 
@@ -103,33 +104,26 @@ ImageError image_error(const Image& test, const Image& reference, const std::str
     e.reference_means.assign(channels, 0.0);
     double squared = 0.0;
     double relative = 0.0;
-    for (int y = 0; y < test.height; ++y) {
-        for (int x = 0; x < test.width; ++x) {
-            if (!mask.selects(x, y)) {
-                continue;
-            }
-            ++e.pixels;
-            for (int c = 0; c < channels; ++c) {
-                const double v = test.at(x, y, c);
-                const double r = reference.at(x, y, c);
-                const double d = v - r;
-                squared += d * d;
-                relative += relative_squared_error(v, r);
-                e.test_means[c] += v;
-                e.reference_means[c] += r;
-                if (!(std::fabs(d) <= e.max_error)) {  // NaN counts as the largest error
-                    e.max_error =
-                        std::isnan(d) ? std::numeric_limits<double>::infinity() : std::fabs(d);
-                    e.max_x = x;
-                    e.max_y = y;
-                    e.max_channel = c;
-                }
+    mask.for_each_selected(test.width, test.height, [&](int x, int y) {
+        ++e.pixels;
+        for (int c = 0; c < channels; ++c) {
+            const double v = test.at(x, y, c);
+            const double r = reference.at(x, y, c);
+            const double d = v - r;
+            squared += d * d;
+            relative += relative_squared_error(v, r);
+            e.test_means[c] += v;
+            e.reference_means[c] += r;
+            if (!(std::fabs(d) <= e.max_error)) {  // NaN counts as the largest error
+                e.max_error =
+                    std::isnan(d) ? std::numeric_limits<double>::infinity() : std::fabs(d);
+                e.max_x = x;
+                e.max_y = y;
+                e.max_channel = c;
             }
         }
-    }
-    if (mask.mask != nullptr && e.pixels == 0) {
-        throw Error(test_name + ": the mask selects no pixel", kExitUsage);
-    }
+    });
+    check_selected_any(mask, e.pixels, test_name);
     const double values = static_cast<double>(e.pixels) * channels;
     if (values > 0.0) {
         e.rmse = std::sqrt(squared / values);
@@ -156,19 +150,14 @@ double reference_noise_relmse(const Image& reference, const Image& stddev, doubl
     // Var(r) = stddev^2 / spp per value, over the relMSE denominator r^2 + 0.01, averaged.
     double noise = 0.0;
     size_t values = 0;
-    for (int y = 0; y < reference.height; ++y) {
-        for (int x = 0; x < reference.width; ++x) {
-            if (!mask.selects(x, y)) {
-                continue;
-            }
-            for (int c = 0; c < reference.channels; ++c) {
-                const double r = reference.at(x, y, c);
-                const double s = stddev.at(x, y, c);
-                noise += s * s / spp / (r * r + 0.01);
-                ++values;
-            }
+    mask.for_each_selected(reference.width, reference.height, [&](int x, int y) {
+        for (int c = 0; c < reference.channels; ++c) {
+            const double r = reference.at(x, y, c);
+            const double s = stddev.at(x, y, c);
+            noise += s * s / spp / (r * r + 0.01);
+            ++values;
         }
-    }
+    });
     return values == 0 ? 0.0 : noise / static_cast<double>(values);
 }
 

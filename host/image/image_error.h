@@ -39,6 +39,18 @@ struct ImageError {
 struct PixelMask {
     const Image* mask = nullptr;
     bool selects(int x, int y) const { return mask == nullptr || mask->at(x, y, 0) > 0.0f; }
+
+    // Calls visit(x, y) for every pixel of a width x height image it selects, row by row.
+    template <class Visit>
+    void for_each_selected(int width, int height, Visit visit) const {
+        for (int y = 0; y < height; ++y) {
+            for (int x = 0; x < width; ++x) {
+                if (selects(x, y)) {
+                    visit(x, y);
+                }
+            }
+        }
+    }
 };
 
 // Pixels with a NaN or infinite channel (compare counts them instead of reporting
@@ -61,6 +73,10 @@ void check_comparable(const Image& test, const Image& reference, const std::stri
 // Error (exit status 2) naming `test_name` when `mask` is set and its size differs from
 // `reference`'s.
 void check_mask(const PixelMask& mask, const Image& reference, const std::string& test_name);
+
+// Error (exit status 2) naming `test_name` when `mask` is set and selected none of the pixels
+// (`selected` of them).
+void check_selected_any(const PixelMask& mask, size_t selected, const std::string& test_name);
 
 // The relMSE term of one value: (v - r)^2 / (r^2 + 0.01).
 double relative_squared_error(double value, double reference);

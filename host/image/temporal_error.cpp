@@ -31,20 +31,13 @@ double mean_over_mask(const Image& reference, PixelMask mask, const std::string&
                       size_t* pixels, Term term) {
     double sum = 0.0;
     size_t selected = 0;
-    for (int y = 0; y < reference.height; ++y) {
-        for (int x = 0; x < reference.width; ++x) {
-            if (!mask.selects(x, y)) {
-                continue;
-            }
-            ++selected;
-            for (int c = 0; c < reference.channels; ++c) {
-                sum += term(x, y, c);
-            }
+    mask.for_each_selected(reference.width, reference.height, [&](int x, int y) {
+        ++selected;
+        for (int c = 0; c < reference.channels; ++c) {
+            sum += term(x, y, c);
         }
-    }
-    if (mask.mask != nullptr && selected == 0) {
-        throw Error(test_name + ": the mask selects no pixel", kExitUsage);
-    }
+    });
+    check_selected_any(mask, selected, test_name);
     *pixels = selected;
     const double values = static_cast<double>(selected) * reference.channels;
     return values > 0.0 ? sum / values : 0.0;

@@ -6,53 +6,68 @@
 
 namespace rc {
 
-int pixel_filter_type(const std::string& name) {
-    if (name == "box") {
-        return RC_FILTER_BOX;
-    }
-    if (name == "tent") {
-        return RC_FILTER_TENT;
-    }
-    if (name == "gaussian") {
-        return RC_FILTER_GAUSSIAN;
+namespace {
+
+// A pixel filter by name, with the radius it has when none is given.
+struct PixelFilterEntry {
+    const char* name;
+    int type;  // RC_FILTER_*
+    float default_radius;
+};
+
+// The first one, box, stands for a type not listed.
+constexpr PixelFilterEntry kPixelFilters[] = {{"box", RC_FILTER_BOX, 0.5f},
+                                              {"tent", RC_FILTER_TENT, 1.0f},
+                                              {"gaussian", RC_FILTER_GAUSSIAN, 1.5f}};
+
+// A pixel sampler by name.
+struct PixelSamplerEntry {
+    const char* name;
+    int type;  // RC_SAMPLER_*
+};
+
+// The last one, sobol, stands for a type not listed.
+constexpr PixelSamplerEntry kPixelSamplers[] = {{"independent", RC_SAMPLER_INDEPENDENT},
+                                                {"sobol", RC_SAMPLER_SOBOL}};
+
+// The type of the entry of `table` named `name`, or -1.
+template <class Entry, size_t N>
+int type_named(const Entry (&table)[N], const std::string& name) {
+    for (const Entry& entry : table) {
+        if (name == entry.name) {
+            return entry.type;
+        }
     }
     return -1;
 }
+
+// The entry of `table` of type `type`, or `fallback`.
+template <class Entry, size_t N>
+const Entry& entry_of_type(const Entry (&table)[N], int type, const Entry& fallback) {
+    for (const Entry& entry : table) {
+        if (entry.type == type) {
+            return entry;
+        }
+    }
+    return fallback;
+}
+
+}  // namespace
+
+int pixel_filter_type(const std::string& name) { return type_named(kPixelFilters, name); }
 
 std::string pixel_filter_name(int type) {
-    switch (type) {
-        case RC_FILTER_TENT:
-            return "tent";
-        case RC_FILTER_GAUSSIAN:
-            return "gaussian";
-        default:
-            return "box";
-    }
+    return entry_of_type(kPixelFilters, type, kPixelFilters[0]).name;
 }
 
-int pixel_sampler_type(const std::string& name) {
-    if (name == "independent") {
-        return RC_SAMPLER_INDEPENDENT;
-    }
-    if (name == "sobol") {
-        return RC_SAMPLER_SOBOL;
-    }
-    return -1;
-}
+int pixel_sampler_type(const std::string& name) { return type_named(kPixelSamplers, name); }
 
 std::string pixel_sampler_name(int type) {
-    return type == RC_SAMPLER_INDEPENDENT ? "independent" : "sobol";
+    return entry_of_type(kPixelSamplers, type, kPixelSamplers[1]).name;
 }
 
 float default_filter_radius(int type) {
-    switch (type) {
-        case RC_FILTER_TENT:
-            return 1.0f;
-        case RC_FILTER_GAUSSIAN:
-            return 1.5f;
-        default:
-            return 0.5f;
-    }
+    return entry_of_type(kPixelFilters, type, kPixelFilters[0]).default_radius;
 }
 
 shared::CameraParams camera_params(const Camera& camera, int width, int height) {

@@ -480,11 +480,8 @@ class GltfSceneBuilder {
 Scene load_gltf_scene(const std::filesystem::path& path, const SceneFiles& files,
                       const std::string& camera) {
     const tinygltf::Model model = read_model(path, files);
-    Scene scene;
-    scene.path = path;
-    GltfSceneBuilder(path, model, scene).build(camera);
-    pose_loaded_scene(scene, 0.0);
-    return scene;
+    return imported_scene(
+        path, [&](Scene& scene) { GltfSceneBuilder(path, model, scene).build(camera); });
 }
 
 }  // namespace rc

@@ -162,21 +162,18 @@ class PbrtSceneBuilder {
 
     // The rendering options before WorldBegin.
     bool options_directive(const PbrtDirective& d) {
-        if (d.name == "Camera") {
+        // The directives allowed only before WorldBegin, each read by its handler.
+        using Handler = void (PbrtSceneBuilder::*)(const PbrtDirective&);
+        static const std::map<std::string, Handler> kHandlers = {
+            {"Camera", &PbrtSceneBuilder::camera},
+            {"Film", &PbrtSceneBuilder::film},
+            {"Sampler", &PbrtSceneBuilder::sampler},
+            {"Integrator", &PbrtSceneBuilder::integrator},
+            {"PixelFilter", &PbrtSceneBuilder::pixel_filter},
+            {"WorldBegin", &PbrtSceneBuilder::world_begin}};
+        if (const auto handler = kHandlers.find(d.name); handler != kHandlers.end()) {
             require(d, false);
-            camera(d);
-        } else if (d.name == "Film") {
-            require(d, false);
-            film(d);
-        } else if (d.name == "Sampler") {
-            require(d, false);
-            sampler(d);
-        } else if (d.name == "Integrator") {
-            require(d, false);
-            integrator(d);
-        } else if (d.name == "PixelFilter") {
-            require(d, false);
-            pixel_filter(d);
+            (this->*handler->second)(d);
         } else if (d.name == "Accelerator") {
             require(d, false);  // radcache builds its own BVH
         } else if (d.name == "Option") {
@@ -187,9 +184,6 @@ class PbrtSceneBuilder {
                                 " is not supported (radcache renders in linear sRGB)",
                             kExitUnsupported);
             }
-        } else if (d.name == "WorldBegin") {
-            require(d, false);
-            world_begin(d);
         } else {
             return false;
         }
@@ -640,11 +634,8 @@ class PbrtSceneBuilder {
 
 Scene load_pbrt_scene(const std::filesystem::path& path, const SceneFiles& files) {
     const std::vector<PbrtDirective> directives = parse_pbrt_file(path, files);
-    Scene scene;
-    scene.path = path;
-    PbrtSceneBuilder(path, files, scene).build(directives);
-    pose_loaded_scene(scene, 0.0);
-    return scene;
+    return imported_scene(
+        path, [&](Scene& scene) { PbrtSceneBuilder(path, files, scene).build(directives); });
 }
 
 }  // namespace rc

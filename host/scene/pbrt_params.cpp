@@ -65,13 +65,20 @@ std::string declared(const PbrtParam& p) { return "\"" + excerpt(p.type + " " + 
 
 }  // namespace
 
+const PbrtParam* PbrtParams::find_single(const std::string& name,
+                                         const std::vector<std::string>& types, bool strings,
+                                         const std::string& expects) {
+    const PbrtParam* p = find(name, types);
+    if (p != nullptr && (strings ? p->strings.size() : p->numbers.size()) != 1) {
+        fail("parameter " + declared(*p) + " expects " + expects);
+    }
+    return p;
+}
+
 float PbrtParams::get_float(const std::string& name, float fallback) {
-    const PbrtParam* p = find(name, {"float"});
+    const PbrtParam* p = find_single(name, {"float"}, false, "one number");
     if (p == nullptr) {
         return fallback;
-    }
-    if (p->numbers.size() != 1) {
-        fail("parameter " + declared(*p) + " expects one number");
     }
     const auto value = static_cast<float>(p->numbers[0]);
     if (!std::isfinite(value)) {
@@ -81,36 +88,18 @@ float PbrtParams::get_float(const std::string& name, float fallback) {
 }
 
 int PbrtParams::get_int(const std::string& name, int fallback) {
-    const PbrtParam* p = find(name, {"integer"});
-    if (p == nullptr) {
-        return fallback;
-    }
-    if (p->numbers.size() != 1) {
-        fail("parameter " + declared(*p) + " expects one integer");
-    }
-    return static_cast<int>(p->numbers[0]);
+    const PbrtParam* p = find_single(name, {"integer"}, false, "one integer");
+    return p == nullptr ? fallback : static_cast<int>(p->numbers[0]);
 }
 
 bool PbrtParams::get_bool(const std::string& name, bool fallback) {
-    const PbrtParam* p = find(name, {"bool"});
-    if (p == nullptr) {
-        return fallback;
-    }
-    if (p->strings.size() != 1) {
-        fail("parameter " + declared(*p) + " expects one of true or false");
-    }
-    return p->strings[0] == "true";
+    const PbrtParam* p = find_single(name, {"bool"}, true, "one of true or false");
+    return p == nullptr ? fallback : p->strings[0] == "true";
 }
 
 std::string PbrtParams::get_string(const std::string& name, const std::string& fallback) {
-    const PbrtParam* p = find(name, {"string", "texture"});
-    if (p == nullptr) {
-        return fallback;
-    }
-    if (p->strings.size() != 1) {
-        fail("parameter " + declared(*p) + " expects one string");
-    }
-    return p->strings[0];
+    const PbrtParam* p = find_single(name, {"string", "texture"}, true, "one string");
+    return p == nullptr ? fallback : p->strings[0];
 }
 
 std::optional<glm::vec3> PbrtParams::get_point3(const std::string& name) {

@@ -48,6 +48,10 @@ class PbrtParams {
 
    private:
     const PbrtParam* find(const std::string& name, const std::vector<std::string>& types);
+    // find() for a parameter of one value: one number, or one string when `strings`; a parameter
+    // with another count fails, saying it `expects` ("one integer").
+    const PbrtParam* find_single(const std::string& name, const std::vector<std::string>& types,
+                                 bool strings, const std::string& expects);
 
     std::vector<PbrtParam> params_;
     std::vector<bool> used_;

@@ -35,11 +35,32 @@ bool planar(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
     return std::abs(glm::dot(n / length, glm::dvec3(d) - glm::dvec3(a))) <= 1e-5 * size;
 }
 
-void check_index(double index, size_t vertices, const PbrtParams& params) {
-    if (!(index >= 0.0 && index < static_cast<double>(vertices))) {
-        params.fail("index " + excerpt(std::to_string(static_cast<long long>(index))) +
-                    " out of range (" + std::to_string(vertices) + " vertices)");
+// Each of the `corners` indices of the face from indices[first] names one of the vertices.
+void check_face(const std::vector<double>& indices, size_t first, size_t corners, size_t vertices,
+                const PbrtParams& params) {
+    for (size_t k = 0; k < corners; ++k) {
+        const double index = indices[first + k];
+        if (!(index >= 0.0 && index < static_cast<double>(vertices))) {
+            params.fail("index " + excerpt(std::to_string(static_cast<long long>(index))) +
+                        " out of range (" + std::to_string(vertices) + " vertices)");
+        }
     }
+}
+
+// The "integer indices" of a mesh of faces of `corners` vertices; a mesh of a single `face` may
+// omit them (its vertices in order).
+std::vector<double> face_indices(PbrtParams& params, const TriangleMesh& mesh, size_t corners,
+                                 const std::string& face) {
+    std::vector<double> indices = params.get_numbers("indices", {"integer"}, corners);
+    if (indices.empty()) {
+        if (mesh.positions.size() != corners) {
+            params.fail("\"integer indices\" is missing (only a single " + face + " may omit it)");
+        }
+        for (size_t k = 0; k < corners; ++k) {
+            indices.push_back(static_cast<double>(k));
+        }
+    }
+    return indices;
 }
 
 // P, N and uv of a mesh shape; N and uv, when given, one per vertex.
@@ -76,17 +97,9 @@ TriangleMesh mesh_vertices(PbrtParams& params) {
 
 TriangleMesh triangle_mesh(PbrtParams& params) {
     TriangleMesh mesh = mesh_vertices(params);
-    std::vector<double> indices = params.get_numbers("indices", {"integer"}, 3);
-    if (indices.empty()) {
-        if (mesh.positions.size() != 3) {
-            params.fail("\"integer indices\" is missing (only a single triangle may omit it)");
-        }
-        indices = {0, 1, 2};
-    }
+    const std::vector<double> indices = face_indices(params, mesh, 3, "triangle");
     for (size_t i = 0; i < indices.size(); i += 3) {
-        for (int k = 0; k < 3; ++k) {
-            check_index(indices[i + k], mesh.positions.size(), params);
-        }
+        check_face(indices, i, 3, mesh.positions.size(), params);
         mesh.triangles.emplace_back(indices[i], indices[i + 1], indices[i + 2]);
     }
     return mesh;
@@ -96,18 +109,10 @@ TriangleMesh triangle_mesh(PbrtParams& params) {
 // the winding of its normal cross(p10 - p00, p01 - p00).
 TriangleMesh bilinear_mesh(PbrtParams& params) {
     TriangleMesh mesh = mesh_vertices(params);
-    std::vector<double> indices = params.get_numbers("indices", {"integer"}, 4);
-    if (indices.empty()) {
-        if (mesh.positions.size() != 4) {
-            params.fail("\"integer indices\" is missing (only a single patch may omit it)");
-        }
-        indices = {0, 1, 2, 3};
-    }
+    const std::vector<double> indices = face_indices(params, mesh, 4, "patch");
     bool warned = false;
     for (size_t i = 0; i < indices.size(); i += 4) {
-        for (int k = 0; k < 4; ++k) {
-            check_index(indices[i + k], mesh.positions.size(), params);
-        }
+        check_face(indices, i, 4, mesh.positions.size(), params);
         const glm::uvec4 q(indices[i], indices[i + 1], indices[i + 2], indices[i + 3]);
         mesh.triangles.emplace_back(q.x, q.y, q.w);
         mesh.triangles.emplace_back(q.x, q.w, q.z);

@@ -21,6 +21,18 @@ bool in_number(char c) {
 
 bool in_word(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
+// The character pbrt's escape \`escaped` stands for, or '\0' when it is none of pbrt's escapes.
+char unescaped(char escaped) {
+    static constexpr char kEscapes[][2] = {{'n', '\n'}, {'t', '\t'},  {'b', '\b'},  {'f', '\f'},
+                                           {'r', '\r'}, {'\\', '\\'}, {'\'', '\''}, {'"', '"'}};
+    for (const auto& escape : kEscapes) {
+        if (escape[0] == escaped) {
+            return escape[1];
+        }
+    }
+    return '\0';
+}
+
 }  // namespace
 
 PbrtTokenizer::PbrtTokenizer(std::string text, std::string file)
@@ -97,11 +109,13 @@ PbrtToken PbrtTokenizer::read_string() {
     PbrtToken token;
     token.kind = PbrtTokenKind::kString;
     token.line = line_;
+    const auto unterminated = [&] {
+        return Error(where(token.line) + ": unterminated string \"" + excerpt(token.text) + "\"");
+    };
     ++position_;  // the opening quote
     for (;;) {
         if (position_ >= text_.size() || text_[position_] == '\n') {
-            throw Error(where(token.line) + ": unterminated string \"" + excerpt(token.text) +
-                        "\"");
+            throw unterminated();
         }
         const char c = text_[position_++];
         if (c == '"') {
@@ -112,35 +126,15 @@ PbrtToken PbrtTokenizer::read_string() {
             continue;
         }
         if (position_ >= text_.size()) {
-            throw Error(where(token.line) + ": unterminated string \"" + excerpt(token.text) +
-                        "\"");
+            throw unterminated();
         }
         const char escaped = text_[position_++];
-        switch (escaped) {
-            case 'n':
-                token.text += '\n';
-                break;
-            case 't':
-                token.text += '\t';
-                break;
-            case 'b':
-                token.text += '\b';
-                break;
-            case 'f':
-                token.text += '\f';
-                break;
-            case 'r':
-                token.text += '\r';
-                break;
-            case '\\':
-            case '\'':
-            case '"':
-                token.text += escaped;
-                break;
-            default:
-                throw Error(where(token.line) + ": unknown escape '\\" +
-                            excerpt(std::string(1, escaped)) + "' in a string");
+        const char character = unescaped(escaped);
+        if (character == '\0') {
+            throw Error(where(token.line) + ": unknown escape '\\" +
+                        excerpt(std::string(1, escaped)) + "' in a string");
         }
+        token.text += character;
     }
 }
 

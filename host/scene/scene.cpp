@@ -40,6 +40,14 @@ void pose_loaded_scene(Scene& scene, double frame) {
     }
 }
 
+Scene imported_scene(const std::filesystem::path& path, const std::function<void(Scene&)>& build) {
+    Scene scene;
+    scene.path = path;
+    build(scene);
+    pose_loaded_scene(scene, 0.0);
+    return scene;
+}
+
 void Scene::add_shape(Shape shape) {
     dropped_degenerate += drop_degenerate_triangles(shape.mesh);
     if (shape.materials.empty()) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <glm/mat4x4.hpp>
 #include <optional>
 #include <string>
@@ -82,6 +83,10 @@ struct Scene {
 // Completes a loaded scene: poses it at `frame`; Error naming the scene's file when it has no
 // triangles (none given, or all degenerate) or the frame cannot be built.
 void pose_loaded_scene(Scene& scene, double frame);
+
+// A scene imported from `path` (glTF, pbrt-v4): `build` fills it in, then it is posed at frame 0
+// (pose_loaded_scene).
+Scene imported_scene(const std::filesystem::path& path, const std::function<void(Scene&)>& build);
 
 // The index of the default material (diffuse 0.5), added on first use.
 int default_material(Scene& scene);
