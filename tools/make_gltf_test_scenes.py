@@ -20,6 +20,8 @@ import struct
 import sys
 import zlib
 
+from scene_files import load_json_with_comments, read_obj
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
 
@@ -76,24 +78,8 @@ class Builder:
         return json.dumps(self.gltf, indent=1)
 
 
-def read_obj(path):
-    positions, faces = [], []
-    for line in path.read_text().splitlines():
-        words = line.split()
-        if not words:
-            continue
-        if words[0] == "v":
-            positions.append(tuple(float(w) for w in words[1:4]))
-        elif words[0] == "f":
-            corners = [int(w.split("/")[0]) - 1 for w in words[1:]]
-            for k in range(1, len(corners) - 1):
-                faces.append((corners[0], corners[k], corners[k + 1]))
-    return positions, faces
-
-
 def cornell_box():
-    scene = json.loads("\n".join(l for l in (ROOT / "scenes/cornell-box/scene.json").read_text().splitlines()
-                                  if not l.lstrip().startswith("//")))
+    scene = load_json_with_comments(ROOT / "scenes/cornell-box/scene.json")
     b = Builder()
     materials = {}
     for name, m in scene["materials"].items():

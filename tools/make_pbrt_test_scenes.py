@@ -14,11 +14,11 @@ library):
 
 usage: tools/make_pbrt_test_scenes.py [OUT_DIR]   (default tests/data/pbrt)
 """
-import json
 import pathlib
 import sys
 
-from make_gltf_test_scenes import png_2x2, read_obj
+from make_gltf_test_scenes import png_2x2
+from scene_files import load_json_with_comments, read_obj
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
@@ -33,8 +33,7 @@ def mesh(positions, faces, extra=""):
 
 
 def cornell_box():
-    scene = json.loads("\n".join(l for l in (ROOT / "scenes/cornell-box/scene.json").read_text().splitlines()
-                                  if not l.lstrip().startswith("//")))
+    scene = load_json_with_comments(ROOT / "scenes/cornell-box/scene.json")
     camera = scene["camera"]
     out = ["# scenes/cornell-box/scene.json in pbrt-v4's format (tools/make_pbrt_test_scenes.py)\n",
            "Scale -1 1 1\n",

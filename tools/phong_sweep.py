@@ -26,10 +26,13 @@ Usage: tools/phong_sweep.py [--methods rc sdrc] [--exponents 8 16 24 32 64] [--s
 
 import argparse
 import csv
+import functools
 import json
 import os
-import subprocess
 import sys
+
+from echoed_run import echoed_run
+from extra_options import parse_with_extra
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
@@ -73,13 +76,7 @@ SCENE = """{
 """
 
 
-def run(command):
-    print("+ " + " ".join(command), flush=True)
-    result = subprocess.run(command, capture_output=True, text=True)
-    if result.returncode != 0:
-        sys.exit("phong_sweep: %s failed:\n%s%s" % (" ".join(command), result.stdout,
-                                                        result.stderr))
-    return result.stdout
+run = functools.partial(echoed_run, "phong_sweep")
 
 
 def render(scene, image, options):
@@ -177,12 +174,7 @@ def main(argv):
                         help="more options of the methods' renders, one string "
                              "(\"--ic-bounces 1\")")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "phong"))
-    extra = []
-    if "--" in argv:
-        extra = argv[argv.index("--") + 1:]
-        argv = argv[:argv.index("--")]
-    args = parser.parse_args(argv)
-    args.extra = extra
+    args, args.extra = parse_with_extra(parser, argv)
     args.method_options = args.method_options.split()
     if min(args.exponents) < 1 or args.size < 1 or args.spp < 1 or args.reference_spp < 1:
         parser.error("exponents, --size, --spp and --reference-spp must be positive")

@@ -24,11 +24,14 @@ scene is swept at its first frame.
 """
 
 import argparse
+import functools
 import json
 import os
 import shutil
-import subprocess
 import sys
+
+from echoed_run import echoed_run
+from extra_options import parse_with_extra
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
@@ -39,13 +42,7 @@ QUICK = ["--pt-spp", "1", "2", "4", "8", "16", "32", "64", "128", "256", "--ic-r
          "--decomp-cluster", "20%", "5%"]
 
 
-def run(command):
-    print("+ " + " ".join(command), flush=True)
-    result = subprocess.run(command, capture_output=True, text=True)
-    if result.returncode != 0:
-        sys.exit("results: %s failed:\n%s%s" % (" ".join(command), result.stdout,
-                                                 result.stderr))
-    return result.stdout
+run = functools.partial(echoed_run, "results")
 
 
 def number(value, digits=3):
@@ -156,13 +153,7 @@ def main(argv):
     parser.add_argument("--quick", action="store_true", help="fewer points per sweep (QUICK)")
     parser.add_argument("--reuse", action="store_true",
                         help="take a scene's existing OUT/SCENE/sweep.json instead of sweeping")
-    if "--" in argv:
-        split = argv.index("--")
-        args = parser.parse_args(argv[:split])
-        extra = argv[split + 1:]
-    else:
-        args = parser.parse_args(argv)
-        extra = []
+    args, extra = parse_with_extra(parser, argv)
     os.makedirs(os.path.join(DOCS, "results"), exist_ok=True)
     os.makedirs(args.out, exist_ok=True)
 

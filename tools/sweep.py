@@ -126,6 +126,7 @@ import time
 import references
 import sweep_knobs
 import sweep_report
+from extra_options import parse_with_extra
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
@@ -707,13 +708,7 @@ def parse_arguments(argv):
     parser.add_argument("--crop", type=int, nargs=4, metavar=("X", "Y", "W", "H"),
                         help="equal-time crop (default: the middle half)")
     parser.add_argument("--out", help="output directory (default build/sweep/SCENE)")
-    if "--" in argv:
-        split = argv.index("--")
-        args = parser.parse_args(argv[:split])
-        args.extra = argv[split + 1:]
-    else:
-        args = parser.parse_args(argv)
-        args.extra = []
+    args, args.extra = parse_with_extra(parser, argv)
     if args.methods is None:
         args.methods = [] if args.ladder else DEFAULT_METHODS
     if args.ladder_spp is not None and args.ladder_spp < 1:

@@ -16,6 +16,7 @@
 
 #include "glossy_scenes.h"  // test::bitwise_equal
 #include "image/image.h"
+#include "image_options.h"
 #include "methods/decomposition/decomposition.h"
 #include "methods/decomposition/triangle_split.h"
 #include "methods/radiance_source.h"
@@ -145,10 +146,7 @@ std::optional<double> front_hit(const shared::NearTriangle& t, glm::dvec3 o, glm
 DecompositionOptions radiosity_source_options(const PathContinuation& path, int size, float alpha,
                                               float min_cluster_size, int cluster_rays,
                                               int iterations) {
-    DecompositionOptions options;
-    options.width = options.height = size;
-    options.spp = 2;
-    options.seed = 5;
+    auto options = test::image_options<DecompositionOptions>(size, size, 2, 5);
     options.alpha = alpha;
     options.min_cluster_size = min_cluster_size;
     options.cluster_rays = cluster_rays;
@@ -329,10 +327,7 @@ TEST(DecompositionRadiositySource, ExtrapolatedTailInAFurnaceReachesTheConverged
 }
 
 Image render_cornell(size_t local_size, size_t max_chunk, int iterations = 3) {
-    ContextOptions context_options = test::default_context_options();
-    context_options.local_size = local_size;
-    context_options.max_chunk_items = max_chunk;
-    Context context(context_options);
+    Context context(test::chunked_context_options(local_size, max_chunk));
     test::DeviceFrame device(test::load_cornell_box(), context);
     PathContinuation path;
     IrradianceDecomposition decomposition(device.frame());

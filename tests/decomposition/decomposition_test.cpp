@@ -18,8 +18,10 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
+#include "error_summary.h"
 #include "glossy_scenes.h"  // test::bitwise_equal
 #include "image/image_error.h"
+#include "image_options.h"
 #include "methods/decomposition/near_grid.h"
 #include "methods/decomposition/triangle_split.h"
 #include "methods/grid/irradiance_vector_grid.h"
@@ -44,19 +46,23 @@ shared::NearTriangle near_triangle(glm::vec3 a, glm::vec3 b, glm::vec3 c) {
     return {float4_of(a), float4_of(b), float4_of(c)};
 }
 
+// `vectors` as the device reads them (w 0).
+std::vector<shared::float4> float4s_of(const std::vector<glm::vec3>& vectors) {
+    std::vector<shared::float4> out;
+    for (const glm::vec3& v : vectors) {
+        out.push_back(float4_of(v));
+    }
+    return out;
+}
+
 // FF of each triangle to the differential area at the matching point and normal, by the device's
 // rc_decomp_form_factor (the probe kernel).
 std::vector<float> device_form_factors(const std::vector<glm::vec3>& points,
                                        const std::vector<glm::vec3>& normals,
                                        const std::vector<shared::NearTriangle>& triangles) {
     Context& context = test::shared_context();
-    std::vector<shared::float4> p, n;
-    for (size_t i = 0; i < points.size(); ++i) {
-        p.push_back(float4_of(points[i]));
-        n.push_back(float4_of(normals[i]));
-    }
-    const Buffer<shared::float4> point_buffer(context, p, "points");
-    const Buffer<shared::float4> normal_buffer(context, n, "normals");
+    const Buffer<shared::float4> point_buffer(context, float4s_of(points), "points");
+    const Buffer<shared::float4> normal_buffer(context, float4s_of(normals), "normals");
     const Buffer<shared::NearTriangle> triangle_buffer(context, triangles, "triangles");
     Buffer<float> out(context, points.size(), "form_factors");
     Kernel kernel = context.kernel("decomposition/decomp_probe.cl", "decomp_form_factors");
@@ -334,18 +340,13 @@ std::vector<glm::vec3> irradiance_at(const shared::ClusterFit& f, glm::vec3 cent
                                      const std::vector<glm::vec3>& points,
                                      const std::vector<glm::vec3>& normals) {
     Context& context = test::shared_context();
-    std::vector<shared::float4> p, n;
-    for (size_t i = 0; i < points.size(); ++i) {
-        p.push_back(float4_of(points[i]));
-        n.push_back(float4_of(normals[i]));
-    }
     shared::Record record{};
     record.position = float4_of(centre);
     const Buffer<shared::ShSample> coefficients(context, {f.sample}, "coefficients");
     const Buffer<shared::ShGradient> gradients(context, {f.gradient}, "gradients");
     const Buffer<shared::Record> records(context, {record}, "centre");
-    const Buffer<shared::float4> point_buffer(context, p, "points");
-    const Buffer<shared::float4> normal_buffer(context, n, "normals");
+    const Buffer<shared::float4> point_buffer(context, float4s_of(points), "points");
+    const Buffer<shared::float4> normal_buffer(context, float4s_of(normals), "normals");
     Buffer<shared::float4> irradiance(context, points.size(), "irradiance");
     Kernel kernel = context.kernel("decomposition/decomp_probe.cl", "decomp_sh_irradiance_at");
     context.launch(kernel, points.size(), coefficients, gradients, records, point_buffer,
@@ -466,10 +467,7 @@ TEST(DecompositionFarGradients, TooFewRaysDropTheGradient) {
 Scene floor_and_ceiling() { return test::floor_and_ceiling(10.0f, "decomposition_planes"); }
 
 DecompositionOptions small_options(float alpha, const RadianceSource* source, int size = 16) {
-    DecompositionOptions options;
-    options.width = options.height = size;
-    options.spp = 2;
-    options.seed = 5;
+    auto options = test::image_options<DecompositionOptions>(size, size, 2, 5);
     options.alpha = alpha;
     options.min_cluster_size = alpha;  // the paper's rule
     options.cluster_rays = 256;
@@ -980,10 +978,7 @@ TEST(DecompositionLimits, AlphaZeroIsInterpolatedFinalGatheringBesideIc) {
     EXPECT_EQ(stats.near_triangles, 0u);
     EXPECT_TRUE(all_zero(image, "near-field"));
     IrradianceCache cache(f.device.frame());
-    IrradianceCacheOptions ic;
-    ic.width = ic.height = 32;
-    ic.spp = 2;
-    ic.seed = 5;
+    auto ic = test::image_options<IrradianceCacheOptions>(32, 32, 2, 5);
     ic.records_overlay = false;
     ic.source = &f.grid;
     ic.bounces = 1;
@@ -1013,11 +1008,7 @@ TEST(DecompositionLimits, AlphaBeyondTheSceneLeavesNoFarField) {
     EXPECT_TRUE(all_zero(image, "far-field"));
     EXPECT_FALSE(all_zero(image, "near-field"));
     const ImageError e = cornell_indirect_error(image);
-    std::printf(
-        "alpha beyond the scene: indirect relMSE %.3g, means %.4f %.4f %.4f (reference "
-        "%.4f %.4f %.4f)\n",
-        e.relmse, e.test_means[0], e.test_means[1], e.test_means[2], e.reference_means[0],
-        e.reference_means[1], e.reference_means[2]);
+    std::printf("alpha beyond the scene: indirect %s\n", test::error_summary(e).c_str());
     EXPECT_LT(e.relmse, kAlphaBeyondSceneRelMse);
 }
 
@@ -1043,9 +1034,8 @@ TEST(DecompositionAccuracy, CornellBoxIndirectIsCloseToTheReference) {
         const ImageError e = cornell_indirect_error(decomposition.render(options, &stats));
         std::printf(
             "Cornell box 64^2, radiosity passes %d: %zu far-field samples, %.2f near triangles "
-            "per point; indirect relMSE %.3g, means %.4f %.4f %.4f (reference %.4f %.4f %.4f)\n",
-            passes, stats.sh_samples, stats.near_mean, e.relmse, e.test_means[0], e.test_means[1],
-            e.test_means[2], e.reference_means[0], e.reference_means[1], e.reference_means[2]);
+            "per point; indirect %s\n",
+            passes, stats.sh_samples, stats.near_mean, test::error_summary(e).c_str());
         EXPECT_EQ(stats.radiosity_passes, passes);
         EXPECT_LT(e.relmse, kCornellRelMse) << "passes " << passes;
         for (int c = 0; c < 3; ++c) {
@@ -1066,11 +1056,8 @@ TEST(DecompositionAccuracy, ReliefIndirectIsCloseToTheReference) {
     const ImageError e = image_error(select_layers(image, {"indirect"}),
                                      test::scene_reference("relief", "indirect", 64));
     std::printf(
-        "relief 64^2: %zu far-field samples, %zu near triangles, %.2f per point; "
-        "indirect relMSE %.3g, means %.4f %.4f %.4f (reference %.4f %.4f %.4f)\n",
-        stats.sh_samples, stats.near_triangles, stats.near_mean, e.relmse, e.test_means[0],
-        e.test_means[1], e.test_means[2], e.reference_means[0], e.reference_means[1],
-        e.reference_means[2]);
+        "relief 64^2: %zu far-field samples, %zu near triangles, %.2f per point; indirect %s\n",
+        stats.sh_samples, stats.near_triangles, stats.near_mean, test::error_summary(e).c_str());
     EXPECT_LT(e.relmse, kReliefRelMse);
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(e.test_means[c], e.reference_means[c], 0.06 * e.reference_means[c]);
@@ -1078,10 +1065,7 @@ TEST(DecompositionAccuracy, ReliefIndirectIsCloseToTheReference) {
 }
 
 Image render_with(size_t local_size, size_t max_chunk, bool gradients = false) {
-    ContextOptions context_options = test::default_context_options();
-    context_options.local_size = local_size;
-    context_options.max_chunk_items = max_chunk;
-    Context context(context_options);
+    Context context(test::chunked_context_options(local_size, max_chunk));
     GridFrame f(test::load_cornell_box(), context, 20000);
     IrradianceDecomposition decomposition(f.device.frame());
     DecompositionOptions options = small_options(30.0f, &f.grid, 24);

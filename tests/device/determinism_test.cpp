@@ -14,10 +14,7 @@ namespace rc {
 namespace {
 
 Image render_with(size_t local_size, size_t max_chunk, const Scene& scene) {
-    ContextOptions options = test::default_context_options();
-    options.local_size = local_size;
-    options.max_chunk_items = max_chunk;
-    Context context(options);
+    Context context(test::chunked_context_options(local_size, max_chunk));
     test::DeviceFrame device(scene, context);
     NormalsMethod method(device.frame());
     NormalsOptions render;

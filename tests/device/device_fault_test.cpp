@@ -16,6 +16,7 @@
 #include "device/cl_error.h"
 #include "device/fault_injection.h"
 #include "methods/registry.h"
+#include "scratch_files.h"
 #include "test_support.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -93,15 +94,6 @@ std::vector<std::string> arguments(const SmallRender& render, const std::filesys
     return args;
 }
 
-std::vector<std::string> files_in(const std::filesystem::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-        names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
 void clear(const std::filesystem::path& dir) {
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
         std::filesystem::remove_all(entry.path());
@@ -151,7 +143,7 @@ TEST_P(DeviceFaultSweep, EveryCallSiteFailsCleanly) {
     std::vector<std::string> expected = render.outputs;
     expected.insert(expected.end(), {"out.exr", "stats.json"});
     std::sort(expected.begin(), expected.end());
-    ASSERT_EQ(files_in(dir), expected);
+    ASSERT_EQ(test::file_names(dir), expected);
     const std::map<std::string, DeviceCallSite> sites = device_call_sites();
     ASSERT_GE(sites.size(), 10u);
     EXPECT_EQ(live_objects(), objects_before);
@@ -180,7 +172,7 @@ TEST_P(DeviceFaultSweep, EveryCallSiteFailsCleanly) {
             EXPECT_EQ(live_objects(), objects_before) << "OpenCL objects leaked";
             if (rebuilds_from_source(site, args)) {
                 EXPECT_EQ(failed.exit_code, 0) << failed.message;
-                EXPECT_EQ(files_in(dir), expected);
+                EXPECT_EQ(test::file_names(dir), expected);
                 continue;
             }
             EXPECT_EQ(failed.exit_code, kExitFailure) << failed.message;
@@ -188,7 +180,7 @@ TEST_P(DeviceFaultSweep, EveryCallSiteFailsCleanly) {
             EXPECT_NE(failed.message.find(cl_error_name(status)), std::string::npos)
                 << failed.message;
             EXPECT_EQ(failed.message.find('\n'), std::string::npos) << failed.message;
-            EXPECT_EQ(files_in(dir), std::vector<std::string>{}) << "files left behind";
+            EXPECT_EQ(test::file_names(dir), std::vector<std::string>{}) << "files left behind";
         }
     }
     std::cout << render.name << ": " << sites.size() << " call sites, " << faults
@@ -237,7 +229,8 @@ TEST(DeviceFault, AFailureAtTheEndKeepsEveryOldOutput) {
         const std::string bytes((std::istreambuf_iterator<char>(in)), {});
         EXPECT_EQ(bytes, "old " + name);
     }
-    EXPECT_EQ(files_in(dir), (std::vector<std::string>{"cache.rcc", "out.exr", "stats.json"}));
+    EXPECT_EQ(test::file_names(dir),
+              (std::vector<std::string>{"cache.rcc", "out.exr", "stats.json"}));
     set_quiet(false);
 }
 
@@ -292,7 +285,7 @@ TEST(DeviceFault, ABuildLogThatCannotBeReadLeavesTheBuildError) {
             << failed.message;
         // No log: one line (with what the compiler printed on stderr, where it did).
         EXPECT_EQ(failed.message.find('\n'), std::string::npos) << "no log: " << failed.message;
-        EXPECT_EQ(files_in(out), std::vector<std::string>{});
+        EXPECT_EQ(test::file_names(out), std::vector<std::string>{});
         EXPECT_EQ(live_objects(), (std::map<std::string, long long>{}));
     }
     EXPECT_EQ(log_sites, 2u);  // its size, then its text

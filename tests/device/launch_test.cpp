@@ -2,6 +2,7 @@
 // that name the OpenCL call, the kernel and the status.
 #include <gtest/gtest.h>
 
+#include "error_of.h"
 #include "shared/rng.h"
 #include "test_support.h"
 #include "util/error.h"
@@ -10,10 +11,7 @@ namespace rc {
 namespace {
 
 std::vector<unsigned> words_with(size_t local_size, size_t max_chunk, size_t* launches) {
-    ContextOptions options = test::default_context_options();
-    options.local_size = local_size;
-    options.max_chunk_items = max_chunk;
-    Context context(options);
+    Context context(test::chunked_context_options(local_size, max_chunk));
     Kernel kernel = context.kernel("rng_probe.cl", "rng_stream_words");
     const unsigned count = 100003;  // not a multiple of any work-group size
     Buffer<unsigned> out(context, count * 2, "words");
@@ -47,22 +45,13 @@ TEST(Launch, KernelTimesAreRecorded) {
     EXPECT_GT(time.seconds, 0.0);
 }
 
-std::string error_of(const std::function<void()>& work) {
-    try {
-        work();
-    } catch (const Error& error) {
-        return error.what();
-    }
-    return "";
-}
-
 TEST(Launch, ArgumentErrorsNameTheCallKernelAndStatus) {
     Context& context = test::shared_context();
     Kernel kernel = context.kernel("rng_probe.cl", "rng_stream_words");
     Buffer<unsigned> out(context, 16, "words");
     // A 64-bit value where the kernel takes a 32-bit uint.
     const std::string message =
-        error_of([&] { context.launch(kernel, 16, uint64_t{5}, 6u, 7u, 1u, out); });
+        test::error_of([&] { context.launch(kernel, 16, uint64_t{5}, 6u, 7u, 1u, out); });
     EXPECT_NE(message.find("clSetKernelArg(rng_stream_words argument 2) failed: "
                            "CL_INVALID_ARG_SIZE"),
               std::string::npos)
@@ -71,7 +60,7 @@ TEST(Launch, ArgumentErrorsNameTheCallKernelAndStatus) {
 
 TEST(Launch, UnknownKernelNameIsReported) {
     const std::string message =
-        error_of([] { test::shared_context().kernel("rng_probe.cl", "no_such_kernel"); });
+        test::error_of([] { test::shared_context().kernel("rng_probe.cl", "no_such_kernel"); });
     EXPECT_NE(message.find("clCreateKernel(no_such_kernel in rng_probe.cl) failed: "
                            "CL_INVALID_KERNEL_NAME"),
               std::string::npos)
@@ -84,7 +73,8 @@ TEST(Launch, OversizedWorkGroupIsRefusedByName) {
     Context context(options);
     Kernel kernel = context.kernel("rng_probe.cl", "rng_stream_words");
     Buffer<unsigned> out(context, 16, "words");
-    const std::string message = error_of([&] { context.launch(kernel, 16, 1u, 2u, 3u, 1u, out); });
+    const std::string message =
+        test::error_of([&] { context.launch(kernel, 16, 1u, 2u, 3u, 1u, out); });
     EXPECT_NE(message.find("rng_stream_words"), std::string::npos) << message;
     EXPECT_NE(message.find("work-group size"), std::string::npos) << message;
 }
@@ -92,8 +82,8 @@ TEST(Launch, OversizedWorkGroupIsRefusedByName) {
 TEST(Launch, BuffersBeyondTheDeviceLimitAreRefusedBeforeAllocation) {
     Context& context = test::shared_context();
     const uint64_t too_many = context.device().max_allocation / sizeof(float) + 1;
-    const std::string message =
-        error_of([&] { Buffer<float> huge(context, static_cast<size_t>(too_many), "huge_film"); });
+    const std::string message = test::error_of(
+        [&] { Buffer<float> huge(context, static_cast<size_t>(too_many), "huge_film"); });
     EXPECT_NE(message.find("buffer 'huge_film'"), std::string::npos) << message;
     EXPECT_NE(message.find("largest allocation"), std::string::npos) << message;
 }

@@ -224,32 +224,28 @@ TEST(ProgramBuild, BrokenKernelThroughTheCommandLineExitsNonZeroWithTheLog) {
     EXPECT_FALSE(std::filesystem::exists(output));
 }
 
+// The build report of rng_probe.cl in a new context of `options`.
+ProgramBuildReport probe_build(const ContextOptions& options) {
+    Context context(options);
+    return context.program("rng_probe.cl").report();
+}
+
 TEST(ProgramBuild, BinaryCacheHitsAndSeesHeaderChanges) {
     ContextOptions options = test::default_context_options();
     options.cache_dir = test::scratch_dir("cache_hits");
-    {
-        Context context(options);
-        EXPECT_FALSE(context.program("rng_probe.cl").report().from_cache);
-    }
-    {
-        Context context(options);
-        EXPECT_TRUE(context.program("rng_probe.cl").report().from_cache);
-    }
+    EXPECT_FALSE(probe_build(options).from_cache);
+    EXPECT_TRUE(probe_build(options).from_cache);
     // A comment added to an included header changes the expanded source and so the key.
     const std::filesystem::path dir = copy_of_kernels("cache_header_change");
     append(dir / "shared/rng.h", "\n// a change\n");
     options.kernel_dir = dir;
-    Context context(options);
-    EXPECT_FALSE(context.program("rng_probe.cl").report().from_cache);
+    EXPECT_FALSE(probe_build(options).from_cache);
 }
 
 TEST(ProgramBuild, CorruptCacheEntryIsIgnoredAndRebuilt) {
     ContextOptions options = test::default_context_options();
     options.cache_dir = test::scratch_dir("cache_corrupt");
-    {
-        Context context(options);
-        context.program("rng_probe.cl");
-    }
+    probe_build(options);
     std::vector<std::filesystem::path> entries;
     for (const auto& entry : std::filesystem::directory_iterator(options.cache_dir)) {
         entries.push_back(entry.path());
@@ -275,10 +271,7 @@ TEST(ProgramBuild, CorruptCacheEntryIsIgnoredAndRebuilt) {
     }
     // A truncated entry too.
     write_file_atomically(entries[0], read_file(entries[0]).substr(0, 40));
-    {
-        Context context(options);
-        EXPECT_TRUE(context.program("rng_probe.cl").report().replaced_corrupt_entry);
-    }
+    EXPECT_TRUE(probe_build(options).replaced_corrupt_entry);
     // An entry whose checksum is right but whose binary the driver refuses.
     {
         const DeviceInfo& device = test::shared_context().device();
@@ -291,12 +284,10 @@ TEST(ProgramBuild, CorruptCacheEntryIsIgnoredAndRebuilt) {
         const BinaryCache cache(options.cache_dir);
         ASSERT_EQ(cache.entry_path(key), entries[0]);
         cache.store(key, std::vector<unsigned char>(4096, 0x5a));
-        Context context(options);
-        EXPECT_TRUE(context.program("rng_probe.cl").report().replaced_corrupt_entry);
+        EXPECT_TRUE(probe_build(options).replaced_corrupt_entry);
     }
     // The rebuilt entry is valid again.
-    Context context(options);
-    EXPECT_TRUE(context.program("rng_probe.cl").report().from_cache);
+    EXPECT_TRUE(probe_build(options).from_cache);
 }
 
 TEST(ProgramBuild, DumpKernelsWritesTheExpandedSource) {

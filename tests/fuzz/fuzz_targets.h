@@ -11,6 +11,9 @@
 #include <utility>
 #include <vector>
 
+#include "scene/scene_files.h"
+#include "util/error.h"
+
 namespace rc::fuzz {
 
 // A scene file with its meshes, libraries and textures in memory: the input split into files.
@@ -44,5 +47,21 @@ inline constexpr Target kTargets[] = {{"scene", scene},
 // "#@file NAME" starts the next file, named NAME.
 std::vector<std::pair<std::string, std::string>> split_files(const uint8_t* data, size_t size,
                                                              const std::string& first_name);
+
+// What the multi-file targets do: `load(first_name, files)` over the input split into files held
+// in memory (split_files), a refusal (rc::Error) being a valid outcome.
+template <class Load>
+int load_from_memory(const uint8_t* data, size_t size, const std::string& first_name,
+                     const Load& load) {
+    MemoryFiles files;
+    for (auto& [name, bytes] : split_files(data, size, first_name)) {
+        files.add(name, std::move(bytes));
+    }
+    try {
+        load(first_name, files);
+    } catch (const Error&) {
+    }
+    return 0;
+}
 
 }  // namespace rc::fuzz

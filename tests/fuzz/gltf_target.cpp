@@ -2,23 +2,15 @@
 // through memory and imported into a scene (scene/gltf_loader.h).
 #include "fuzz_targets.h"
 #include "scene/gltf_loader.h"
-#include "scene/scene_files.h"
-#include "util/error.h"
 #include "util/log.h"
 
 namespace rc::fuzz {
 
 int gltf(const uint8_t* data, size_t size) {
     set_quiet(true);
-    MemoryFiles files;
-    for (auto& [name, bytes] : split_files(data, size, "scene.gltf")) {
-        files.add(name, std::move(bytes));
-    }
-    try {
-        load_gltf_scene("scene.gltf", files);
-    } catch (const Error&) {
-    }
-    return 0;
+    return load_from_memory(
+        data, size, "scene.gltf",
+        [](const std::string& path, const SceneFiles& files) { load_gltf_scene(path, files); });
 }
 
 }  // namespace rc::fuzz

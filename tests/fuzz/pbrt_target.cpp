@@ -3,23 +3,15 @@
 // parser, the graphics state and Assimp's PLY reader.
 #include "fuzz_targets.h"
 #include "scene/pbrt_loader.h"
-#include "scene/scene_files.h"
-#include "util/error.h"
 #include "util/log.h"
 
 namespace rc::fuzz {
 
 int pbrt(const uint8_t* data, size_t size) {
     set_quiet(true);
-    MemoryFiles files;
-    for (auto& [name, bytes] : split_files(data, size, "scene.pbrt")) {
-        files.add(name, std::move(bytes));
-    }
-    try {
-        load_pbrt_scene("scene.pbrt", files);
-    } catch (const Error&) {
-    }
-    return 0;
+    return load_from_memory(
+        data, size, "scene.pbrt",
+        [](const std::string& path, const SceneFiles& files) { load_pbrt_scene(path, files); });
 }
 
 }  // namespace rc::fuzz

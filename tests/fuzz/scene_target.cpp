@@ -3,30 +3,23 @@
 // Embree assertion came from world positions that overflow).
 #include "bvh/bvh.h"
 #include "fuzz_targets.h"
-#include "scene/scene_files.h"
 #include "scene/scene_loader.h"
-#include "util/error.h"
 
 namespace rc::fuzz {
 
 int scene(const uint8_t* data, size_t size) {
-    MemoryFiles files;
-    for (auto& [name, bytes] : split_files(data, size, "scene.json")) {
-        files.add(name, std::move(bytes));
-    }
-    try {
-        Scene loaded = load_scene("scene.json", files);
-        if (loaded.animation.frame_end != loaded.animation.frame_start) {
-            loaded.set_frame(loaded.animation.frame_end);
-        }
-        if (loaded.mesh.triangle_count() <= 50000) {
-            for (const BvhLayout layout : kBvhLayouts) {
-                build_bvh(loaded.mesh, layout);
-            }
-        }
-    } catch (const Error&) {
-    }
-    return 0;
+    return load_from_memory(data, size, "scene.json",
+                            [](const std::string& path, const SceneFiles& files) {
+                                Scene loaded = load_scene(path, files);
+                                if (loaded.animation.frame_end != loaded.animation.frame_start) {
+                                    loaded.set_frame(loaded.animation.frame_end);
+                                }
+                                if (loaded.mesh.triangle_count() <= 50000) {
+                                    for (const BvhLayout layout : kBvhLayouts) {
+                                        build_bvh(loaded.mesh, layout);
+                                    }
+                                }
+                            });
 }
 
 }  // namespace rc::fuzz

@@ -27,9 +27,29 @@ Image image_of(std::vector<float> values) {
     return image;
 }
 
+Image test_image() { return image_of({1, 2, 3, 0, 0, 0}); }
+Image reference_image() { return image_of({1, 1, 1, 0, 0, 0.5f}); }
+
+// The scratch folder `name` holding test.exr (test_image()) and reference.exr (reference_image()),
+// and `radcache compare` of the two.
+struct CompareFiles {
+    explicit CompareFiles(const std::string& name) : dir(test::scratch_dir(name)) {
+        write_image(dir / "test.exr", test_image());
+        write_image(dir / "reference.exr", reference_image());
+    }
+    // `radcache compare test.exr reference.exr` with `options`.
+    test::CommandResult compare(const std::vector<std::string>& options) const {
+        std::vector<std::string> args = {"compare", (dir / "test.exr").string(),
+                                         (dir / "reference.exr").string()};
+        args.insert(args.end(), options.begin(), options.end());
+        return test::run_radcache(args);
+    }
+    const std::filesystem::path dir;
+};
+
 TEST(ImageError, MatchesHandComputedFigures) {
-    const Image test = image_of({1, 2, 3, 0, 0, 0});
-    const Image reference = image_of({1, 1, 1, 0, 0, 0.5f});
+    const Image test = test_image();
+    const Image reference = reference_image();
     const ImageError e = image_error(test, reference);
     const double mse = 5.25 / 6.0;
     EXPECT_NEAR(e.rmse, std::sqrt(mse), 1e-12);
@@ -47,7 +67,7 @@ TEST(ImageError, MatchesHandComputedFigures) {
 }
 
 TEST(ImageError, RefusesMismatchedImages) {
-    const Image a = image_of({1, 2, 3, 0, 0, 0});
+    const Image a = test_image();
     Image wide(3, 1, 3);
     EXPECT_THROW(image_error(a, wide), Error);
     Image gray(2, 1, 1);
@@ -55,12 +75,9 @@ TEST(ImageError, RefusesMismatchedImages) {
 }
 
 TEST(ImageError, CompareCommandReportsTheFigures) {
-    const auto dir = test::scratch_dir("compare");
-    write_image(dir / "test.exr", image_of({1, 2, 3, 0, 0, 0}));
-    write_image(dir / "reference.exr", image_of({1, 1, 1, 0, 0, 0.5f}));
-    const test::CommandResult result = test::run_radcache(
-        {"compare", (dir / "test.exr").string(), (dir / "reference.exr").string(), "--json",
-         (dir / "error.json").string()});
+    const CompareFiles files("compare");
+    const std::filesystem::path& dir = files.dir;
+    const test::CommandResult result = files.compare({"--json", (dir / "error.json").string()});
     ASSERT_EQ(result.exit_code, 0) << result.output;
     EXPECT_NE(result.output.find("relmse"), std::string::npos) << result.output;
     const nlohmann::json j = nlohmann::json::parse(read_file(dir / "error.json"));
@@ -74,9 +91,7 @@ TEST(ImageError, CompareCommandReportsTheFigures) {
     EXPECT_EQ(mismatch.exit_code, 1);
     EXPECT_NE(mismatch.output.find("3x1 against a 2x1 reference"), std::string::npos)
         << mismatch.output;
-    const test::CommandResult layer =
-        test::run_radcache({"compare", (dir / "test.exr").string(),
-                            (dir / "reference.exr").string(), "--aov", "indirect"});
+    const test::CommandResult layer = files.compare({"--aov", "indirect"});
     EXPECT_EQ(layer.exit_code, 2);
     EXPECT_NE(layer.output.find("indirect"), std::string::npos) << layer.output;
 }
@@ -85,8 +100,8 @@ TEST(ImageError, CompareCommandReportsTheFigures) {
 // squared sum 0.25 over 3 values; relMSE (0.25 / 0.26) / 3; means its own values); a mask that
 // selects nothing, or of another size, is refused. Through the command too (--mask, --mask-aov).
 TEST(ImageError, MaskTakesTheFiguresOverItsPixelsOnly) {
-    const Image test = image_of({1, 2, 3, 0, 0, 0});
-    const Image reference = image_of({1, 1, 1, 0, 0, 0.5f});
+    const Image test = test_image();
+    const Image reference = reference_image();
     Image mask(2, 1, 1);
     mask.pixels = {0.0f, 1.0f};
     const ImageError e = image_error(test, reference, "test", PixelMask{&mask});
@@ -102,33 +117,28 @@ TEST(ImageError, MaskTakesTheFiguresOverItsPixelsOnly) {
     Image wide(3, 1, 1);
     EXPECT_THROW(image_error(test, reference, "test", PixelMask{&wide}), Error);
 
-    const auto dir = test::scratch_dir("compare_mask");
-    write_image(dir / "test.exr", test);
-    write_image(dir / "reference.exr", reference);
+    const CompareFiles files("compare_mask");
+    const std::filesystem::path& dir = files.dir;
     Image layered(2, 1, 4);
     layered.channel_names = {"R", "G", "B", "hits.Y"};
     layered.pixels = {1, 1, 1, 0, 0, 0, 0, 1};
     write_image(dir / "mask.exr", layered);
-    const test::CommandResult result = test::run_radcache(
-        {"compare", (dir / "test.exr").string(), (dir / "reference.exr").string(), "--mask",
-         (dir / "mask.exr").string(), "--mask-aov", "hits", "--json", (dir / "e.json").string()});
+    const test::CommandResult result =
+        files.compare({"--mask", (dir / "mask.exr").string(), "--mask-aov", "hits", "--json",
+                       (dir / "e.json").string()});
     ASSERT_EQ(result.exit_code, 0) << result.output;
     const nlohmann::json j = nlohmann::json::parse(read_file(dir / "e.json"));
     EXPECT_NEAR(j["relmse"].get<double>(), 0.25 / 0.26 / 3.0, 1e-6);
     EXPECT_EQ(j["pixels"].get<int>(), 1);
-    const test::CommandResult first_layer = test::run_radcache(
-        {"compare", (dir / "test.exr").string(), (dir / "reference.exr").string(), "--mask",
-         (dir / "mask.exr").string(), "--json", (dir / "f.json").string()});
+    const test::CommandResult first_layer =
+        files.compare({"--mask", (dir / "mask.exr").string(), "--json", (dir / "f.json").string()});
     ASSERT_EQ(first_layer.exit_code, 0) << first_layer.output;
     EXPECT_EQ(nlohmann::json::parse(read_file(dir / "f.json"))["pixels"].get<int>(), 1);
-    const test::CommandResult no_layer = test::run_radcache(
-        {"compare", (dir / "test.exr").string(), (dir / "reference.exr").string(), "--mask",
-         (dir / "mask.exr").string(), "--mask-aov", "coverage"});
+    const test::CommandResult no_layer =
+        files.compare({"--mask", (dir / "mask.exr").string(), "--mask-aov", "coverage"});
     EXPECT_EQ(no_layer.exit_code, 2);
     EXPECT_NE(no_layer.output.find("coverage"), std::string::npos) << no_layer.output;
-    const test::CommandResult alone =
-        test::run_radcache({"compare", (dir / "test.exr").string(),
-                            (dir / "reference.exr").string(), "--mask-aov", "hits"});
+    const test::CommandResult alone = files.compare({"--mask-aov", "hits"});
     EXPECT_EQ(alone.exit_code, 2);
 }
 
@@ -299,23 +309,19 @@ TEST(ErrorImage, ScaleLightnessRisesMonotonically) {
 }
 
 TEST(ErrorImage, CompareCommandWritesItOrRefusesTheName) {
-    const auto dir = test::scratch_dir("compare_error_image");
-    write_image(dir / "test.exr", image_of({1, 2, 3, 0, 0, 0}));
-    write_image(dir / "reference.exr", image_of({1, 1, 1, 0, 0, 0.5f}));
-    const test::CommandResult result = test::run_radcache(
-        {"compare", (dir / "test.exr").string(), (dir / "reference.exr").string(), "--error-image",
-         (dir / "error.exr").string()});
+    const CompareFiles files("compare_error_image");
+    const std::filesystem::path& dir = files.dir;
+    const test::CommandResult result =
+        files.compare({"--error-image", (dir / "error.exr").string()});
     ASSERT_EQ(result.exit_code, 0) << result.output;
     const Image written = read_image(dir / "error.exr");
-    const Image expected =
-        error_image(image_of({1, 2, 3, 0, 0, 0}), image_of({1, 1, 1, 0, 0, 0.5f}));
+    const Image expected = error_image(test_image(), reference_image());
     ASSERT_EQ(written.pixels.size(), expected.pixels.size());
     for (size_t i = 0; i < expected.pixels.size(); ++i) {
         EXPECT_EQ(written.pixels[i], expected.pixels[i]) << i;
     }
-    const test::CommandResult refused = test::run_radcache(
-        {"compare", (dir / "test.exr").string(), (dir / "reference.exr").string(), "--error-image",
-         (dir / "error.tiff").string()});
+    const test::CommandResult refused =
+        files.compare({"--error-image", (dir / "error.tiff").string()});
     EXPECT_EQ(refused.exit_code, 2);
     EXPECT_NE(refused.output.find("error.tiff"), std::string::npos) << refused.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "error.tiff"));

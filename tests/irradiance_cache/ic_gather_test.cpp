@@ -27,6 +27,7 @@
 
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
+#include "image_options.h"
 #include "methods/records/irradiance_cache.h"
 #include "methods/records/irradiance_records.h"
 #include "scene/device_scene.h"
@@ -285,10 +286,7 @@ TEST(IcGather, EqualsTheCoursesWeightedSumOverEveryRecord) {
 TEST(IcSplat, SplatBufferEqualsTheCoursesWeightedSumAndTheGather) {
     test::DeviceFrame cornell(test::load_cornell_box());
     IrradianceCache cache(cornell.frame());
-    IrradianceCacheOptions options;
-    options.width = 48;
-    options.height = 40;
-    options.spp = 2;
+    auto options = test::image_options<IrradianceCacheOptions>(48, 40, 2);
     options.rays = 64;
     options.accuracy = 0.4f;
     options.bounces = 1;

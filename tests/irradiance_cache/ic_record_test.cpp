@@ -24,16 +24,8 @@ namespace {
 
 // A scene with its device copies and an irradiance cache over it.
 struct CacheFixture {
-    explicit CacheFixture(const Scene& s)
-        : scene(s),
-          bvh(build_bvh(scene.mesh, test::shared_context().bvh_layout())),
-          device_bvh(test::shared_context(), bvh),
-          device_scene(test::shared_context(), scene),
-          cache({test::shared_context(), scene, device_bvh, device_scene}) {}
-    Scene scene;
-    Bvh bvh;
-    DeviceBvh device_bvh;
-    DeviceScene device_scene;
+    explicit CacheFixture(const Scene& s) : device(s), cache(device.frame()) {}
+    test::DeviceFrame device;
     IrradianceCache cache;
 };
 
@@ -193,7 +185,7 @@ AnalyticEmitter emitter_of(const Scene& scene) {
 // here; a 10% error in the radial-wall term alone is about 5%).
 TEST(IcRecord, GradientsMatchFiniteDifferencesUnderATiltedEmitter) {
     CacheFixture f(scene_from_json("ic_tilted", kTiltedEmitter));
-    const AnalyticEmitter emitter = emitter_of(f.scene);
+    const AnalyticEmitter emitter = emitter_of(f.device.scene);
     ASSERT_EQ(emitter.triangles.size(), 2u);
     RecordSampling sampling = strata_for(40000);
     sampling.include_emission = true;

@@ -14,6 +14,7 @@
 #include "bvh/device_bvh.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
+#include "image_options.h"
 #include "methods/records/cache_file.h"
 #include "methods/records/irradiance_records.h"
 #include "scene/device_scene.h"
@@ -81,11 +82,7 @@ bool same_records(const RecordStore& a, const RecordStore& b) {
 }
 
 IrradianceCacheOptions small_cornell_options() {
-    IrradianceCacheOptions options;
-    options.width = 96;
-    options.height = 96;
-    options.spp = 3;
-    options.seed = 9;
+    auto options = test::image_options<IrradianceCacheOptions>(96, 96, 3, 9);
     options.rays = 256;
     return options;
 }
@@ -139,10 +136,7 @@ TEST(IrradianceCache, SameSeedGivesTheSameRecordsAndImageWhateverTheChunking) {
     const Render b = render(scene, options);
     EXPECT_TRUE(same_records(a.records, b.records));
     EXPECT_TRUE(bitwise_equal(a.image, b.image));
-    ContextOptions small = test::default_context_options();
-    small.local_size = 8;
-    small.max_chunk_items = 1000;
-    Context chunked(small);
+    Context chunked(test::chunked_context_options(8, 1000));
     const Render c = render(scene, options, chunked);
     EXPECT_TRUE(same_records(a.records, c.records));
     EXPECT_TRUE(bitwise_equal(a.image, c.image));
@@ -158,10 +152,7 @@ TEST(IrradianceCache, FurnaceMeanIsWithinTwoPercent) {
     const Scene scene = furnace();
     for (int bounces : {1, 2}) {
         for (int depth : {1000, 3}) {
-            IrradianceCacheOptions options;
-            options.width = 32;
-            options.height = 32;
-            options.spp = 4;
+            auto options = test::image_options<IrradianceCacheOptions>(32, 32, 4);
             options.rays = 256;
             options.max_depth = depth;
             options.bounces = bounces;
@@ -188,16 +179,23 @@ TEST(IrradianceCache, OneBounceHasNoIndirectLight) {
     EXPECT_GT(channel_mean(r.image, "direct.R"), 0.05);
 }
 
+// The method's defaults at 256 x 256, without the records overlay: what the Cornell box's
+// reference is compared with.
+IrradianceCacheOptions default_options_at_256() {
+    IrradianceCacheOptions options;
+    options.width = 256;
+    options.height = 256;
+    options.records_overlay = false;
+    return options;
+}
+
 // At its default settings (two cache levels, 4 camera samples per pixel) at 256², the cache's
 // indirect light on the Cornell box is within relMSE 2e-4 of the 65 536-spp reference box filtered
 // to that size, whose own noise is negligible (measured 6.5e-5, 4032 first-level records), and
 // its mean within 1%.
 TEST(IrradianceCache, CornellBoxIndirectIsCloseToTheReference) {
     const Scene scene = test::load_cornell_box();
-    IrradianceCacheOptions options;
-    options.width = 256;
-    options.height = 256;
-    options.records_overlay = false;
+    IrradianceCacheOptions options = default_options_at_256();
     const Render r = render(scene, options);
     const Image indirect = select_layers(r.image, {"indirect"});
     const ImageError e = image_error(indirect, test::cornell_reference("indirect", 256));
@@ -215,10 +213,7 @@ TEST(IrradianceCache, CornellBoxIndirectIsCloseToTheReference) {
 // 6.3e-5 with 0.44 of the record rays).
 TEST(IrradianceCache, DeeperLevelsUseFewerRaysAtLittleCost) {
     const Scene scene = test::load_cornell_box();
-    IrradianceCacheOptions options;
-    options.width = 256;
-    options.height = 256;
-    options.records_overlay = false;
+    IrradianceCacheOptions options = default_options_at_256();
     const Render fewer = render(scene, options);
     options.deeper_rays = options.rays;
     const Render same = render(scene, options);

@@ -13,8 +13,10 @@
 
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
+#include "error_summary.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
+#include "image_options.h"
 #include "methods/grid/irradiance_vector_grid_file.h"
 #include "methods/irradiance_vector_grid/ivg_method.h"
 #include "methods/records/irradiance_cache.h"
@@ -72,10 +74,7 @@ TEST(IrradianceVectorGrid, PhotonTracingIsDeterministicWhateverTheChunking) {
     first.grid.build(small_grid());
     EXPECT_TRUE(bitwise_equal(a, first.grid.values()));
 
-    ContextOptions chunked = test::default_context_options();
-    chunked.max_chunk_items = 999;
-    chunked.local_size = 8;
-    Context context(chunked);
+    Context context(test::chunked_context_options(8, 999));
     GridScene second(test::load_cornell_box(), context);
     second.grid.build(small_grid());
     EXPECT_TRUE(bitwise_equal(a, second.grid.values()));
@@ -142,10 +141,7 @@ TEST(IrradianceVectorGrid, GridFilesRoundTripExactlyAndMismatchesAreRefused) {
 
 Image render_with_grid(GridScene& s, int gather_rays, int size, int spp) {
     IvgMethod method({test::shared_context(), s.scene, s.device_bvh, s.device_scene}, s.grid);
-    IvgRenderOptions options;
-    options.width = size;
-    options.height = size;
-    options.spp = spp;
+    auto options = test::image_options<IvgRenderOptions>(size, size, spp);
     options.gather_rays = gather_rays;
     return method.render(options);
 }
@@ -165,11 +161,7 @@ TEST(IrradianceVectorGrid, GatherIndirectOnTheCornellBoxIsCloseToTheReference) {
     const Image image = render_with_grid(s, kIvgTestGatherRays, 512, 1);
     const ImageError e =
         image_error(select_layers(image, {"indirect"}), reference_layer("indirect"));
-    std::printf(
-        "ivg-gather Cornell indirect: relMSE %.3g, means %.4f %.4f %.4f (reference %.4f "
-        "%.4f %.4f)\n",
-        e.relmse, e.test_means[0], e.test_means[1], e.test_means[2], e.reference_means[0],
-        e.reference_means[1], e.reference_means[2]);
+    std::printf("ivg-gather Cornell indirect: %s\n", test::error_summary(e).c_str());
     EXPECT_LT(e.relmse, kIvgGatherRelMse);
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(e.test_means[c], e.reference_means[c], 0.05 * e.reference_means[c]);

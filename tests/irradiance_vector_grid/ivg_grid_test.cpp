@@ -22,16 +22,8 @@ namespace {
 
 // A grid object on the Cornell box's device scene (the tests set their own params).
 struct GridFixture {
-    GridFixture()
-        : scene(test::load_cornell_box()),
-          bvh(build_bvh(scene.mesh, test::shared_context().bvh_layout())),
-          device_bvh(test::shared_context(), bvh),
-          device_scene(test::shared_context(), scene),
-          grid({test::shared_context(), scene, device_bvh, device_scene}) {}
-    Scene scene;
-    Bvh bvh;
-    DeviceBvh device_bvh;
-    DeviceScene device_scene;
+    GridFixture() : device(test::load_cornell_box()), grid(device.frame()) {}
+    test::DeviceFrame device;
     IrradianceVectorGrid grid;
 };
 
@@ -489,25 +481,33 @@ std::vector<glm::vec3> random_points(const shared::IvgParams& p, int count, floa
     return points;
 }
 
-TEST(IvgLookup, TrilinearReproducesLinearFields) {
+// The grid `p` holding `scalar(x, c)` (channel c) along x on its +x side and `elsewhere` on the
+// others (not read with n = +x), read with n = +x at 200 random points `margin` cells inside its
+// border: each channel within `tolerance` of the field, relatively.
+template <class Scalar>
+void expect_lookup_reproduces(const shared::IvgParams& p, const Scalar& scalar, glm::vec3 elsewhere,
+                              float margin, float tolerance) {
     GridFixture& f = fixture();
-    const shared::IvgParams p = lookup_grid(RC_IVG_TRILINEAR, false);
-    auto linear = [](glm::vec3 x, int c) {
-        return 2.0f + 0.3f * x.x - 0.2f * x.y + 0.1f * x.z + 0.5f * static_cast<float>(c);
-    };
     f.grid.set_params(p);
     f.grid.set_values(field(p, [&](glm::vec3 x, int direction, int c) {
-        // +x holds the field along x; the other sides something else (not read with n = +x).
-        return direction == 0 ? glm::vec3(linear(x, c), 0.0f, 0.0f) : glm::vec3(5.0f, 7.0f, 9.0f);
+        return direction == 0 ? glm::vec3(scalar(x, c), 0.0f, 0.0f) : elsewhere;
     }));
-    const std::vector<glm::vec3> points = random_points(p, 200, 0.0f);
+    const std::vector<glm::vec3> points = random_points(p, 200, margin);
     const std::vector<glm::vec3> normals(points.size(), glm::vec3(1.0f, 0.0f, 0.0f));
     const std::vector<glm::vec3> e = f.grid.lookup(points, normals);
     for (size_t q = 0; q < points.size(); ++q) {
         for (int c = 0; c < 3; ++c) {
-            EXPECT_NEAR(e[q][c], linear(points[q], c), 2e-5f * linear(points[q], c)) << q;
+            EXPECT_NEAR(e[q][c], scalar(points[q], c), tolerance * scalar(points[q], c)) << q;
         }
     }
+}
+
+TEST(IvgLookup, TrilinearReproducesLinearFields) {
+    auto linear = [](glm::vec3 x, int c) {
+        return 2.0f + 0.3f * x.x - 0.2f * x.y + 0.1f * x.z + 0.5f * static_cast<float>(c);
+    };
+    expect_lookup_reproduces(lookup_grid(RC_IVG_TRILINEAR, false), linear,
+                             glm::vec3(5.0f, 7.0f, 9.0f), 0.0f, 2e-5f);
 }
 
 TEST(IvgLookup, TricubicInterpolatesVerticesAndReproducesQuadraticFields) {
@@ -517,19 +517,8 @@ TEST(IvgLookup, TricubicInterpolatesVerticesAndReproducesQuadraticFields) {
         return 3.0f + 0.4f * x.x * x.x - 0.3f * x.y * x.z + 0.2f * x.z * x.z + 0.1f * x.y +
                0.25f * static_cast<float>(c);
     };
-    f.grid.set_params(p);
-    f.grid.set_values(field(p, [&](glm::vec3 x, int direction, int c) {
-        return direction == 0 ? glm::vec3(quadratic(x, c), 0.0f, 0.0f) : glm::vec3(1.0f);
-    }));
     // Away from the border (where the clamped stencil is no longer exact).
-    const std::vector<glm::vec3> points = random_points(p, 200, 1.0f);
-    const std::vector<glm::vec3> normals(points.size(), glm::vec3(1.0f, 0.0f, 0.0f));
-    const std::vector<glm::vec3> e = f.grid.lookup(points, normals);
-    for (size_t q = 0; q < points.size(); ++q) {
-        for (int c = 0; c < 3; ++c) {
-            EXPECT_NEAR(e[q][c], quadratic(points[q], c), 1e-4f * quadratic(points[q], c)) << q;
-        }
-    }
+    expect_lookup_reproduces(p, quadratic, glm::vec3(1.0f), 1.0f, 1e-4f);
     // At the vertices themselves, any field: a random one.
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> u(0.5f, 2.0f);

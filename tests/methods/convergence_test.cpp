@@ -10,6 +10,7 @@
 #include <string>
 
 #include "image/image_error.h"
+#include "image_options.h"
 #include "methods/grid/irradiance_vector_grid.h"
 #include "methods/irradiance_vector_grid/ivg_method.h"
 #include "methods/records/irradiance_cache.h"
@@ -36,11 +37,7 @@ double indirect_relmse(const Image& image, const char* what) {
 double ic_error(float accuracy, int rays, float min_spacing_pixels, const char* what) {
     test::DeviceFrame device(test::load_cornell_box());
     IrradianceCache cache(device.frame());
-    IrradianceCacheOptions options;
-    options.width = kSize;
-    options.height = kSize;
-    options.spp = 4;
-    options.seed = 21;
+    auto options = test::image_options<IrradianceCacheOptions>(kSize, kSize, 4, 21);
     options.accuracy = accuracy;
     options.rays = rays;
     options.min_spacing = {min_spacing_pixels, false};
@@ -76,11 +73,7 @@ double ivg_error(std::array<int, 3> cells, uint64_t photons, const char* what) {
     options.seed = 5;
     grid.build(options);
     IvgMethod method(device.frame(), grid);
-    IvgRenderOptions render;
-    render.width = kSize;
-    render.height = kSize;
-    render.spp = 4;
-    render.seed = 5;
+    auto render = test::image_options<IvgRenderOptions>(kSize, kSize, 4, 5);
     return indirect_relmse(method.render(render), what);
 }
 

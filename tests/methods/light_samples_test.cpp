@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "image/image_io.h"
+#include "image_options.h"
 #include "methods/grid/irradiance_vector_grid.h"
 #include "methods/irradiance_vector_grid/ivg_method.h"
 #include "methods/records/irradiance_cache.h"
@@ -25,11 +26,7 @@ constexpr int kSpp = 2;
 Image render_ic(Context& context, int light_samples, uint64_t seed) {
     test::DeviceFrame device(test::load_cornell_box(), context);
     IrradianceCache cache(device.frame());
-    IrradianceCacheOptions options;
-    options.width = kSize;
-    options.height = kSize;
-    options.spp = kSpp;
-    options.seed = seed;
+    auto options = test::image_options<IrradianceCacheOptions>(kSize, kSize, kSpp, seed);
     options.rays = 64;
     options.light_samples = light_samples;
     return cache.render(options);
@@ -44,11 +41,7 @@ Image render_ivg(Context& context, int light_samples, uint64_t seed) {
     grid_options.seed = 3;
     grid.build(grid_options);
     IvgMethod method(device.frame(), grid);
-    IvgRenderOptions options;
-    options.width = kSize;
-    options.height = kSize;
-    options.spp = kSpp;
-    options.seed = seed;
+    auto options = test::image_options<IvgRenderOptions>(kSize, kSize, kSpp, seed);
     options.light_samples = light_samples;
     return method.render(options);
 }
@@ -75,10 +68,7 @@ int channel(const Image& image, const std::string& name) {
 }
 
 TEST(LightSamples, RenderPassIsBitwiseDeterministicWhateverTheChunking) {
-    ContextOptions small = test::default_context_options();
-    small.local_size = 8;
-    small.max_chunk_items = 1000;
-    Context chunked(small);
+    Context chunked(test::chunked_context_options(8, 1000));
     for (const Method& method : kMethods) {
         const Image a = method.render(test::shared_context(), 4, 7);
         EXPECT_TRUE(bitwise_equal(a, method.render(test::shared_context(), 4, 7))) << method.name;

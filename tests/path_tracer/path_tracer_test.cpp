@@ -13,6 +13,7 @@
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "image/image_io.h"
+#include "image_options.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
@@ -59,11 +60,7 @@ Scene furnace() { return load_scene(test::source_dir() / "scenes/furnace/scene.j
 // Le / (1 - rho) = 0.5 / 0.25 = 2 everywhere; within 1%, with the standard error small enough
 // (below 0.2%) that 1% is more than 5 standard errors.
 TEST(PathTracer, FurnaceRadianceIsEmissionOverOneMinusAlbedo) {
-    PathTracerOptions options;
-    options.width = 32;
-    options.height = 32;
-    options.spp = 128;
-    options.seed = 5;
+    auto options = test::image_options<PathTracerOptions>(32, 32, 128, 5);
     options.max_depth = 1000;
     const Render r = render(furnace(), options);
     EXPECT_EQ(r.stats.nonfinite_samples, 0u);
@@ -81,10 +78,7 @@ TEST(PathTracer, FurnaceRadianceIsEmissionOverOneMinusAlbedo) {
 TEST(PathTracer, MaxDepthCountsBounces) {
     const Scene scene = furnace();
     for (int depth : {0, 1, 3}) {
-        PathTracerOptions options;
-        options.width = 16;
-        options.height = 16;
-        options.spp = 64;
+        auto options = test::image_options<PathTracerOptions>(16, 16, 64);
         options.max_depth = depth;
         const Render r = render(scene, options);
         double expected = 0.0;
@@ -127,10 +121,7 @@ TEST(PathTracer, DiffusePlaneUnderConstantSkyReflectsAlbedoTimesRadiance) {
 
 // beauty = direct + indirect per pixel; albedo and normal describe the first hit.
 TEST(PathTracer, AovsAreConsistent) {
-    PathTracerOptions options;
-    options.width = 16;
-    options.height = 16;
-    options.spp = 8;
+    auto options = test::image_options<PathTracerOptions>(16, 16, 8);
     const Render r = render(furnace(), options);
     const size_t pixels = 16 * 16;
     for (size_t p = 0; p < pixels; ++p) {
@@ -155,10 +146,7 @@ TEST(PathTracer, AovsAreConsistent) {
 TEST(PathTracer, NonFiniteSamplesAreCountedAndDropped) {
     Scene scene = furnace();
     scene.materials[0].diffuse = glm::vec3(std::nanf(""), 0.5f, 0.5f);
-    PathTracerOptions options;
-    options.width = 8;
-    options.height = 8;
-    options.spp = 3;
+    auto options = test::image_options<PathTracerOptions>(8, 8, 3);
     const Render r = render(scene, options);
     EXPECT_EQ(r.stats.nonfinite_samples, 8u * 8u * 3u);
     EXPECT_EQ(r.stats.first_nonfinite_pixel, 0);
@@ -204,11 +192,7 @@ TEST(PathTracer, CornellBoxAgreesWithItsReferenceByPerPixelZTest) {
     const int factor = 4;
     const int width = reference.width / factor;
     const int height = reference.height / factor;
-    PathTracerOptions options;
-    options.width = width;
-    options.height = height;
-    options.spp = 128;
-    options.seed = 12345;
+    auto options = test::image_options<PathTracerOptions>(width, height, 128, 12345);
     const Render r = render(test::load_cornell_box(), options);
     EXPECT_EQ(r.stats.nonfinite_samples, 0u);
     size_t outliers = 0;
@@ -278,19 +262,12 @@ bool bitwise_equal(const Image& a, const Image& b) {
 
 TEST(PathTracer, SameSeedGivesBitwiseIdenticalPixelsWhateverTheChunking) {
     const Scene scene = test::load_cornell_box();
-    PathTracerOptions options;
-    options.width = 40;
-    options.height = 30;
-    options.spp = 4;
-    options.seed = 77;
+    auto options = test::image_options<PathTracerOptions>(40, 30, 4, 77);
     const Render a = render(scene, options);
     const Render b = render(scene, options);
     EXPECT_TRUE(bitwise_equal(a.image, b.image));
     EXPECT_EQ(a.stats.rays, b.stats.rays);
-    ContextOptions small = test::default_context_options();
-    small.local_size = 8;
-    small.max_chunk_items = 100;
-    Context chunked(small);
+    Context chunked(test::chunked_context_options(8, 100));
     EXPECT_TRUE(bitwise_equal(a.image, render(scene, options, chunked).image));
     options.seed = 78;
     EXPECT_FALSE(bitwise_equal(a.image, render(scene, options).image));

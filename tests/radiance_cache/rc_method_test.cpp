@@ -5,54 +5,21 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
 
+#include "glossy_render.h"
 #include "glossy_scenes.h"
 #include "image/image_error.h"
-#include "methods/path_tracer/path_tracer.h"
 #include "methods/radiance_cache/radiance_cache.h"
 #include "methods/records/irradiance_cache.h"
-#include "scene/camera.h"
 #include "scene/scene_loader.h"
-#include "sh_quadrature.h"
 #include "test_support.h"
 #include "util/error.h"
-#include "util/glm_helpers.h"
 
 namespace rc {
 namespace {
 
-struct RcRender {
-    Image image;
-    RadianceCacheStats stats;
-};
-
-// Irradiance caching's options for a size x size image: `rays` hemisphere rays per record, one
-// cache level (the diffuse records are not what these tests measure).
-IrradianceCacheOptions ic_options(int size, int spp, uint64_t seed, int rays = 1024) {
-    IrradianceCacheOptions ic;
-    ic.width = size;
-    ic.height = size;
-    ic.spp = spp;
-    ic.seed = seed;
-    ic.rays = rays;
-    ic.bounces = rays < 1024 ? 1 : ic.bounces;
-    ic.records_overlay = false;
-    return ic;
-}
-
-RcRender render_rc(test::DeviceFrame& device, IrradianceCacheOptions ic,
-                   RadianceCacheOptions rc = {}) {
-    rc.seed = ic.seed;
-    RadianceCache glossy(device.frame(), rc);
-    ic.glossy = &glossy;
-    IrradianceCache cache(device.frame());
-    RcRender r;
-    r.image = cache.render(ic);
-    r.stats = glossy.stats();
-    return r;
-}
+using test::RcRender;
+using test::render_rc;
 
 // relMSE of `test` against `reference` (same size and channels) over the pixels but the `drop`
 // worst: the image's error without its few fireflies.
@@ -83,7 +50,7 @@ double trimmed_relmse(const Image& test, const Image& reference, size_t drop) {
 TEST(RadianceCacheMethod, GlossyBoxIndirectIsCloseToTheReference) {
     constexpr int kSize = 64;
     test::DeviceFrame device(load_scene(test::source_dir() / "scenes/glossy-box/scene.json"));
-    const RcRender r = render_rc(device, ic_options(kSize, 4, 7, 256));
+    const RcRender r = render_rc(device, test::glossy_ic_options(kSize, 4, 7, 256));
     const Image reference = test::scene_reference("glossy-box", "indirect", kSize);
     const ImageError e = image_error(select_layers(r.image, {"indirect"}), reference);
     std::printf(
@@ -92,7 +59,8 @@ TEST(RadianceCacheMethod, GlossyBoxIndirectIsCloseToTheReference) {
         kSize, r.stats.records, r.stats.order, e.relmse, e.test_means[0], e.test_means[1],
         e.test_means[2], e.reference_means[0], e.reference_means[1], e.reference_means[2]);
     const Image order = select_layers(r.image, {"rc-order"});
-    const Image ic_image = IrradianceCache(device.frame()).render(ic_options(kSize, 4, 7, 256));
+    const Image ic_image =
+        IrradianceCache(device.frame()).render(test::glossy_ic_options(kSize, 4, 7, 256));
     size_t pixels = 0;
     const double rc_satin =
         test::masked_relmse(select_layers(r.image, {"indirect"}), reference, order, &pixels);
@@ -126,50 +94,29 @@ TEST(RadianceCacheMethod, GlossyBoxIndirectIsCloseToTheReference) {
 // reflected error is the product of two truncations; measured 0.36%).
 TEST(RadianceCacheMethod, WhiteSkyPlaneReflectsRadianceTimesAlbedo) {
     constexpr int kSize = 16;
-    const auto dir = test::scratch_dir("rc_white_sky");
-    std::ofstream(dir / "scene.json") << R"({
-        "camera": {"position": [0, 3, -5], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 30,
-                   "resolution": [16, 16]},
-        "materials": {"glossy": {"type": "phong", "diffuse": 0, "specular": 1, "exponent": 8}},
-        "shapes": [{"type": "rectangle", "material": "glossy",
-                    "transform": [{"scale": 1000}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]}],
-        "emitters": [{"type": "constant", "radiance": [1.0, 0.5, 0.25]}]
-    })";
-    test::DeviceFrame device(load_scene(dir / "scene.json"));
+    test::DeviceFrame device(test::sky_plane_scene(
+        "rc_white_sky", "[0, 3, -5]",
+        R"({"type": "phong", "diffuse": 0, "specular": 1, "exponent": 8})", "[1.0, 0.5, 0.25]"));
     RadianceCacheOptions options;
     options.count_emission = true;
-    const RcRender r = render_rc(device, ic_options(kSize, 4, 3, 64), options);
+    const RcRender r = render_rc(device, test::glossy_ic_options(kSize, 4, 3, 64), options);
     ASSERT_GT(r.stats.records, 0u);
     const Image glossy = select_layers(r.image, {"glossy-indirect"});
     const Image order = select_layers(r.image, {"rc-order"});
-    const shared::CameraParams camera = camera_params(device.scene.camera, kSize, kSize);
-    const Material phong = test::pure_phong(8.0f);
-    const double sky[3] = {1.0, 0.5, 0.25};
-    double worst = 0.0;
-    double mean = 0.0;
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
             ASSERT_EQ(order.at(x, y, 0), 10.0f) << "pixel " << x << ", " << y;
-            const glm::vec3 d = glm::normalize(vec3_of(camera.top_left) +
-                                               vec3_of(camera.right) * ((x + 0.5f) / kSize) +
-                                               vec3_of(camera.down) * ((y + 0.5f) / kSize));
-            // The plane's frame: its normal +y is z; w_o = -d.
-            const shared::float4 wo = {-d.x, -d.z, -d.y, 0.0f};
-            const double albedo = test::record_hemisphere_albedo(test::shared_context(), phong, wo);
-            for (int c = 0; c < 3; ++c) {
-                const double expected = sky[c] * albedo;
-                const double error = glossy.at(x, y, c) / expected - 1.0;
-                worst = std::max(worst, std::abs(error));
-                mean += error / (3 * kSize * kSize);
-                EXPECT_LT(std::abs(error), 0.05)
-                    << "pixel " << x << ", " << y << " channel " << c << ": " << glossy.at(x, y, c)
-                    << " vs " << expected;
-            }
         }
     }
+    const test::RelativeErrors errors = test::sky_plane_errors(
+        glossy, device.scene.camera, test::pure_phong(8.0f), {1.0, 0.5, 0.25},
+        [&](int x, int y, int c, double error, double expected) {
+            EXPECT_LT(std::abs(error), 0.05) << "pixel " << x << ", " << y << " channel " << c
+                                             << ": " << glossy.at(x, y, c) << " vs " << expected;
+        });
     std::printf("white sky plane: %zu records, relative error: largest %.4f, mean %.4f\n",
-                r.stats.records, worst, mean);
-    EXPECT_LT(std::abs(mean), 0.01);
+                r.stats.records, errors.largest, errors.mean);
+    EXPECT_LT(std::abs(errors.mean), 0.01);
 }
 
 // Where radiance caching fails, its fallback must catch the lobe: over Phong exponents 4 to 256
@@ -181,23 +128,12 @@ TEST(RadianceCacheMethod, SharpLobesFallBackWithoutLosingToMonteCarlo) {
     constexpr int kSize = 32;
     for (int exponent : {4, 16, 64, 256}) {
         test::DeviceFrame device(test::phong_sphere_scene(exponent, "rc"));
-        PathTracerOptions pt;
-        pt.width = kSize;
-        pt.height = kSize;
-        pt.spp = 1024;
-        pt.seed = 11;
-        const Image reference = select_layers(PathTracer(device.frame()).render(pt), {"indirect"});
-        const IrradianceCacheOptions ic = ic_options(kSize, 8, 5, 256);
+        const Image reference = test::path_traced_indirect(device, kSize);
+        const IrradianceCacheOptions ic = test::glossy_ic_options(kSize, 8, 5, 256);
         RadianceCacheOptions rc;
         rc.rays = 1024;
         const RcRender r = render_rc(device, ic, rc);
-        const Image mc = IrradianceCache(device.frame()).render(ic);
-        const Image mask = test::sphere_mask(select_layers(r.image, {"albedo"}));
-        size_t pixels = 0;
-        const double rc_error =
-            test::masked_relmse(select_layers(r.image, {"indirect"}), reference, mask, &pixels);
-        const double mc_error =
-            test::masked_relmse(select_layers(mc, {"indirect"}), reference, mask, &pixels);
+        const test::SphereErrors e = test::sphere_errors(device, ic, r.image, reference);
         std::printf(
             "Phong %3d: order %d, %zu records, fallback %.2f; sphere (%zu pixels) "
             "indirect relMSE rc %.3g, Monte Carlo lobe %.3g\n",
@@ -206,24 +142,21 @@ TEST(RadianceCacheMethod, SharpLobesFallBackWithoutLosingToMonteCarlo) {
                 ? static_cast<double>(r.stats.placement.fallback_samples) /
                       r.stats.placement.glossy_samples
                 : 0.0,
-            pixels, rc_error, mc_error);
-        ASSERT_GT(pixels, 50u);
-        EXPECT_LE(rc_error, 1.2 * mc_error) << "exponent " << exponent;
+            e.pixels, e.glossy, e.monte_carlo);
+        ASSERT_GT(e.pixels, 50u);
+        EXPECT_LE(e.glossy, 1.2 * e.monte_carlo) << "exponent " << exponent;
         if (exponent == 4) {
-            EXPECT_LT(rc_error, 0.5 * mc_error);
+            EXPECT_LT(e.glossy, 0.5 * e.monte_carlo);
         }
     }
 }
 
 Image render_rc_with(size_t local_size, size_t max_chunk, const Scene& scene) {
-    ContextOptions options = test::default_context_options();
-    options.local_size = local_size;
-    options.max_chunk_items = max_chunk;
-    Context context(options);
+    Context context(test::chunked_context_options(local_size, max_chunk));
     test::DeviceFrame device(scene, context);
     RadianceCacheOptions rc;
     rc.rays = 256;
-    return render_rc(device, ic_options(16, 2, 99, 128), rc).image;
+    return render_rc(device, test::glossy_ic_options(16, 2, 99, 128), rc).image;
 }
 
 // Same seed and options: the same image, bit for bit, whatever the chunking and work-group
@@ -245,7 +178,7 @@ TEST(RadianceCacheMethod, ImageIsBitwiseIdenticalAcrossRunsChunksAndWorkGroups) 
 TEST(RadianceCacheMethod, CacheFilesRoundTripTheRadianceRecords) {
     const auto dir = test::scratch_dir("rc_cache_files");
     test::DeviceFrame device(test::phong_sphere_scene(8, "rc"));
-    const IrradianceCacheOptions ic = ic_options(24, 2, 17, 128);
+    const IrradianceCacheOptions ic = test::glossy_ic_options(24, 2, 17, 128);
     RadianceCacheOptions rc;
     rc.rays = 256;
     rc.cache_out = dir / "rc.rcc";

@@ -6,15 +6,16 @@
 
 #include <algorithm>
 #include <array>
-#include <fstream>
 #include <glm/geometric.hpp>
 
 #include "app/render_job.h"
+#include "error_of.h"
 #include "image/image.h"
 #include "image/image_io.h"
 #include "scene/json_parse.h"
 #include "scene/obj_loader.h"
 #include "scene/scene_loader.h"
+#include "scratch_files.h"
 #include "test_support.h"
 #include "util/error.h"
 #include "util/file_io.h"
@@ -22,21 +23,6 @@
 
 namespace rc {
 namespace {
-
-std::filesystem::path write(const std::filesystem::path& path, const std::string& bytes) {
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
-}
-
-template <class Load>
-std::string error_of(const Load& load) {
-    try {
-        load();
-    } catch (const Error& error) {
-        return error.what();
-    }
-    return "";
-}
 
 // One line (at most `longest` characters) holding every part.
 void expect_line(const std::string& message, std::initializer_list<std::string> parts,
@@ -60,8 +46,8 @@ std::string scene_of(const std::string& shapes, const std::string& extra = "") {
 
 std::string load_error(const std::string& name, const std::string& text) {
     const auto dir = test::scratch_dir("hostile_" + name);
-    const auto file = write(dir / "scene.json", text);
-    return error_of([&] { load_scene(file); });
+    const auto file = test::write_file(dir / "scene.json", text);
+    return test::error_of([&] { load_scene(file); });
 }
 
 // Crashes: Embree's build asserted on world positions that overflow (checked in object space and
@@ -136,8 +122,8 @@ TEST(HostileInput, AHugePolygonLoadsInLinearTime) {
     // Between two small faces, with materials: the fan keeps its place and its material.
     const std::string text =
         "mtllib m.mtl\n" + obj + "usemtl a\nf 1 2 3\nusemtl b\n" + face + "\nusemtl a\nf 3 4 5\n";
-    write(dir / "m.mtl", "newmtl a\nKd 0.5 0.5 0.5\nnewmtl b\nKd 0.2 0.2 0.2\n");
-    const ObjData data = load_obj(write(dir / "disc.obj", text));
+    test::write_file(dir / "m.mtl", "newmtl a\nKd 0.5 0.5 0.5\nnewmtl b\nKd 0.2 0.2 0.2\n");
+    const ObjData data = load_obj(test::write_file(dir / "disc.obj", text));
     ASSERT_EQ(data.mesh.triangles.size(), static_cast<size_t>(kCorners - 2 + 2));
     // A fan from corner 1: triangle k is (1, k + 2, k + 3).
     const auto position = [&](size_t t, int corner) {
@@ -166,13 +152,13 @@ TEST(HostileInput, OnlyRegularFilesAreRead) {
     EXPECT_EQ(compared.exit_code, 1) << compared.output;
     expect_line(compared.output.substr(0, compared.output.size() - 1),
                 {"/dev/zero", "not a regular file"});
-    EXPECT_NE(error_of([] { read_file("/dev/zero"); }).find("not a regular file"),
+    EXPECT_NE(test::error_of([] { read_file("/dev/zero"); }).find("not a regular file"),
               std::string::npos);
     // A mesh or an MTL library that is a device is refused before any allocation.
-    write(dir / "m.obj",
-          "mtllib ../../../../../../../../../../dev/zero\nv 0 0 0\nv 1 0 0\n"
-          "v 0 1 0\nf 1 2 3\n");
-    expect_line(error_of([&] { load_obj(dir / "m.obj"); }), {"zero", "not a regular file"});
+    test::write_file(dir / "m.obj",
+                     "mtllib ../../../../../../../../../../dev/zero\nv 0 0 0\nv 1 0 0\n"
+                     "v 0 1 0\nf 1 2 3\n");
+    expect_line(test::error_of([&] { load_obj(dir / "m.obj"); }), {"zero", "not a regular file"});
     expect_line(load_error("device_mesh", scene_of(R"([{"type": "obj", "file":
                     "../../../../../../../../../../../dev/zero"}])")),
                 {"not a regular file"});
@@ -183,7 +169,7 @@ TEST(HostileInput, OnlyRegularFilesAreRead) {
 TEST(HostileInput, AnUnwritableStatsFileIsRefusedBeforeTheImage) {
     const auto dir = test::scratch_dir("hostile_stats");
     std::filesystem::create_directories(dir / "stats.json");
-    const auto old_image = write(dir / "old.png", "old bytes");
+    const auto old_image = test::write_file(dir / "old.png", "old bytes");
     for (const std::string output : {"old.png", "new.png"}) {
         const test::CommandResult result = test::run_radcache(
             {"render", (test::source_dir() / "scenes/cornell-box/scene.json").string(), "-o",
@@ -220,7 +206,7 @@ TEST(HostileInput, IntegersAreRangeCheckedNotWrapped) {
 TEST(HostileInput, MtlValuesAreValidatedWithFileAndLine) {
     const auto dir = test::scratch_dir("hostile_mtl");
     const std::string obj = "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n";
-    write(dir / "m.obj", obj);
+    test::write_file(dir / "m.obj", obj);
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"Kd nan 0.5 0.5", "'nan' is not finite"},
         {"Ke nan nan nan", "'nan' is not finite"},
@@ -231,8 +217,8 @@ TEST(HostileInput, MtlValuesAreValidatedWithFileAndLine) {
         {"Ks", "Ks has no value"},
     };
     for (const auto& [line, expected] : cases) {
-        write(dir / "m.mtl", "# a material\nnewmtl a\n" + line + "\n");
-        expect_line(error_of([&] { load_obj(dir / "m.obj"); }), {"m.mtl:3:", expected});
+        test::write_file(dir / "m.mtl", "# a material\nnewmtl a\n" + line + "\n");
+        expect_line(test::error_of([&] { load_obj(dir / "m.obj"); }), {"m.mtl:3:", expected});
     }
 }
 
@@ -243,29 +229,52 @@ TEST(HostileInput, DuplicateKeysAreRefused) {
     expect_line(load_error("duplicate",
                            "{" + camera + ", " + kLight + R"(, "shapes": [{"type": "cube"}]})"),
                 {"scene.json", "camera.fov", "key given twice"});
-    expect_line(error_of([] { parse_json(R"({"a": [{"b": 1, "b": 2}]})", "x.json"); }),
+    expect_line(test::error_of([] { parse_json(R"({"a": [{"b": 1, "b": 2}]})", "x.json"); }),
                 {"x.json", "a[0].b", "key given twice"});
+}
+
+// A 4 x 2 RGB image of distinct finite values.
+Image finite_image() {
+    Image image(4, 2, 3);
+    for (size_t i = 0; i < image.pixels.size(); ++i) {
+        image.pixels[i] = 0.25f + 0.01f * static_cast<float>(i);
+    }
+    return image;
+}
+
+struct NanCompare {
+    test::CommandResult refused;  // as it is
+    test::CommandResult allowed;  // with --allow-nan
+};
+
+// The command `compare` (its --json `json`) over images with NaN pixels: refused with exit status 1
+// and no JSON; then run with --allow-nan.
+NanCompare compare_refused_then_allowed(std::vector<std::string> compare,
+                                        const std::filesystem::path& json) {
+    NanCompare result;
+    result.refused = test::run_radcache(compare);
+    EXPECT_EQ(result.refused.exit_code, 1) << result.refused.output;
+    EXPECT_FALSE(std::filesystem::exists(json));
+    compare.push_back("--allow-nan");
+    result.allowed = test::run_radcache(compare);
+    return result;
 }
 
 // Silently wrong: compare of an image with NaN pixels exited 0 with "psnr inf". NaN and infinite
 // pixels are counted, and the command fails unless --allow-nan takes the figures over the rest.
 TEST(HostileInput, CompareCountsNanPixels) {
     const auto dir = test::scratch_dir("hostile_compare_nan");
-    Image reference(4, 2, 3);
-    for (size_t i = 0; i < reference.pixels.size(); ++i) {
-        reference.pixels[i] = 0.25f + 0.01f * static_cast<float>(i);
-    }
+    const Image reference = finite_image();
     Image test_image = reference;
     test_image.at(1, 0, 2) = std::numeric_limits<float>::quiet_NaN();
     test_image.at(3, 1, 0) = std::numeric_limits<float>::infinity();
     test_image.at(0, 1, 1) += 0.5f;
     write_image(dir / "ref.exr", reference);
     write_image(dir / "test.exr", test_image);
-    const std::vector<std::string> compare = {"compare", (dir / "test.exr").string(),
-                                              (dir / "ref.exr").string(), "--json",
-                                              (dir / "e.json").string()};
-    const test::CommandResult refused = test::run_radcache(compare);
-    EXPECT_EQ(refused.exit_code, 1) << refused.output;
+    const auto [refused, accepted] = compare_refused_then_allowed(
+        {"compare", (dir / "test.exr").string(), (dir / "ref.exr").string(), "--json",
+         (dir / "e.json").string()},
+        dir / "e.json");
     EXPECT_NE(refused.output.find("nonfinite pixels (NaN or infinite): 2 in TEST, 0 in REF"),
               std::string::npos)
         << refused.output;
@@ -274,10 +283,6 @@ TEST(HostileInput, CompareCountsNanPixels) {
         std::string::npos)
         << refused.output;
     EXPECT_EQ(refused.output.find("psnr inf"), std::string::npos) << refused.output;
-    EXPECT_FALSE(std::filesystem::exists(dir / "e.json"));
-    std::vector<std::string> allowed = compare;
-    allowed.push_back("--allow-nan");
-    const test::CommandResult accepted = test::run_radcache(allowed);
     EXPECT_EQ(accepted.exit_code, 0) << accepted.output;
     // Over the 6 finite pixels: one value off by 0.5 among 18.
     const double rmse = std::sqrt(0.25 / 18.0);
@@ -294,10 +299,7 @@ TEST(HostileInput, CompareCountsNanPixels) {
 // every pair's temporal error over the pixels finite in both images.
 TEST(HostileInput, CompareFramesCountsNanPixels) {
     const auto dir = test::scratch_dir("hostile_compare_frames_nan");
-    Image reference(4, 2, 3);
-    for (size_t i = 0; i < reference.pixels.size(); ++i) {
-        reference.pixels[i] = 0.25f + 0.01f * static_cast<float>(i);
-    }
+    const Image reference = finite_image();
     Image with_nan = reference;
     with_nan.at(2, 1, 0) = std::numeric_limits<float>::quiet_NaN();
     for (int frame = 0; frame < 3; ++frame) {
@@ -305,23 +307,14 @@ TEST(HostileInput, CompareFramesCountsNanPixels) {
         write_image(dir / ("ref" + n + ".exr"), reference);
         write_image(dir / ("test" + n + ".exr"), frame == 1 ? with_nan : reference);
     }
-    const std::vector<std::string> compare = {"compare",
-                                              "--frames",
-                                              "0:2",
-                                              (dir / "test#.exr").string(),
-                                              (dir / "ref#.exr").string(),
-                                              "--json",
-                                              (dir / "e.json").string()};
-    const test::CommandResult refused = test::run_radcache(compare);
-    EXPECT_EQ(refused.exit_code, 1) << refused.output;
+    const auto [refused, accepted] = compare_refused_then_allowed(
+        {"compare", "--frames", "0:2", (dir / "test#.exr").string(), (dir / "ref#.exr").string(),
+         "--json", (dir / "e.json").string()},
+        dir / "e.json");
     EXPECT_NE(refused.output.find("error: " + (dir / "test1.exr").string() +
                                   ": 1 NaN or infinite pixels (0 in "),
               std::string::npos)
         << refused.output;
-    EXPECT_FALSE(std::filesystem::exists(dir / "e.json"));
-    std::vector<std::string> allowed = compare;
-    allowed.push_back("--allow-nan");
-    const test::CommandResult accepted = test::run_radcache(allowed);
     ASSERT_EQ(accepted.exit_code, 0) << accepted.output;
     const nlohmann::json j = nlohmann::json::parse(read_file(dir / "e.json"));
     EXPECT_EQ(j["frames"][1]["nonfinite_pixels"]["test"], 1);
@@ -349,14 +342,14 @@ TEST(HostileInput, LongFramePatternsNameEveryFrame) {
 // with no emitter. Both warn, and --strict makes the warning an error.
 TEST(HostileInput, BlackRendersAreWarnedAndStrictRefusesThem) {
     const auto dir = test::scratch_dir("hostile_black");
-    const auto far_camera = write(
+    const auto far_camera = test::write_file(
         dir / "far.json",
         scene_of(R"([{"type": "cube"}])")
             .replace(1, kCamera.size(),
                      R"("camera": {"position": [3e38, 0, 0], "look_at": [-3e38, 0, 0], "fov": 40,
                           "resolution": [8, 8]})"));
     const auto dark =
-        write(dir / "dark.json", "{" + kCamera + R"(, "shapes": [{"type": "cube"}]})");
+        test::write_file(dir / "dark.json", "{" + kCamera + R"(, "shapes": [{"type": "cube"}]})");
     for (const auto& [scene, expected] : std::vector<std::pair<std::filesystem::path, std::string>>{
              {far_camera, "camera at frame 0"}, {dark, "no emitter"}}) {
         const std::vector<std::string> args = {
@@ -449,15 +442,15 @@ std::string png_header(uint32_t width, uint32_t height) {
 // Messages: a 74-byte PNG claiming 60000x60000 pixels printed only std::bad_alloc.
 TEST(HostileInput, ImagesLargerThanTheLimitAreRefusedBeforeAllocation) {
     const auto dir = test::scratch_dir("hostile_png_size");
-    const auto png = write(dir / "huge.png", png_header(60000, 60000));
+    const auto png = test::write_file(dir / "huge.png", png_header(60000, 60000));
     EXPECT_LT(read_file(png).size(), 80u);
-    expect_line(error_of([&] { read_image(png); }),
+    expect_line(test::error_of([&] { read_image(png); }),
                 {"huge.png", "60000x60000", "more than the limit of 134217728 pixels"});
-    const auto scene =
-        write(dir / "scene.json", scene_of(R"([{"type": "cube", "material": "t"}])",
-                                           R"("materials": {"t": {"type": "diffuse", "reflectance":
+    const auto scene = test::write_file(
+        dir / "scene.json", scene_of(R"([{"type": "cube", "material": "t"}])",
+                                     R"("materials": {"t": {"type": "diffuse", "reflectance":
                                           {"type": "bitmap", "filename": "huge.png"}}})"));
-    expect_line(error_of([&] { load_scene(scene); }), {"huge.png", "60000x60000"});
+    expect_line(test::error_of([&] { load_scene(scene); }), {"huge.png", "60000x60000"});
 }
 
 // Messages: a 50 MB string value was echoed whole into the error line.
@@ -489,7 +482,7 @@ TEST(HostileInput, LibraryChatterJoinsTheOneErrorLine) {
     for (size_t i = data + 8; i < data + 40 && i < bytes.size(); ++i) {
         bytes[i] = static_cast<char>(bytes[i] ^ 0x5a);
     }
-    const auto bad = write(dir / "bad.png", bytes);
+    const auto bad = test::write_file(dir / "bad.png", bytes);
     const test::CommandResult result =
         test::run_radcache({"compare", bad.string(), (dir / "good.png").string()});
     EXPECT_EQ(result.exit_code, 1) << result.output;

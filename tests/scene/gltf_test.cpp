@@ -5,11 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
-#include "image/image_io.h"
+#include "cli_render.h"
+#include "glossy_scenes.h"  // test::bitwise_equal
 #include "scene/gltf_materials.h"
 #include "scene/json_parse.h"
 #include "scene/scene_loader.h"
@@ -24,20 +24,11 @@ std::filesystem::path data(const std::string& name) {
     return test::source_dir() / "tests/data/gltf" / name;
 }
 
-bool same_pixels(const Image& a, const Image& b) {
-    return a.width == b.width && a.height == b.height && a.pixels.size() == b.pixels.size() &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
-}
-
+// test::render_scene_file at 32 x 32, then `extra`.
 Image render(const std::filesystem::path& scene, const std::filesystem::path& out,
-             const std::vector<std::string>& extra = {}) {
-    std::vector<std::string> args = {"render", scene.string(), "-o", out.string(), "--width",
-                                     "32",     "--height",     "32", "--spp",      "4",
-                                     "--quiet"};
-    args.insert(args.end(), extra.begin(), extra.end());
-    const test::CommandResult result = test::run_radcache(args);
-    EXPECT_EQ(result.exit_code, 0) << result.output;
-    return read_image(out);
+             std::vector<std::string> extra = {}) {
+    extra.insert(extra.begin(), {"--width", "32", "--height", "32"});
+    return test::render_scene_file(scene, out, extra);
 }
 
 TEST(Gltf, CornellBoxRendersTheJsonScenesImageBitwise) {
@@ -45,7 +36,7 @@ TEST(Gltf, CornellBoxRendersTheJsonScenesImageBitwise) {
     // Square (render's size): the JSON's fov spans x, the glTF camera's yfov spans y.
     const Image json = render(test::source_dir() / "scenes/cornell-box/scene.json", dir / "j.exr");
     const Image gltf = render(data("cornell-box.gltf"), dir / "g.exr");
-    EXPECT_TRUE(same_pixels(json, gltf));
+    EXPECT_TRUE(test::bitwise_equal(json, gltf));
 }
 
 // The same model as a .glb (binary container; the fuzz target's seed) renders the same image.
@@ -53,7 +44,7 @@ TEST(Gltf, BinaryGlbRendersAsItsGltf) {
     const auto dir = test::scratch_dir("gltf_glb");
     const Image glb =
         render(test::source_dir() / "tests/fuzz/seeds/gltf/binary.glb", dir / "b.exr");
-    EXPECT_TRUE(same_pixels(glb, render(data("hierarchy.gltf"), dir / "h.exr")));
+    EXPECT_TRUE(test::bitwise_equal(glb, render(data("hierarchy.gltf"), dir / "h.exr")));
 }
 
 void expect_near(glm::vec3 a, glm::vec3 b, const std::string& what) {
@@ -151,7 +142,7 @@ TEST(Gltf, ConvertedSceneRendersBitwiseAsTheGltf) {
         ASSERT_EQ(result.exit_code, 0) << result.output;
         const Image gltf = render(data(name + ".gltf"), dir / (name + "-g.exr"));
         const Image json = render(dir / (name + ".json"), dir / (name + "-j.exr"));
-        EXPECT_TRUE(same_pixels(gltf, json)) << name;
+        EXPECT_TRUE(test::bitwise_equal(gltf, json)) << name;
     }
 }
 

@@ -8,9 +8,9 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "cli_render.h"
 #include "fuzz_targets.h"
 #include "glossy_scenes.h"  // test::bitwise_equal
-#include "image/image_io.h"
 #include "scene/pbrt_loader.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
@@ -24,14 +24,10 @@ std::filesystem::path data(const std::string& name) {
     return test::source_dir() / "tests/data/pbrt" / name;
 }
 
+// test::render_scene_file with `options` (by default, at 32 x 32).
 Image render(const std::filesystem::path& scene, const std::filesystem::path& out,
-             const std::vector<std::string>& extra = {"--width", "32", "--height", "32"}) {
-    std::vector<std::string> args = {"render", scene.string(), "-o", out.string(), "--spp",
-                                     "4",      "--quiet"};
-    args.insert(args.end(), extra.begin(), extra.end());
-    const test::CommandResult result = test::run_radcache(args);
-    EXPECT_EQ(result.exit_code, 0) << result.output;
-    return read_image(out);
+             const std::vector<std::string>& options = {"--width", "32", "--height", "32"}) {
+    return test::render_scene_file(scene, out, options);
 }
 
 TEST(Pbrt, CornellBoxRendersTheJsonScenesImageBitwise) {

@@ -4,32 +4,17 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "error_of.h"
 #include "scene/obj_loader.h"
+#include "scratch_files.h"
 #include "test_support.h"
 #include "util/error.h"
 
 namespace rc {
 namespace {
-
-std::filesystem::path write(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream(path) << text;
-    return path;
-}
-
-// The Error message of `load`, or "" when it does not throw.
-template <class Load>
-std::string error_of(const Load& load) {
-    try {
-        load();
-    } catch (const Error& error) {
-        return error.what();
-    }
-    return "";
-}
 
 void expect_contains(const std::string& message, std::initializer_list<std::string> parts) {
     EXPECT_FALSE(message.empty()) << "no error";
@@ -44,7 +29,8 @@ const char* kSquare = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
 TEST(ObjLoader, TriangulatesPolygonsAndResolvesNegativeIndices) {
     const auto dir = test::scratch_dir("obj_ok");
     const TriangleMesh mesh =
-        load_obj(write(dir / "a.obj", std::string(kSquare) + "f 1 2 3 4\nf -4 -2 -1\n")).mesh;
+        load_obj(test::write_file(dir / "a.obj", std::string(kSquare) + "f 1 2 3 4\nf -4 -2 -1\n"))
+            .mesh;
     EXPECT_EQ(mesh.positions.size(), 4u);
     EXPECT_EQ(mesh.triangles.size(), 3u);
 }
@@ -52,26 +38,28 @@ TEST(ObjLoader, TriangulatesPolygonsAndResolvesNegativeIndices) {
 TEST(ObjLoader, RejectsNonFiniteVerticesWithFileAndLine) {
     const auto dir = test::scratch_dir("obj_nan");
     for (const std::string bad : {"nan", "inf", "-inf", "1e39", "NaN"}) {
-        const auto file =
-            write(dir / "bad.obj", "# comment\nv 0 0 0\nv 1 " + bad + " 0\nv 0 1 0\nf 1 2 3\n");
-        expect_contains(error_of([&] { load_obj(file); }),
+        const auto file = test::write_file(
+            dir / "bad.obj", "# comment\nv 0 0 0\nv 1 " + bad + " 0\nv 0 1 0\nf 1 2 3\n");
+        expect_contains(test::error_of([&] { load_obj(file); }),
                         {"bad.obj:3:", "'" + bad + "'", "not finite"});
     }
 }
 
 TEST(ObjLoader, RejectsMalformedVertices) {
     const auto dir = test::scratch_dir("obj_malformed");
-    const auto file = write(dir / "bad.obj", "v 0 0\n");
-    expect_contains(error_of([&] { load_obj(file); }), {"bad.obj:1:", "fewer than 3 coordinates"});
-    const auto word = write(dir / "word.obj", "v 0 zero 0\n");
-    expect_contains(error_of([&] { load_obj(word); }), {"word.obj:1:", "'zero'"});
+    const auto file = test::write_file(dir / "bad.obj", "v 0 0\n");
+    expect_contains(test::error_of([&] { load_obj(file); }),
+                    {"bad.obj:1:", "fewer than 3 coordinates"});
+    const auto word = test::write_file(dir / "word.obj", "v 0 zero 0\n");
+    expect_contains(test::error_of([&] { load_obj(word); }), {"word.obj:1:", "'zero'"});
 }
 
 TEST(ObjLoader, RejectsOutOfRangeFaceIndicesWithFileAndLine) {
     const auto dir = test::scratch_dir("obj_range");
     for (const std::string face : {"f 1 2 9", "f 0 1 2", "f -1 -2 -9", "f 1 2 x"}) {
-        const auto file = write(dir / "bad.obj", std::string(kSquare) + "\n" + face + "\n");
-        expect_contains(error_of([&] { load_obj(file); }), {"bad.obj:6:"});
+        const auto file =
+            test::write_file(dir / "bad.obj", std::string(kSquare) + "\n" + face + "\n");
+        expect_contains(test::error_of([&] { load_obj(file); }), {"bad.obj:6:"});
     }
 }
 
@@ -80,13 +68,14 @@ TEST(ObjLoader, RejectsOutOfRangeFaceIndicesWithFileAndLine) {
 // checked against one more vertex than was parsed, and the face read past the vertices.
 TEST(ObjLoader, FaceIndicesAreCheckedAgainstTheVerticesAsParsed) {
     const auto dir = test::scratch_dir("obj_vertical_tab");
-    const auto file = write(dir / "bad.obj", "v 0 0 0\nv 1 0 0\n\vv 0 1 0\nf 1 2 3\n");
-    expect_contains(error_of([&] { load_obj(file); }),
+    const auto file = test::write_file(dir / "bad.obj", "v 0 0 0\nv 1 0 0\n\vv 0 1 0\nf 1 2 3\n");
+    expect_contains(test::error_of([&] { load_obj(file); }),
                     {"bad.obj", "vertex index 3 out of range", "2 vertices"});
 }
 
 TEST(ObjLoader, MissingFileIsNamed) {
-    expect_contains(error_of([] { load_obj("/nonexistent/mesh.obj"); }), {"/nonexistent/mesh.obj"});
+    expect_contains(test::error_of([] { load_obj("/nonexistent/mesh.obj"); }),
+                    {"/nonexistent/mesh.obj"});
 }
 
 std::string scene_with(const std::string& camera, const std::string& shapes) {
@@ -99,9 +88,9 @@ TEST(SceneLoader, LoadsShapesRelativeToTheSceneFileAndDropsDegenerateTriangles) 
     const auto dir = test::scratch_dir("scene_ok");
     std::filesystem::create_directories(dir / "meshes");
     // Triangle 2 repeats a vertex, triangle 3 is collinear: both have zero area.
-    write(dir / "meshes/m.obj",
-          std::string(kSquare) + "v 2 0 0\nf 1 2 3\nf 1 1 2\nf 1 2 5\nf 1 3 4\n");
-    const Scene scene = load_scene(write(
+    test::write_file(dir / "meshes/m.obj",
+                     std::string(kSquare) + "v 2 0 0\nf 1 2 3\nf 1 1 2\nf 1 2 5\nf 1 3 4\n");
+    const Scene scene = load_scene(test::write_file(
         dir / "scene.json", scene_with(kCamera, R"([{"type": "obj", "file": "meshes/m.obj"}])")));
     EXPECT_EQ(scene.mesh.triangle_count(), 2u);
     EXPECT_EQ(scene.dropped_degenerate, 2u);
@@ -135,8 +124,8 @@ struct BadScene {
 
 TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
     const auto dir = test::scratch_dir("scene_bad");
-    write(dir / "ok.obj", std::string(kSquare) + "f 1 2 3\n");
-    write(dir / "flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+    test::write_file(dir / "ok.obj", std::string(kSquare) + "f 1 2 3\n");
+    test::write_file(dir / "flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
     const std::string shape = R"([{"type": "obj", "file": "ok.obj"}])";
     const std::vector<BadScene> cases = {
         {"malformed", "{\n  \"camera\": {\n    \"fov\": 40,,\n", {"malformed JSON", "line 3"}},
@@ -232,10 +221,10 @@ TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
     };
     for (const BadScene& bad : cases) {
         SCOPED_TRACE(bad.name);
-        const auto file = write(dir / (bad.name + ".json"), bad.text);
+        const auto file = test::write_file(dir / (bad.name + ".json"), bad.text);
         std::vector<std::string> expected = bad.expected;
         expected.push_back(bad.name + ".json");
-        const std::string message = error_of([&] { load_scene(file); });
+        const std::string message = test::error_of([&] { load_scene(file); });
         EXPECT_FALSE(message.empty());
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
         for (const std::string& part : expected) {
@@ -243,21 +232,21 @@ TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
                 << "'" << part << "' not in: " << message;
         }
     }
-    expect_contains(error_of([&] { load_scene(dir / "absent.json"); }),
+    expect_contains(test::error_of([&] { load_scene(dir / "absent.json"); }),
                     {"absent.json", "not found"});
 }
 
 TEST(SceneLoader, MtlMaterialsMapToDiffusePhongAndAreaLights) {
     const auto dir = test::scratch_dir("scene_mtl");
-    write(dir / "m.mtl",
-          "newmtl matte\nKd 0.5 0.4 0.3\n"
-          "newmtl shiny\nKd 0.2 0.2 0.2\nKs 0.5 0.5 0.5\nNs 40\n"
-          "newmtl lamp\nKd 0 0 0\nKe 3 2 1\n");
-    write(dir / "m.obj", "mtllib m.mtl\n" + std::string(kSquare) +
-                             "usemtl matte\nf 1 2 3\nusemtl shiny\nf 1 3 4\n"
-                             "v 0 0 1\nv 1 0 1\nv 0 1 1\nusemtl lamp\nf 5 6 7\n");
-    const Scene scene = load_scene(
-        write(dir / "scene.json", scene_with(kCamera, R"([{"type": "obj", "file": "m.obj"}])")));
+    test::write_file(dir / "m.mtl",
+                     "newmtl matte\nKd 0.5 0.4 0.3\n"
+                     "newmtl shiny\nKd 0.2 0.2 0.2\nKs 0.5 0.5 0.5\nNs 40\n"
+                     "newmtl lamp\nKd 0 0 0\nKe 3 2 1\n");
+    test::write_file(dir / "m.obj", "mtllib m.mtl\n" + std::string(kSquare) +
+                                        "usemtl matte\nf 1 2 3\nusemtl shiny\nf 1 3 4\n"
+                                        "v 0 0 1\nv 1 0 1\nv 0 1 1\nusemtl lamp\nf 5 6 7\n");
+    const Scene scene = load_scene(test::write_file(
+        dir / "scene.json", scene_with(kCamera, R"([{"type": "obj", "file": "m.obj"}])")));
     ASSERT_EQ(scene.mesh.triangle_count(), 3u);
     const auto material_of = [&](size_t t) { return scene.materials[scene.shading[t].material]; };
     EXPECT_EQ(material_of(0).kind, MaterialKind::kDiffuse);
@@ -274,7 +263,7 @@ TEST(SceneLoader, MtlMaterialsMapToDiffusePhongAndAreaLights) {
 
 TEST(SceneLoader, BuiltInShapesAndTransforms) {
     const auto dir = test::scratch_dir("scene_builtin");
-    const Scene scene = load_scene(write(dir / "scene.json", scene_with(kCamera, R"([
+    const Scene scene = load_scene(test::write_file(dir / "scene.json", scene_with(kCamera, R"([
         {"type": "rectangle", "name": "r",
          "transform": [{"scale": [2, 3, 1]}, {"rotate": {"axis": [0, 0, 1], "angle": 90}},
                        {"translate": [10, 0, 0]}]},
@@ -307,11 +296,11 @@ TEST(SceneLoader, BuiltInShapesAndTransforms) {
 
 TEST(SceneLoader, RenderDefaultsAndOverrides) {
     const auto dir = test::scratch_dir("scene_render");
-    write(dir / "ok.obj", std::string(kSquare) + "f 1 2 3\n");
-    const Scene scene = load_scene(
-        write(dir / "scene.json",
-              scene_with(kCamera, R"([{"type": "obj", "file": "ok.obj"}])")
-                  .replace(1, 0, R"("render": {"spp": 32, "max_depth": 5, "seed": 9},)")));
+    test::write_file(dir / "ok.obj", std::string(kSquare) + "f 1 2 3\n");
+    const Scene scene = load_scene(test::write_file(
+        dir / "scene.json",
+        scene_with(kCamera, R"([{"type": "obj", "file": "ok.obj"}])")
+            .replace(1, 0, R"("render": {"spp": 32, "max_depth": 5, "seed": 9},)")));
     RenderSettings settings = scene.render;
     EXPECT_EQ(settings.spp, 32);
     EXPECT_EQ(settings.max_depth, 5);
@@ -330,8 +319,9 @@ TEST(SceneLoader, RenderDefaultsAndOverrides) {
 
 TEST(SceneLoader, BadSceneThroughTheCommandLineExitsNonZeroWithoutOutput) {
     const auto dir = test::scratch_dir("scene_bad_cli");
-    write(dir / "bad.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");
-    write(dir / "scene.json", scene_with(kCamera, R"([{"type": "obj", "file": "bad.obj"}])"));
+    test::write_file(dir / "bad.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n");
+    test::write_file(dir / "scene.json",
+                     scene_with(kCamera, R"([{"type": "obj", "file": "bad.obj"}])"));
     const auto output = dir / "out.png";
     const test::CommandResult result =
         test::run_radcache({"render", (dir / "scene.json").string(), "-o", output.string()});

@@ -362,10 +362,11 @@ Records random_records(std::mt19937& rng, size_t size) {
 
 const size_t kSizes[] = {0, 1, 2, 3, 7, 100, 5000};
 
-// Every record of every size queried 96 times at random (random_queries); every answer is the
-// brute force's.
-TEST(SdrcLTree, RangeQueryFindsExactlyTheBruteForceSet) {
-    std::mt19937 rng(2009);
+// Random records of every size (kSizes), each queried at `queries_of(packed, its tree)`, the
+// answers checked against the brute force (check_queries, within `band`): the tallies.
+template <class QueriesOf>
+QueryStats query_records_of_every_size(std::mt19937& rng, double band,
+                                       const QueriesOf& queries_of) {
     QueryStats stats;
     for (size_t size : kSizes) {
         const Records r = random_records(rng, size);
@@ -373,15 +374,25 @@ TEST(SdrcLTree, RangeQueryFindsExactlyTheBruteForceSet) {
         std::vector<shared::float4> queries;
         std::vector<std::string> labels;
         for (uint32_t i = 0; i < r.packed.trees.size(); ++i) {
-            for (const shared::float4& q :
-                 random_queries(rng, r.packed.nodes, r.packed.trees[i], 96)) {
+            for (const shared::float4& q : queries_of(r.packed, r.packed.trees[i])) {
                 records.push_back(i);
                 queries.push_back(q);
                 labels.push_back(r.names[i]);
             }
         }
-        check_queries(r.packed, records, queries, labels, 1e-5, &stats);
+        check_queries(r.packed, records, queries, labels, band, &stats);
     }
+    return stats;
+}
+
+// Every record of every size queried 96 times at random (random_queries); every answer is the
+// brute force's.
+TEST(SdrcLTree, RangeQueryFindsExactlyTheBruteForceSet) {
+    std::mt19937 rng(2009);
+    const QueryStats stats = query_records_of_every_size(
+        rng, 1e-5, [&](const PackedLTrees& packed, const SdrcTree& tree) {
+            return random_queries(rng, packed.nodes, tree, 96);
+        });
     EXPECT_EQ(stats.failures, 0u) << "of " << stats.queries << " queries";
     // Not vacuous: many queries find something, and ambiguity is rare.
     EXPECT_GT(stats.nonempty, stats.queries / 4);
@@ -397,31 +408,23 @@ TEST(SdrcLTree, RangeQueryFindsExactlyTheBruteForceSet) {
 TEST(SdrcLTree, RangeQueryIsExactOnTheGrid) {
     std::mt19937 rng(1998);
     std::uniform_int_distribution<int> any_cell(-8, kGrid + 7), half_cells(0, 154);
-    QueryStats stats;
-    for (size_t size : kSizes) {
-        const Records r = random_records(rng, size);
-        std::vector<uint32_t> records;
-        std::vector<shared::float4> queries;
-        std::vector<std::string> labels;
-        for (uint32_t i = 0; i < r.packed.trees.size(); ++i) {
-            const SdrcTree& tree = r.packed.trees[i];
+    const QueryStats stats = query_records_of_every_size(
+        rng, 0.0, [&](const PackedLTrees& packed, const SdrcTree& tree) {
             const uint32_t nodes = tree.tree_nodes + tree.buffer_nodes;
+            std::vector<shared::float4> queries;
             for (int k = 0; k < 64; ++k) {
                 int cu = any_cell(rng), cv = any_cell(rng);
                 if (nodes > 0 && k % 2 == 0) {
-                    const LTreeNode& n = r.packed.nodes[tree.first_node + rng() % nodes];
+                    const LTreeNode& n = packed.nodes[tree.first_node + rng() % nodes];
                     cu = static_cast<int>(cell_u(n));
                     cv = static_cast<int>(cell_v(n));
                 }
-                records.push_back(i);
                 queries.push_back({static_cast<float>((cu + 0.5) * 2.0 / kGrid - 1.0),
                                    static_cast<float>((cv + 0.5) * 2.0 / kGrid - 1.0),
                                    static_cast<float>(half_cells(rng) / 256.0), 0.0f});
-                labels.push_back(r.names[i]);
             }
-        }
-        check_queries(r.packed, records, queries, labels, 0.0, &stats);
-    }
+            return queries;
+        });
     EXPECT_EQ(stats.failures, 0u) << "of " << stats.queries << " queries";
     EXPECT_EQ(stats.ambiguous, 0u);
     EXPECT_GT(stats.nonempty, stats.queries / 4);

@@ -6,70 +6,21 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
 
+#include "glossy_render.h"
 #include "glossy_scenes.h"
 #include "image/image_error.h"
-#include "methods/path_tracer/path_tracer.h"
 #include "methods/records/irradiance_cache.h"
 #include "methods/sdrc/sdrc_cache.h"
-#include "scene/camera.h"
 #include "scene/scene_loader.h"
-#include "sh_quadrature.h"
 #include "test_support.h"
 #include "util/error.h"
-#include "util/glm_helpers.h"
 
 namespace rc {
 namespace {
 
-struct SdrcRender {
-    Image image;
-    SdrcStats stats;
-};
-
-// Irradiance caching's options for a size x size image, one cache level of `rays` hemisphere
-// rays (the diffuse records are not what these tests measure).
-IrradianceCacheOptions ic_options(int size, int spp, uint64_t seed, int rays = 256) {
-    IrradianceCacheOptions ic;
-    ic.width = size;
-    ic.height = size;
-    ic.spp = spp;
-    ic.seed = seed;
-    ic.rays = rays;
-    ic.bounces = 1;
-    ic.records_overlay = false;
-    return ic;
-}
-
-SdrcRender render_sdrc(test::DeviceFrame& device, IrradianceCacheOptions ic,
-                       SdrcOptions sdrc = {}) {
-    sdrc.seed = ic.seed;
-    SdrcCache glossy(device.frame(), sdrc);
-    ic.glossy = &glossy;
-    IrradianceCache cache(device.frame());
-    SdrcRender r;
-    r.image = cache.render(ic);
-    r.stats = glossy.stats();
-    return r;
-}
-
-// A glossy plane (material JSON `material`) under a constant sky, nothing else, seen steeply from
-// above (every pixel's lobe clear of the horizon, so the estimate's weights barely vary).
-Scene white_sky_scene(const std::string& name, const std::string& material) {
-    const auto dir = test::scratch_dir("sdrc_white_sky_" + name);
-    std::ofstream(dir / "scene.json") << R"({
-        "camera": {"position": [0, 5, -1.5], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 30,
-                   "resolution": [16, 16]},
-        "materials": {"glossy": )" << material
-                                      << R"(},
-        "shapes": [{"type": "rectangle", "material": "glossy",
-                    "transform": [{"scale": 1000}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]}],
-        "emitters": [{"type": "constant", "radiance": [0.8, 0.6, 0.45]}]
-    })";
-    return load_scene(dir / "scene.json");
-}
+using test::render_sdrc;
+using test::SdrcRender;
 
 // Under a constant sky L with no occluder, every radiance sample is L, so the glossy-indirect
 // layer must be L albedo(w_o) at each pixel (w_o: its centre's; the albedo, the integral of
@@ -80,44 +31,30 @@ Scene white_sky_scene(const std::string& name, const std::string& material) {
 // sigma), 1% over the image (measured in the printout).
 void expect_white_sky(const std::string& name, const std::string& json, const Material& material) {
     constexpr int kSize = 16;
-    test::DeviceFrame device(white_sky_scene(name, json));
+    // Seen steeply from above: every pixel's lobe clear of the horizon, so the estimate's weights
+    // barely vary.
+    test::DeviceFrame device(
+        test::sky_plane_scene("sdrc_white_sky_" + name, "[0, 5, -1.5]", json, "[0.8, 0.6, 0.45]"));
     SdrcOptions options;
     options.count_emission = true;
     options.interp = 16;
-    const SdrcRender r = render_sdrc(device, ic_options(kSize, 4, 3, 64), options);
+    const SdrcRender r = render_sdrc(device, test::glossy_ic_options(kSize, 4, 3, 64), options);
     ASSERT_GT(r.stats.records, 0u);
     const Image glossy = select_layers(r.image, {"glossy-indirect"});
-    const shared::CameraParams camera = camera_params(device.scene.camera, kSize, kSize);
-    const double sky[3] = {0.8, 0.6, 0.45};
-    double worst = 0.0;
-    double mean = 0.0;
-    for (int y = 0; y < kSize; ++y) {
-        for (int x = 0; x < kSize; ++x) {
-            const glm::vec3 d = glm::normalize(vec3_of(camera.top_left) +
-                                               vec3_of(camera.right) * ((x + 0.5f) / kSize) +
-                                               vec3_of(camera.down) * ((y + 0.5f) / kSize));
-            // The plane's frame: its normal +y is z; w_o = -d.
-            const shared::float4 wo = {-d.x, -d.z, -d.y, 0.0f};
-            const double albedo =
-                test::record_hemisphere_albedo(test::shared_context(), material, wo);
-            for (int c = 0; c < 3; ++c) {
-                const double expected = sky[c] * albedo;
-                const double error = glossy.at(x, y, c) / expected - 1.0;
-                worst = std::max(worst, std::abs(error));
-                mean += error / (3 * kSize * kSize);
-                EXPECT_LT(std::abs(error), 0.04)
-                    << name << " pixel " << x << ", " << y << " channel " << c << ": "
-                    << glossy.at(x, y, c) << " vs " << expected;
-            }
-        }
-    }
+    const test::RelativeErrors errors =
+        test::sky_plane_errors(glossy, device.scene.camera, material, {0.8, 0.6, 0.45},
+                               [&](int x, int y, int c, double error, double expected) {
+                                   EXPECT_LT(std::abs(error), 0.04)
+                                       << name << " pixel " << x << ", " << y << " channel " << c
+                                       << ": " << glossy.at(x, y, c) << " vs " << expected;
+                               });
     std::printf(
         "white sky %s: %zu records, %llu L-tree samples, hit rate %.3f; relative error: "
         "largest %.4f, mean %.4f\n",
         name.c_str(), r.stats.records, static_cast<unsigned long long>(r.stats.ltree_nodes),
-        static_cast<double>(r.stats.answered) / static_cast<double>(r.stats.directions), worst,
-        mean);
-    EXPECT_LT(std::abs(mean), 0.01) << name;
+        static_cast<double>(r.stats.answered) / static_cast<double>(r.stats.directions),
+        errors.largest, errors.mean);
+    EXPECT_LT(std::abs(errors.mean), 0.01) << name;
 }
 
 TEST(SdrcMethod, WhiteSkyPhongPlaneReflectsRadianceTimesAlbedo) {
@@ -143,30 +80,19 @@ TEST(SdrcMethod, SharpLobesBeatMonteCarloAtTheSameSamples) {
     constexpr int kSize = 32;
     for (int exponent : {16, 64, 256}) {
         test::DeviceFrame device(test::phong_sphere_scene(exponent, "sdrc"));
-        PathTracerOptions pt;
-        pt.width = kSize;
-        pt.height = kSize;
-        pt.spp = 1024;
-        pt.seed = 11;
-        const Image reference = select_layers(PathTracer(device.frame()).render(pt), {"indirect"});
-        const IrradianceCacheOptions ic = ic_options(kSize, 8, 5);
+        const Image reference = test::path_traced_indirect(device, kSize);
+        const IrradianceCacheOptions ic = test::glossy_ic_options(kSize, 8, 5);
         const SdrcRender r = render_sdrc(device, ic);
-        const Image mc = IrradianceCache(device.frame()).render(ic);
-        const Image mask = test::sphere_mask(select_layers(r.image, {"albedo"}));
-        size_t pixels = 0;
-        const double sdrc_error =
-            test::masked_relmse(select_layers(r.image, {"indirect"}), reference, mask, &pixels);
-        const double mc_error =
-            test::masked_relmse(select_layers(mc, {"indirect"}), reference, mask, &pixels);
+        const test::SphereErrors e = test::sphere_errors(device, ic, r.image, reference);
         const double hit_rate =
             static_cast<double>(r.stats.answered) / static_cast<double>(r.stats.directions);
         std::printf(
             "Phong %3d: %zu records x %d samples, hit rate %.3f, %llu misses; sphere (%zu "
             "pixels) indirect relMSE sdrc %.3g, Monte Carlo lobe %.3g\n",
             exponent, r.stats.records, r.stats.samples, hit_rate,
-            static_cast<unsigned long long>(r.stats.misses), pixels, sdrc_error, mc_error);
-        ASSERT_GT(pixels, 50u);
-        EXPECT_LT(sdrc_error, mc_error) << "exponent " << exponent;
+            static_cast<unsigned long long>(r.stats.misses), e.pixels, e.glossy, e.monte_carlo);
+        ASSERT_GT(e.pixels, 50u);
+        EXPECT_LT(e.glossy, e.monte_carlo) << "exponent " << exponent;
         EXPECT_GT(hit_rate, 0.5) << "exponent " << exponent;
     }
 }
@@ -176,7 +102,7 @@ TEST(SdrcMethod, SharpLobesBeatMonteCarloAtTheSameSamples) {
 TEST(SdrcMethod, GlossyBoxIndirectIsCloseToTheReference) {
     constexpr int kSize = 64;
     test::DeviceFrame device(load_scene(test::source_dir() / "scenes/glossy-box/scene.json"));
-    const SdrcRender r = render_sdrc(device, ic_options(kSize, 4, 7));
+    const SdrcRender r = render_sdrc(device, test::glossy_ic_options(kSize, 4, 7));
     const Image reference = test::scene_reference("glossy-box", "indirect", kSize);
     const ImageError e = image_error(select_layers(r.image, {"indirect"}), reference);
     std::printf(
@@ -202,7 +128,7 @@ TEST(SdrcMethod, GlossyBoxIndirectIsCloseToTheReference) {
 TEST(SdrcMethod, KettleIndirectBeatsMonteCarloAgainstTheReference) {
     constexpr int kSize = 64;
     test::DeviceFrame device(load_scene(test::source_dir() / "scenes/kettle/scene.json"));
-    const IrradianceCacheOptions ic = ic_options(kSize, 4, 13);
+    const IrradianceCacheOptions ic = test::glossy_ic_options(kSize, 4, 13);
     SdrcOptions sdrc;
     sdrc.interp = 4;
     const SdrcRender r = render_sdrc(device, ic, sdrc);
@@ -239,16 +165,13 @@ TEST(SdrcMethod, KettleIndirectBeatsMonteCarloAgainstTheReference) {
 }
 
 Image render_sdrc_with(size_t local_size, size_t max_chunk, size_t batch, const Scene& scene) {
-    ContextOptions options = test::default_context_options();
-    options.local_size = local_size;
-    options.max_chunk_items = max_chunk;
-    Context context(options);
+    Context context(test::chunked_context_options(local_size, max_chunk));
     test::DeviceFrame device(scene, context);
     SdrcOptions sdrc;
     sdrc.interp = 2;
     sdrc.record_batch = batch;
     sdrc.round_batch = batch;
-    return render_sdrc(device, ic_options(16, 2, 99, 128), sdrc).image;
+    return render_sdrc(device, test::glossy_ic_options(16, 2, 99, 128), sdrc).image;
 }
 
 // Same seed and options: the same image, bit for bit, whatever the chunking, the work-group size
@@ -272,7 +195,7 @@ TEST(SdrcMethod, MemoryCapTooSmallFailsWithAClearError) {
     SdrcOptions sdrc;
     sdrc.memory_mib = 0.01;
     try {
-        render_sdrc(device, ic_options(16, 2, 5), sdrc);
+        render_sdrc(device, test::glossy_ic_options(16, 2, 5), sdrc);
         FAIL() << "no error";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("--sdrc-memory"), std::string::npos) << e.what();

@@ -119,16 +119,23 @@ TEST(ShBasis, BandsSatisfyTheAdditionTheorem) {
     }
 }
 
+// `count` random directions (test::random_direction from an RNG seeded `seed`) folded into the
+// upper hemisphere (z >= 0).
+std::vector<shared::float4> upper_hemisphere_directions(unsigned seed, int count) {
+    std::mt19937 rng(seed);
+    std::vector<shared::float4> directions;
+    for (int i = 0; i < count; ++i) {
+        shared::float4 v = test::random_direction(rng);
+        v.z = std::abs(v.z);
+        directions.push_back(v);
+    }
+    return directions;
+}
+
 // Bands 0-2 in Cartesian form (real SH without the Condon-Shortley phase), and the first HSH
 // functions straight from the HSH paper's eq. 8 and 9.
 TEST(ShBasis, FirstBandsMatchTheirClosedForms) {
-    std::mt19937 rng(11);
-    std::vector<shared::float4> d;
-    for (int i = 0; i < 64; ++i) {
-        shared::float4 v = test::random_direction(rng);
-        v.z = std::abs(v.z);
-        d.push_back(v);
-    }
+    const std::vector<shared::float4> d = upper_hemisphere_directions(11, 64);
     Context& context = test::shared_context();
     const std::vector<float> y = test::device_basis(context, RC_BASIS_SH, 3, d);
     const std::vector<float> h = test::device_basis(context, RC_BASIS_HSH, 2, d);
@@ -162,13 +169,7 @@ TEST(ShBasis, FirstBandsMatchTheirClosedForms) {
 
 // The shared code compiled for the host gives the device's values.
 TEST(ShBasis, HostBuildAgreesWithTheDevice) {
-    std::mt19937 rng(3);
-    std::vector<shared::float4> d;
-    for (int i = 0; i < 100; ++i) {
-        shared::float4 v = test::random_direction(rng);
-        v.z = std::abs(v.z);
-        d.push_back(v);
-    }
+    const std::vector<shared::float4> d = upper_hemisphere_directions(3, 100);
     for (int basis : {RC_BASIS_SH, RC_BASIS_HSH}) {
         const std::vector<float> device =
             test::device_basis(test::shared_context(), basis, kOrder, d);

@@ -33,11 +33,8 @@ std::vector<double> transpose(const std::vector<double>& a) {
     return {a[0], a[3], a[6], a[1], a[4], a[7], a[2], a[5], a[8]};
 }
 
-// Rotates items of kVectors vectors of `order` on the device: item i by rotations[i].
-std::vector<float> rotate(int order, const std::vector<std::vector<double>>& rotations,
-                          const std::vector<float>& coefficients) {
-    Context& context = test::shared_context();
-    Kernel kernel = context.kernel("radiance_cache/rc_probe.cl", "rc_rotation_probe");
+// The rows of every rotation (row-major 3x3), three float4s each, as the probe kernels read them.
+std::vector<shared::float4> rotation_rows(const std::vector<std::vector<double>>& rotations) {
     std::vector<shared::float4> rows;
     for (const std::vector<double>& r : rotations) {
         for (int row = 0; row < 3; ++row) {
@@ -45,7 +42,15 @@ std::vector<float> rotate(int order, const std::vector<std::vector<double>>& rot
                             static_cast<float>(r[3 * row + 2]), 0.0f});
         }
     }
-    const Buffer<shared::float4> device_rows(context, rows, "rotations");
+    return rows;
+}
+
+// Rotates items of kVectors vectors of `order` on the device: item i by rotations[i].
+std::vector<float> rotate(int order, const std::vector<std::vector<double>>& rotations,
+                          const std::vector<float>& coefficients) {
+    Context& context = test::shared_context();
+    Kernel kernel = context.kernel("radiance_cache/rc_probe.cl", "rc_rotation_probe");
+    const Buffer<shared::float4> device_rows(context, rotation_rows(rotations), "rotations");
     Buffer<float> c(context, coefficients, "coefficients");
     context.launch(kernel, rotations.size(), order, kVectors, device_rows, c);
     return c.download();
@@ -56,16 +61,9 @@ std::vector<float> rotate_zxz(int order, const std::vector<std::vector<double>>&
                               const std::vector<float>& coefficients) {
     Context& context = test::shared_context();
     Kernel kernel = context.kernel("radiance_cache/rc_probe.cl", "rc_rotation_zxz_probe");
-    std::vector<shared::float4> rows;
-    for (const std::vector<double>& r : rotations) {
-        for (int row = 0; row < 3; ++row) {
-            rows.push_back({static_cast<float>(r[3 * row]), static_cast<float>(r[3 * row + 1]),
-                            static_cast<float>(r[3 * row + 2]), 0.0f});
-        }
-    }
     std::vector<float> table(RC_SH_X90_TABLE_SIZE);
     shared::rc_sh_x90_table(table.data());
-    const Buffer<shared::float4> device_rows(context, rows, "rotations");
+    const Buffer<shared::float4> device_rows(context, rotation_rows(rotations), "rotations");
     const Buffer<float> x90(context, table, "x90");
     Buffer<float> c(context, coefficients, "coefficients");
     context.launch(kernel, rotations.size(), order, kVectors, device_rows, x90, c);

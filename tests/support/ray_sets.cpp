@@ -145,38 +145,51 @@ class Adjacency {
     std::map<Position, std::vector<size_t>> around_;
 };
 
+// Where a ray is aimed, and whether it crosses the surface there.
+struct Aim {
+    glm::vec3 target;
+    bool crossing;
+};
+
+// `count` rays from random points of `bounds` (ray i drawing from stream (seed, `stream`, i)) to
+// the targets `aim_at(rng, origin)` picks with the same stream.
+template <class AimAt>
+AimedRays aimed_rays(const Bounds& bounds, size_t count, uint32_t seed, unsigned stream,
+                     const AimAt& aim_at) {
+    AimedRays aimed;
+    for (size_t i = 0; i < count; ++i) {
+        shared::RngStream rng = shared::rc_rng_stream(seed, stream, static_cast<unsigned>(i), 0);
+        const glm::vec3 origin = point_in(bounds, 0.2f, rng);
+        const Aim aim = aim_at(rng, origin);
+        aimed.rays.push_back(make_ray(origin, aim.target - origin, 0.0f, kInf));
+        aimed.crossing.push_back(aim.crossing);
+    }
+    return aimed;
+}
+
 }  // namespace
 
 AimedRays vertex_aimed_rays(const TriangleMesh& mesh, const Bounds& bounds, size_t count,
                             uint32_t seed) {
     const Adjacency adjacency(mesh);
-    AimedRays aimed;
-    for (size_t i = 0; i < count; ++i) {
-        shared::RngStream rng = shared::rc_rng_stream(seed, 2, static_cast<unsigned>(i), 0);
-        const glm::vec3 origin = point_in(bounds, 0.2f, rng);
+    return aimed_rays(bounds, count, seed, 2, [&](shared::RngStream& rng, glm::vec3 origin) {
         const glm::vec3 target = mesh.positions[pick(mesh.positions.size(), rng)];
-        aimed.rays.push_back(make_ray(origin, target - origin, 0.0f, kInf));
         const std::vector<size_t> around = adjacency.triangles_at(target);
-        aimed.crossing.push_back(adjacency.closed_fan(target, around) &&
-                                 adjacency.transversal(around, target - origin));
-    }
-    return aimed;
+        return Aim{target, adjacency.closed_fan(target, around) &&
+                               adjacency.transversal(around, target - origin)};
+    });
 }
 
 AimedRays edge_aimed_rays(const TriangleMesh& mesh, const Bounds& bounds, size_t count,
                           uint32_t seed) {
     const Adjacency adjacency(mesh);
-    AimedRays aimed;
-    for (size_t i = 0; i < count; ++i) {
-        shared::RngStream rng = shared::rc_rng_stream(seed, 3, static_cast<unsigned>(i), 0);
-        const glm::vec3 origin = point_in(bounds, 0.2f, rng);
+    return aimed_rays(bounds, count, seed, 3, [&](shared::RngStream& rng, glm::vec3 origin) {
         const glm::uvec3& t = mesh.triangles[pick(mesh.triangles.size(), rng)];
         const unsigned edge = pick(3, rng);
         const glm::vec3 a = mesh.positions[t[edge]];
         const glm::vec3 b = mesh.positions[t[(edge + 1) % 3]];
         const float s = shared::rc_rng_next_float(&rng);
         const glm::vec3 target = a + s * (b - a);
-        aimed.rays.push_back(make_ray(origin, target - origin, 0.0f, kInf));
         std::vector<size_t> sharing;
         for (size_t candidate : adjacency.triangles_at(a)) {
             if (adjacency.has_vertex(candidate, b)) {
@@ -185,10 +198,9 @@ AimedRays edge_aimed_rays(const TriangleMesh& mesh, const Bounds& bounds, size_t
         }
         // An interior point of an edge shared by two triangles (the end points are vertices).
         const bool interior = s > 0.0f && s < 1.0f && target != a && target != b;
-        aimed.crossing.push_back(interior && sharing.size() == 2 &&
-                                 adjacency.transversal(sharing, target - origin));
-    }
-    return aimed;
+        return Aim{target, interior && sharing.size() == 2 &&
+                               adjacency.transversal(sharing, target - origin)};
+    });
 }
 
 std::vector<shared::Ray> surface_segments(const TriangleMesh& mesh,

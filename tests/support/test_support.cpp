@@ -21,6 +21,13 @@ ContextOptions default_context_options() {
     return options;
 }
 
+ContextOptions chunked_context_options(size_t local_size, size_t max_chunk_items) {
+    ContextOptions options = default_context_options();
+    options.local_size = local_size;
+    options.max_chunk_items = max_chunk_items;
+    return options;
+}
+
 Context& shared_context() {
     static Context context(default_context_options());
     return context;
@@ -42,6 +49,12 @@ std::filesystem::path source_dir() { return RADCACHE_SOURCE_DIR; }
 std::filesystem::path radcache_executable() { return RADCACHE_EXECUTABLE; }
 
 Scene load_cornell_box() { return load_scene(source_dir() / "scenes/cornell-box/scene.json"); }
+
+Scene load_scene_at_frame(const std::filesystem::path& path, int frame) {
+    Scene scene = load_scene(path);
+    scene.set_frame(frame);
+    return scene;
+}
 
 Scene floor_and_ceiling(float half_size, const std::string& scratch) {
     const auto dir = scratch_dir(scratch);

@@ -23,12 +23,18 @@ Context& shared_context();
 // A fresh context with the given options on the same device.
 ContextOptions default_context_options();
 
+// default_context_options() with work groups of `local_size` items and launches of at most
+// `max_chunk_items` (0: the defaults): what the tests of results independent of chunking vary.
+ContextOptions chunked_context_options(size_t local_size, size_t max_chunk_items);
+
 // A context whose programs traverse the BVH in `layout`, one per layout per test program.
 Context& layout_context(BvhLayout layout);
 
 std::filesystem::path source_dir();
 std::filesystem::path radcache_executable();
 Scene load_cornell_box();
+// The scene of `path` posed at `frame`.
+Scene load_scene_at_frame(const std::filesystem::path& path, int frame);
 // A camera at (0, 0.9, 0) looking down at a diffuse floor (y = 0) under a ceiling (y = 1), both
 // 2 half_size across, with a small area light under the ceiling's centre; written under
 // scratch_dir(scratch).

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "image_options.h"
 #include "methods/records/irradiance_cache.h"
 #include "methods/temporal/tc_reprojection.h"
 #include "methods/temporal/temporal_cache.h"
@@ -104,10 +105,7 @@ constexpr float kBallRadius = 70.0f;
 constexpr int kAhead[] = {2, 4, 8};  // reprojection horizons tried besides one frame
 
 IrradianceCacheOptions render_options(const StudySize& size, const Scene& scene) {
-    IrradianceCacheOptions o;
-    o.width = size.width;
-    o.height = size.height;
-    o.spp = size.spp;
+    auto o = test::image_options<IrradianceCacheOptions>(size.width, size.height, size.spp);
     o.rays = size.rays;
     o.seed = 0;
     o.max_depth = scene.render.max_depth;

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "box_walls.h"
 #include "image/image_io.h"
 #include "methods/radiance_cache/radiance_cache.h"
 #include "methods/radiance_cache/tc_radiance_reprojection.h"
@@ -29,39 +30,15 @@
 namespace rc {
 namespace {
 
-// A closed 2 m box (the floor at y = -1, the back wall glossy so that the BRDF tables have an
-// order, every wall facing an emitter inside), `shapes` and `emitters` added, and an animation,
-// as a scene file in scratch folder `name`.
+// test::temporal_box_scene at 24 x 24 pixels, the back wall glossy so that the BRDF tables have an
+// order (every wall faces an emitter inside), in scratch folder temporal_radiance_`name`.
 std::filesystem::path glossy_box(const std::string& name, const std::string& shapes,
                                  const std::string& emitters, const std::string& animation) {
-    const auto dir = test::scratch_dir("temporal_radiance_" + name);
-    std::ofstream(dir / "scene.json") << R"({
-        "camera": {"position": [0, 0, -0.95], "look_at": [0, -0.5, 0], "up": [0, 1, 0],
-                   "fov": 70, "resolution": [24, 24]},
-        "materials": {"white": {"type": "diffuse", "reflectance": 0.6},
-                      "red": {"type": "diffuse", "reflectance": [0.7, 0.15, 0.1]},
-                      "satin": {"type": "phong", "diffuse": 0.3, "specular": 0.4,
-                                "exponent": 8}},
-        "shapes": [
-            {"type": "rectangle", "material": "white",
-             "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}}, {"translate": [0, -1, 0]}]},
-            {"type": "rectangle", "material": "white",
-             "transform": [{"rotate": {"axis": [1, 0, 0], "angle": 90}}, {"translate": [0, 1, 0]}]},
-            {"type": "rectangle", "material": "satin",
-             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 180}}, {"translate": [0, 0, 1]}]},
-            {"type": "rectangle", "material": "white", "transform": [{"translate": [0, 0, -1]}]},
-            {"type": "rectangle", "material": "red",
-             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": -90}}, {"translate": [1, 0, 0]}]},
-            {"type": "rectangle", "material": "white",
-             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 90}}, {"translate": [-1, 0, 0]}]})"
-                                      << shapes << R"(],
-        "emitters": [)" << emitters << R"(],
-        "animation": )" << animation << R"(
-    })";
-    return dir / "scene.json";
+    return test::temporal_box_scene("temporal_radiance_" + name, 24, true, shapes, emitters,
+                                    animation);
 }
 
-constexpr const char* kStill = R"({"frame_start": 0, "frame_end": 0, "tracks": []})";
+constexpr const char* kStill = test::kStillAnimation;
 
 // Radiance-record sites on the floor (y = -1, normal up) at the given (x, z).
 std::vector<shared::RcQuery> floor_sites(const std::vector<std::pair<float, float>>& xz) {
@@ -82,6 +59,31 @@ std::vector<shared::RcQuery> floor_sites(const std::vector<std::pair<float, floa
     return sites;
 }
 
+RadianceCacheOptions record_options(int rays, uint64_t seed, int max_depth) {
+    RadianceCacheOptions options;
+    options.rays = rays;
+    options.seed = seed;
+    options.max_depth = max_depth;
+    return options;
+}
+
+// Places records at `sites` in `cache` (site i's random stream i): their payloads, in order.
+std::vector<std::vector<float>> add_records(RadianceCache& cache,
+                                            const std::vector<shared::RcQuery>& sites) {
+    std::vector<unsigned> streams;
+    for (size_t i = 0; i < sites.size(); ++i) {
+        streams.push_back(static_cast<unsigned>(i));
+    }
+    cache.add_records(sites, streams, PathContinuation());
+    std::vector<std::vector<float>> payloads;
+    const size_t floats = static_cast<size_t>(9 * cache.order() * cache.order());
+    for (size_t i = 0; i < sites.size(); ++i) {
+        const auto* data = reinterpret_cast<const float*>(cache.store().payload_data(i));
+        payloads.emplace_back(data, data + floats);
+    }
+    return payloads;
+}
+
 // Radiance records at `sites` of `scene` posed at frame 0 with `rays` rays (path-traced beyond
 // their hits to `max_depth`): their payloads, in order, and their reprojected estimates at the
 // next frame (`next`: the scene posed there) into *carried; the records' order into *order.
@@ -90,33 +92,15 @@ std::vector<std::vector<float>> records_at(const std::filesystem::path& scene, c
                                            uint64_t seed, int max_depth,
                                            std::vector<CarriedRadianceRecord>* carried,
                                            int* order) {
-    test::DeviceFrame device([&] {
-        Scene s = load_scene(scene);
-        s.set_frame(0);
-        return s;
-    }());
+    test::DeviceFrame device(test::load_scene_at_frame(scene, 0));
     const FrameScene frame = device.frame();
-    RadianceCacheOptions options;
-    options.rays = rays;
-    options.seed = seed;
-    options.max_depth = max_depth;
-    RadianceCache cache(frame, options);
+    RadianceCache cache(frame, record_options(rays, seed, max_depth));
     *order = cache.order();
     const TcMotion motion(frame.context, frame.scene, next, 0, 4);
     TcRadianceReprojection reprojection(frame, motion, cache.order());
     cache.set_observer(&reprojection);
-    std::vector<unsigned> streams;
-    for (size_t i = 0; i < sites.size(); ++i) {
-        streams.push_back(static_cast<unsigned>(i));
-    }
-    cache.add_records(sites, streams, PathContinuation());
+    std::vector<std::vector<float>> payloads = add_records(cache, sites);
     *carried = reprojection.take();
-    std::vector<std::vector<float>> payloads;
-    const size_t floats = static_cast<size_t>(9 * *order * *order);
-    for (size_t i = 0; i < sites.size(); ++i) {
-        const auto* data = reinterpret_cast<const float*>(cache.store().payload_data(i));
-        payloads.emplace_back(data, data + floats);
-    }
     return payloads;
 }
 
@@ -189,40 +173,16 @@ TEST(TemporalRadianceCaching, ReprojectionPredictsTheCoefficientsAfterAnObjectMo
     const auto moving = glossy_box("moving", cube, light, R"({"frame_start": 0, "frame_end": 1,
         "tracks": [{"target": "shape:cube", "keyframes": [
             {"frame": 0, "translate": [0, 0, 0]}, {"frame": 1, "translate": [0.1, 0, 0]}]}]})");
-    Scene next = load_scene(moving);
-    next.set_frame(1);
+    const Scene next = test::load_scene_at_frame(moving, 1);
     const std::vector<shared::RcQuery> sites =
         floor_sites({{-0.2f, 0.2f}, {0.1f, -0.1f}, {0.5f, 0.25f}, {0.3f, 0.5f}, {0.1f, 0.5f}});
     std::vector<CarriedRadianceRecord> carried;
     int order = 0;
     const auto now = records_at(moving, next, sites, 4096, 9, 2, &carried, &order);
     // Records computed fresh at frame 1 (seed 9: the same random streams).
-    const auto fresh_at_frame_1 = [&](uint64_t seed) {
-        test::DeviceFrame device([&] {
-            Scene s = load_scene(moving);
-            s.set_frame(1);
-            return s;
-        }());
-        const FrameScene frame = device.frame();
-        RadianceCacheOptions options;
-        options.rays = 4096;
-        options.seed = seed;
-        options.max_depth = 2;
-        RadianceCache cache(frame, options);
-        std::vector<unsigned> streams;
-        for (size_t i = 0; i < sites.size(); ++i) {
-            streams.push_back(static_cast<unsigned>(i));
-        }
-        cache.add_records(sites, streams, PathContinuation());
-        std::vector<std::vector<float>> payloads;
-        const size_t floats = static_cast<size_t>(9 * order * order);
-        for (size_t i = 0; i < sites.size(); ++i) {
-            const auto* data = reinterpret_cast<const float*>(cache.store().payload_data(i));
-            payloads.emplace_back(data, data + floats);
-        }
-        return payloads;
-    };
-    const auto fresh = fresh_at_frame_1(9);
+    test::DeviceFrame at_frame_1(test::load_scene_at_frame(moving, 1));
+    RadianceCache fresh_cache(at_frame_1.frame(), record_options(4096, 9, 2));
+    const auto fresh = add_records(fresh_cache, sites);
     const auto distance = [&](const std::vector<std::vector<float>>& estimate, int bands) {
         double sum = 0.0;
         for (size_t i = 0; i < sites.size(); ++i) {

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "box_walls.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
 #include "methods/records/irradiance_cache.h"
@@ -30,49 +31,15 @@
 namespace rc {
 namespace {
 
-// A closed 2 m box (walls white, the floor at y = -1) with `extra` shapes and emitters, and an
-// animation, as a scene file in scratch folder `name`.
+// test::temporal_box_scene at 16 x 16 pixels, every wall diffuse, in scratch folder
+// temporal_`name`.
 std::filesystem::path box_scene(const std::string& name, const std::string& shapes,
                                 const std::string& emitters, const std::string& animation) {
-    const auto dir = test::scratch_dir("temporal_" + name);
-    std::ofstream(dir / "scene.json") << R"({
-        "camera": {"position": [0, 0, -0.95], "look_at": [0, -0.5, 0], "up": [0, 1, 0],
-                   "fov": 70, "resolution": [16, 16]},
-        "materials": {"white": {"type": "diffuse", "reflectance": 0.6},
-                      "red": {"type": "diffuse", "reflectance": [0.7, 0.15, 0.1]}},
-        "shapes": [
-            {"type": "rectangle", "material": "white",
-             "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}}, {"translate": [0, -1, 0]}]},
-            {"type": "rectangle", "material": "white",
-             "transform": [{"rotate": {"axis": [1, 0, 0], "angle": 90}}, {"translate": [0, 1, 0]}]},
-            {"type": "rectangle", "material": "white",
-             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 180}}, {"translate": [0, 0, 1]}]},
-            {"type": "rectangle", "material": "white", "transform": [{"translate": [0, 0, -1]}]},
-            {"type": "rectangle", "material": "red",
-             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": -90}}, {"translate": [1, 0, 0]}]},
-            {"type": "rectangle", "material": "white",
-             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 90}}, {"translate": [-1, 0, 0]}]})"
-                                      << shapes << R"(],
-        "emitters": [)" << emitters << R"(],
-        "animation": )" << animation << R"(
-    })";
-    return dir / "scene.json";
+    return test::temporal_box_scene("temporal_" + name, 16, false, shapes, emitters, animation);
 }
 
 constexpr const char* kNoEmitters = "";
-constexpr const char* kStill = R"({"frame_start": 0, "frame_end": 0, "tracks": []})";
-
-// The scene of `path` posed at `frame`, on the device.
-struct PosedFrame {
-    PosedFrame(const std::filesystem::path& path, int frame)
-        : device([&] {
-              Scene scene = load_scene(path);
-              scene.set_frame(frame);
-              return scene;
-          }()) {}
-    FrameScene frame() { return device.frame(); }
-    test::DeviceFrame device;
-};
+constexpr const char* kStill = test::kStillAnimation;
 
 // Sites on the floor (y = -1, normal up) at the given (x, z).
 std::vector<RecordSite> floor_sites(const std::vector<std::pair<float, float>>& xz) {
@@ -125,7 +92,7 @@ TEST(TemporalCaching, LightWhosePowerDoublesGivesTauTwo) {
     const auto twice = box_scene("power_2", "", R"({"type": "point", "position": [0.2, 0.4, 0.1],
                                                    "intensity": 6})",
                                  kStill);
-    PosedFrame now(once, 0);
+    test::DeviceFrame now(test::load_scene_at_frame(once, 0));
     const Scene next = load_scene(twice);
     const std::vector<RecordSite> sites = floor_sites({{0.0f, 0.0f}, {-0.6f, 0.5f}, {0.7f, -0.4f}});
     std::vector<CarriedRecord> carried;
@@ -170,10 +137,9 @@ TEST(TemporalCaching, ReprojectionPredictsTheIrradianceAfterAnObjectMoves) {
             {"target": "shape:cube", "keyframes": [
                 {"frame": 0, "translate": [-0.04, -0.75, 0]},
                 {"frame": 1, "translate": [0.04, -0.75, 0]}]}]})");
-    PosedFrame frame0(path, 0);
-    PosedFrame frame1(path, 1);
-    Scene next = load_scene(path);
-    next.set_frame(1);
+    test::DeviceFrame frame0(test::load_scene_at_frame(path, 0));
+    test::DeviceFrame frame1(test::load_scene_at_frame(path, 1));
+    Scene next = test::load_scene_at_frame(path, 1);
     const std::vector<RecordSite> sites = floor_sites({{-0.7f, 0.0f},
                                                        {0.75f, 0.1f},
                                                        {0.0f, 0.55f},
@@ -235,9 +201,8 @@ TEST(TemporalCaching, StillHemispheresLiveTheLongestLifespan) {
             {"target": "shape:cube", "keyframes": [
                 {"frame": 0, "translate": [-0.2, -0.75, 0]},
                 {"frame": 1, "translate": [0.2, -0.75, 0]}]}]})");
-    PosedFrame frame0(path, 0);
-    Scene next = load_scene(path);
-    next.set_frame(1);
+    test::DeviceFrame frame0(test::load_scene_at_frame(path, 0));
+    Scene next = test::load_scene_at_frame(path, 1);
     const std::vector<RecordSite> still = floor_sites({{3.5f, 0.2f}, {4.6f, -0.5f}});
     const std::vector<RecordSite> beside = floor_sites({{0.6f, 0.0f}, {-0.6f, 0.3f}});
     std::vector<RecordSite> sites = still;
@@ -270,9 +235,8 @@ TEST(TemporalCaching, RecordsSeeingAMovingLightExpireBeforeTheirErrorBound) {
             {"target": "emitter:bulb", "keyframes": [
                 {"frame": 0, "translate": [-0.6, 0.5, 0]},
                 {"frame": 20, "translate": [0.6, 0.5, 0]}]}]})");
-    PosedFrame frame0(path, 0);
-    Scene next = load_scene(path);
-    next.set_frame(1);
+    test::DeviceFrame frame0(test::load_scene_at_frame(path, 0));
+    Scene next = test::load_scene_at_frame(path, 1);
     const std::vector<RecordSite> sites =
         floor_sites({{-0.5f, 0.0f}, {0.0f, 0.5f}, {0.5f, -0.3f}, {0.8f, 0.7f}, {-0.8f, -0.6f}});
     std::vector<CarriedRecord> carried;
@@ -284,7 +248,7 @@ TEST(TemporalCaching, RecordsSeeingAMovingLightExpireBeforeTheirErrorBound) {
         const int lifespan =
             temporal_lifespan(temporal_change(e0[i], carried[i].next), options, false);
         ASSERT_LT(lifespan, options.max_frames) << "site " << i << " sees the light move";
-        PosedFrame last(path, lifespan - 1);
+        test::DeviceFrame last(test::load_scene_at_frame(path, lifespan - 1));
         const auto e_last = records_at(last.frame(), {sites[i]}, 4096, 9, 2);
         const double change =
             std::fabs(luminance(e_last[0].irradiance) / luminance(e0[i].irradiance) - 1.0);
@@ -397,7 +361,7 @@ TEST(TemporalCaching, DepartureLifespanOfALightGrowingLinearlyOrQuadratically) {
                           4.0 * quadratic(g.b, g.c, t));
             scenes.push_back(box_scene("growth_" + std::to_string(t), "", emitter, kStill));
         }
-        PosedFrame now(scenes[0], 0);
+        test::DeviceFrame now(test::load_scene_at_frame(scenes[0], 0));
         const Scene next = load_scene(scenes[1]);
         const Scene ahead = load_scene(scenes[2]);
         std::vector<CarriedRecord> one;

@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <fstream>
 
+#include "error_of.h"
+#include "scratch_files.h"
 #include "test_support.h"
 #include "util/error.h"
 #include "util/stderr_capture.h"
@@ -18,40 +20,23 @@
 namespace rc {
 namespace {
 
-std::string error_of(const std::function<void()>& action) {
-    try {
-        action();
-    } catch (const Error& error) {
-        return error.what();
-    }
-    return "";
-}
-
-std::vector<std::string> names_in(const std::filesystem::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-        names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
 TEST(FileIo, ReadsOnlyRegularFilesWithinTheLimit) {
     const auto dir = test::scratch_dir("file_io_read");
     std::ofstream(dir / "ten.txt") << "0123456789";
     EXPECT_EQ(read_file(dir / "ten.txt", 10), "0123456789");
-    EXPECT_NE(error_of([&] {
+    EXPECT_NE(test::error_of([&] {
                   read_file(dir / "ten.txt", 9, "mesh file");
               }).find("ten.txt (mesh file): 10 bytes, more than the limit of 9"),
               std::string::npos);
-    EXPECT_NE(error_of([&] { read_file(dir); }).find("not a regular file"), std::string::npos);
-    EXPECT_NE(error_of([] { read_file("/dev/zero"); }).find("/dev/zero: not a regular file"),
+    EXPECT_NE(test::error_of([&] { read_file(dir); }).find("not a regular file"),
+              std::string::npos);
+    EXPECT_NE(test::error_of([] { read_file("/dev/zero"); }).find("/dev/zero: not a regular file"),
               std::string::npos);
     // A FIFO with no writer: refused at once, never waited on.
     ASSERT_EQ(::mkfifo((dir / "fifo").c_str(), 0600), 0);
-    EXPECT_NE(error_of([&] { read_file(dir / "fifo"); }).find("not a regular file"),
+    EXPECT_NE(test::error_of([&] { read_file(dir / "fifo"); }).find("not a regular file"),
               std::string::npos);
-    EXPECT_NE(error_of([&] { read_file(dir / "absent"); }).find("cannot open file"),
+    EXPECT_NE(test::error_of([&] { read_file(dir / "absent"); }).find("cannot open file"),
               std::string::npos);
 }
 
@@ -68,12 +53,13 @@ TEST(FileIo, AnOutputBatchCommitsEveryFileAtTheEndOrNone) {
         EXPECT_EQ(read_file(dir / "old.txt"), "old");
         EXPECT_FALSE(std::filesystem::exists(dir / "fresh.txt"));
         EXPECT_EQ(read_file(dir / "cache.bin"), "now");
-        EXPECT_EQ(names_in(dir).size(), 4u);  // old, cache and two staged temporaries
+        EXPECT_EQ(test::file_names(dir).size(), 4u);  // old, cache and two staged temporaries
         batch.commit();
     }
     EXPECT_EQ(read_file(dir / "old.txt"), "new");
     EXPECT_EQ(read_file(dir / "fresh.txt"), "second");
-    EXPECT_EQ(names_in(dir), (std::vector<std::string>{"cache.bin", "fresh.txt", "old.txt"}));
+    EXPECT_EQ(test::file_names(dir),
+              (std::vector<std::string>{"cache.bin", "fresh.txt", "old.txt"}));
 
     // A batch that ends without its commit (a failed run) removes what it staged.
     {
@@ -82,7 +68,8 @@ TEST(FileIo, AnOutputBatchCommitsEveryFileAtTheEndOrNone) {
         write_file_atomically(dir / "other.txt", "lost");
     }
     EXPECT_EQ(read_file(dir / "old.txt"), "new");
-    EXPECT_EQ(names_in(dir), (std::vector<std::string>{"cache.bin", "fresh.txt", "old.txt"}));
+    EXPECT_EQ(test::file_names(dir),
+              (std::vector<std::string>{"cache.bin", "fresh.txt", "old.txt"}));
     // Without a batch a write reaches its path at once.
     write_file_atomically(dir / "other.txt", "at once");
     EXPECT_EQ(read_file(dir / "other.txt"), "at once");
@@ -92,18 +79,18 @@ TEST(FileIo, OutputsThatCannotBeFilesAreRefusedBeforeTheWork) {
     const auto dir = test::scratch_dir("file_io_outputs");
     std::filesystem::create_directories(dir / "stats.json");
     const std::string directory =
-        error_of([&] { check_writable_parent(dir / "stats.json", "--stats"); });
+        test::error_of([&] { check_writable_parent(dir / "stats.json", "--stats"); });
     EXPECT_NE(directory.find("--stats"), std::string::npos) << directory;
     EXPECT_NE(directory.find("is a directory"), std::string::npos) << directory;
-    EXPECT_NE(error_of([] {
+    EXPECT_NE(test::error_of([] {
                   check_writable_parent("/dev/null", "--stats");
               }).find("exists and is not a regular file"),
               std::string::npos);
-    EXPECT_NE(error_of([&] {
+    EXPECT_NE(test::error_of([&] {
                   check_writable_parent(dir / "missing/x.json", "--json");
               }).find("does not exist or is not writable"),
               std::string::npos);
-    EXPECT_EQ(error_of([&] { check_writable_parent(dir / "new.json", "--json"); }), "");
+    EXPECT_EQ(test::error_of([&] { check_writable_parent(dir / "new.json", "--json"); }), "");
     try {
         check_writable_parent(dir / "stats.json", "--stats");
     } catch (const Error& error) {

@@ -46,6 +46,7 @@ import sys
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import references  # noqa: E402
+from extra_options import parse_with_extra  # noqa: E402
 from radcache_process import RADCACHE, run  # noqa: E402
 
 
@@ -186,11 +187,6 @@ def tables(rows, lines):
 
 
 def main():
-    argv = sys.argv[1:]
-    extra = []
-    if "--" in argv:
-        extra = argv[argv.index("--") + 1:]
-        argv = argv[:argv.index("--")]
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--scenes", nargs="+", default=["relief"])
     parser.add_argument("--source", nargs="+", choices=["grid", "path", "radiosity"],
@@ -223,7 +219,7 @@ def main():
                         help="the layer whose relMSE decides equal error (default indirect: "
                              "the beauty's is mostly the direct light's noise, the same in both)")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "decomposition"))
-    args = parser.parse_args(argv)
+    args, extra = parse_with_extra(parser, sys.argv[1:])
     if not os.access(RADCACHE, os.X_OK):
         sys.exit("build radcache first (see README): %s is missing" % RADCACHE)
     if args.repeats < 1 or args.spp < 1:

@@ -41,6 +41,7 @@ import sys
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import references  # noqa: E402
+from extra_options import parse_with_extra  # noqa: E402
 from radcache_process import cpu_seconds, run  # noqa: E402
 
 
@@ -119,13 +120,7 @@ def main(argv):
     parser.add_argument("--rc-options", default="",
                         help="options of the rc renders (quoted), e.g. \"--ic-bounces 1\"")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "glossy"))
-    if "--" in argv:
-        split = argv.index("--")
-        args = parser.parse_args(argv[:split])
-        extra = argv[split + 1:]
-    else:
-        args = parser.parse_args(argv)
-        extra = []
+    args, extra = parse_with_extra(parser, argv)
     global CLOCK
     CLOCK = args.clock
     sdrc_options = shlex.split(args.sdrc_options)

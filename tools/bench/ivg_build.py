@@ -14,20 +14,12 @@ Usage: tools/bench/ivg_build.py [--scenes cornell-box two-rooms] [--grids 16x16x
 import argparse
 import json
 import os
-import subprocess
 import sys
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import references  # noqa: E402
-RADCACHE = os.path.join(ROOT, "build", "radcache")
-
-
-def run(args):
-    result = subprocess.run([RADCACHE] + args, capture_output=True, text=True)
-    if result.returncode != 0:
-        sys.exit("radcache %s failed:\n%s%s" % (" ".join(args), result.stdout, result.stderr))
-    return result.stdout
+from radcache_process import RADCACHE, run  # noqa: E402
 
 
 def main():

@@ -59,6 +59,7 @@ import sys
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import references  # noqa: E402
+from extra_options import parse_with_extra  # noqa: E402
 from radcache_process import cpu_seconds, run  # noqa: E402
 
 
@@ -221,13 +222,7 @@ def main(argv):
     parser.add_argument("--clock", choices=["cpu", "wall"], default="cpu")
     parser.add_argument("--chart", default="", help="write the flicker chart here (.png)")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "temporal"))
-    if "--" in argv:
-        split = argv.index("--")
-        args = parser.parse_args(argv[:split])
-        extra = argv[split + 1:]
-    else:
-        args = parser.parse_args(argv)
-        extra = []
+    args, extra = parse_with_extra(parser, argv)
     args.scene_dir = args.scene if os.path.isdir(args.scene) else os.path.dirname(args.scene)
     scene = os.path.join(args.scene_dir, "scene.json")
     args.reference = args.reference or os.path.join(args.scene_dir, "reference", "frame####.exr")

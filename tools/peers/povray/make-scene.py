@@ -24,37 +24,13 @@ Usage: tools/peers/povray/make-scene.py [--scene DIR] [-o FILE]
 """
 
 import argparse
-import json
 import math
 import os
+import sys
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
-
-
-def load_json_with_comments(path):
-    with open(path) as f:
-        lines = [line for line in f if not line.lstrip().startswith("//")]
-    return json.loads("".join(lines))
-
-
-def read_obj(path):
-    """Vertices and triangles (fans of polygons) of a Wavefront OBJ file."""
-    vertices, triangles = [], []
-    with open(path) as f:
-        for line in f:
-            fields = line.split()
-            if not fields:
-                continue
-            if fields[0] == "v":
-                vertices.append(tuple(float(x) for x in fields[1:4]))
-            elif fields[0] == "f":
-                index = []
-                for field in fields[1:]:
-                    i = int(field.split("/")[0])
-                    index.append(i - 1 if i > 0 else len(vertices) + i)
-                for k in range(1, len(index) - 1):
-                    triangles.append((index[0], index[k], index[k + 1]))
-    return vertices, triangles
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+from scene_files import load_json_with_comments, read_obj  # noqa: E402
 
 
 def fmt(x):
