@@ -19,4 +19,20 @@ struct SharedSettings {
     void share(const SharedSettings& other) { *this = other; }
 };
 
+// The seed as the kernels take it, in two 32-bit words (seed_lo, seed_hi of any parameter struct).
+template <class Params>
+void set_kernel_seed(uint64_t seed, Params* params) {
+    params->seed_lo = static_cast<unsigned>(seed);
+    params->seed_hi = static_cast<unsigned>(seed >> 32);
+}
+
+// The seed and the path depth limits of `settings` (any struct with seed, max_depth and rr_depth)
+// into a kernel parameter struct with the fields of those names.
+template <class Settings, class Params>
+void set_kernel_path_settings(const Settings& settings, Params* params) {
+    set_kernel_seed(settings.seed, params);
+    params->max_depth = settings.max_depth;
+    params->rr_depth = settings.rr_depth;
+}
+
 }  // namespace rc

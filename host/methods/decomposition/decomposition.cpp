@@ -16,6 +16,7 @@
 #include "methods/decomposition/triangle_split.h"
 #include "methods/records/record_store.h"
 #include "methods/scene_arguments.h"
+#include "methods/shared_settings.h"
 #include "scene/camera.h"
 #include "util/error.h"
 #include "util/glm_helpers.h"
@@ -510,12 +511,9 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
     params_.camera_spp = evaluated_spp;
     params_.shaded_spp = options.spp;
     params_.light_samples = options.light_samples;
-    params_.max_depth = options.max_depth;
-    params_.rr_depth = options.rr_depth;
+    set_kernel_path_settings(options, &params_);
     params_.cluster_rays = options.cluster_rays;
     params_.radiosity_samples = options.radiosity_samples;
-    params_.seed_lo = static_cast<unsigned>(options.seed);
-    params_.seed_hi = static_cast<unsigned>(options.seed >> 32);
     params_.alpha = options.alpha;
     params_.ridge = kRidge;
     params_.count_emission = options.count_emission ? 1 : 0;

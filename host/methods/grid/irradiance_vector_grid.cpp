@@ -8,6 +8,7 @@
 
 #include "methods/grid/irradiance_vector_grid_file.h"
 #include "methods/scene_arguments.h"
+#include "methods/shared_settings.h"
 #include "util/error.h"
 #include "util/timing.h"
 
@@ -205,12 +206,9 @@ shared::IvgParams IrradianceVectorGrid::layout(const IvgOptions& options) const 
     p.fixed_point_scale =
         flux > 0.0f ? static_cast<float>(kLargestAmount * kSmallestCosine / flux) : 1.0f;
     p.include_direct = options.include_direct ? 1 : 0;
-    p.max_depth = options.max_depth;
-    p.rr_depth = options.rr_depth;
+    set_kernel_path_settings(options, &p);
     p.camera_spp = 1;
     p.light_samples = 1;
-    p.seed_lo = static_cast<unsigned>(options.seed);
-    p.seed_hi = static_cast<unsigned>(options.seed >> 32);
     p.interpolation = options.interpolation;
     p.compressed = options.compressed ? 1 : 0;
     return p;

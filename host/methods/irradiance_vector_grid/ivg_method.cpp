@@ -4,6 +4,7 @@
 
 #include "image/film.h"
 #include "methods/scene_arguments.h"
+#include "methods/shared_settings.h"
 #include "scene/camera.h"
 #include "shared/film.h"
 #include "util/error.h"
@@ -23,8 +24,7 @@ class RenderGrid : public KernelArgumentGroup {
         params_.gather_rays = options.gather_rays;
         params_.light_samples = options.light_samples;
         params_.camera_spp = options.spp;
-        params_.seed_lo = static_cast<unsigned>(options.seed);
-        params_.seed_hi = static_cast<unsigned>(options.seed >> 32);
+        set_kernel_seed(options.seed, &params_);
     }
     unsigned set_kernel_args(Kernel& kernel, unsigned first) const override {
         const unsigned count = grid_.set_kernel_args(kernel, first);

@@ -6,6 +6,7 @@
 
 #include "image/film.h"
 #include "methods/scene_arguments.h"
+#include "methods/shared_settings.h"
 #include "scene/camera.h"
 #include "shared/film.h"
 #include "util/error.h"
@@ -78,10 +79,7 @@ shared::PathTracerParams PathTracer::pass_params(const PathTracerOptions& option
     shared::PathTracerParams params{};
     params.width = width;
     params.height = height;
-    params.max_depth = options.max_depth;
-    params.rr_depth = options.rr_depth;
-    params.seed_lo = static_cast<unsigned>(options.seed);
-    params.seed_hi = static_cast<unsigned>(options.seed >> 32);
+    set_kernel_path_settings(options, &params);
     return params;
 }
 

@@ -7,6 +7,7 @@
 #include "methods/records/cache_file.h"
 #include "methods/records/record_grid.h"
 #include "methods/scene_arguments.h"
+#include "methods/shared_settings.h"
 #include "shared/sh_rotation_zxz.h"
 #include "util/error.h"
 #include "util/glm_helpers.h"
@@ -135,12 +136,9 @@ shared::RcParams RadianceCache::record_params() const {
     params.order = std::max(order_, 1);
     params.strata_m = strata_m_;
     params.strata_n = strata_n_;
-    params.seed_lo = static_cast<unsigned>(options_.seed);
-    params.seed_hi = static_cast<unsigned>(options_.seed >> 32);
+    set_kernel_path_settings(options_, &params);
     params.accuracy = options_.accuracy;
     params.max_weight = kIrradianceCacheMaxWeight;
-    params.max_depth = options_.max_depth;
-    params.rr_depth = options_.rr_depth;
     params.count_emission = options_.count_emission ? 1 : 0;
     return params;
 }

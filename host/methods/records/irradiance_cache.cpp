@@ -15,6 +15,7 @@
 #include "methods/records/record_level_source.h"
 #include "methods/records/splat_tiles.h"
 #include "methods/scene_arguments.h"
+#include "methods/shared_settings.h"
 #include "scene/camera.h"
 #include "shared/film.h"
 #include "util/error.h"
@@ -135,12 +136,9 @@ shared::IcParams IrradianceCache::level_params(int level) const {
     params.strata_m = level == 0 ? sampling_.m : sampling_.deeper_m;
     params.strata_n = level == 0 ? sampling_.n : sampling_.deeper_n;
     params.count_emission = sampling_.include_emission ? 1 : 0;
-    params.max_depth = sampling_.max_depth;
-    params.rr_depth = sampling_.rr_depth;
+    set_kernel_path_settings(sampling_, &params);
     params.level = level;
     params.light_samples = 1;
-    params.seed_lo = static_cast<unsigned>(sampling_.seed);
-    params.seed_hi = static_cast<unsigned>(sampling_.seed >> 32);
     params.accuracy = sampling_.accuracy;
     params.max_weight = kIrradianceCacheMaxWeight;
     return params;

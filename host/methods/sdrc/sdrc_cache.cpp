@@ -6,6 +6,7 @@
 
 #include "methods/records/record_grid.h"
 #include "methods/scene_arguments.h"
+#include "methods/shared_settings.h"
 #include "util/error.h"
 #include "util/glm_helpers.h"
 #include "util/timing.h"
@@ -96,12 +97,9 @@ shared::SdrcParams SdrcCache::kernel_params(const shared::IcParams& params) cons
     p.interp = options_.interp;
     p.pixel_interp = static_cast<float>(options_.interp) * static_cast<float>(params.camera_spp);
     p.max_radius = options_.max_radius;
-    p.seed_lo = static_cast<unsigned>(options_.seed);
-    p.seed_hi = static_cast<unsigned>(options_.seed >> 32);
+    set_kernel_path_settings(options_, &p);
     p.accuracy = options_.accuracy;
     p.max_weight = kIrradianceCacheMaxWeight;
-    p.max_depth = options_.max_depth;
-    p.rr_depth = options_.rr_depth;
     p.count_emission = options_.count_emission ? 1 : 0;
     return p;
 }
