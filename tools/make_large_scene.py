@@ -9,6 +9,8 @@ import argparse
 import json
 import math
 
+from arg_types import positive_int
+
 TRIANGLES_PER_SPHERE = 9024  # make_uv_sphere(rings 48, segments 96) once loaded
 
 
@@ -45,7 +47,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("out")
-    parser.add_argument("--triangles", type=int, default=5_000_000)
+    parser.add_argument("--triangles", type=positive_int, default=5_000_000)
     args = parser.parse_args()
     with open(args.out, "w") as out:
         json.dump(scene(args.triangles), out, indent=1)

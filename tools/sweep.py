@@ -123,6 +123,7 @@ import subprocess
 import sys
 import time
 
+from arg_types import positive_int
 import references
 import sweep_knobs
 import sweep_report
@@ -701,8 +702,8 @@ def parse_arguments(argv):
                              "%(default)s)")
     parser.add_argument("--decomp-spp", type=int, default=4,
                         help="decomposition's camera samples per pixel (default: %(default)s)")
-    parser.add_argument("--width", type=int, help="override the scene's resolution")
-    parser.add_argument("--height", type=int)
+    parser.add_argument("--width", type=positive_int, help="override the scene's resolution")
+    parser.add_argument("--height", type=positive_int)
     parser.add_argument("--povray", nargs="*", metavar="SETTING",
                         help="add the POV-Ray peer (Cornell box only): its settings, default all")
     parser.add_argument("--crop", type=int, nargs=4, metavar=("X", "Y", "W", "H"),

@@ -210,7 +210,8 @@ class SweepTest(unittest.TestCase):
         self.assertNotEqual(negative.returncode, 0)
         self.assertIn("--pt-spp", negative.stderr)
         for bad, option in ((["--repeats", "0"], "--repeats"), (["--ivg-grid", "auto*"],
-                            "--ivg-grid"), (["--ic-min-spacing", "8pt"], "--ic-min-spacing")):
+                            "--ivg-grid"), (["--ic-min-spacing", "8pt"], "--ic-min-spacing"),
+                            (["--width", "0"], "--width"), (["--height", "-3"], "--height")):
             refused = run([sys.executable, SWEEP, os.path.join(ROOT, "scenes", "cornell-box"),
                            "--out", os.path.join(SCRATCH, "bad")] + bad)
             self.assertNotEqual(refused.returncode, 0)
