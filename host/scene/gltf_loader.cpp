@@ -14,6 +14,7 @@
 
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_materials.h"
+#include "scene/gltf_validate.h"
 #include "scene/json_parse.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -98,10 +99,13 @@ tinygltf::Model read_model(const std::filesystem::path& path, const SceneFiles& 
     const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
     // tinygltf converts `extras` recursively: a document nested thousands deep overflows the
     // stack, so the JSON (a .glb's first chunk) is bounded as radcache's own scene files are.
-    if (json_nesting_depth(gltf_json_text(bytes, binary)) > kMaxJsonDepth) {
+    const std::string json_text = gltf_json_text(bytes, binary);
+    if (json_nesting_depth(json_text) > kMaxJsonDepth) {
         throw Error(name + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
                     " levels");
     }
+    // What tinygltf would read silently wrong (duplicate keys, wrong lengths, negative offsets).
+    validate_gltf_json(json_text, name);
     const bool read =
         binary ? reader.LoadBinaryFromMemory(&model, &error, &warning,
                                              reinterpret_cast<const unsigned char*>(bytes.data()),
@@ -438,8 +442,14 @@ class GltfSceneBuilder {
         camera.height = 512;
         camera.width = 512;
         if (gltf.perspective.aspectRatio > 0.0) {
-            camera.width = static_cast<int>(std::clamp(
-                std::round(512.0 * gltf.perspective.aspectRatio), 1.0, double{kMaxImageSide}));
+            const double width = std::round(512.0 * gltf.perspective.aspectRatio);
+            if (!(width >= 1.0 && width <= double{kMaxImageSide})) {
+                throw Error(file_ + ": camera aspectRatio " +
+                            describe_json(gltf.perspective.aspectRatio) +
+                            " makes a 512-row image " + describe_json(width) +
+                            " pixels wide (1 to " + std::to_string(kMaxImageSide) + ")");
+            }
+            camera.width = static_cast<int>(width);
         }
         return camera;
     }

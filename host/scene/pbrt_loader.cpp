@@ -33,6 +33,7 @@ struct Attributes {
     int material = -1;  // a PbrtMaterials handle; -1: pbrt's default (diffuse 0.5)
     std::optional<glm::vec3> area_radiance;
     bool saves_transform_only = false;  // pushed by TransformBegin
+    std::string opened_at;              // file:line of the directive that pushed it
 };
 
 // pbrt's LookAt: the camera-from-world transform of a camera at `eye` looking at `at`.
@@ -95,6 +96,12 @@ class PbrtSceneBuilder {
         if (object_) {
             throw Error(file_ + ": ObjectBegin " + in_quotes(object_name_) + " has no ObjectEnd");
         }
+        if (!stack_.empty()) {
+            const bool transform = stack_.back().saves_transform_only;
+            throw Error(stack_.back().opened_at + ": " +
+                        (transform ? "TransformBegin has no matching TransformEnd"
+                                   : "AttributeBegin has no matching AttributeEnd"));
+        }
     }
 
    private:
@@ -132,6 +139,7 @@ class PbrtSceneBuilder {
         } else if (d.name == "TransformBegin") {
             stack_.push_back(attributes_);
             stack_.back().saves_transform_only = true;
+            stack_.back().opened_at = d.where();
         } else if (d.name == "TransformEnd") {
             if (stack_.empty() || !stack_.back().saves_transform_only) {
                 throw Error(d.where() + ": TransformEnd without a matching TransformBegin");
@@ -369,6 +377,7 @@ class PbrtSceneBuilder {
         require(d, true);
         if (d.name == "AttributeBegin") {
             stack_.push_back(attributes_);
+            stack_.back().opened_at = d.where();
         } else if (d.name == "AttributeEnd") {
             if (stack_.empty() || stack_.back().saves_transform_only) {
                 throw Error(d.where() + ": AttributeEnd without a matching AttributeBegin");

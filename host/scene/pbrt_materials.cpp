@@ -148,6 +148,11 @@ void PbrtMaterials::define_named(const PbrtDirective& directive) {
     Spec spec;
     spec.directive = directive;
     spec.what = directive.where() + ": MakeNamedMaterial " + in_quotes(name);
+    if (named_.count(name) != 0) {
+        throw Error(spec.what +
+                    ": a material of that name is already defined (pbrt-v4 refuses a "
+                    "second definition)");
+    }
     PbrtParams params(directive, spec.what);
     spec.type = params.get_string("type", "");
     if (spec.type.empty()) {

@@ -211,6 +211,35 @@ TEST(Gltf, MalformedFilesAreRefusedCleanly) {
         }
         cases.push_back({name, m.dump(), "names no existing light"});
     }
+    // What tinygltf reads silently wrong: a key given twice (the last would win), arrays of the
+    // wrong length (replaced by defaults), a negative offset (read as 0), a matrix beside TRS
+    // (the translation dropped), integer positions without KHR_mesh_quantization (read as
+    // integers), an aspect ratio past the image limit (clamped to 65 536 pixels).
+    std::string twice = model.dump();
+    twice.insert(1, R"("asset": {"version": "2.0"}, )");
+    cases.push_back({"key_twice", twice, "asset: key given twice in one object"});
+    m = model;
+    m["materials"][1]["pbrMetallicRoughness"]["baseColorFactor"] = {0.9, 0.6, 0.2};
+    cases.push_back({"base_color_3", m.dump(),
+                     "materials[1].pbrMetallicRoughness.baseColorFactor: [0.9,0.6,0.2] is not 4"});
+    m = model;
+    m["extensions"]["KHR_lights_punctual"]["lights"][0]["color"] = {1, 0.8};
+    cases.push_back({"light_color_2", m.dump(),
+                     "extensions.KHR_lights_punctual.lights[0].color: [1,0.8] is not 3 numbers"});
+    m = model;
+    m["accessors"][0]["byteOffset"] = -12;
+    cases.push_back({"negative_offset", m.dump(), "accessors[0].byteOffset: -12 is negative"});
+    m = model;
+    m["nodes"][2]["translation"] = {5, 0, 0};
+    cases.push_back({"matrix_and_trs", m.dump(), "nodes[2]: has both a matrix and a translation"});
+    m = model;
+    m["accessors"][0]["componentType"] = 5121;
+    cases.push_back({"byte_positions", m.dump(),
+                     "meshes[0].primitives[0].attributes.POSITION: accessor 0 has componentType "
+                     "5121, not float"});
+    m = model;
+    m["cameras"][0]["perspective"]["aspectRatio"] = 1000.0;
+    cases.push_back({"wide_aspect", m.dump(), "camera aspectRatio 1000.0 makes a 512-row image"});
     // Nested 20 000 deep in `extras` (30 KB): refused before tinygltf's recursive conversion of
     // `extras` would overflow the stack; brackets inside strings do not count.
     m = model;

@@ -354,6 +354,16 @@ TEST(Pbrt, MalformedInputsAreRefusedCleanly) {
     expect_refused(dir, "no_world", "Camera \"perspective\"\n", "has no WorldBegin", 0);
     expect_refused(dir, "unbalanced", head + "AttributeEnd\n",
                    "AttributeEnd without a matching AttributeBegin", 6);
+    expect_refused(dir, "unclosed", head + "AttributeBegin\n",
+                   "AttributeBegin has no matching AttributeEnd", 6);
+    expect_refused(dir, "unclosed_transform",
+                   head + "TransformBegin\nAttributeBegin\nAttributeEnd\n",
+                   "TransformBegin has no matching TransformEnd", 6);
+    expect_refused(dir, "material_twice",
+                   head +
+                       "MakeNamedMaterial \"a\" \"string type\" \"diffuse\"\n"
+                       "MakeNamedMaterial \"a\" \"string type\" \"conductor\"\n",
+                   "MakeNamedMaterial \"a\": a material of that name is already defined", 7);
     // An include cycle stops at the nesting limit.
     write_file_atomically(dir / "self.pbrt", head + "Include \"self.pbrt\"\n");
     expect_refused(dir, "self", head + "Include \"self.pbrt\"\n", "nested deeper", 0);
