@@ -10,6 +10,7 @@
 #include "methods/scene_arguments.h"
 #include "methods/shared_settings.h"
 #include "util/error.h"
+#include "util/log.h"
 #include "util/timing.h"
 
 namespace rc {
@@ -337,6 +338,12 @@ void IrradianceVectorGrid::upload_values(const std::vector<float>& values) {
 void IrradianceVectorGrid::upload_cell_planes(IvgStats* stats) {
     const auto start = SteadyClock::now();
     const IvgCellPlanes classified = classify_cell_planes(scene_.mesh, params_);
+    if (classified.skipped_triangles > 0) {
+        log_warning("irradiance vector grid: " + std::to_string(classified.skipped_triangles) +
+                    " triangle(s) left out of the cells' planes after " +
+                    std::to_string(classified.box_tests) +
+                    " triangle-box tests (the bound); the cells they reach trace every shadow ray");
+    }
     params_.cell_margin = classified.cell_margin;
     params_.origin_margin = classified.origin_margin;
     cell_planes_ =
