@@ -2,19 +2,28 @@
 // of the run's inputs (the scene, a mesh, the glTF file, --cache-in, compare's TEST or REF), by
 // name or through a hard link or symlink, or two outputs naming one file, destroyed the input with
 // exit status 0; now refused with one line and exit status 2 before any work, the input intact
-// and no output written.
+// and no output written. An interrupted --frames run left its finished frames as temporaries; now
+// it leaves none.
 #include "util/output_identity.h"
 
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "image/image.h"
 #include "image/image_io.h"
 #include "test_support.h"
 #include "util/error.h"
+
+extern char** environ;
 
 namespace rc {
 namespace {
@@ -191,6 +200,83 @@ TEST(OutputIdentity, FrameFunctionsAgreeWithRunFiles) {
     EXPECT_NO_THROW(run.check());
     run.output("--json", "f0007.png");
     EXPECT_THROW(run.check(), Error);
+}
+
+// Runs `radcache render` over many frames, signals it with `signal` once the first frame is
+// staged, and returns its exit status as a shell reports it (128 + the signal's number).
+int interrupted_render(const std::filesystem::path& dir, int signal) {
+    const std::vector<std::string> args = {
+        test::radcache_executable().string(),
+        "render",
+        (test::source_dir() / "scenes/cornell-box/scene.json").string(),
+        "--frames",
+        "0:99999",
+        "-o",
+        (dir / "f####.exr").string(),
+        "--method",
+        "normals",
+        "--width",
+        "4",
+        "--height",
+        "4",
+        "-q"};
+    std::vector<char*> argv;
+    for (const std::string& arg : args) {
+        argv.push_back(const_cast<char*>(arg.c_str()));
+    }
+    argv.push_back(nullptr);
+    // The child starts with default signal actions whatever this process inherited.
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    sigset_t defaults;
+    sigemptyset(&defaults);
+    sigaddset(&defaults, SIGINT);
+    sigaddset(&defaults, SIGTERM);
+    posix_spawnattr_setsigdefault(&attributes, &defaults);
+    sigset_t none;
+    sigemptyset(&none);
+    posix_spawnattr_setsigmask(&attributes, &none);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+    pid_t pid = 0;
+    const int spawned = posix_spawn(&pid, argv[0], nullptr, &attributes, argv.data(), environ);
+    posix_spawnattr_destroy(&attributes);
+    if (spawned != 0) {
+        return -1;
+    }
+    // Poll for the first staged frame (f0000.tmp-PID-N.exr); give up if the render ends first.
+    int status = 0;
+    for (bool staged = false; !staged;) {
+        if (::waitpid(pid, &status, WNOHANG) == pid) {
+            ADD_FAILURE() << "the render ended before it was signalled";
+            return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        }
+        for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+            staged = staged || entry.path().filename().string().find(".tmp-") != std::string::npos;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    ::kill(pid, signal);
+    ::waitpid(pid, &status, 0);
+    return WIFSIGNALED(status) ? 128 + WTERMSIG(status)
+                               : (WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+}
+
+// Every file of `dir`, by name.
+std::vector<std::string> files_in(const std::filesystem::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        names.push_back(entry.path().filename().string());
+    }
+    return names;
+}
+
+TEST(OutputIdentity, InterruptedSequencesLeaveNoTemporaries) {
+    for (const int signal : {SIGINT, SIGTERM}) {
+        const auto dir = test::scratch_dir("identity_signal_" + std::to_string(signal));
+        EXPECT_EQ(interrupted_render(dir, signal), 128 + signal);
+        // The staged frames are removed: no temporary, and (all or nothing) no frame.
+        EXPECT_EQ(files_in(dir), std::vector<std::string>{}) << "signal " << signal;
+    }
 }
 
 }  // namespace
