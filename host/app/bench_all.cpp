@@ -266,6 +266,7 @@ int bench_all(const ParsedArguments& arguments) {
     }
     const std::string scene_path =
         arguments.has("--scene") ? arguments.value("--scene") : shipped_scene("cornell-box");
+    check_bench_files(arguments, {scene_path});
     const int width = static_cast<int>(arguments.integer("--width", 512));
     const int height = static_cast<int>(arguments.integer("--height", 512));
     const int spp = static_cast<int>(arguments.integer("--spp", 4));

@@ -91,6 +91,7 @@ int bench_insertion(const ParsedArguments& arguments) {
     }
     const std::string scene_path =
         arguments.has("--scene") ? arguments.value("--scene") : shipped_scene("cornell-box");
+    check_bench_files(arguments, {scene_path});
     const float accuracy =
         static_cast<float>(arguments.number("--accuracy", IrradianceCacheOptions{}.accuracy));
     const size_t batch = static_cast<size_t>(arguments.integer("--batch", 1024));

@@ -90,6 +90,7 @@ int bench_rays(const ParsedArguments& arguments) {
     if (scenes.empty()) {
         scenes = {shipped_scene("cornell-box"), kDenseSceneName};
     }
+    check_bench_files(arguments, scenes);
     const std::filesystem::path json_path = arguments.value("--json");
     const int width = static_cast<int>(arguments.integer("--width", 1024));
     const int repeats = static_cast<int>(arguments.integer("--repeat", 3));

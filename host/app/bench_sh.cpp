@@ -100,6 +100,7 @@ std::vector<OptionSpec> bench_sh_options() {
 int bench_sh(const ParsedArguments& arguments) {
     const std::string scene_path =
         arguments.has("--scene") ? arguments.value("--scene") : shipped_scene("glossy-box");
+    check_bench_files(arguments, {scene_path});
     const int records = static_cast<int>(arguments.integer("--records", 4096));
     const int m = static_cast<int>(arguments.integer("--strata", 16));
     BrdfTableOptions table_options;

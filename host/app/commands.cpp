@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "util/error.h"
+#include "util/output_identity.h"
 
 namespace rc {
 
@@ -36,6 +37,21 @@ std::string shipped_scene(const std::string& name) {
         }
     }
     throw Error("cannot find " + relative + "; pass --scene", kExitUsage);
+}
+
+void check_bench_files(const ParsedArguments& arguments, const std::vector<std::string>& scenes) {
+    if (!arguments.has("--json")) {
+        return;
+    }
+    RunFiles run;
+    for (const std::string& scene : scenes) {
+        run.input("scene file", scene);
+    }
+    if (arguments.has("--cache-in")) {
+        run.input("--cache-in file", arguments.value("--cache-in"));
+    }
+    run.output("--json", arguments.value("--json"));
+    run.check();
 }
 
 }  // namespace rc

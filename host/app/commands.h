@@ -32,4 +32,8 @@ CommandSpec bench_compile_command();
 // from; Error (exit status 2) naming --scene when neither exists.
 std::string shipped_scene(const std::string& name);
 
+// Error (exit status 2) when a bench's --json is one of the `scenes` it reads or its --cache-in
+// (util/output_identity.h).
+void check_bench_files(const ParsedArguments& arguments, const std::vector<std::string>& scenes);
+
 }  // namespace rc

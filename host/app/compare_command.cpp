@@ -12,6 +12,7 @@
 #include "image/image_io.h"
 #include "util/error.h"
 #include "util/file_io.h"
+#include "util/output_identity.h"
 
 namespace rc {
 
@@ -42,6 +43,29 @@ void print_figures(const ImageError& e, const ReferenceNoiseSource& source) {
     std::cout << line;
 }
 
+// Error (exit status 2) when --json or --error-image is TEST, REF, --mask, REF's stats file or
+// the other output.
+void check_run_files(const ParsedArguments& arguments, const ReferenceNoiseSource& source,
+                     const std::filesystem::path& json_path,
+                     const std::filesystem::path& error_image_path) {
+    RunFiles run;
+    run.input("TEST image", arguments.positionals()[0]);
+    run.input("REF image", arguments.positionals()[1]);
+    if (arguments.has("--mask")) {
+        run.input("--mask file", arguments.value("--mask"));
+    }
+    if (source.spp > 0.0 && source.from != "--reference-spp") {
+        run.input("REF's stats file", source.from);
+    }
+    if (!json_path.empty()) {
+        run.output("--json", json_path);
+    }
+    if (!error_image_path.empty()) {
+        run.output("--error-image", error_image_path);
+    }
+    run.check();
+}
+
 // TEST against REF, one image each. The JSON and the error image are written together at the
 // end, or neither.
 int compare_one(const ParsedArguments& arguments) {
@@ -58,6 +82,7 @@ int compare_one(const ParsedArguments& arguments) {
     }
     OutputBatch outputs;
     ReferenceNoiseSource source = find_reference_spp(arguments, reference_path);
+    check_run_files(arguments, source, json_path, error_image_path);
     const Image test_file = read_image(test_path);
     const Image reference_file = read_image(reference_path);
     const Image mask_image =

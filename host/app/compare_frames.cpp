@@ -14,6 +14,7 @@
 #include "image/temporal_error.h"
 #include "util/error.h"
 #include "util/file_io.h"
+#include "util/output_identity.h"
 
 namespace rc {
 
@@ -86,20 +87,28 @@ SequenceJob read_sequence_job(const ParsedArguments& arguments) {
     return job;
 }
 
-// Step 2: every frame's files exist, so that a missing one is named before any work.
+// Step 2: every frame's files exist, so that a missing one is named before any work, and --json
+// is none of them.
 void check_frames_exist(const SequenceJob& job) {
+    RunFiles run;
     for (long long frame = job.frames.first; frame <= job.frames.last; ++frame) {
-        std::vector<std::string> paths = {path_of(job.test_pattern, frame),
-                                          path_of(job.reference_pattern, frame)};
+        std::vector<std::pair<std::string, std::string>> paths = {
+            {"TEST image", path_of(job.test_pattern, frame)},
+            {"REF image", path_of(job.reference_pattern, frame)}};
         if (!job.mask_pattern.empty()) {
-            paths.push_back(path_of(job.mask_pattern, frame));
+            paths.emplace_back("--mask file", path_of(job.mask_pattern, frame));
         }
-        for (const std::string& path : paths) {
+        for (const auto& [what, path] : paths) {
             if (!std::filesystem::is_regular_file(path)) {
                 throw Error("frame " + std::to_string(frame) + ": no file " + path);
             }
+            run.input(what, path);
         }
     }
+    if (!job.json_path.empty()) {
+        run.output("--json", job.json_path);
+    }
+    run.check();
 }
 
 LoadedFrame load_frame(const SequenceJob& job, const ParsedArguments& arguments, int frame,

@@ -2,6 +2,7 @@
 // radcache's scene format (scene/scene_writer.h), so that the user can edit it; rendering OUT.json
 // gives the image of rendering IN.
 #include "app/commands.h"
+#include "app/recorded_files.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_writer.h"
 #include "util/error.h"
@@ -27,7 +28,13 @@ int convert(const ParsedArguments& arguments) {
         throw Error("convert: OUT " + out.string() + ": expected a .json file name", kExitUsage);
     }
     check_writable_parent(out, "OUT");
-    const Scene scene = load_scene(in, disk_files(), arguments.value("--camera"));
+    const RecordedFiles read;  // OUT may be none of the files IN read
+    const Scene scene = load_scene(in, read, arguments.value("--camera"));
+    RunFiles run;
+    run.input("IN scene", in);
+    read.add_inputs_to(run);
+    run.output("OUT", out);
+    run.check();
     write_scene(scene, out);
     log_note("wrote " + out.string() + " (" + std::to_string(scene.shapes.size()) + " shapes, " +
              std::to_string(scene.materials.size()) + " materials)");

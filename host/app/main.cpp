@@ -7,8 +7,11 @@
 
 #include "app/commands.h"
 #include "util/error.h"
+#include "util/interrupt_cleanup.h"
 
 int main(int argc, char** argv) {
+    // Before any thread starts: an interrupted run leaves no staged temporary.
+    rc::remove_staged_outputs_on_signals();
     const std::vector<std::string> words(argv + 1, argv + argc);
     try {
         return rc::run_command_line(rc::radcache_command_line(), words);

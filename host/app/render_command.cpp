@@ -171,7 +171,8 @@ int render(const ParsedArguments& arguments) {
     RenderTotals totals;
 
     auto start = SteadyClock::now();
-    Scene scene = load_scene(job.scene, disk_files(), arguments.value("--camera"));
+    const RecordedFiles scene_files;  // what the scene read: no output may overwrite it
+    Scene scene = load_scene(job.scene, scene_files, arguments.value("--camera"));
     totals.phase("load") = seconds_since(start);
     if (scene.dropped_degenerate > 0) {
         log_note("dropped " + std::to_string(scene.dropped_degenerate) + " degenerate triangles");
@@ -185,10 +186,11 @@ int render(const ParsedArguments& arguments) {
     const MethodEntry& entry = find_method(settings.method);
     read_method_options(entry, arguments, &job);
     check_layers(entry, job.layers);
-    warn_unless_frames_in_range(job.frames, scene.animation);
     const int first =
         job.frames.given ? job.frames.first : static_cast<int>(scene.animation.frame_start);
     const int last = job.frames.given ? job.frames.last : first;
+    check_run_files(job, entry, arguments, scene_files, first, last);
+    warn_unless_frames_in_range(job.frames, scene.animation);
     const std::unique_ptr<Method> method =
         entry.create(job.method_options, method_settings(arguments, settings, job, first, last));
 

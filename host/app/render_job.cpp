@@ -189,6 +189,32 @@ void read_method_options(const MethodEntry& entry, const ParsedArguments& argume
     job->method = entry.name;
 }
 
+void check_run_files(const RenderJob& job, const MethodEntry& method,
+                     const ParsedArguments& arguments, const RecordedFiles& scene_files, int first,
+                     int last) {
+    RunFiles run;
+    run.input("scene file", job.scene);
+    scene_files.add_inputs_to(run);
+    run.output_frames("-o", job.output_pattern, first, last);
+    if (!job.stats.empty()) {
+        run.output("--stats", job.stats);
+    }
+    // The method's file options: --cache-out, --grid-out, ... write; --cache-in, ... read.
+    for (const OptionInfo& option : method.table) {
+        const std::string& name = option.spec.name;
+        if (option.type != "path" || !arguments.has(name)) {
+            continue;
+        }
+        const bool writes = name.size() > 4 && name.compare(name.size() - 4, 4, "-out") == 0;
+        if (writes) {
+            run.output(name, arguments.value(name));
+        } else {
+            run.input(name + " file", arguments.value(name));
+        }
+    }
+    run.check();
+}
+
 RenderSettings render_settings(const ParsedArguments& arguments, RenderSettings settings) {
     for (const std::string& assignment : arguments.values("-D")) {
         settings.apply_override(assignment);
@@ -243,22 +269,6 @@ MethodSettings method_settings(const ParsedArguments& arguments, const RenderSet
     method.first_frame = first;
     method.layers = job.layers;
     return method;
-}
-
-std::filesystem::path frame_path(const std::string& pattern, int frame) {
-    const size_t first = pattern.find('#');
-    if (first == std::string::npos) {
-        return pattern;
-    }
-    const size_t last = pattern.find_first_not_of('#', first);
-    const size_t width = (last == std::string::npos ? pattern.size() : last) - first;
-    // The frame number zero-padded to the run's width (any width: the 40 '#').
-    const std::string digits = std::to_string(frame < 0 ? -static_cast<long long>(frame) : frame);
-    const size_t sign = frame < 0 ? 1 : 0;
-    const std::string number =
-        (frame < 0 ? "-" : "") +
-        std::string(width > digits.size() + sign ? width - digits.size() - sign : 0, '0') + digits;
-    return pattern.substr(0, first) + number + pattern.substr(first + width);
 }
 
 std::filesystem::path intermediate_path(const std::filesystem::path& output, int spp) {

@@ -6,11 +6,13 @@
 #include <string>
 #include <vector>
 
+#include "app/recorded_files.h"
 #include "image/image_io.h"
 #include "methods/method.h"
 #include "scene/camera.h"
 #include "scene/render_settings.h"
 #include "util/cli.h"
+#include "util/output_identity.h"  // frame_path
 
 namespace rc {
 
@@ -51,6 +53,14 @@ void read_method_options(const MethodEntry& entry, const ParsedArguments& argume
 // takes); Error (exit status 2) naming the option otherwise.
 RenderJob read_render_job(const ParsedArguments& arguments);
 
+// Error (exit status 2) unless every output of the run (the frames first..last of -o, --stats,
+// the method's --*-out files) is a file of its own: not the scene or a file its loader read
+// (`scene_files`), not the method's --*-in files, not another output (util/output_identity.h).
+// Checked after the scene is loaded and before any work.
+void check_run_files(const RenderJob& job, const MethodEntry& method,
+                     const ParsedArguments& arguments, const RecordedFiles& scene_files, int first,
+                     int last);
+
 // The scene's render defaults overridden by -D and then by --method, --spp, --seed, --exposure.
 RenderSettings render_settings(const ParsedArguments& arguments, RenderSettings scene_defaults);
 
@@ -66,9 +76,6 @@ int pixel_sampler(const ParsedArguments& arguments, int scene_sampler);
 // What every method reads, for frames first..last.
 MethodSettings method_settings(const ParsedArguments& arguments, const RenderSettings& settings,
                                const RenderJob& job, int first, int last);
-
-// The output name of a frame: the run of '#' replaced by the zero-padded frame number.
-std::filesystem::path frame_path(const std::string& pattern, int frame);
 
 // name.ext -> name.sppN.ext
 std::filesystem::path intermediate_path(const std::filesystem::path& output, int spp);

@@ -1,17 +1,21 @@
 #include "util/file_io.h"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <fstream>
 #include <mutex>
+#include <thread>
 #include <vector>
 
 #include "util/error.h"
+#include "util/interrupt_cleanup.h"
 
 namespace rc {
 namespace {
@@ -32,14 +36,40 @@ std::string described(const std::filesystem::path& path, const std::string& what
 
 // The staged files of the open OutputBatch: (temporary, final path) in the order written.
 struct StagedFiles {
+    // Held while a temporary is written and staged or renamed (before `mutex`), so that a signal
+    // finds every temporary either staged or gone (util/interrupt_cleanup.h).
+    std::recursive_mutex writing;
     std::mutex mutex;
     bool open = false;
     std::vector<std::pair<std::filesystem::path, std::filesystem::path>> files;
 };
 
 StagedFiles& staged() {
-    static StagedFiles files;
-    return files;
+    // Never destroyed: the signal thread may use it while the process exits.
+    static StagedFiles* files = new StagedFiles;
+    return *files;
+}
+
+// The signal thread: waits for one of `signals`, removes the staged temporaries once no write is
+// in progress, then dies by the signal as the process would have without it.
+void remove_staged_outputs_and_die(sigset_t signals) {
+    int signal = 0;
+    while (::sigwait(&signals, &signal) != 0) {
+    }
+    StagedFiles& batch = staged();
+    batch.writing.lock();  // step 1: no file is being written; none is written again
+    batch.mutex.lock();    // step 2: no commit is renaming; remove what is staged
+    for (const auto& file : batch.files) {
+        ::unlink(file.first.c_str());
+    }
+    // Step 3: the default action, delivered to this thread alone (the others block it).
+    std::signal(signal, SIG_DFL);
+    sigset_t one;
+    sigemptyset(&one);
+    sigaddset(&one, signal);
+    ::pthread_sigmask(SIG_UNBLOCK, &one, nullptr);
+    ::raise(signal);
+    ::_exit(128 + signal);
 }
 
 void remove_quietly(const std::filesystem::path& path) {
@@ -130,6 +160,7 @@ void replace_file_atomically(const std::filesystem::path& path,
                              const std::function<void(const std::filesystem::path&)>& write,
                              WriteTiming timing) {
     const std::filesystem::path temporary = temporary_sibling(path);
+    const std::lock_guard<std::recursive_mutex> writing(staged().writing);
     try {
         write(temporary);
         if (timing == WriteTiming::kWithBatch && stage(temporary, path)) {
@@ -195,6 +226,22 @@ void OutputBatch::commit() {
             throw;
         }
     }
+}
+
+void remove_staged_outputs_on_signals() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        sigset_t signals;
+        sigemptyset(&signals);
+        for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+            struct sigaction action {};
+            if (::sigaction(signal, nullptr, &action) == 0 && action.sa_handler != SIG_IGN) {
+                sigaddset(&signals, signal);
+            }
+        }
+        ::pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+        std::thread(remove_staged_outputs_and_die, signals).detach();
+    });
 }
 
 void check_writable_parent(const std::filesystem::path& file, const std::string& option) {

@@ -1,0 +1,45 @@
+// The files a scene loader read (the scene, its meshes, material libraries, textures, glTF
+// buffers, pbrt includes), recorded so that no output of the run is one of them.
+#pragma once
+
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scene/scene_files.h"
+#include "util/output_identity.h"
+
+namespace rc {
+
+class RecordedFiles : public SceneFiles {
+   public:
+    explicit RecordedFiles(const SceneFiles& files = disk_files()) : files_(files) {}
+
+    bool exists(const std::filesystem::path& path) const override { return files_.exists(path); }
+
+    std::string read(const std::filesystem::path& path, uint64_t max_bytes,
+                     const std::string& what) const override {
+        {
+            const std::lock_guard<std::mutex> lock(mutex_);
+            read_.emplace_back(what, path);
+        }
+        return files_.read(path, max_bytes, what);
+    }
+
+    // Every file read, each an input of `run` named by what it is ("mesh file").
+    void add_inputs_to(RunFiles& run) const {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        for (const auto& [what, path] : read_) {
+            run.input(what, path);
+        }
+    }
+
+   private:
+    const SceneFiles& files_;
+    mutable std::mutex mutex_;
+    mutable std::vector<std::pair<std::string, std::filesystem::path>> read_;
+};
+
+}  // namespace rc
