@@ -99,7 +99,7 @@ tinygltf::Model read_model(const std::filesystem::path& path, const SceneFiles& 
     const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
     // tinygltf converts `extras` recursively: a document nested thousands deep overflows the
     // stack, so the JSON (a .glb's first chunk) is bounded as radcache's own scene files are.
-    const std::string json_text = gltf_json_text(bytes, binary);
+    const std::string json_text(gltf_json_text(bytes, binary));
     if (json_nesting_depth(json_text) > kMaxJsonDepth) {
         throw Error(name + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
                     " levels");
