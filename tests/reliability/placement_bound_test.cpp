@@ -38,9 +38,9 @@ class TinyPixel : public testing::TestWithParam<std::string> {};
 TEST_P(TinyPixel, RendersTheAnalyticRadiance) {
     const std::string method = GetParam();
     const auto out = test::scratch_dir("placement_bound_" + method) / "image.exr";
-    const test::CommandResult result = test::run_radcache(
-        {"render", tiny_pixel_scene().string(), "--method", method, "--spp", "4", "-o",
-         out.string(), "-q", "--seed", "3"});
+    const test::CommandResult result =
+        test::run_radcache({"render", tiny_pixel_scene().string(), "--method", method, "--spp", "4",
+                            "-o", out.string(), "-q", "--seed", "3"});
     ASSERT_EQ(result.exit_code, 0) << result.output;
     const Image image = select_layers(read_image(out), {"beauty"});
     double sum = 0.0;
@@ -81,8 +81,7 @@ TEST(PlacementPasses, StopAtTheBoundWhenNothingGetsCovered) {
 
 // Candidates a pass covers: the loop ends as soon as a pass finds none, with none left.
 TEST(PlacementPasses, EndWhenEveryCandidateIsCovered) {
-    std::vector<glm::vec3> open = {glm::vec3(0.0f), glm::vec3(0.5f, 0.0f, 0.0f),
-                                   glm::vec3(10.0f)};
+    std::vector<glm::vec3> open = {glm::vec3(0.0f), glm::vec3(0.5f, 0.0f, 0.0f), glm::vec3(10.0f)};
     int passes = 0;
     const size_t left = run_placement_passes(
         true,

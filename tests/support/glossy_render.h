@@ -8,8 +8,8 @@
 #include <utility>
 
 #include "image/image.h"
-#include "methods/records/irradiance_cache.h"
 #include "methods/radiance_cache/radiance_cache.h"
+#include "methods/records/irradiance_cache.h"
 #include "methods/sdrc/sdrc_cache.h"
 #include "test_support.h"
 
