@@ -126,7 +126,8 @@ std::array<float, 8> reference_cell(const ReferenceTriangles& t, const std::vect
         if (*sides == 2 || tried.size() == 8) {
             break;
         }
-        const auto& [normal, offset] = t.planes[i];
+        const glm::dvec3& normal = t.planes[i].first;  // clang 14 captures no bindings
+        const double offset = t.planes[i].second;
         const bool seen = std::any_of(tried.begin(), tried.end(), [&](size_t j) {
             return glm::dot(t.planes[j].first, normal) > 1.0 - 1e-12 &&
                    std::fabs(t.planes[j].second - offset) <= tolerance;
