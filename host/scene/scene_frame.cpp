@@ -10,6 +10,7 @@
 #include <glm/trigonometric.hpp>
 #include <limits>
 
+#include "scene/mesh_bounds.h"
 #include "scene/scene.h"
 #include "scene/transform.h"
 #include "util/error.h"
@@ -244,13 +245,7 @@ void close_area_lights(const Shape& shape, const ShapeLights& shape_lights, Ligh
 
 // Half the diagonal of the frame's bounding box (1 for an empty scene).
 float scene_radius(const TriangleMesh& mesh) {
-    glm::vec3 lower(std::numeric_limits<float>::max());
-    glm::vec3 upper(-std::numeric_limits<float>::max());
-    for (const glm::vec3& p : mesh.positions) {
-        lower = glm::min(lower, p);
-        upper = glm::max(upper, p);
-    }
-    return mesh.positions.empty() ? 1.0f : std::max(0.5f * glm::length(upper - lower), 1e-6f);
+    return mesh.positions.empty() ? 1.0f : std::max(0.5f * mesh_diagonal(mesh), 1e-6f);
 }
 
 // The device light of a point, spot or environment emitter at the frame, and its power.

@@ -13,6 +13,7 @@
 #include "methods/grid/ivg_options.h"
 #include "methods/light_samples.h"
 #include "methods/method.h"
+#include "scene/mesh_bounds.h"
 #include "shared/decomposition.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -63,14 +64,7 @@ float resolve_length(const SceneLength& length, const Scene& scene) {
     if (!length.relative) {
         return length.value;
     }
-    glm::vec3 lower(std::numeric_limits<float>::max());
-    glm::vec3 upper(-std::numeric_limits<float>::max());
-    for (const glm::vec3& p : scene.mesh.positions) {
-        lower = glm::min(lower, p);
-        upper = glm::max(upper, p);
-    }
-    const float diagonal = scene.mesh.positions.empty() ? 0.0f : glm::length(upper - lower);
-    return 0.01f * length.value * diagonal;
+    return 0.01f * length.value * mesh_diagonal(scene.mesh);
 }
 
 nlohmann::json stats_json(const DecompositionStats& s, const DecompositionOptions& options,

@@ -17,6 +17,7 @@
 #include "methods/scene_arguments.h"
 #include "methods/shared_settings.h"
 #include "scene/camera.h"
+#include "scene/mesh_bounds.h"
 #include "shared/film.h"
 #include "util/error.h"
 #include "util/glm_helpers.h"
@@ -90,15 +91,7 @@ IrradianceCache::IrradianceCache(const FrameScene& frame)
     // The smallest record radius: a millionth of the scene's extent, some ten float steps at its
     // far end. Below it (a camera whose pixel is narrower, "fov": 1e-30) a record's weight would
     // divide by a radius that float precision cannot tell from zero.
-    glm::vec3 lower(std::numeric_limits<float>::max());
-    glm::vec3 upper(-std::numeric_limits<float>::max());
-    for (const glm::vec3& p : frame.scene.mesh.positions) {
-        lower = glm::min(lower, p);
-        upper = glm::max(upper, p);
-    }
-    if (!frame.scene.mesh.positions.empty()) {
-        smallest_radius_ = 1e-6f * glm::length(upper - lower);
-    }
+    smallest_radius_ = 1e-6f * mesh_diagonal(frame.scene.mesh);
 }
 
 void IrradianceCache::reset(const RecordSampling& sampling) {
