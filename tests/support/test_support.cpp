@@ -9,6 +9,8 @@
 #include <map>
 #include <memory>
 
+#include <gtest/gtest.h>
+
 #include "image/image_io.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
@@ -133,8 +135,22 @@ DeviceFrame::DeviceFrame(Scene loaded, Context& device)
       device_bvh(context, bvh),
       device_scene(context, scene) {}
 
+// The running test's own folder ("Suite.Name", '/' of parameterised names as '_'): ctest runs
+// each test in its own process, in parallel, so two tests that name the same scratch must not
+// share (and remove) one directory.
+static std::filesystem::path running_test_folder() {
+    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    if (info == nullptr) {
+        return "outside-tests";
+    }
+    std::string name = std::string(info->test_suite_name()) + "." + info->name();
+    std::replace(name.begin(), name.end(), '/', '_');
+    return name;
+}
+
 std::filesystem::path scratch_dir(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::path(RADCACHE_TEST_SCRATCH_DIR) / name;
+    const std::filesystem::path dir =
+        std::filesystem::path(RADCACHE_TEST_SCRATCH_DIR) / running_test_folder() / name;
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;

@@ -67,8 +67,8 @@ struct DeviceFrame {
     DeviceScene device_scene;
 };
 
-// A new empty directory under the build tree's test scratch area, removed by nobody: each test
-// names its own.
+// A new empty directory under the build tree's test scratch area, in a folder of the running
+// test's own (tests run in parallel processes), removed by nobody.
 std::filesystem::path scratch_dir(const std::string& name);
 
 // Whether `method` declares the command-line option `option` ("--ic-rays").
