@@ -24,6 +24,12 @@ std::vector<OptionSpec> render_option_specs() {
          "rendering method: " + method_names() + " (default pt; each listed below)"},
         OptionSpec{"--spp", "", "N", "samples per pixel (default: the scene's render.spp, else 16)"}
             .integers(1, 1 << 24),
+        OptionSpec{"--time", "", "SECONDS",
+                   "render each frame for this long instead of to --spp: pt adds passes of one "
+                   "sample per pixel; a caching method builds its cache with the first sample "
+                   "per pixel, then adds samples over it (at most --spp a pass) while the time "
+                   "left holds them (default: the scene's render.time, else --spp decides)"}
+            .numbers(0.0, 1e7),
         OptionSpec{"--seed", "", "N", "random seed (default: the scene's render.seed, else 0)"}
             .integers(0, 1LL << 62),
         OptionSpec{"--width", "", "N", "image width in pixels (default: the scene camera's)"}
@@ -221,6 +227,7 @@ RenderSettings render_settings(const ParsedArguments& arguments, RenderSettings 
     }
     settings.method = arguments.value("--method", settings.method);
     settings.spp = static_cast<int>(arguments.integer("--spp", settings.spp));
+    settings.time = arguments.number("--time", settings.time);
     settings.seed =
         static_cast<uint64_t>(arguments.integer("--seed", static_cast<long long>(settings.seed)));
     settings.exposure = static_cast<float>(arguments.number("--exposure", settings.exposure));

@@ -8,36 +8,23 @@
 namespace rc {
 namespace {
 
-// pt's own options.
+// pt's own options (--time is the render's, MethodSettings::time).
 struct PathTracerMethodOptions {
-    double time = 0.0;        // seconds; used when time_given
-    bool time_given = false;  // otherwise the scene's render.time (-D time=...)
     bool save_every_pow2 = false;
 };
 
 OptionTable<PathTracerMethodOptions> path_tracer_option_table() {
     using O = PathTracerMethodOptions;
     OptionTable<O> table;
-    table
-        .number("--time", "SECONDS", &O::time, 0.0, 1e7,
-                "render passes until this much time has passed, not to --spp (also -D "
-                "time=SECONDS)")
-        .unit("s")
-        .default_note("the scene's render.time; without one, --spp decides")
-        .knob(KnobDirection::kIncrease)
-        .flag("--save-every-pow2", &O::save_every_pow2,
-              "also write the image after 1, 2, 4, 8, ... samples per pixel (name.sppN.ext)");
+    table.flag("--save-every-pow2", &O::save_every_pow2,
+               "also write the image after 1, 2, 4, 8, ... samples per pixel (name.sppN.ext)");
     return table;
 }
 
 class PathTracerMethod final : public Method {
    public:
     PathTracerMethod(const PathTracerMethodOptions& options, const MethodSettings& settings)
-        : settings_(settings), save_every_pow2_(options.save_every_pow2) {
-        if (options.time_given) {
-            settings_.time = options.time;
-        }
-    }
+        : settings_(settings), save_every_pow2_(options.save_every_pow2) {}
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         PathTracer tracer(frame);
@@ -103,15 +90,11 @@ MethodEntry path_tracer_method_entry() {
          .summary = "the reference path tracer: next-event estimation, MIS, Russian roulette",
          .aovs = {std::begin(kPathTracerAovs), std::end(kPathTracerAovs)},
          .table = path_tracer_option_table(),
-         .finish =
-             [](PathTracerMethodOptions& options, const ParsedArguments& arguments) {
-                 options.time_given = arguments.has("--time");
-             },
+         .finish = nullptr,
          .check = nullptr,
-         .create =
-             [](const PathTracerMethodOptions& options, const MethodSettings& settings) {
-                 return std::make_unique<PathTracerMethod>(options, settings);
-             }});
+         .create = [](const PathTracerMethodOptions& options, const MethodSettings& settings) {
+             return std::make_unique<PathTracerMethod>(options, settings);
+         }});
 }
 
 }  // namespace rc
