@@ -1,7 +1,5 @@
 #include "methods/glossy_method.h"
 
-#include "methods/records/ic_stats.h"
-
 namespace rc {
 
 std::vector<std::string> glossy_method_aovs(const std::string& layer) {
@@ -12,16 +10,11 @@ std::vector<std::string> glossy_method_aovs(const std::string& layer) {
 }
 
 FrameResult render_with_glossy_cache(const FrameScene& frame, IrradianceCacheOptions options,
-                                     GlossyCache& glossy, IrradianceCacheStats* stats) {
-    FrameResult result;
+                                     GlossyCache& glossy, double time, const FrameHooks& hooks,
+                                     const RecordPassFinish& finish, IrradianceCacheStats* stats) {
     options.glossy = &glossy;
-    result.image = IrradianceCache(frame).render(options, stats);
-    result.spp = options.spp;
-    result.rays += stats->record_rays + stats->shading_rays;
-    result.nonfinite_samples = stats->nonfinite_samples;
-    result.first_nonfinite_pixel = stats->first_nonfinite_pixel;
-    add_irradiance_cache_stats(*stats, options, &result.stats);
-    return result;
+    IrradianceCache cache(frame);
+    return render_record_passes(cache, options, time, hooks, finish, stats);
 }
 
 }  // namespace rc

@@ -8,6 +8,7 @@
 #include "methods/glossy_cache.h"
 #include "methods/method.h"
 #include "methods/records/irradiance_cache.h"
+#include "methods/records/record_passes.h"
 
 namespace rc {
 
@@ -24,10 +25,12 @@ void share_record_settings(const IrradianceCacheOptions& ic, GlossyOptions* glos
     glossy->share(ic);
 }
 
-// One frame by irradiance caching with `glossy` serving the specular lobes: the image, its spp,
-// irradiance caching's rays, non-finite samples and statistics into the result (the caller adds
-// its cache's rays and statistics); irradiance caching's statistics into *stats.
+// One frame by irradiance caching with `glossy` serving the specular lobes, in one pass or by
+// `time` (records/record_passes.h): the image, its spp, irradiance caching's rays, non-finite
+// samples and statistics into the result, `finish` adding its cache's rays and statistics to each
+// pass's; irradiance caching's statistics of the last pass into *stats.
 FrameResult render_with_glossy_cache(const FrameScene& frame, IrradianceCacheOptions options,
-                                     GlossyCache& glossy, IrradianceCacheStats* stats);
+                                     GlossyCache& glossy, double time, const FrameHooks& hooks,
+                                     const RecordPassFinish& finish, IrradianceCacheStats* stats);
 
 }  // namespace rc

@@ -62,6 +62,9 @@ struct FrameResult {
     uint64_t nonfinite_samples = 0;  // dropped; each names a bug
     int64_t first_nonfinite_pixel = -1;
     nlohmann::json stats = nlohmann::json::object();
+    // Of the frame's time, the seconds that built its cache (the rest grows with the samples);
+    // a render by time (methods/sample_passes.h) plans its passes from it. 0: not told.
+    double cache_seconds = 0.0;
 };
 
 class Method {

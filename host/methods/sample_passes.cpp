@@ -69,6 +69,7 @@ FrameResult render_sample_passes(const SamplePassBudget& budget, const FrameHook
         const double seconds = clock() - before;
         if (next.first == 0) {
             result.stats = part.stats;
+            result.cache_seconds = part.cache_seconds;
             first_seconds = seconds;
         } else {
             later.push_back(pass_stats(next, seconds, part.stats));
@@ -84,10 +85,13 @@ FrameResult render_sample_passes(const SamplePassBudget& budget, const FrameHook
             hooks.progress(std::min(1.0, clock() / budget.seconds),
                            std::to_string(result.spp) + " spp");
         }
-        next = {result.spp, next_pass_spp(budget.seconds - clock(), seconds / next.spp, result.spp,
+        // The cost of a sample: the pass's time less what built the cache (when it says).
+        const double sampling = seconds - std::clamp(part.cache_seconds, 0.0, seconds);
+        next = {result.spp, next_pass_spp(budget.seconds - clock(), sampling / next.spp, result.spp,
                                           budget.max_spp)};
     }
     const double total = clock();
+    result.stats["spp"] = result.spp;
     result.stats["passes"] = later;
     result.stats["time"] = {{"budget", budget.seconds},
                             {"passes", later.size() + 1},

@@ -27,13 +27,14 @@ struct SamplePassBudget {
 
 // Renders a frame in passes until the budget is spent. The first pass takes one sample per pixel
 // and builds the cache; each later pass as many samples as the time left holds at the latest
-// measured cost of a sample (the first pass's cost, cache included, bounds it from above until a
-// second pass is measured), at most doubling the samples so far and at most max_spp. It stops
-// when the time left holds not one more sample per pixel, so the frame ends before the budget
-// unless the first pass alone exceeds it. The image is the mean of every sample (the passes'
-// images weighted by their samples); rays and dropped samples add up; the stats are the first
-// pass's, with "passes" (each later pass's stats, samples and seconds) and "time" (the split:
-// budget, passes, spp, first_pass_seconds: the cache and one sample per pixel,
+// measured cost of a sample (a pass's seconds less its FrameResult::cache_seconds, per sample),
+// at most doubling the samples so far (so the second pass takes one: a cost misjudged from the
+// first pass costs at most one sample per pixel) and at most max_spp. It stops when the time
+// left holds not one more sample per pixel, so the frame ends within the budget but for that one
+// sample, unless the first pass alone exceeds it. The image is the mean of every sample (the
+// passes' images weighted by their samples); rays and dropped samples add up; the stats are the
+// first pass's, with "spp" the frame's, "passes" (each later pass's stats, samples and seconds) and
+// "time" (the split: budget, passes, spp, first_pass_seconds: the cache and one sample per pixel,
 // later_passes_seconds: the samples added over it).
 FrameResult render_sample_passes(const SamplePassBudget& budget, const FrameHooks& hooks,
                                  const std::function<FrameResult(const SamplePass&)>& pass);

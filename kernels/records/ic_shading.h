@@ -50,11 +50,12 @@ RC_FUNC float rc_ic_deeper_pixel_width(const IcParams* params) {
     return 0.25f * sqrt(2.0f * RC_PI / (float)(params->strata_m * params->strata_n));
 }
 
-// The camera ray of sample s of a pixel (the same jitter in every pass that regenerates it).
+// The camera ray of sample s of a pixel (the same jitter in every pass that regenerates it): the
+// pixel's sample params->first_sample + s (a later pass of a render by time).
 RC_FUNC Ray rc_ic_camera_ray(const IcParams* params, const CameraParams* camera, uint pixel, uint s,
                              RngStream* rng, float* x, float* y) {
-    const float2 position =
-        rc_camera_sample_position(camera, params->seed_lo, params->seed_hi, pixel, s, rng);
+    const float2 position = rc_camera_sample_position(camera, params->seed_lo, params->seed_hi,
+                                                      pixel, (uint)params->first_sample + s, rng);
     *x = position.x;
     *y = position.y;
     return rc_camera_ray(camera, *x, *y);

@@ -229,6 +229,7 @@ typedef struct IcParams {
     int placement_spp;      // camera samples per candidate pixel
     int placement_columns;  // candidate columns
     int glossy_cache;       // 1: the render pass reads the glossy lobes' light (RcGlossySample)
+    int first_sample;       // camera sample s of a pixel is its sample first_sample + s
 } IcParams;
 
 // Irradiance vector grid interpolation (IvgParams::interpolation).
@@ -409,6 +410,7 @@ RC_SHARED_END
     FIELD(IcParams, placement_spp)         \
     FIELD(IcParams, placement_columns)     \
     FIELD(IcParams, glossy_cache)          \
+    FIELD(IcParams, first_sample)          \
     STRUCT(IvgParams)                      \
     FIELD(IvgParams, origin)               \
     FIELD(IvgParams, cell)                 \
@@ -459,7 +461,7 @@ static_assert(sizeof(rc::shared::Light) == 80);
 static_assert(offsetof(rc::shared::Light, area) == 48);
 static_assert(sizeof(rc::shared::PathTracerParams) == 32);
 static_assert(sizeof(rc::shared::GBufferSample) == 64);
-static_assert(sizeof(rc::shared::IcParams) == 76);
+static_assert(sizeof(rc::shared::IcParams) == 80);
 static_assert(sizeof(rc::shared::IvgParams) == 144);
 static_assert(sizeof(rc::shared::IvgPlane) == 16);
 static_assert(sizeof(rc::shared::IvgCellPlanes) == 8);

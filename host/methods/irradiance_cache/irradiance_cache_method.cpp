@@ -10,10 +10,12 @@
 #include "methods/records/ic_options.h"
 #include "methods/records/ic_stats.h"
 #include "methods/records/irradiance_cache.h"
+#include "methods/records/record_passes.h"
 #include "methods/temporal/temporal_cache.h"
 #include "methods/temporal/temporal_options.h"
 #include "util/error.h"
 #include "util/log.h"
+#include "util/timing.h"
 
 namespace rc {
 namespace {
@@ -67,7 +69,8 @@ class IrradianceCaching final : public Method {
    public:
     IrradianceCaching(const IrradianceCachingOptions& options, const MethodSettings& settings)
         : options_(irradiance_record_options(options.records, settings)),
-          with_grid_(options.with_grid) {
+          with_grid_(options.with_grid),
+          time_(settings.time) {
         if (options.temporal.enabled) {
             temporal_ = std::make_unique<TemporalIrradianceCache>(
                 options_, options.temporal, settings.first_frame, settings.frame_count);
@@ -87,21 +90,21 @@ class IrradianceCaching final : public Method {
                      " reused, " + t["dropped"].dump() + " dropped)");
             return result;
         }
-        FrameResult result;
+        // The grid (--ic-ivg) is built first; a budget (--time) counts its build.
+        const auto start = SteadyClock::now();
+        FrameResult grid_result;
         std::unique_ptr<IrradianceVectorGrid> grid;
         if (with_grid_) {
-            grid = build_frame_grid(frame, grid_options_, hooks, &result);
+            grid = build_frame_grid(frame, grid_options_, hooks, &grid_result);
         }
+        const double time = time_ > 0.0 ? std::max(time_ - seconds_since(start), 1e-9) : 0.0;
         IrradianceCache cache(frame);
         IrradianceCacheOptions options = options_;
         options.source = grid.get();
         IrradianceCacheStats stats;
-        result.image = cache.render(options, &stats);
-        result.spp = options.spp;
-        result.rays += stats.record_rays + stats.shading_rays;
-        result.nonfinite_samples = stats.nonfinite_samples;
-        result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
-        add_irradiance_cache_stats(stats, options_, &result.stats);
+        FrameResult result = render_record_passes(cache, options, time, hooks, nullptr, &stats);
+        result.rays += grid_result.rays;
+        result.stats.update(grid_result.stats);
         log_note(std::to_string(stats.records) + " irradiance records");
         return result;
     }
@@ -140,6 +143,7 @@ class IrradianceCaching final : public Method {
    private:
     IrradianceCacheOptions options_;
     bool with_grid_;
+    double time_;  // --time (0: --spp)
     std::unique_ptr<TemporalIrradianceCache> temporal_;
     IvgOptions grid_options_;
 };
@@ -156,6 +160,7 @@ MethodEntry irradiance_cache_method_entry() {
          .check =
              [](const IrradianceCachingOptions& options, const MethodSettings& settings) {
                  irradiance_record_options(options.records, settings);
+                 refuse_time_with_temporal(options.temporal, settings.time);
                  if (options.with_grid) {
                      ivg_options(options.grid, settings);
                  }

@@ -96,7 +96,8 @@ class RadianceCaching final : public Method {
    public:
     RadianceCaching(const RadianceCachingOptions& options, const MethodSettings& settings)
         : ic_(irradiance_record_options(options.records, settings)),
-          rc_(radiance_record_options(options.radiance, ic_, settings)) {
+          rc_(radiance_record_options(options.radiance, ic_, settings)),
+          time_(settings.time) {
         const TemporalOptions& temporal = options.temporal;
         if (!temporal.enabled) {
             return;
@@ -126,10 +127,19 @@ class RadianceCaching final : public Method {
         RadianceCache glossy(frame, rc_, tables_);
         tables_ = glossy.tables();
         IrradianceCacheStats stats;
-        FrameResult result = render_with_glossy_cache(frame, ic_, glossy, &stats);
+        uint64_t counted_rays = 0;  // the radiance records' rays of the passes before
+        FrameResult result = render_with_glossy_cache(
+            frame, ic_, glossy, time_, hooks,
+            [&](FrameResult& pass, const IrradianceCacheStats&) {
+                const RadianceCacheStats& rc = glossy.stats();
+                pass.rays += rc.record_rays - counted_rays;
+                counted_rays = rc.record_rays;
+                pass.stats["radiance_cache"] = radiance_stats(rc);
+                pass.cache_seconds +=
+                    rc.table_seconds + rc.placement.placement_seconds + rc.placement.record_seconds;
+            },
+            &stats);
         const RadianceCacheStats& rc = glossy.stats();
-        result.rays += rc.record_rays;
-        result.stats["radiance_cache"] = radiance_stats(rc);
         log_note(std::to_string(stats.records) + " irradiance records, " +
                  std::to_string(rc.records) + " radiance records (order " +
                  std::to_string(rc.order) + ")");
@@ -209,6 +219,7 @@ class RadianceCaching final : public Method {
 
     IrradianceCacheOptions ic_;
     RadianceCacheOptions rc_;
+    double time_;                                             // --time (0: --spp)
     std::shared_ptr<const BrdfTables> tables_;                // built at the first frame
     std::unique_ptr<TemporalRadianceCache> temporal_glossy_;  // with --temporal
     std::unique_ptr<TemporalIrradianceCache> temporal_;
@@ -229,6 +240,7 @@ MethodEntry radiance_cache_method_entry() {
                  radiance_record_options(options.radiance,
                                          irradiance_record_options(options.records, settings),
                                          settings);
+                 refuse_time_with_temporal(options.temporal, settings.time);
              },
          .create =
              [](const RadianceCachingOptions& options, const MethodSettings& settings) {

@@ -103,11 +103,15 @@ void IrradianceCache::reset(const RecordSampling& sampling) {
     sampling_ = sampling;
     stores_.assign(static_cast<size_t>(sampling.levels), irradiance_store(sampling.accuracy));
     next_streams_.assign(stores_.size(), 0);
+    restart_stats();
+}
+
+void IrradianceCache::restart_stats() {
     stats_ = IrradianceCacheStats{};
-    stats_.strata_m = sampling.m;
-    stats_.strata_n = sampling.n;
-    stats_.deeper_strata_m = sampling.deeper_m;
-    stats_.deeper_strata_n = sampling.deeper_n;
+    stats_.strata_m = sampling_.m;
+    stats_.strata_n = sampling_.n;
+    stats_.deeper_strata_m = sampling_.deeper_m;
+    stats_.deeper_strata_n = sampling_.deeper_n;
 }
 
 Kernel& IrradianceCache::cells_kernel(const RadianceSource& source) {
@@ -126,6 +130,7 @@ shared::IcParams IrradianceCache::level_params(int level) const {
     params.width = width_;
     params.height = height_;
     params.camera_spp = camera_spp_;
+    params.first_sample = first_sample_;
     params.strata_m = level == 0 ? sampling_.m : sampling_.deeper_m;
     params.strata_n = level == 0 ? sampling_.n : sampling_.deeper_n;
     params.count_emission = sampling_.include_emission ? 1 : 0;
@@ -634,14 +639,22 @@ std::vector<shared::float4> IrradianceCache::shade_split(
 }
 
 void IrradianceCache::begin(const IrradianceCacheOptions& options) {
+    sample_camera(options, [&] { reset(sampling_of(options)); });
+}
+
+void IrradianceCache::sample_camera(const IrradianceCacheOptions& options,
+                                    const std::function<void()>& checked) {
     width_ = options.width > 0 ? options.width : scene_.camera.width;
     height_ = options.height > 0 ? options.height : scene_.camera.height;
     const size_t samples = static_cast<size_t>(width_) * height_ * std::max(options.spp, 0);
     check_options(options, samples);
-    reset(sampling_of(options));
+    if (checked) {
+        checked();
+    }
     observer_ = options.observer;
     uncached_primitives_ = options.uncached_primitives;
     camera_spp_ = options.spp;
+    first_sample_ = options.first_sample;
     camera_ = camera_params(scene_.camera, width_, height_);
     // 1. G-buffer.
     const auto start = SteadyClock::now();
@@ -702,6 +715,18 @@ Image IrradianceCache::finish(IrradianceCacheOptions options, IrradianceCacheSta
         *stats = current_stats();
     }
     return image;
+}
+
+Image IrradianceCache::render_more(const IrradianceCacheOptions& options,
+                                   IrradianceCacheStats* stats) {
+    restart_stats();
+    sample_camera(options);
+    place();
+    if (!options.cache_out.empty()) {
+        write_cache_file(options.cache_out, irradiance_cache_key(scene_, options.accuracy),
+                         stores_);
+    }
+    return finish(options, stats);
 }
 
 Image IrradianceCache::render(const IrradianceCacheOptions& options, IrradianceCacheStats* stats) {

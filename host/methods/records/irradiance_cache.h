@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -48,6 +49,9 @@ struct IrradianceCacheOptions : SharedSettings {
                             // reads level k + 1 there for levels k < n (docs/irradiance-caching.md:
                             // two levels cut the Cornell box's indirect relMSE 3x, two-rooms' 10x)
     int light_samples = 1;  // the render pass's light samples per camera hit (--light-samples)
+    // Camera samples first_sample .. first_sample + spp - 1 of each pixel (a later pass of a
+    // render by time draws the samples a longer render would give those indices).
+    int first_sample = 0;
     std::filesystem::path cache_in;   // records to start from
     std::filesystem::path cache_out;  // where to save the records
     bool records_overlay = true;      // draw the `records` layer
@@ -191,6 +195,12 @@ class IrradianceCache : private FrameBound {
     // options.cache_out), finish().
     Image render(const IrradianceCacheOptions& options, IrradianceCacheStats* stats = nullptr);
 
+    // A later pass of a render by time (methods/sample_passes.h) after render(): the camera
+    // samples of `options` (options.first_sample on), covered by the records so far and new ones
+    // where they are not (saved to options.cache_out), then finish(). The statistics are the
+    // pass's own; the records counted are all of them.
+    Image render_more(const IrradianceCacheOptions& options, IrradianceCacheStats* stats = nullptr);
+
     // render() in steps, for callers that keep first-level records across frames (temporal
     // caching). begin(): the G-buffer of the camera samples, empty stores; first-level records
     // take random streams from 0.
@@ -282,6 +292,12 @@ class IrradianceCache : private FrameBound {
     // Records of `level` at `sites`, numbered from the level's current size.
     std::vector<ComputedRecord> compute_level(int level, const std::vector<RecordSite>& sites);
     void reset(const RecordSampling& sampling);
+    // The statistics restarted (the sampling's strata kept).
+    void restart_stats();
+    // The image size, camera samples and camera of `options` (checked; then `checked` runs),
+    // and their G-buffer.
+    void sample_camera(const IrradianceCacheOptions& options,
+                       const std::function<void()>& checked = nullptr);
     // Inserts computed first-level records; timed as insertion.
     void insert_level0(const std::vector<ComputedRecord>& computed);
     // The splat buffer and the render pass over the first level; the film's sums.
@@ -324,6 +340,7 @@ class IrradianceCache : private FrameBound {
     int width_ = 0;                 // of the image render() makes
     int height_ = 0;
     int camera_spp_ = 1;
+    int first_sample_ = 0;                         // of the camera samples (IcParams::first_sample)
     shared::CameraParams camera_{};                // of the image render() makes (splatting)
     Buffer<shared::GBufferSample> gbuffer_;        // its camera samples
     std::vector<shared::TileDepths> tile_depths_;  // their depths per splat tile

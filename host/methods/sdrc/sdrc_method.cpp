@@ -93,15 +93,24 @@ class SpatialDirectionalRadianceCaching final : public Method {
     SpatialDirectionalRadianceCaching(const SdrcMethodOptions& options,
                                       const MethodSettings& settings)
         : ic_(irradiance_record_options(options.records, settings)),
-          sdrc_(sdrc_options(options.sdrc, ic_)) {}
+          sdrc_(sdrc_options(options.sdrc, ic_)),
+          time_(settings.time) {}
 
-    FrameResult render_frame(const FrameScene& frame, const FrameHooks&) override {
+    FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         SdrcCache glossy(frame, sdrc_);
         IrradianceCacheStats stats;
-        FrameResult result = render_with_glossy_cache(frame, ic_, glossy, &stats);
+        uint64_t counted_rays = 0;  // the SDRC records' and misses' rays of the passes before
+        FrameResult result = render_with_glossy_cache(
+            frame, ic_, glossy, time_, hooks,
+            [&](FrameResult& pass, const IrradianceCacheStats&) {
+                const SdrcStats& s = glossy.stats();
+                pass.rays += s.record_rays + s.miss_rays - counted_rays;
+                counted_rays = s.record_rays + s.miss_rays;
+                pass.stats["sdrc"] = sdrc_stats(s);
+                pass.cache_seconds += s.placement.placement_seconds + s.placement.record_seconds;
+            },
+            &stats);
         const SdrcStats& s = glossy.stats();
-        result.rays += s.record_rays + s.miss_rays;
-        result.stats["sdrc"] = sdrc_stats(s);
         log_note(std::to_string(stats.records) + " irradiance records, " +
                  std::to_string(s.records) + " SDRC records (" + std::to_string(s.ltree_nodes) +
                  " L-tree samples), " +
@@ -136,6 +145,7 @@ class SpatialDirectionalRadianceCaching final : public Method {
    private:
     IrradianceCacheOptions ic_;
     SdrcOptions sdrc_;
+    double time_;  // --time (0: --spp)
 };
 
 }  // namespace

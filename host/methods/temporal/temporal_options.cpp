@@ -82,6 +82,15 @@ void refuse_cache_files_with_temporal(bool given, const std::string& options) {
     }
 }
 
+void refuse_time_with_temporal(const TemporalOptions& options, double time) {
+    if (options.enabled && time > 0.0) {
+        throw Error(
+            "--time: temporal caching renders --spp camera samples a frame, not by time "
+            "(--temporal)",
+            kExitUsage);
+    }
+}
+
 void refuse_temporal_on_several_devices(size_t devices) {
     if (devices > 1) {
         throw Error("--temporal renders on one device; --device names " + std::to_string(devices),

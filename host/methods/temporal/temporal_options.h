@@ -47,6 +47,10 @@ std::string temporal_lifespan_name(TemporalLifespan lifespan);
 // naming `options` (the cache-file options of the method) when `given`.
 void refuse_cache_files_with_temporal(bool given, const std::string& options);
 
+// Temporal caching renders --spp camera samples a frame, not by time: Error (exit status 2)
+// naming --time when `options` are enabled and `time` > 0.
+void refuse_time_with_temporal(const TemporalOptions& options, double time);
+
 // Temporal caching renders on one device: Error (exit status 2) when a frame has `devices` > 1.
 void refuse_temporal_on_several_devices(size_t devices);
 
