@@ -25,9 +25,31 @@
 #define rc_as_int(x) as_int(x)
 #define rc_offsetof(type, field) __builtin_offsetof(type, field)
 #define rc_shuffle(v, mask) shuffle((v), (mask))
-// 64-bit integer atomic addition (cl_khr_int64_base_atomics; the irradiance vector grid's
-// fixed-point sums).
+// 64-bit integer atomic addition (the irradiance vector grid's fixed-point sums): the
+// extension's where the compiler enables cl_khr_int64_base_atomics; elsewhere (Mesa's rusticl
+// lists the extension but its compiler does not define it, and atom_add's 64-bit overloads are
+// then missing) two 32-bit atomic additions, the low word's carry added to the high word. Integer
+// addition commutes, so once the launch ends every slot holds the exact 64-bit sum either way
+// (a read during the launch could see a torn value; none happens).
+#ifdef cl_khr_int64_base_atomics
 #define rc_atomic_add_long(pointer, value) atom_add((pointer), (value))
+#else
+RC_FUNC void rc_atomic_add_long(__global volatile long* pointer, long value) {
+    __global volatile uint* words = (__global volatile uint*)pointer;
+#ifdef __ENDIAN_LITTLE__
+    const int low_word = 0;
+#else
+    const int low_word = 1;
+#endif
+    const uint low = (uint)value;
+    const uint high = (uint)((ulong)value >> 32);
+    const uint before = atomic_add(&words[low_word], low);
+    const uint carry = before + low < before ? 1u : 0u;
+    if (high + carry != 0u) {
+        atomic_add(&words[1 - low_word], high + carry);
+    }
+}
+#endif
 // At the start of a block: no fused multiply-adds in it (needed where a computation must be
 // exactly antisymmetric, like the edge functions of the watertight triangle test).
 #define RC_NO_FP_CONTRACT _Pragma("OPENCL FP_CONTRACT OFF")
