@@ -33,8 +33,11 @@ constexpr int kMaxSamples = 1 << 24;
 // The samples of the pass after one that took `per_sample` seconds a sample per pixel, with
 // `left` seconds left and `samples` taken so far; 0 when not one more fits.
 int next_pass_spp(double left, double per_sample, int samples, int max_spp) {
+    if (!(left > 0.0) || samples >= kMaxSamples) {
+        return 0;
+    }
     const double fits = per_sample > 0.0 ? std::floor(left / per_sample) : double(kMaxSamples);
-    if (!(fits >= 1.0) || samples >= kMaxSamples) {
+    if (!(fits >= 1.0)) {
         return 0;
     }
     const double most = std::min(
@@ -85,8 +88,10 @@ FrameResult render_sample_passes(const SamplePassBudget& budget, const FrameHook
             hooks.progress(std::min(1.0, clock() / budget.seconds),
                            std::to_string(result.spp) + " spp");
         }
-        // The cost of a sample: the pass's time less what built the cache (when it says).
-        const double sampling = seconds - std::clamp(part.cache_seconds, 0.0, seconds);
+        // The cost of a sample: the pass's time, less what built the cache for the first (when
+        // it says; a later pass's new records count as the cost of its samples).
+        const double cache = next.first == 0 ? std::clamp(part.cache_seconds, 0.0, seconds) : 0.0;
+        const double sampling = seconds - cache;
         next = {result.spp, next_pass_spp(budget.seconds - clock(), sampling / next.spp, result.spp,
                                           budget.max_spp)};
     }
