@@ -11,11 +11,12 @@
 #include "decomposition/decomp_near.h"
 #include "records/ic_shading.h"
 
-// The camera ray of sample s of a pixel (the G-buffer and the render pass draw the same one).
+// The camera ray of sample s of a pixel's pass (the G-buffer and the render pass draw the same
+// one): camera sample params->first_sample + s.
 RC_FUNC Ray rc_decomp_camera_ray(const DecompParams* params, const CameraParams* camera, uint pixel,
                                  uint s, RngStream* rng, float* x, float* y) {
-    const float2 position =
-        rc_camera_sample_position(camera, params->seed_lo, params->seed_hi, pixel, s, rng);
+    const float2 position = rc_camera_sample_position(camera, params->seed_lo, params->seed_hi,
+                                                      pixel, (uint)params->first_sample + s, rng);
     *x = position.x;
     *y = position.y;
     return rc_camera_ray(camera, *x, *y);

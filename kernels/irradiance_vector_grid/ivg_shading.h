@@ -8,11 +8,12 @@
 #include "common/pixel_sampler.h"
 #include "common/sampling.h"
 
-// The camera ray of sample s of a pixel, and its random stream.
+// The camera ray of sample s of a pixel's pass, and its random stream: camera sample
+// p->first_sample + s.
 RC_FUNC Ray rc_ivg_camera_ray(const IvgParams* p, const CameraParams* camera, uint pixel, uint s,
                               RngStream* rng) {
-    const float2 position =
-        rc_camera_sample_position(camera, p->seed_lo, p->seed_hi, pixel, s, rng);
+    const float2 position = rc_camera_sample_position(camera, p->seed_lo, p->seed_hi, pixel,
+                                                      (uint)p->first_sample + s, rng);
     return rc_camera_ray(camera, position.x, position.y);
 }
 

@@ -4,12 +4,12 @@
 __kernel void render_normals(uint begin, uint end, CameraParams camera,
                              __global const TraversalNode* nodes,
                              __global const Triangle* triangles,
-                             __global const uint* triangle_of_primitive, uint samples, uint seed_lo,
-                             uint seed_hi, __global float4* film) {
+                             __global const uint* triangle_of_primitive, uint first, uint samples,
+                             uint jitter, uint seed_lo, uint seed_hi, __global float4* film) {
     const uint pixel = begin + (uint)get_global_id(0);
     if (pixel >= end) {
         return;
     }
-    film[pixel] = rc_normals_pixel(&camera, nodes, triangles, triangle_of_primitive, pixel, samples,
-                                   seed_lo, seed_hi);
+    film[pixel] = rc_normals_pixel(&camera, nodes, triangles, triangle_of_primitive, pixel, first,
+                                   samples, jitter, seed_lo, seed_hi);
 }

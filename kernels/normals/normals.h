@@ -26,18 +26,19 @@ RC_FUNC float3 rc_normals_sample(const CameraParams* camera, RC_GLOBAL const Tra
     return (0.5f * n + 0.5f) * (0.25f + 0.75f * fabs(cosine));
 }
 
-// The pixel's value: the mean of `samples` jittered samples (one centred sample when 1).
+// The pixel's value: the mean of camera samples first .. first + samples - 1, jittered (the
+// pixel sampler's positions) when `jitter` is 1, else the one sample at the pixel's centre.
 RC_FUNC float4 rc_normals_pixel(const CameraParams* camera, RC_GLOBAL const TraversalNode* nodes,
                                 RC_GLOBAL const Triangle* triangles,
-                                RC_GLOBAL const uint* triangle_of_primitive, uint pixel,
-                                uint samples, uint seed_lo, uint seed_hi) {
+                                RC_GLOBAL const uint* triangle_of_primitive, uint pixel, uint first,
+                                uint samples, uint jitter, uint seed_lo, uint seed_hi) {
     float3 sum = (float3)(0.0f);
     for (uint s = 0; s < samples; ++s) {
         float2 position = (float2)((float)(pixel % (uint)camera->resolution.x) + 0.5f,
                                    (float)(pixel / (uint)camera->resolution.x) + 0.5f);
-        if (samples > 1u) {
+        if (jitter != 0u) {
             RngStream rng;
-            position = rc_camera_sample_position(camera, seed_lo, seed_hi, pixel, s, &rng);
+            position = rc_camera_sample_position(camera, seed_lo, seed_hi, pixel, first + s, &rng);
         }
         sum += rc_normals_sample(camera, nodes, triangles, triangle_of_primitive, position.x,
                                  position.y);

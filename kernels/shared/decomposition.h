@@ -45,6 +45,9 @@ typedef struct DecompParams {
     // Of those, the first this many are shaded fully (direct light, the other lobes); the others
     // add only the diffuse lobe's indirect light (--decomp-indirect-spp)
     int shaded_spp;
+    // The camera sample index of the G-buffer's and the render pass's first sample (a pass of a
+    // render by time draws samples first_sample .. first_sample + camera_spp - 1)
+    int first_sample;
     int light_samples;  // next-event estimation's light samples at a camera hit (the render pass)
     int max_depth;      // bounces of a path
     int rr_depth;       // the depth where Russian roulette starts
@@ -161,6 +164,7 @@ RC_SHARED_END
     FIELD(DecompParams, height)                 \
     FIELD(DecompParams, camera_spp)             \
     FIELD(DecompParams, shaded_spp)             \
+    FIELD(DecompParams, first_sample)           \
     FIELD(DecompParams, light_samples)          \
     FIELD(DecompParams, max_depth)              \
     FIELD(DecompParams, rr_depth)               \
@@ -217,7 +221,7 @@ RC_SHARED_END
 // clang-format on
 
 #ifndef __OPENCL_VERSION__
-static_assert(sizeof(rc::shared::DecompParams) == 72);
+static_assert(sizeof(rc::shared::DecompParams) == 76);
 static_assert(sizeof(rc::shared::DecompCluster) == 32);
 static_assert(sizeof(rc::shared::ClusterRay) == 64);
 static_assert(sizeof(rc::shared::ShSample) == 144);

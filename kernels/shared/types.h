@@ -264,7 +264,10 @@ typedef struct IvgParams {
     int rr_depth;        // the depth where Russian roulette starts
     int gather_rays;     // per camera sample (ivg-gather); 0: the grid read at the camera's hit
     int camera_spp;      // camera samples per pixel
-    uint seed_lo;        // the 64-bit seed
+    // The camera sample index of the render pass's first sample (a pass of a render by time
+    // draws samples first_sample .. first_sample + camera_spp - 1)
+    int first_sample;
+    uint seed_lo;  // the 64-bit seed
     uint seed_hi;
     int light_samples;  // next-event estimation's light samples at a camera hit (ivg_shade)
     // Corner visibility without shadow rays (ivg_visibility.h, host: ivg_cell_planes.h): a
@@ -429,6 +432,7 @@ RC_SHARED_END
     FIELD(IvgParams, rr_depth)             \
     FIELD(IvgParams, gather_rays)          \
     FIELD(IvgParams, camera_spp)           \
+    FIELD(IvgParams, first_sample)         \
     FIELD(IvgParams, seed_lo)              \
     FIELD(IvgParams, seed_hi)              \
     FIELD(IvgParams, light_samples)        \

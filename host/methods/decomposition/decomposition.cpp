@@ -91,6 +91,18 @@ void check_options(const DecompositionOptions& options, size_t samples) {
     }
 }
 
+// The image of the render pass's film sums.
+Image decomposition_image(const std::vector<shared::float4>& sums, int width, int height) {
+    return unpack_film(sums, RC_DECOMP_FILM_SLOTS, width, height,
+                       {{"beauty", RC_DECOMP_FILM_BEAUTY},
+                        {"direct", RC_DECOMP_FILM_DIRECT},
+                        {"indirect", RC_DECOMP_FILM_INDIRECT},
+                        {"albedo", RC_DECOMP_FILM_ALBEDO},
+                        {"normal", RC_DECOMP_FILM_NORMAL},
+                        {"far-field", RC_DECOMP_FILM_FAR},
+                        {"near-field", RC_DECOMP_FILM_NEAR}});
+}
+
 // Records (the shared layout the record grid reads) of spheres of radius `reach[i]` about
 // `centres[i]`.
 std::vector<shared::Record> reach_records(const std::vector<glm::vec3>& centres,
@@ -553,16 +565,48 @@ Image IrradianceDecomposition::render(const DecompositionOptions& options,
         context_.finish();
         stats_.near_seconds += seconds_since(start);
     }
-    const std::vector<shared::float4> sums = pass_two(samples);
+    Image image = decomposition_image(pass_two(samples), width, height);
+    if (stats != nullptr) {
+        *stats = stats_;
+    }
+    return image;
+}
 
-    Image image = unpack_film(sums, RC_DECOMP_FILM_SLOTS, width, height,
-                              {{"beauty", RC_DECOMP_FILM_BEAUTY},
-                               {"direct", RC_DECOMP_FILM_DIRECT},
-                               {"indirect", RC_DECOMP_FILM_INDIRECT},
-                               {"albedo", RC_DECOMP_FILM_ALBEDO},
-                               {"normal", RC_DECOMP_FILM_NORMAL},
-                               {"far-field", RC_DECOMP_FILM_FAR},
-                               {"near-field", RC_DECOMP_FILM_NEAR}});
+Image IrradianceDecomposition::render_samples(int first, int spp, DecompositionStats* stats) {
+    if (source_ == nullptr) {
+        throw Error("internal: irradiance decomposition: render_samples before render");
+    }
+    if (spp < 1 || first < 0 ||
+        static_cast<int64_t>(first) + spp > std::numeric_limits<int32_t>::max()) {
+        throw Error("irradiance decomposition: camera samples " + std::to_string(first) + " + " +
+                        std::to_string(spp) + " out of range",
+                    kExitUsage);
+    }
+    const size_t samples =
+        static_cast<size_t>(params_.width) * params_.height * static_cast<size_t>(spp);
+    if (samples > std::numeric_limits<uint32_t>::max()) {
+        throw Error("irradiance decomposition: width x height x spp exceeds 2^32 camera samples",
+                    kExitUsage);
+    }
+    // The fields' sizes stay; the pass's own figures start from zero.
+    DecompositionStats pass;
+    pass.scene_triangles = stats_.scene_triangles;
+    pass.near_triangles = stats_.near_triangles;
+    pass.clustered_points = stats_.clustered_points;
+    pass.sh_samples = stats_.sh_samples;
+    pass.radiosity_passes = stats_.radiosity_passes;
+    pass.uncovered_triangles = stats_.uncovered_triangles;
+    stats_ = pass;
+    // The shares of building the fields were render()'s.
+    radiosity_shares_.clear();
+    cluster_split_.reset();
+    params_.camera_spp = spp;
+    params_.shaded_spp = spp;
+    params_.first_sample = first;
+    const auto start = SteadyClock::now();
+    compute_gbuffer();
+    stats_.gbuffer_seconds = seconds_since(start);
+    Image image = decomposition_image(pass_two(samples), params_.width, params_.height);
     if (stats != nullptr) {
         *stats = stats_;
     }

@@ -147,6 +147,11 @@ class IrradianceDecomposition : private FrameBound {
     ~IrradianceDecomposition();
 
     Image render(const DecompositionOptions& options, DecompositionStats* stats = nullptr);
+    // After render(): camera samples first .. first + spp - 1 of every pixel (the samples one
+    // render of first + spp would draw them), all shaded fully, over render()'s near and far
+    // fields (not rebuilt): their G-buffer, both terms at each one and the render pass. *stats:
+    // the fields' sizes as render()'s, the rest this pass's own (no radiosity or cluster rays).
+    Image render_samples(int first, int spp, DecompositionStats* stats = nullptr);
 
     // After render(): its camera samples (entry pixel * spp + s), far-field samples, split
     // triangles and their B(t) / pi.

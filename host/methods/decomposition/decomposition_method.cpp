@@ -13,6 +13,7 @@
 #include "methods/grid/ivg_options.h"
 #include "methods/light_samples.h"
 #include "methods/method.h"
+#include "methods/sample_passes.h"
 #include "scene/mesh_bounds.h"
 #include "shared/decomposition.h"
 #include "util/error.h"
@@ -105,6 +106,21 @@ nlohmann::json stats_json(const DecompositionStats& s, const DecompositionOption
              {{"gbuffer", s.gbuffer_seconds},
               {"near_field", s.near_seconds},
               {"far_field", s.far_seconds},
+              {"evaluation", s.evaluation_seconds},
+              {"shading", s.shading_seconds}}}};
+}
+
+// A later pass of a render by time (IrradianceDecomposition::render_samples): its own figures.
+nlohmann::json pass_json(const DecompositionStats& s) {
+    return {{"served_samples", s.served_samples},
+            {"near_triangles_per_point", {{"mean", s.near_mean}, {"max", s.near_max}}},
+            {"far_samples_per_point", s.far_mean},
+            {"far_uncovered_points", s.far_uncovered},
+            {"near_rays", s.near_rays},
+            {"shading_rays", s.shading_rays},
+            // ("seconds" is the pass's own, render_sample_passes's)
+            {"phase_seconds",
+             {{"gbuffer", s.gbuffer_seconds},
               {"evaluation", s.evaluation_seconds},
               {"shading", s.shading_seconds}}}};
 }
@@ -274,19 +290,27 @@ void finish_decomposition(DecompositionMethodOptions& options, const ParsedArgum
 }
 
 // The algorithm's options with the shared settings applied; Error (exit status 2) for
-// --decomp-indirect-spp below --spp.
+// --decomp-indirect-spp below --spp, and for --decomp-indirect-spp with --time (a render by time
+// adds fully shaded camera samples in passes; the diffuse-only ones have no place in them).
 DecompositionOptions decomposition_options(const DecompositionMethodOptions& options,
                                            const MethodSettings& settings) {
     DecompositionOptions d = options.decomposition;
     settings.apply_to(d);
     check_indirect_spp(d);
+    if (settings.time > 0.0 && d.indirect_spp != 0) {
+        throw Error(
+            "--decomp-indirect-spp: not with --time (a render by time adds fully shaded camera "
+            "samples while the time lasts; give --spp, the most samples a pass takes, alone)",
+            kExitUsage);
+    }
     return d;
 }
 
 class Decomposition final : public Method {
    public:
     Decomposition(const DecompositionMethodOptions& options, const MethodSettings& settings)
-        : alpha_(options.alpha),
+        : settings_time_(settings.time),
+          alpha_(options.alpha),
           min_cluster_(options.min_cluster),
           with_grid_(options.source == DecompSource::kGrid),
           options_(decomposition_options(options, settings)) {
@@ -295,39 +319,48 @@ class Decomposition final : public Method {
         }
     }
 
+    // Without --time: the coarse solution, the decomposition and --spp camera samples. With
+    // --time: the first pass (methods/sample_passes.h) builds the coarse solution and the near
+    // and far fields from one camera sample per pixel (the far field's clusters are those of the
+    // first sample of each pixel either way) and shades it; each later pass shades its camera
+    // samples over the same fields, at most --spp a pass.
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         if (options_.radiosity_source && frame_devices(frame) > 1) {
             throw Error("--decomp-source radiosity renders on one device; --device names " +
                             std::to_string(frame_devices(frame)),
                         kExitUsage);
         }
-        FrameResult result;
         std::unique_ptr<IrradianceVectorGrid> grid;
         PathContinuation path;
-        if (with_grid_) {
-            grid = build_frame_grid(frame, grid_options_, hooks, &result);
-        }
-        hooks.progress(0.5, "decomposition");
-        DecompositionOptions options = options_;
-        options.alpha = resolve_length(alpha_, frame.scene);
-        options.min_cluster_size = resolve_length(min_cluster_, frame.scene);
-        options.source = with_grid_ ? static_cast<const RadianceSource*>(grid.get()) : &path;
         IrradianceDecomposition decomposition(frame);
-        DecompositionStats stats;
-        result.image = decomposition.render(options, &stats);
-        result.spp = options.spp;
-        result.rays +=
-            stats.radiosity_rays + stats.cluster_rays + stats.near_rays + stats.shading_rays;
-        result.nonfinite_samples = stats.nonfinite_samples;
-        result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
-        const size_t pixels = static_cast<size_t>(result.image.width) * result.image.height;
-        result.stats.update(stats_json(stats, options, result.rays, pixels));
-        if (!stats.devices.empty()) {
-            result.stats["devices"] = devices_json(stats.devices);
+        DecompositionOptions options = options_;
+        if (!(settings_time_ > 0.0)) {
+            return build_and_render(frame, hooks, &grid, &path, &decomposition, &options);
         }
-        log_note(std::to_string(stats.sh_samples) + " far-field samples, " +
-                 std::to_string(stats.near_triangles) + " near-field triangles (alpha " +
-                 std::to_string(options.alpha) + ")");
+        FrameResult result = render_sample_passes(
+            {settings_time_, options_.spp, {}}, hooks, [&](const SamplePass& pass) {
+                if (pass.first == 0) {
+                    options.spp = pass.spp;
+                    return build_and_render(frame, hooks, &grid, &path, &decomposition, &options);
+                }
+                DecompositionStats stats;
+                FrameResult part;
+                part.image = decomposition.render_samples(pass.first, pass.spp, &stats);
+                part.spp = pass.spp;
+                part.rays = stats.near_rays + stats.shading_rays;
+                part.nonfinite_samples = stats.nonfinite_samples;
+                part.first_nonfinite_pixel = stats.first_nonfinite_pixel;
+                part.stats = pass_json(stats);
+                if (!stats.devices.empty()) {
+                    part.stats["devices"] = devices_json(stats.devices);
+                }
+                return part;
+            });
+        const size_t pixels = static_cast<size_t>(result.image.width) * result.image.height;
+        result.stats["spp"] = result.spp;
+        result.stats["indirect_spp"] = result.spp;
+        result.stats["rays_per_pixel"] =
+            static_cast<double>(result.rays) / static_cast<double>(std::max<size_t>(pixels, 1));
         return result;
     }
 
@@ -367,6 +400,39 @@ class Decomposition final : public Method {
     }
 
    private:
+    // The coarse solution (*grid or *path), the decomposition's fields and its render of
+    // options->spp camera samples (the first of a render by time).
+    FrameResult build_and_render(const FrameScene& frame, const FrameHooks& hooks,
+                                 std::unique_ptr<IrradianceVectorGrid>* grid,
+                                 PathContinuation* path, IrradianceDecomposition* decomposition,
+                                 DecompositionOptions* options) {
+        FrameResult result;
+        if (with_grid_) {
+            *grid = build_frame_grid(frame, grid_options_, hooks, &result);
+        }
+        hooks.progress(0.5, "decomposition");
+        options->alpha = resolve_length(alpha_, frame.scene);
+        options->min_cluster_size = resolve_length(min_cluster_, frame.scene);
+        options->source = with_grid_ ? static_cast<const RadianceSource*>(grid->get()) : path;
+        DecompositionStats stats;
+        result.image = decomposition->render(*options, &stats);
+        result.spp = options->spp;
+        result.rays +=
+            stats.radiosity_rays + stats.cluster_rays + stats.near_rays + stats.shading_rays;
+        result.nonfinite_samples = stats.nonfinite_samples;
+        result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
+        const size_t pixels = static_cast<size_t>(result.image.width) * result.image.height;
+        result.stats.update(stats_json(stats, *options, result.rays, pixels));
+        if (!stats.devices.empty()) {
+            result.stats["devices"] = devices_json(stats.devices);
+        }
+        log_note(std::to_string(stats.sh_samples) + " far-field samples, " +
+                 std::to_string(stats.near_triangles) + " near-field triangles (alpha " +
+                 std::to_string(options->alpha) + ")");
+        return result;
+    }
+
+    double settings_time_ = 0.0;  // --time (0: none)
     SceneLength alpha_;
     SceneLength min_cluster_;
     bool with_grid_ = true;

@@ -6,6 +6,7 @@
 #include "methods/irradiance_vector_grid/ivg_method.h"
 #include "methods/light_samples.h"
 #include "methods/method.h"
+#include "methods/sample_passes.h"
 #include "shared/film.h"
 
 namespace rc {
@@ -42,26 +43,18 @@ class GridRendering final : public Method {
           gather_rays_(gather_rays),
           light_samples_(options.light_samples) {}
 
+    // Without --time: the grid, then --spp camera samples over it. With --time: the grid built by
+    // the first pass (one sample per pixel), each later pass's camera samples shaded over the same
+    // grid (methods/sample_passes.h), at most --spp a pass.
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
-        FrameResult result;
-        const std::unique_ptr<IrradianceVectorGrid> grid =
-            build_frame_grid(frame, grid_options_, hooks, &result);
-        IvgMethod method(frame, *grid);
-        IvgRenderOptions options;
-        settings_.apply_to(options);
-        options.gather_rays = gather_rays_;
-        options.light_samples = light_samples_;
-        IvgRenderStats stats;
-        result.image = method.render(options, &stats);
-        result.spp = settings_.spp;
-        result.rays += stats.rays;
-        result.nonfinite_samples = stats.nonfinite_samples;
-        result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
-        result.stats["spp"] = settings_.spp;
-        result.stats["gather_rays"] = gather_rays_;
-        result.stats["light_samples"] = light_samples_;
-        result.stats["shading_rays"] = stats.rays;
-        result.stats["seconds"] = {{"shading", stats.seconds}};
+        std::unique_ptr<IrradianceVectorGrid> grid;
+        if (!(settings_.time > 0.0)) {
+            return render_pass(frame, hooks, {0, settings_.spp}, &grid);
+        }
+        FrameResult result = render_sample_passes(
+            {settings_.time, settings_.spp, {}}, hooks,
+            [&](const SamplePass& pass) { return render_pass(frame, hooks, pass, &grid); });
+        result.stats["spp"] = result.spp;
         return result;
     }
 
@@ -83,6 +76,35 @@ class GridRendering final : public Method {
     }
 
    private:
+    // Camera samples pass.first .. pass.first + pass.spp - 1 of every pixel shaded over *grid,
+    // which is built first where empty (its figures then in the pass's stats).
+    FrameResult render_pass(const FrameScene& frame, const FrameHooks& hooks,
+                            const SamplePass& pass, std::unique_ptr<IrradianceVectorGrid>* grid) {
+        FrameResult result;
+        if (*grid == nullptr) {
+            *grid = build_frame_grid(frame, grid_options_, hooks, &result);
+        }
+        IvgMethod method(frame, **grid);
+        IvgRenderOptions options;
+        settings_.apply_to(options);
+        options.spp = pass.spp;
+        options.first_sample = pass.first;
+        options.gather_rays = gather_rays_;
+        options.light_samples = light_samples_;
+        IvgRenderStats stats;
+        result.image = method.render(options, &stats);
+        result.spp = pass.spp;
+        result.rays += stats.rays;
+        result.nonfinite_samples = stats.nonfinite_samples;
+        result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
+        result.stats["spp"] = pass.spp;
+        result.stats["gather_rays"] = gather_rays_;
+        result.stats["light_samples"] = light_samples_;
+        result.stats["shading_rays"] = stats.rays;
+        result.stats["seconds"] = {{"shading", stats.seconds}};
+        return result;
+    }
+
     MethodSettings settings_;
     IvgOptions grid_options_;
     int gather_rays_;

@@ -24,6 +24,7 @@ class RenderGrid : public KernelArgumentGroup {
         params_.gather_rays = options.gather_rays;
         params_.light_samples = options.light_samples;
         params_.camera_spp = options.spp;
+        params_.first_sample = options.first_sample;
         set_kernel_seed(options.seed, &params_);
     }
     unsigned set_kernel_args(Kernel& kernel, unsigned first) const override {
@@ -52,6 +53,10 @@ Image IvgMethod::render(const IvgRenderOptions& options, IvgRenderStats* stats) 
     if (options.spp < 1) {
         throw Error("the irradiance vector grid needs at least one camera sample per pixel",
                     kExitUsage);
+    }
+    if (options.first_sample < 0 ||
+        static_cast<int64_t>(options.first_sample) + options.spp > (int64_t{1} << 31) - 1) {
+        throw Error("irradiance vector grid: camera sample indices beyond 2^31", kExitUsage);
     }
     if (options.gather_rays < 0) {
         throw Error("--gather-rays must not be negative", kExitUsage);

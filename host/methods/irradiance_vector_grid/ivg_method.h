@@ -18,6 +18,9 @@ struct IvgRenderOptions : SharedSettings {
     IvgRenderOptions() { spp = 4; }
     int gather_rays = 0;    // per camera sample; 0: read the grid at the camera's hit (ivg)
     int light_samples = 1;  // light samples of the direct light at the camera's hit
+    // The first camera sample index: the render draws samples first_sample .. first_sample +
+    // spp - 1 of every pixel (a pass of a render by time; its image their mean).
+    int first_sample = 0;
 };
 
 struct IvgRenderStats {

@@ -9,6 +9,18 @@
 
 namespace rc {
 
+namespace {
+
+// 1 where the render's samples are jittered (NormalsOptions::jitter).
+unsigned jitter_flag(const NormalsOptions& options) {
+    return options.jitter == NormalsOptions::Jitter::kAlways || options.samples_per_pixel > 1 ||
+                   options.first_sample > 0
+               ? 1u
+               : 0u;
+}
+
+}  // namespace
+
 NormalsMethod::NormalsMethod(const FrameScene& frame)
     : FrameBound(frame),
       frame_(frame),
@@ -21,6 +33,9 @@ Image NormalsMethod::render(const NormalsOptions& options,
     if (options.samples_per_pixel == 0) {
         throw Error("samples per pixel must be at least 1", kExitUsage);
     }
+    if (options.first_sample > 0xffffffffu - options.samples_per_pixel) {
+        throw Error("normals: camera sample indices beyond 2^32", kExitUsage);
+    }
     if (frame_.peers != nullptr && !frame_.peers->empty()) {
         return unpack_film(render_split(options, width, height, devices), 1, width, height,
                            {{"beauty", 0}});
@@ -31,7 +46,8 @@ Image NormalsMethod::render(const NormalsOptions& options,
     const auto seed_lo = static_cast<unsigned>(options.seed);
     const auto seed_hi = static_cast<unsigned>(options.seed >> 32);
     context_.launch(kernel_, pixels, camera, bvh_.nodes, bvh_.triangles, bvh_.triangle_of_primitive,
-                    options.samples_per_pixel, seed_lo, seed_hi, film);
+                    options.first_sample, options.samples_per_pixel, jitter_flag(options), seed_lo,
+                    seed_hi, film);
     return unpack_film(film.download(), 1, width, height, {{"beauty", 0}});
 }
 
@@ -57,17 +73,17 @@ std::vector<shared::float4> NormalsMethod::render_split(const NormalsOptions& op
     const shared::CameraParams camera = camera_params(scene_.camera, width, height);
     const auto seed_lo = static_cast<unsigned>(options.seed);
     const auto seed_hi = static_cast<unsigned>(options.seed >> 32);
-    const DeviceSplit split =
-        run_device_split(contexts, chunks.count,
-                         [&](size_t d, size_t chunk, const std::atomic<bool>&) {
-                             DeviceWork& work = *works[d];
-                             const auto [begin, end] = chunks.range(chunk);
-                             work.frame.context.launch_range(
-                                 work.kernel, begin, end, camera, work.frame.bvh.nodes,
-                                 work.frame.bvh.triangles, work.frame.bvh.triangle_of_primitive,
-                                 options.samples_per_pixel, seed_lo, seed_hi, work.film);
-                         },
-                         {});
+    const DeviceSplit split = run_device_split(
+        contexts, chunks.count,
+        [&](size_t d, size_t chunk, const std::atomic<bool>&) {
+            DeviceWork& work = *works[d];
+            const auto [begin, end] = chunks.range(chunk);
+            work.frame.context.launch_range(
+                work.kernel, begin, end, camera, work.frame.bvh.nodes, work.frame.bvh.triangles,
+                work.frame.bvh.triangle_of_primitive, options.first_sample,
+                options.samples_per_pixel, jitter_flag(options), seed_lo, seed_hi, work.film);
+        },
+        {});
     std::vector<shared::float4> image(chunks.pixels);
     for (size_t d = 0; d < works.size(); ++d) {
         const Context& context = works[d]->frame.context;

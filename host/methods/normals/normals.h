@@ -16,6 +16,11 @@ struct NormalsOptions {
     int height = 0;
     unsigned samples_per_pixel = 1;  // >1: jittered samples, averaged
     uint64_t seed = 0;
+    // The first camera sample: the render draws samples first_sample .. first_sample +
+    // samples_per_pixel - 1 of every pixel (a pass of a render by time), all jittered when
+    // `jitter` (by default: unless it is one sample, then at the pixel's centre).
+    unsigned first_sample = 0;
+    enum class Jitter { kUnlessOneSample, kAlways } jitter = Jitter::kUnlessOneSample;
 };
 
 // One device's share of a preview on several devices.

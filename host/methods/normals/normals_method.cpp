@@ -3,6 +3,7 @@
 
 #include "methods/method.h"
 #include "methods/normals/normals.h"
+#include "methods/sample_passes.h"
 
 namespace rc {
 namespace {
@@ -11,27 +12,18 @@ class NormalsPreview final : public Method {
    public:
     explicit NormalsPreview(const MethodSettings& settings) : settings_(settings) {}
 
-    FrameResult render_frame(const FrameScene& frame, const FrameHooks&) override {
+    // Without --time: --spp samples per pixel (one at the pixel's centre when 1). With --time:
+    // passes of jittered samples (methods/sample_passes.h; there is no cache to build), at most
+    // --spp a pass, drawing the samples one render of as many would.
+    FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         NormalsMethod method(frame);
-        NormalsOptions options;
-        options.width = settings_.width;
-        options.height = settings_.height;
-        options.samples_per_pixel = static_cast<unsigned>(settings_.spp);
-        options.seed = settings_.seed;
-        FrameResult result;
-        std::vector<NormalsDeviceShare> devices;
-        result.image = method.render(options, &devices);
-        result.spp = settings_.spp;
-        if (!devices.empty()) {
-            nlohmann::json shares = nlohmann::json::array();
-            for (const NormalsDeviceShare& d : devices) {
-                shares.push_back({{"device", d.device},
-                                  {"chunks", d.chunks},
-                                  {"pixels", d.pixels},
-                                  {"seconds", d.seconds}});
-            }
-            result.stats["devices"] = shares;
+        if (!(settings_.time > 0.0)) {
+            return render_pass(method, {0, settings_.spp}, false);
         }
+        FrameResult result = render_sample_passes(
+            {settings_.time, settings_.spp, {}}, hooks,
+            [&](const SamplePass& pass) { return render_pass(method, pass, true); });
+        result.stats["spp"] = result.spp;
         return result;
     }
 
@@ -47,6 +39,34 @@ class NormalsPreview final : public Method {
     }
 
    private:
+    // Camera samples pass.first .. pass.first + pass.spp - 1 of every pixel (`jitter`: jittered
+    // even when that is one sample).
+    FrameResult render_pass(NormalsMethod& method, const SamplePass& pass, bool jitter) {
+        NormalsOptions options;
+        options.width = settings_.width;
+        options.height = settings_.height;
+        options.samples_per_pixel = static_cast<unsigned>(pass.spp);
+        options.first_sample = static_cast<unsigned>(pass.first);
+        options.jitter =
+            jitter ? NormalsOptions::Jitter::kAlways : NormalsOptions::Jitter::kUnlessOneSample;
+        options.seed = settings_.seed;
+        FrameResult result;
+        std::vector<NormalsDeviceShare> devices;
+        result.image = method.render(options, &devices);
+        result.spp = pass.spp;
+        if (!devices.empty()) {
+            nlohmann::json shares = nlohmann::json::array();
+            for (const NormalsDeviceShare& d : devices) {
+                shares.push_back({{"device", d.device},
+                                  {"chunks", d.chunks},
+                                  {"pixels", d.pixels},
+                                  {"seconds", d.seconds}});
+            }
+            result.stats["devices"] = shares;
+        }
+        return result;
+    }
+
     MethodSettings settings_;
 };
 

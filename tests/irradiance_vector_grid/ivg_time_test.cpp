@@ -1,0 +1,136 @@
+// `ivg` and `ivg-gather` rendered by time (--time): a pass shades camera samples
+// first_sample .. first_sample + spp - 1 over a grid built once (IvgRenderOptions::first_sample),
+// so passes over one grid, weighted by their samples, are one render of as many samples to float
+// rounding; through the command line, a render by time builds the grid in its first pass only and
+// reports the frame's samples and passes in its stats.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "image/image_io.h"
+#include "image_options.h"
+#include "methods/grid/irradiance_vector_grid.h"
+#include "methods/irradiance_vector_grid/ivg_method.h"
+#include "test_support.h"
+
+namespace rc {
+namespace {
+
+// The largest pixel difference of two images over the largest magnitude in either.
+double relative_difference(const Image& a, const Image& b) {
+    EXPECT_EQ(a.pixels.size(), b.pixels.size());
+    double largest = 0.0, difference = 0.0;
+    for (size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) {
+        largest =
+            std::max({largest, std::fabs(double(a.pixels[i])), std::fabs(double(b.pixels[i]))});
+        difference = std::max(difference, std::fabs(double(a.pixels[i]) - double(b.pixels[i])));
+    }
+    return largest > 0.0 ? difference / largest : difference;
+}
+
+// For the grid read at the camera's hit and for final gathering: passes {0, 1}, {1, 1} and
+// {2, 2} over one grid, weighted by their samples, give the 4-sample render over it in every
+// layer; each pass alone differs from it. First sample 0 is bitwise the render as before.
+TEST(IvgByTime, PassesOverOneGridDrawTheSamplesOfOneLongerRender) {
+    test::DeviceFrame cornell(test::load_cornell_box());
+    const FrameScene frame = cornell.frame();  // (the grid and the method keep references)
+    IrradianceVectorGrid grid(frame);
+    IvgOptions grid_options;
+    grid_options.cells = {8, 8, 8};
+    grid_options.photons = 20000;
+    grid_options.seed = 3;
+    grid.build(grid_options);
+    IvgMethod method(frame, grid);
+    for (const int gather_rays : {0, 4}) {
+        SCOPED_TRACE(gather_rays);
+        const auto render = [&](int first, int spp) {
+            auto options = test::image_options<IvgRenderOptions>(24, 24, spp, 9);
+            options.gather_rays = gather_rays;
+            options.first_sample = first;
+            return method.render(options);
+        };
+        const Image four = render(0, 4);
+        const Image passes[3] = {render(0, 1), render(1, 1), render(2, 2)};
+        const double weights[3] = {1.0, 1.0, 2.0};
+        Image mean = four;
+        for (size_t i = 0; i < mean.pixels.size(); ++i) {
+            double sum = 0.0;
+            for (int p = 0; p < 3; ++p) {
+                sum += weights[p] * passes[p].pixels[i];
+            }
+            mean.pixels[i] = static_cast<float>(sum / 4.0);
+        }
+        for (const std::string& layer : layer_names(four)) {
+            EXPECT_LT(
+                relative_difference(select_layers(mean, {layer}), select_layers(four, {layer})),
+                1e-5)
+                << layer;
+        }
+        for (const Image& pass : passes) {
+            EXPECT_GT(relative_difference(select_layers(pass, {"beauty"}),
+                                          select_layers(four, {"beauty"})),
+                      1e-3);
+        }
+        auto plain = test::image_options<IvgRenderOptions>(24, 24, 2, 9);
+        plain.gather_rays = gather_rays;
+        EXPECT_EQ(method.render(plain).pixels, render(0, 2).pixels);
+    }
+}
+
+// `render --method M --time 2` with a small grid: exit 0, a finite, lit image; the stats' time
+// split has at least one pass and the frame's samples; the grid's figures are the first pass's
+// (frames[0]["grid"]) and no later pass built one; the later passes' samples are consecutive and
+// at most --spp each.
+TEST(IvgByTime, RenderByTimeThroughTheCommandLineBuildsTheGridOnce) {
+    const auto dir = test::scratch_dir("ivg_time");
+    for (const char* method : {"ivg", "ivg-gather"}) {
+        SCOPED_TRACE(method);
+        std::vector<std::string> args = {
+            "render",
+            (test::source_dir() / "scenes/cornell-box/scene.json").string(),
+            "-o",
+            (dir / "out.exr").string(),
+            "--quiet",
+            "--stats",
+            (dir / "stats.json").string()};
+        const std::vector<std::string> options = {
+            "--method", method,      "--time", "2",       "--spp", "4",        "--grid",
+            "4x4x4",    "--photons", "2000",   "--width", "16",    "--height", "16"};
+        args.insert(args.end(), options.begin(), options.end());
+        if (std::string(method) == "ivg-gather") {
+            args.insert(args.end(), {"--gather-rays", "2"});
+        }
+        const test::CommandResult run = test::run_radcache(args);
+        ASSERT_EQ(run.exit_code, 0) << run.output;
+        const nlohmann::json stats = nlohmann::json::parse(std::ifstream(dir / "stats.json"));
+        const nlohmann::json& frame = stats["frames"][0];
+        const nlohmann::json& time = frame["time"];
+        EXPECT_GE(time["passes"].get<int>(), 1);
+        EXPECT_GE(time["spp"].get<int>(), 1);
+        EXPECT_EQ(time["spp"], frame["spp"]);
+        EXPECT_EQ(stats["spp"], frame["spp"]);
+        EXPECT_EQ(time["passes"].get<size_t>(), frame["passes"].size() + 1);
+        EXPECT_TRUE(frame.contains("grid"));
+        int next = 1;
+        for (const nlohmann::json& pass : frame["passes"]) {
+            EXPECT_FALSE(pass.contains("grid")) << "a later pass built a grid";
+            EXPECT_EQ(pass["first_sample"].get<int>(), next);
+            EXPECT_LE(pass["spp"].get<int>(), 4);
+            next += pass["spp"].get<int>();
+        }
+        EXPECT_EQ(next, frame["spp"].get<int>());
+        const Image image = select_layers(read_image(dir / "out.exr"), {"beauty"});
+        double sum = 0.0;
+        for (float v : image.pixels) {
+            ASSERT_TRUE(std::isfinite(v));
+            sum += v;
+        }
+        EXPECT_GT(sum, 0.0);
+    }
+}
+
+}  // namespace
+}  // namespace rc
