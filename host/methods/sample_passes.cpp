@@ -45,12 +45,13 @@ int next_pass_spp(double left, double per_sample, int samples, int max_spp) {
     return static_cast<int>(most);
 }
 
-// A pass's own figures in the stats: its samples, its seconds, the method's stats of it.
+// A pass's own figures in the stats: its samples, its wall time (pass_seconds), the method's
+// stats of it (their "seconds" the method's phases).
 nlohmann::json pass_stats(const SamplePass& pass, double seconds, const nlohmann::json& stats) {
     nlohmann::json entry = stats.is_object() ? stats : nlohmann::json::object();
     entry["first_sample"] = pass.first;
     entry["spp"] = pass.spp;
-    entry["seconds"] = seconds;
+    entry["pass_seconds"] = seconds;
     return entry;
 }
 

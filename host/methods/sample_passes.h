@@ -33,9 +33,9 @@ struct SamplePassBudget {
 // left holds not one more sample per pixel, so the frame ends within the budget but for that one
 // sample, unless the first pass alone exceeds it. The image is the mean of every sample (the
 // passes' images weighted by their samples); rays and dropped samples add up; the stats are the
-// first pass's, with "spp" the frame's, "passes" (each later pass's stats, samples and seconds) and
-// "time" (the split: budget, passes, spp, first_pass_seconds: the cache and one sample per pixel,
-// later_passes_seconds: the samples added over it).
+// first pass's, with "spp" the frame's, "passes" (each later pass's stats, first_sample, spp and
+// pass_seconds) and "time" (the split: budget, passes, spp, first_pass_seconds: the cache and one
+// sample per pixel, later_passes_seconds: the samples added over it).
 FrameResult render_sample_passes(const SamplePassBudget& budget, const FrameHooks& hooks,
                                  const std::function<FrameResult(const SamplePass&)>& pass);
 

@@ -17,39 +17,13 @@
 #include "methods/decomposition/decomposition.h"
 #include "methods/grid/irradiance_vector_grid.h"
 #include "test_support.h"
+#include "timed_render.h"
 
 namespace rc {
 namespace {
 
-// The largest pixel difference of two images over the largest magnitude in either.
-double relative_difference(const Image& a, const Image& b) {
-    EXPECT_EQ(a.pixels.size(), b.pixels.size());
-    double largest = 0.0, difference = 0.0;
-    for (size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) {
-        largest =
-            std::max({largest, std::fabs(double(a.pixels[i])), std::fabs(double(b.pixels[i]))});
-        difference = std::max(difference, std::fabs(double(a.pixels[i]) - double(b.pixels[i])));
-    }
-    return largest > 0.0 ? difference / largest : difference;
-}
-
 std::string cornell_box() {
     return (test::source_dir() / "scenes/cornell-box/scene.json").string();
-}
-
-// `radcache render` of the Cornell box into dir/out.exr with its stats in dir/stats.json and
-// `options` after.
-test::CommandResult render_cornell_box(const std::filesystem::path& dir,
-                                       const std::vector<std::string>& options) {
-    std::vector<std::string> args = {"render",
-                                     cornell_box(),
-                                     "-o",
-                                     (dir / "out.exr").string(),
-                                     "--quiet",
-                                     "--stats",
-                                     (dir / "stats.json").string()};
-    args.insert(args.end(), options.begin(), options.end());
-    return test::run_radcache(args);
 }
 
 // The Cornell box's decomposition at 16 x 16 over a small grid, `spp` samples per pixel.
@@ -83,24 +57,17 @@ TEST(DecompositionByTime, PassesOverOneDecompositionDrawTheSamplesOfOneLongerRen
     const Image passes[3] = {split.render(small_options(&grid, 1), &first_stats),
                              split.render_samples(1, 1, &second_stats),
                              split.render_samples(2, 2, &third_stats)};
-    const double weights[3] = {1.0, 1.0, 2.0};
-    Image mean = four;
-    for (size_t i = 0; i < mean.pixels.size(); ++i) {
-        double sum = 0.0;
-        for (int p = 0; p < 3; ++p) {
-            sum += weights[p] * passes[p].pixels[i];
-        }
-        mean.pixels[i] = static_cast<float>(sum / 4.0);
-    }
+    const Image mean = test::mean_of_passes({passes[0], passes[1], passes[2]}, {1, 1, 2});
     for (const std::string& layer : layer_names(four)) {
-        EXPECT_LT(relative_difference(select_layers(mean, {layer}), select_layers(four, {layer})),
-                  1e-5)
+        EXPECT_LT(
+            test::relative_difference(select_layers(mean, {layer}), select_layers(four, {layer})),
+            1e-5)
             << layer;
     }
     for (const Image& pass : passes) {
-        EXPECT_GT(
-            relative_difference(select_layers(pass, {"beauty"}), select_layers(four, {"beauty"})),
-            1e-3);
+        EXPECT_GT(test::relative_difference(select_layers(pass, {"beauty"}),
+                                            select_layers(four, {"beauty"})),
+                  1e-3);
     }
     EXPECT_EQ(first_stats.sh_samples, whole_stats.sh_samples);
     EXPECT_EQ(first_stats.near_triangles, whole_stats.near_triangles);
@@ -120,37 +87,17 @@ TEST(DecompositionByTime, PassesOverOneDecompositionDrawTheSamplesOfOneLongerRen
 // has at least one pass and the frame's samples; the later passes' samples are consecutive, at
 // most --spp each, and trace no cluster ray (their stats hold none).
 TEST(DecompositionByTime, RenderByTimeThroughTheCommandLine) {
-    const auto dir = test::scratch_dir("decomposition_time");
     // (--alpha 5 %: a near field quick enough on a CPU device to leave time for later passes.)
-    const test::CommandResult result = render_cornell_box(
-        dir, {"--method", "decomposition", "--time", "2", "--spp", "4", "--photons", "2000",
-              "--decomp-rays", "64", "--alpha", "5%", "--width", "16", "--height", "16"});
-    ASSERT_EQ(result.exit_code, 0) << result.output;
-    const nlohmann::json stats = nlohmann::json::parse(std::ifstream(dir / "stats.json"));
-    const nlohmann::json& frame = stats["frames"][0];
-    const nlohmann::json& time = frame["time"];
-    EXPECT_GE(time["passes"].get<int>(), 1);
-    EXPECT_GE(time["spp"].get<int>(), 1);
-    EXPECT_EQ(time["spp"], frame["spp"]);
-    EXPECT_EQ(stats["spp"], frame["spp"]);
-    EXPECT_EQ(time["passes"].get<size_t>(), frame["passes"].size() + 1);
-    EXPECT_GT(frame["cluster_rays_traced"].get<uint64_t>(), 0u);
-    int next = 1;
-    for (const nlohmann::json& pass : frame["passes"]) {
+    const nlohmann::json frame = test::render_cornell_by_time(
+        "decomposition_time",
+        {"--method", "decomposition", "--time", "2", "--spp", "4", "--photons", "2000",
+         "--decomp-rays", "64", "--alpha", "5%", "--width", "16", "--height", "16"},
+        4);
+    EXPECT_GT(frame.value("cluster_rays_traced", uint64_t{0}), 0u);
+    for (const nlohmann::json& pass : frame.value("passes", nlohmann::json::array())) {
         EXPECT_FALSE(pass.contains("cluster_rays_traced"));
         EXPECT_FALSE(pass.contains("grid"));
-        EXPECT_EQ(pass["first_sample"].get<int>(), next);
-        EXPECT_LE(pass["spp"].get<int>(), 4);
-        next += pass["spp"].get<int>();
     }
-    EXPECT_EQ(next, frame["spp"].get<int>());
-    const Image image = select_layers(read_image(dir / "out.exr"), {"beauty"});
-    double sum = 0.0;
-    for (float v : image.pixels) {
-        ASSERT_TRUE(std::isfinite(v));
-        sum += v;
-    }
-    EXPECT_GT(sum, 0.0);
 }
 
 // --decomp-indirect-spp has no place in a render by time: exit status 2, one line naming both

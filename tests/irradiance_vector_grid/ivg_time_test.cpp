@@ -15,21 +15,10 @@
 #include "methods/grid/irradiance_vector_grid.h"
 #include "methods/irradiance_vector_grid/ivg_method.h"
 #include "test_support.h"
+#include "timed_render.h"
 
 namespace rc {
 namespace {
-
-// The largest pixel difference of two images over the largest magnitude in either.
-double relative_difference(const Image& a, const Image& b) {
-    EXPECT_EQ(a.pixels.size(), b.pixels.size());
-    double largest = 0.0, difference = 0.0;
-    for (size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) {
-        largest =
-            std::max({largest, std::fabs(double(a.pixels[i])), std::fabs(double(b.pixels[i]))});
-        difference = std::max(difference, std::fabs(double(a.pixels[i]) - double(b.pixels[i])));
-    }
-    return largest > 0.0 ? difference / largest : difference;
-}
 
 // For the grid read at the camera's hit and for final gathering: passes {0, 1}, {1, 1} and
 // {2, 2} over one grid, weighted by their samples, give the 4-sample render over it in every
@@ -54,24 +43,16 @@ TEST(IvgByTime, PassesOverOneGridDrawTheSamplesOfOneLongerRender) {
         };
         const Image four = render(0, 4);
         const Image passes[3] = {render(0, 1), render(1, 1), render(2, 2)};
-        const double weights[3] = {1.0, 1.0, 2.0};
-        Image mean = four;
-        for (size_t i = 0; i < mean.pixels.size(); ++i) {
-            double sum = 0.0;
-            for (int p = 0; p < 3; ++p) {
-                sum += weights[p] * passes[p].pixels[i];
-            }
-            mean.pixels[i] = static_cast<float>(sum / 4.0);
-        }
+        const Image mean = test::mean_of_passes({passes[0], passes[1], passes[2]}, {1, 1, 2});
         for (const std::string& layer : layer_names(four)) {
-            EXPECT_LT(
-                relative_difference(select_layers(mean, {layer}), select_layers(four, {layer})),
-                1e-5)
+            EXPECT_LT(test::relative_difference(select_layers(mean, {layer}),
+                                                select_layers(four, {layer})),
+                      1e-5)
                 << layer;
         }
         for (const Image& pass : passes) {
-            EXPECT_GT(relative_difference(select_layers(pass, {"beauty"}),
-                                          select_layers(four, {"beauty"})),
+            EXPECT_GT(test::relative_difference(select_layers(pass, {"beauty"}),
+                                                select_layers(four, {"beauty"})),
                       1e-3);
         }
         auto plain = test::image_options<IvgRenderOptions>(24, 24, 2, 9);
@@ -85,50 +66,19 @@ TEST(IvgByTime, PassesOverOneGridDrawTheSamplesOfOneLongerRender) {
 // (frames[0]["grid"]) and no later pass built one; the later passes' samples are consecutive and
 // at most --spp each.
 TEST(IvgByTime, RenderByTimeThroughTheCommandLineBuildsTheGridOnce) {
-    const auto dir = test::scratch_dir("ivg_time");
-    for (const char* method : {"ivg", "ivg-gather"}) {
+    for (const std::string method : {"ivg", "ivg-gather"}) {
         SCOPED_TRACE(method);
-        std::vector<std::string> args = {
-            "render",
-            (test::source_dir() / "scenes/cornell-box/scene.json").string(),
-            "-o",
-            (dir / "out.exr").string(),
-            "--quiet",
-            "--stats",
-            (dir / "stats.json").string()};
-        const std::vector<std::string> options = {
-            "--method", method,      "--time", "2",       "--spp", "4",        "--grid",
-            "4x4x4",    "--photons", "2000",   "--width", "16",    "--height", "16"};
-        args.insert(args.end(), options.begin(), options.end());
-        if (std::string(method) == "ivg-gather") {
-            args.insert(args.end(), {"--gather-rays", "2"});
+        std::vector<std::string> options = {"--method", method,   "--time",   "2",         "--spp",
+                                            "4",        "--grid", "4x4x4",    "--photons", "2000",
+                                            "--width",  "16",     "--height", "16"};
+        if (method == "ivg-gather") {
+            options.insert(options.end(), {"--gather-rays", "2"});
         }
-        const test::CommandResult run = test::run_radcache(args);
-        ASSERT_EQ(run.exit_code, 0) << run.output;
-        const nlohmann::json stats = nlohmann::json::parse(std::ifstream(dir / "stats.json"));
-        const nlohmann::json& frame = stats["frames"][0];
-        const nlohmann::json& time = frame["time"];
-        EXPECT_GE(time["passes"].get<int>(), 1);
-        EXPECT_GE(time["spp"].get<int>(), 1);
-        EXPECT_EQ(time["spp"], frame["spp"]);
-        EXPECT_EQ(stats["spp"], frame["spp"]);
-        EXPECT_EQ(time["passes"].get<size_t>(), frame["passes"].size() + 1);
+        const nlohmann::json frame = test::render_cornell_by_time("ivg_time_" + method, options, 4);
         EXPECT_TRUE(frame.contains("grid"));
-        int next = 1;
-        for (const nlohmann::json& pass : frame["passes"]) {
+        for (const nlohmann::json& pass : frame.value("passes", nlohmann::json::array())) {
             EXPECT_FALSE(pass.contains("grid")) << "a later pass built a grid";
-            EXPECT_EQ(pass["first_sample"].get<int>(), next);
-            EXPECT_LE(pass["spp"].get<int>(), 4);
-            next += pass["spp"].get<int>();
         }
-        EXPECT_EQ(next, frame["spp"].get<int>());
-        const Image image = select_layers(read_image(dir / "out.exr"), {"beauty"});
-        double sum = 0.0;
-        for (float v : image.pixels) {
-            ASSERT_TRUE(std::isfinite(v));
-            sum += v;
-        }
-        EXPECT_GT(sum, 0.0);
     }
 }
 

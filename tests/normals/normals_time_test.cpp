@@ -12,6 +12,7 @@
 #include "image/image_io.h"
 #include "methods/normals/normals.h"
 #include "test_support.h"
+#include "timed_render.h"
 
 namespace rc {
 namespace {
@@ -28,18 +29,6 @@ Image render_samples(NormalsMethod& method, unsigned first, unsigned spp) {
     return method.render(options);
 }
 
-// The largest pixel difference of two images over the largest magnitude in either.
-double relative_difference(const Image& a, const Image& b) {
-    EXPECT_EQ(a.pixels.size(), b.pixels.size());
-    double largest = 0.0, difference = 0.0;
-    for (size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) {
-        largest =
-            std::max({largest, std::fabs(double(a.pixels[i])), std::fabs(double(b.pixels[i]))});
-        difference = std::max(difference, std::fabs(double(a.pixels[i]) - double(b.pixels[i])));
-    }
-    return largest > 0.0 ? difference / largest : difference;
-}
-
 // Passes {0, 1}, {1, 1} and {2, 2}, weighted by their samples, give the 4-sample render; each
 // pass alone differs from it (the passes draw different samples, not the same one again).
 TEST(NormalsByTime, PassesDrawTheSamplesOfOneLongerRender) {
@@ -49,20 +38,12 @@ TEST(NormalsByTime, PassesDrawTheSamplesOfOneLongerRender) {
     const Image four = render_samples(method, 0, 4);
     const Image passes[3] = {render_samples(method, 0, 1), render_samples(method, 1, 1),
                              render_samples(method, 2, 2)};
-    const double weights[3] = {1.0, 1.0, 2.0};
-    Image mean = four;
-    for (size_t i = 0; i < mean.pixels.size(); ++i) {
-        double sum = 0.0;
-        for (int p = 0; p < 3; ++p) {
-            sum += weights[p] * passes[p].pixels[i];
-        }
-        mean.pixels[i] = static_cast<float>(sum / 4.0);
-    }
-    EXPECT_LT(relative_difference(mean, four), 1e-6);
+    const Image mean = test::mean_of_passes({passes[0], passes[1], passes[2]}, {1, 1, 2});
+    EXPECT_LT(test::relative_difference(mean, four), 1e-6);
     for (const Image& pass : passes) {
-        EXPECT_GT(relative_difference(pass, four), 1e-3);
+        EXPECT_GT(test::relative_difference(pass, four), 1e-3);
     }
-    EXPECT_GT(relative_difference(passes[0], passes[1]), 1e-3);
+    EXPECT_GT(test::relative_difference(passes[0], passes[1]), 1e-3);
 }
 
 // First sample 0: bitwise the render without a first sample (the default), jittered or not.
@@ -85,34 +66,10 @@ TEST(NormalsByTime, FirstSampleZeroIsTheRenderAsBefore) {
 // `render --method normals --time 0.5`: exit 0, a finite image, and the stats' time split: at
 // least one pass, its samples the frame's and the render's, the passes' samples consecutive.
 TEST(NormalsByTime, RenderByTimeThroughTheCommandLine) {
-    const auto dir = test::scratch_dir("normals_time");
-    const test::CommandResult result = test::run_radcache(
-        {"render", (test::source_dir() / "scenes/cornell-box/scene.json").string(), "-o",
-         (dir / "out.exr").string(), "--method", "normals", "--time", "0.5", "--spp", "4",
-         "--width", "16", "--height", "16", "--quiet", "--stats", (dir / "stats.json").string()});
-    ASSERT_EQ(result.exit_code, 0) << result.output;
-    const nlohmann::json stats = nlohmann::json::parse(std::ifstream(dir / "stats.json"));
-    const nlohmann::json& frame = stats["frames"][0];
-    const nlohmann::json& time = frame["time"];
-    EXPECT_GE(time["passes"].get<int>(), 1);
-    EXPECT_GE(time["spp"].get<int>(), 1);
-    EXPECT_EQ(time["spp"], frame["spp"]);
-    EXPECT_EQ(stats["spp"], frame["spp"]);
-    int next = 1;
-    for (const nlohmann::json& pass : frame["passes"]) {
-        EXPECT_EQ(pass["first_sample"].get<int>(), next);
-        EXPECT_LE(pass["spp"].get<int>(), 4);
-        next += pass["spp"].get<int>();
-    }
-    EXPECT_EQ(next, frame["spp"].get<int>());
-    EXPECT_EQ(time["passes"].get<size_t>(), frame["passes"].size() + 1);
-    const Image image = read_image(dir / "out.exr");
-    double sum = 0.0;
-    for (float v : image.pixels) {
-        ASSERT_TRUE(std::isfinite(v));
-        sum += v;
-    }
-    EXPECT_GT(sum, 0.0);
+    test::render_cornell_by_time(
+        "normals_time",
+        {"--method", "normals", "--time", "0.5", "--spp", "4", "--width", "16", "--height", "16"},
+        4);
 }
 
 }  // namespace

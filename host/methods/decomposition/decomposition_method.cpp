@@ -118,8 +118,7 @@ nlohmann::json pass_json(const DecompositionStats& s) {
             {"far_uncovered_points", s.far_uncovered},
             {"near_rays", s.near_rays},
             {"shading_rays", s.shading_rays},
-            // ("seconds" is the pass's own, render_sample_passes's)
-            {"phase_seconds",
+            {"seconds",
              {{"gbuffer", s.gbuffer_seconds},
               {"evaluation", s.evaluation_seconds},
               {"shading", s.shading_seconds}}}};

@@ -1,0 +1,29 @@
+// What the tests of rendering by time (--time, methods/sample_passes.h) share: comparing pass
+// images with one longer render, and a render by time of the Cornell box through the command
+// line with its stats checked.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "image/image.h"
+
+namespace rc::test {
+
+// The largest pixel difference of two images over the largest magnitude in either.
+double relative_difference(const Image& a, const Image& b);
+
+// The mean of pass images weighted by their samples per pixel.
+Image mean_of_passes(const std::vector<Image>& passes, const std::vector<int>& spp);
+
+// `radcache render` of the Cornell box with `options` (--method, --time, size, ...) into
+// scratch_dir(scratch)/out.exr with --stats. Expects exit 0, a finite lit beauty layer and the
+// time split: at least one pass, the passes' samples consecutive from the first pass's one sample
+// per pixel, each at most `max_spp`, adding up to the frame's spp (the frame's, the time's and
+// the render's). Returns the frame's stats (an empty object when the render failed).
+nlohmann::json render_cornell_by_time(const std::string& scratch,
+                                      const std::vector<std::string>& options, int max_spp);
+
+}  // namespace rc::test
