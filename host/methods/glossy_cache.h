@@ -3,6 +3,7 @@
 // glossy buffer, one RcGlossySample per camera sample (kernels/shared/radiance_cache.h).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "device/buffer.h"
@@ -27,6 +28,10 @@ class GlossyCache {
     // The cache's own layers of the render pass's film (kernels/shared/film.h) beside
     // glossy-indirect.
     virtual std::vector<FilmLayer> layers() const = 0;
+    // The rays its records (and their lookups' misses) have traced since it was made, and the
+    // seconds their placement and computation took (the cache's share of a render by time).
+    virtual uint64_t rays() const = 0;
+    virtual double record_seconds() const = 0;
 };
 
 }  // namespace rc

@@ -14,7 +14,16 @@ FrameResult render_with_glossy_cache(const FrameScene& frame, IrradianceCacheOpt
                                      const RecordPassFinish& finish, IrradianceCacheStats* stats) {
     options.glossy = &glossy;
     IrradianceCache cache(frame);
-    return render_record_passes(cache, options, time, hooks, finish, stats);
+    uint64_t counted_rays = 0;  // the glossy records' rays of the passes before
+    return render_record_passes(
+        cache, options, time, hooks,
+        [&](FrameResult& pass, const IrradianceCacheStats& ic) {
+            pass.rays += glossy.rays() - counted_rays;
+            counted_rays = glossy.rays();
+            pass.cache_seconds += glossy.record_seconds();
+            finish(pass, ic);
+        },
+        stats);
 }
 
 }  // namespace rc

@@ -26,9 +26,10 @@ void share_record_settings(const IrradianceCacheOptions& ic, GlossyOptions* glos
 }
 
 // One frame by irradiance caching with `glossy` serving the specular lobes, in one pass or by
-// `time` (records/record_passes.h): the image, its spp, irradiance caching's rays, non-finite
-// samples and statistics into the result, `finish` adding its cache's rays and statistics to each
-// pass's; irradiance caching's statistics of the last pass into *stats.
+// `time` (records/record_passes.h): the image, its spp, the rays of both caches, non-finite
+// samples, irradiance caching's statistics and the caches' seconds into the result, `finish`
+// adding the glossy cache's statistics to each pass's; irradiance caching's statistics of the
+// last pass into *stats.
 FrameResult render_with_glossy_cache(const FrameScene& frame, IrradianceCacheOptions options,
                                      GlossyCache& glossy, double time, const FrameHooks& hooks,
                                      const RecordPassFinish& finish, IrradianceCacheStats* stats);

@@ -114,6 +114,11 @@ class RadianceCache final : public GlossyCache, private FrameBound {
     unsigned next_stream() const { return next_stream_; }
     int order() const { return std::max(order_, 1); }
     // (Saves the records to options.cache_out at the end.)
+    uint64_t rays() const override { return stats_.record_rays; }
+    double record_seconds() const override {
+        return stats_.table_seconds + stats_.placement.placement_seconds +
+               stats_.placement.record_seconds;
+    }
     std::vector<FilmLayer> layers() const override {
         return {{"rc-order", RC_CACHED_FILM_ORDER, 1}};
     }

@@ -127,16 +127,10 @@ class RadianceCaching final : public Method {
         RadianceCache glossy(frame, rc_, tables_);
         tables_ = glossy.tables();
         IrradianceCacheStats stats;
-        uint64_t counted_rays = 0;  // the radiance records' rays of the passes before
         FrameResult result = render_with_glossy_cache(
             frame, ic_, glossy, time_, hooks,
             [&](FrameResult& pass, const IrradianceCacheStats&) {
-                const RadianceCacheStats& rc = glossy.stats();
-                pass.rays += rc.record_rays - counted_rays;
-                counted_rays = rc.record_rays;
-                pass.stats["radiance_cache"] = radiance_stats(rc);
-                pass.cache_seconds +=
-                    rc.table_seconds + rc.placement.placement_seconds + rc.placement.record_seconds;
+                pass.stats["radiance_cache"] = radiance_stats(glossy.stats());
             },
             &stats);
         const RadianceCacheStats& rc = glossy.stats();

@@ -44,6 +44,8 @@ class TemporalRadianceShading final : public GlossyCache {
         return cache_.splat(cache_.queries(params, camera));
     }
     std::vector<FilmLayer> layers() const override { return cache_.layers(); }
+    uint64_t rays() const override { return cache_.rays(); }
+    double record_seconds() const override { return cache_.record_seconds(); }
 
    private:
     RadianceCache cache_;

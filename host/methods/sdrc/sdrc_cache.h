@@ -80,6 +80,10 @@ class SdrcCache final : public GlossyCache, private FrameBound {
     Buffer<shared::RcGlossySample> glossy_samples(const shared::IcParams& params,
                                                   const shared::CameraParams& camera,
                                                   const RadianceSource& diffuse) override;
+    uint64_t rays() const override { return stats_.record_rays + stats_.miss_rays; }
+    double record_seconds() const override {
+        return stats_.placement.placement_seconds + stats_.placement.record_seconds;
+    }
     std::vector<FilmLayer> layers() const override {
         return {{"sdrc-hits", RC_CACHED_FILM_HITS, 1}};
     }

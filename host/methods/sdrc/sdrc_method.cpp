@@ -99,15 +99,10 @@ class SpatialDirectionalRadianceCaching final : public Method {
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         SdrcCache glossy(frame, sdrc_);
         IrradianceCacheStats stats;
-        uint64_t counted_rays = 0;  // the SDRC records' and misses' rays of the passes before
         FrameResult result = render_with_glossy_cache(
             frame, ic_, glossy, time_, hooks,
             [&](FrameResult& pass, const IrradianceCacheStats&) {
-                const SdrcStats& s = glossy.stats();
-                pass.rays += s.record_rays + s.miss_rays - counted_rays;
-                counted_rays = s.record_rays + s.miss_rays;
-                pass.stats["sdrc"] = sdrc_stats(s);
-                pass.cache_seconds += s.placement.placement_seconds + s.placement.record_seconds;
+                pass.stats["sdrc"] = sdrc_stats(glossy.stats());
             },
             &stats);
         const SdrcStats& s = glossy.stats();
