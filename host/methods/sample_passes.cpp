@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "util/error.h"
+#include "util/log.h"
 #include "util/timing.h"
 
 namespace rc {
@@ -26,6 +28,12 @@ void add_weighted(Image* mean, double mean_weight, const Image& image, double we
 }
 
 namespace {
+
+std::string seconds_text(double seconds) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f s", seconds);
+    return text;
+}
 
 // The largest total samples per pixel a render may reach (--spp's own bound).
 constexpr int kMaxSamples = 1 << 24;
@@ -97,6 +105,10 @@ FrameResult render_sample_passes(const SamplePassBudget& budget, const FrameHook
                                           budget.max_spp)};
     }
     const double total = clock();
+    log_note("by time: " + seconds_text(first_seconds) + " for the cache and 1 spp, " +
+             std::to_string(result.spp - 1) + " more spp in " +
+             seconds_text(total - first_seconds) + " (" + std::to_string(later.size()) +
+             " more passes)");
     result.stats["spp"] = result.spp;
     result.stats["passes"] = later;
     result.stats["time"] = {{"budget", budget.seconds},
