@@ -105,6 +105,11 @@ FrameResult render_sample_passes(const SamplePassBudget& budget, const FrameHook
                                           budget.max_spp)};
     }
     const double total = clock();
+    if (first_seconds > budget.seconds) {
+        log_note("by time: the cache and one sample per pixel took " + seconds_text(first_seconds) +
+                 ", beyond --time " + seconds_text(budget.seconds) +
+                 ": the image has 1 spp (a cheaper cache or --method pt suits this budget)");
+    }
     log_note("by time: " + seconds_text(first_seconds) + " for the cache and 1 spp, " +
              std::to_string(result.spp - 1) + " more spp in " +
              seconds_text(total - first_seconds) + " (" + std::to_string(later.size()) +
