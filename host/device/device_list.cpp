@@ -9,6 +9,7 @@
 #include "device/cl_calls.h"
 #include "device/cl_error.h"
 #include "util/error.h"
+#include "util/text.h"
 
 namespace rc {
 namespace {
@@ -193,8 +194,13 @@ DeviceInfo select_device(const std::vector<DeviceInfo>& devices, const std::stri
             }
         }
     }
-    throw Error("no OpenCL device matches " + source + " '" + spec + "'; the devices are:\n" +
-                    format_device_table(devices),
+    // One line: the devices by index and name (`radcache devices` gives the table).
+    std::string listed;
+    for (const DeviceInfo& info : devices) {
+        listed += (listed.empty() ? "" : ", ") + info.spec() + " " + info.name;
+    }
+    throw Error("no OpenCL device matches " + source + " '" + excerpt(spec) +
+                    "' (devices: " + listed + "; `radcache devices` lists them)",
                 kExitUsage);
 }
 

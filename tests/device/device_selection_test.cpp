@@ -70,6 +70,9 @@ TEST(DeviceSelection, UnknownSpecThrowsWithTheDeviceList) {
         EXPECT_EQ(error.exit_code(), kExitUsage);
         EXPECT_NE(std::string(error.what()).find("no-such-device-xyz"), std::string::npos);
         EXPECT_NE(std::string(error.what()).find(devices[0].name), std::string::npos);
+        EXPECT_NE(std::string(error.what()).find(devices[0].spec()), std::string::npos);
+        // One line: the devices named in it, not a table after it.
+        EXPECT_EQ(std::string(error.what()).find('\n'), std::string::npos) << error.what();
     }
     EXPECT_THROW(select_device(devices, "97:3"), Error);
 }
