@@ -1,6 +1,10 @@
 #include "app/device_options.h"
 
+#include <filesystem>
+#include <system_error>
+
 #include "util/error.h"
+#include "util/text.h"
 
 namespace rc {
 
@@ -40,6 +44,17 @@ ContextOptions context_options(const ParsedArguments& arguments) {
     options.device_spec = arguments.value("--device");
     options.kernel_dir = arguments.value("--kernel-dir");
     options.dump_kernels_dir = arguments.value("--dump-kernels");
+    if (!options.dump_kernels_dir.empty()) {
+        // The folder made (or found) before any work: one line naming it where it cannot be.
+        std::error_code error;
+        std::filesystem::create_directories(options.dump_kernels_dir, error);
+        if (error || !std::filesystem::is_directory(options.dump_kernels_dir)) {
+            throw Error("--dump-kernels " + excerpt(options.dump_kernels_dir.string()) +
+                            ": cannot make the folder (" +
+                            (error ? error.message() : std::string("not a folder")) + ")",
+                        kExitUsage);
+        }
+    }
     if (arguments.has("--no-kernel-cache")) {
         options.cache_dir.clear();
     }
