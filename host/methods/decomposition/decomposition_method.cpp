@@ -18,6 +18,7 @@
 #include "shared/decomposition.h"
 #include "util/error.h"
 #include "util/log.h"
+#include "util/timing.h"
 
 namespace rc {
 namespace {
@@ -340,7 +341,15 @@ class Decomposition final : public Method {
             {settings_time_, options_.spp, {}}, hooks, [&](const SamplePass& pass) {
                 if (pass.first == 0) {
                     options.spp = pass.spp;
-                    return build_and_render(frame, hooks, &grid, &path, &decomposition, &options);
+                    const auto start = SteadyClock::now();
+                    FrameResult first =
+                        build_and_render(frame, hooks, &grid, &path, &decomposition, &options);
+                    // The cache: all but the camera samples' G-buffer, terms and shading.
+                    const nlohmann::json& phases = first.stats["seconds"];
+                    first.cache_seconds = seconds_since(start) - phases.value("gbuffer", 0.0) -
+                                          phases.value("evaluation", 0.0) -
+                                          phases.value("shading", 0.0);
+                    return first;
                 }
                 DecompositionStats stats;
                 FrameResult part;

@@ -8,6 +8,7 @@
 #include "methods/method.h"
 #include "methods/sample_passes.h"
 #include "shared/film.h"
+#include "util/timing.h"
 
 namespace rc {
 namespace {
@@ -82,7 +83,9 @@ class GridRendering final : public Method {
                             const SamplePass& pass, std::unique_ptr<IrradianceVectorGrid>* grid) {
         FrameResult result;
         if (*grid == nullptr) {
+            const auto start = SteadyClock::now();
             *grid = build_frame_grid(frame, grid_options_, hooks, &result);
+            result.cache_seconds = seconds_since(start);
         }
         IvgMethod method(frame, **grid);
         IvgRenderOptions options;
