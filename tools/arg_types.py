@@ -13,3 +13,26 @@ def positive_int(text):
     if value < 1:
         raise argparse.ArgumentTypeError("%d is not positive" % value)
     return value
+
+
+def positive_seconds(text):
+    """A time budget in seconds, above 0."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError("%r is not a number of seconds" % text)
+    if not value > 0.0:
+        raise argparse.ArgumentTypeError("%r is not above 0 seconds" % text)
+    return value
+
+
+def frame_range(text):
+    """Frames A:B (integers, A <= B), kept as the text radcache's --frames takes."""
+    parts = text.split(":")
+    try:
+        first, last = (int(x) for x in parts)
+    except ValueError:
+        raise argparse.ArgumentTypeError("expected A:B (two frame numbers), got %r" % text)
+    if last < first:
+        raise argparse.ArgumentTypeError("%r ends before it starts" % text)
+    return text

@@ -27,18 +27,11 @@ import sys
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import references  # noqa: E402
-from arg_types import positive_int  # noqa: E402
+from arg_types import positive_int, positive_seconds  # noqa: E402
 from extra_options import parse_with_extra  # noqa: E402
 from radcache_process import run  # noqa: E402
 
 DEFAULT_METHODS = ["pt", "ic", "rc", "sdrc", "ivg-gather", "decomposition"]
-
-
-def positive_seconds(text):
-    value = float(text)
-    if not value > 0.0:
-        raise argparse.ArgumentTypeError("expected seconds above 0, got %r" % text)
-    return value
 
 
 def relmse(image, reference, aov, json_path):
@@ -97,8 +90,12 @@ def main(argv):
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "equal_time"))
     args, extra = parse_with_extra(parser, argv)
     for scene in args.scenes:
-        if not os.path.isfile(references.reference_path(os.path.join(ROOT, "scenes", scene))):
-            sys.exit("equal_time.py: scene %r has no reference" % scene)
+        try:
+            reference = references.reference_path(os.path.join(ROOT, "scenes", scene))
+        except references.ReferenceError as e:
+            parser.error("--scenes %s: %s" % (scene, e))
+        if not os.path.isfile(reference):
+            parser.error("--scenes %s: the scene has no reference (%s)" % (scene, reference))
     os.makedirs(args.out, exist_ok=True)
     warm = os.path.join(ROOT, "scenes", args.scenes[0], "scene.json")
     for method in args.methods:  # kernel binaries built and cached before any timed run

@@ -59,6 +59,7 @@ import sys
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
 import references  # noqa: E402
+from arg_types import frame_range  # noqa: E402
 from extra_options import parse_with_extra  # noqa: E402
 from radcache_process import cpu_seconds, run  # noqa: E402
 
@@ -207,7 +208,7 @@ def main(argv):
     parser.add_argument("--method", choices=["ic", "rc"], default="ic")
     parser.add_argument("--reference", default="",
                         help="the references' pattern (default SCENE/reference/frame####.exr)")
-    parser.add_argument("--frames", default="0:11")
+    parser.add_argument("--frames", default="0:11", type=frame_range)
     parser.add_argument("--width", type=int, default=128)
     parser.add_argument("--height", type=int, default=128)
     parser.add_argument("--spp", type=int, default=16)
