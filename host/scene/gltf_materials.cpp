@@ -172,6 +172,14 @@ int GltfMaterials::texture(int index, const std::string& what) {
     if (bytes.empty() && image.bufferView >= 0) {
         bytes = buffer_view_bytes(model_, image.bufferView, what + ": image");
     }
+    if (bytes.empty() && !image.uri.empty() && image.uri.rfind("data:", 0) != 0) {
+        // A file tinygltf could not read (it warns and leaves the image empty): named.
+        const std::filesystem::path file = path_.parent_path() / image.uri;
+        throw Error(what + ": image " + std::to_string(texture.source) + " '" +
+                    excerpt(image.uri, 200) +
+                    "': " + (std::filesystem::exists(file) ? "cannot be read" : "file not found") +
+                    " (beside the glTF file)");
+    }
     if (bytes.empty()) {
         throw Error(what + ": image " + std::to_string(texture.source) + " has no data");
     }

@@ -240,6 +240,12 @@ TEST(Gltf, MalformedFilesAreRefusedCleanly) {
     m = model;
     m["cameras"][0]["perspective"]["aspectRatio"] = 1000.0;
     cases.push_back({"wide_aspect", m.dump(), "camera aspectRatio 1000.0 makes a 512-row image"});
+    // A base colour texture whose image file is missing: the file named, not "no data".
+    m = model;
+    m["images"] = {{{"uri", "no-such-texture.png"}}};
+    m["textures"] = {{{"source", 0}}};
+    m["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+    cases.push_back({"missing_texture", m.dump(), "image 0 'no-such-texture.png': file not found"});
     // Nested 20 000 deep in `extras` (30 KB): refused before tinygltf's recursive conversion of
     // `extras` would overflow the stack; brackets inside strings do not count.
     m = model;
