@@ -277,6 +277,10 @@ typedef struct IvgParams {
     // cell_margin.
     float cell_margin;
     float origin_margin;
+    // Explicit trailing padding to the float4 alignment: rusticl (Mesa 22.3) takes a by-value
+    // struct argument's size without its trailing padding (140 bytes here, sizeof 144) and
+    // refuses the host's with CL_INVALID_ARG_SIZE. Not read.
+    int padding;
 } IvgParams;
 
 // A plane of the triangles overlapping a grid cell (grown by twice IvgParams::cell_margin) that
