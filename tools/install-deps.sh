@@ -2,12 +2,14 @@
 # Installs the Debian packages radcache needs, skipping those already present, and the Python
 # packages of its measurement tools (tools/requirements.txt). clang and its runtime libraries
 # (libFuzzer, the sanitizers) build the fuzz targets (tools/fuzz.sh), which CI runs.
+# mesa-opencl-icd is a second OpenCL implementation (rusticl; its CPU device appears with
+# RUSTICL_ENABLE=llvmpipe: docs/devices.md).
 # Idempotent: runs `apt-get update` at most once, and only when something is missing.
 set -euo pipefail
 
 packages=(
     build-essential cmake pkg-config
-    ocl-icd-opencl-dev opencl-headers pocl-opencl-icd clinfo
+    ocl-icd-opencl-dev opencl-headers pocl-opencl-icd clinfo mesa-opencl-icd
     libembree-dev libopenimageio-dev openimageio-tools libglm-dev nlohmann-json3-dev
     libtinyobjloader-dev libtinygltf-dev libassimp-dev libcli11-dev libgtest-dev googletest
     clang libclang-rt-dev
