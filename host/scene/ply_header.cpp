@@ -1,6 +1,9 @@
 #include "scene/ply_header.h"
 
 #include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -37,13 +40,129 @@ bool is_name(const std::string& word) {
     return true;
 }
 
+// A property's layout: a scalar of `size` bytes, or a list whose count takes count_size bytes
+// (signed where count_signed) before `size`-byte items.
+struct Property {
+    size_t size = 0;
+    size_t count_size = 0;  // 0: a scalar
+    bool count_signed = false;
+};
+
 struct Element {
     std::string name;
     double count = 0;
     size_t fixed_bytes = 0;  // binary: scalars plus each list's count
     size_t values = 0;       // scalars and lists
     std::vector<std::string> properties;
+    std::vector<Property> layout;
 };
+
+bool is_signed(const std::string& type) {
+    return type == "char" || type == "int8" || type == "short" || type == "int16" ||
+           type == "int" || type == "int32";
+}
+
+// A binary list count of `p` at `at` (its bytes in the file's byte order), as a number.
+double binary_count(const std::string& bytes, size_t at, const Property& p, bool big_endian) {
+    uint64_t raw = 0;
+    for (size_t k = 0; k < p.count_size; ++k) {
+        const size_t byte = big_endian ? k : p.count_size - 1 - k;
+        raw = (raw << 8) | static_cast<unsigned char>(bytes[at + byte]);
+    }
+    if (p.count_signed && (raw >> (8 * p.count_size - 1)) != 0) {
+        return -1.0;  // negative
+    }
+    return static_cast<double>(raw);
+}
+
+// Every element of a binary body walked: each list's count read and bounded by the bytes left,
+// so a count the file cannot hold (2^30 indices) is refused before a reader allocates for it, and
+// a file that ends inside an element is named as truncated.
+template <class Fail>
+void walk_binary_body(const std::string& bytes, size_t at, const std::vector<Element>& elements,
+                      bool big_endian, const Fail& fail) {
+    for (const Element& e : elements) {
+        for (double i = 0; i < e.count; ++i) {
+            for (const Property& p : e.layout) {
+                const auto where = [&] {
+                    return "element " + e.name + " " + std::to_string(static_cast<long long>(i));
+                };
+                if (p.count_size > bytes.size() - at) {
+                    fail(where() + " runs past the end of the file (truncated?)");
+                }
+                double items = 1.0;
+                if (p.count_size > 0) {
+                    items = binary_count(bytes, at, p, big_endian);
+                    at += p.count_size;
+                    if (items < 0.0) {
+                        fail(where() + ": a list of a negative count");
+                    }
+                }
+                if (items * static_cast<double>(p.size) > static_cast<double>(bytes.size() - at)) {
+                    fail(where() + ": " +
+                         (p.count_size > 0
+                              ? "a list of " + std::to_string(static_cast<long long>(items)) +
+                                    " values runs past the end of the file"
+                              : std::string("runs past the end of the file (truncated?)")));
+                }
+                at += static_cast<size_t>(items) * p.size;
+            }
+        }
+    }
+}
+
+// The same for an ASCII body: every list's count a whole number no larger than the values left.
+template <class Fail>
+void walk_ascii_body(const std::string& bytes, size_t body, const std::vector<Element>& elements,
+                     const Fail& fail) {
+    size_t at = body;
+    // Moves `at` past the next word of the body; its first byte's offset, or npos at the end.
+    const auto next_word = [&]() {
+        while (at < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[at]))) {
+            ++at;
+        }
+        const size_t start = at;
+        while (at < bytes.size() && !std::isspace(static_cast<unsigned char>(bytes[at]))) {
+            ++at;
+        }
+        return start < bytes.size() ? start : std::string::npos;
+    };
+    double left = 0.0;  // the words of the body not yet read
+    while (next_word() != std::string::npos) {
+        left += 1.0;
+    }
+    at = body;
+    for (const Element& e : elements) {
+        for (double i = 0; i < e.count; ++i) {
+            for (const Property& p : e.layout) {
+                const auto where = [&] {
+                    return "element " + e.name + " " + std::to_string(static_cast<long long>(i));
+                };
+                if (left < 1.0) {
+                    fail(where() + " runs past the end of the file (truncated?)");
+                }
+                const size_t word = next_word();
+                left -= 1.0;
+                if (p.count_size == 0) {
+                    continue;
+                }
+                const double value = std::strtod(bytes.c_str() + word, nullptr);
+                if (!(value >= 0.0) || value != std::floor(value) || value > left) {
+                    const bool whole = value == std::floor(value) && std::fabs(value) < 1e15;
+                    fail(where() + ": a list count of " +
+                         (whole ? std::to_string(static_cast<long long>(value))
+                                : excerpt(std::to_string(value))) +
+                         " with " + std::to_string(static_cast<long long>(left)) +
+                         " values left in the file");
+                }
+                for (double k = 0; k < value; ++k) {
+                    next_word();
+                }
+                left -= value;
+            }
+        }
+    }
+}
 
 }  // namespace
 
@@ -101,6 +220,7 @@ void check_ply_header(const std::string& bytes, const std::string& what) {
             elements.back().fixed_bytes += type_size(rest[0]);
             ++elements.back().values;
             elements.back().properties.push_back(rest[1]);
+            elements.back().layout.push_back({type_size(rest[0]), 0, false});
         } else if (keyword == "property" && !elements.empty() && rest.size() == 4 &&
                    rest[0] == "list" && type_size(rest[1]) > 0 && rest[1] != "float" &&
                    rest[1] != "double" && rest[1] != "float32" && rest[1] != "float64" &&
@@ -108,6 +228,8 @@ void check_ply_header(const std::string& bytes, const std::string& what) {
             elements.back().fixed_bytes += type_size(rest[1]);
             ++elements.back().values;
             elements.back().properties.push_back(rest[3]);
+            elements.back().layout.push_back(
+                {type_size(rest[2]), type_size(rest[1]), is_signed(rest[1])});
         } else {
             fail("malformed header line \"" + excerpt(line) + "\"");
         }
@@ -152,6 +274,11 @@ void check_ply_header(const std::string& bytes, const std::string& what) {
     if (need > static_cast<double>(bytes.size() - body)) {
         fail("its elements need at least " + std::to_string(static_cast<long long>(need)) +
              " bytes, the file has " + std::to_string(bytes.size() - body) + " after its header");
+    }
+    if (format == "ascii") {
+        walk_ascii_body(bytes, body, elements, fail);
+    } else {
+        walk_binary_body(bytes, body, elements, format == "binary_big_endian", fail);
     }
 }
 

@@ -15,7 +15,9 @@ namespace rc {
 // declares a "vertex" element with x, y and z and a "face" element with a vertex_indices (or
 // vertex_index) list, and whose elements fit in the bytes after the header (binary: at least
 // their fixed size; ASCII: at least two bytes per value, and nothing but digits, signs, points,
-// exponents and blanks).
+// exponents and blanks), walking the body so that every list's count fits in what is left of the
+// file (a count of 2^30 indices is refused before any reader allocates for it) and a file that
+// ends inside an element is named as truncated.
 void check_ply_header(const std::string& bytes, const std::string& what);
 
 }  // namespace rc

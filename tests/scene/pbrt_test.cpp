@@ -250,6 +250,51 @@ TEST(Pbrt, PlyMeshesLoadInAsciiAndBinary) {
     }
 }
 
+// The error of loading the scene of `ply`, or "" when it loads.
+std::string ply_error(const std::filesystem::path& dir, const std::string& name,
+                      const std::string& ply) {
+    try {
+        load_scene(write_ply_scene(dir, name, ply));
+    } catch (const Error& error) {
+        return error.what();
+    }
+    return "";
+}
+
+// A list count the file cannot hold (2^30 indices: 4 GiB that a reader would allocate) and a
+// file that ends inside an element are refused by the body's walk, naming the element, in both
+// formats; the intact files still load.
+TEST(Pbrt, PlyListCountsAndTruncationAreBoundedByTheFile) {
+    const auto dir = test::scratch_dir("pbrt_ply_bounds");
+    std::string binary = binary_ply();
+    const std::string wide_header = ply_header("binary_little_endian");
+    std::string wide = wide_header;  // list counts as int: room for 2^30
+    wide.replace(wide.find("list uchar int"), 14, "list int int");
+    wide += binary.substr(wide_header.size(), 5 * sizeof kPlyVertices[0]);
+    const int32_t huge = 1 << 30;
+    wide.append(reinterpret_cast<const char*>(&huge), 4);
+    wide += std::string(40, '\0');
+    std::string ascii = ascii_ply();
+    struct Case {
+        std::string name, ply, expected;
+    };
+    for (const Case& c : std::vector<Case>{
+             {"binary_huge_list", wide, "element face 0: a list of 1073741824 values runs past"},
+             {"binary_truncated", binary.substr(0, binary.size() - 5),
+              "element face 1: a list of 3 values runs past the end of the file"},
+             {"ascii_huge_list", ascii.substr(0, ascii.size() - 8) + "1073741824 1 4 2\n",
+              "element face 1: a list count of 1073741824"},
+             {"ascii_truncated", ascii.substr(0, ascii.size() - 4) + "\n",
+              "element face 1: a list count of 3"}}) {
+        const std::string error = ply_error(dir, c.name, c.ply);
+        EXPECT_NE(error.find(c.expected), std::string::npos) << c.name << ": " << error;
+        EXPECT_NE(error.find(c.name + ".pbrt:5: Shape \"plymesh\""), std::string::npos)
+            << c.name << ": " << error;
+    }
+    EXPECT_EQ(ply_error(dir, "binary", binary), "");
+    EXPECT_EQ(ply_error(dir, "ascii", ascii), "");
+}
+
 struct Refusal {
     std::string name;
     std::string text;      // after the standard header; the error is on its last line
