@@ -388,11 +388,11 @@ def check_curated(tables):
 
 
 def sweepable(tables):
-    """What --methods takes, in the registry's order: each method with quality knobs, its
-    variants beside it."""
+    """What --methods takes, in the registry's order: each method with quality knobs or a curated
+    curve (pt's varies --spp, the render's own setting), its variants beside it."""
     names = []
     for method, knobs in tables.knobs.items():
-        if knobs:
+        if knobs or method in CURATED:
             names += [method] + [v for v, (base, _) in variants().items() if base == method]
     return names
 
