@@ -1,15 +1,15 @@
 #include "test_support.h"
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <map>
 #include <memory>
-
-#include <gtest/gtest.h>
 
 #include "image/image_io.h"
 #include "scene/scene_loader.h"
@@ -135,17 +135,24 @@ DeviceFrame::DeviceFrame(Scene loaded, Context& device)
       device_bvh(context, bvh),
       device_scene(context, scene) {}
 
-// The running test's own folder ("Suite.Name", '/' of parameterised names as '_'): ctest runs
-// each test in its own process, in parallel, so two tests that name the same scratch must not
-// share (and remove) one directory.
+// The running test's own folder: ctest runs each test in its own process, in parallel, so two
+// tests that name the same scratch must not share (and remove) one directory. Named by ten hex
+// digits of a hash of "Suite.Name", short so that the paths the tests' error messages quote stay
+// within the length radcache quotes whole.
 static std::filesystem::path running_test_folder() {
     const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
     if (info == nullptr) {
         return "outside-tests";
     }
-    std::string name = std::string(info->test_suite_name()) + "." + info->name();
-    std::replace(name.begin(), name.end(), '/', '_');
-    return name;
+    const std::string name = std::string(info->test_suite_name()) + "." + info->name();
+    uint64_t hash = 14695981039346656037ull;  // FNV-1a
+    for (unsigned char c : name) {
+        hash = (hash ^ c) * 1099511628211ull;
+    }
+    char folder[16];
+    std::snprintf(folder, sizeof folder, "%010llx",
+                  static_cast<unsigned long long>(hash & 0xffffffffffull));
+    return folder;
 }
 
 std::filesystem::path scratch_dir(const std::string& name) {
