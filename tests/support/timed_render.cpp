@@ -33,6 +33,31 @@ Image mean_of_passes(const std::vector<Image>& passes, const std::vector<int>& s
     return mean;
 }
 
+void expect_passes_make_the_longer_render(const Image& longer, const std::vector<Image>& passes,
+                                          const std::vector<int>& spp, double tolerance) {
+    const Image mean = mean_of_passes(passes, spp);
+    for (const std::string& layer : layer_names(longer)) {
+        EXPECT_LT(relative_difference(select_layers(mean, {layer}), select_layers(longer, {layer})),
+                  tolerance)
+            << layer;
+    }
+    for (const Image& pass : passes) {
+        EXPECT_GT(
+            relative_difference(select_layers(pass, {"beauty"}), select_layers(longer, {"beauty"})),
+            1e-3);
+    }
+}
+
+void expect_finite_lit_beauty(const std::filesystem::path& path) {
+    const Image image = select_layers(read_image(path), {"beauty"});
+    double sum = 0.0;
+    for (float v : image.pixels) {
+        ASSERT_TRUE(std::isfinite(v)) << path;
+        sum += v;
+    }
+    EXPECT_GT(sum, 0.0) << path;
+}
+
 nlohmann::json render_cornell_by_time(const std::string& scratch,
                                       const std::vector<std::string>& options, int max_spp) {
     const auto dir = scratch_dir(scratch);
@@ -49,13 +74,7 @@ nlohmann::json render_cornell_by_time(const std::string& scratch,
     if (result.exit_code != 0) {
         return nlohmann::json::object();
     }
-    const Image image = select_layers(read_image(dir / "out.exr"), {"beauty"});
-    double sum = 0.0;
-    for (float v : image.pixels) {
-        EXPECT_TRUE(std::isfinite(v));
-        sum += v;
-    }
-    EXPECT_GT(sum, 0.0);
+    expect_finite_lit_beauty(dir / "out.exr");
     const nlohmann::json stats = nlohmann::json::parse(read_file(dir / "stats.json"));
     const nlohmann::json& frame = stats["frames"][0];
     EXPECT_TRUE(frame.contains("time")) << frame.dump();

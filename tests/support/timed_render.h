@@ -18,6 +18,14 @@ double relative_difference(const Image& a, const Image& b);
 // The mean of pass images weighted by their samples per pixel.
 Image mean_of_passes(const std::vector<Image>& passes, const std::vector<int>& spp);
 
+// The passes' mean (weighted by `spp`) equals `longer`, one render of their total, in every layer
+// within `tolerance` (relative); each pass's beauty differs from it (new samples, not the same).
+void expect_passes_make_the_longer_render(const Image& longer, const std::vector<Image>& passes,
+                                          const std::vector<int>& spp, double tolerance);
+
+// The beauty layer of the image file at `path`: every value finite, their sum positive.
+void expect_finite_lit_beauty(const std::filesystem::path& path);
+
 // `radcache render` of the Cornell box with `options` (--method, --time, size, ...) into
 // scratch_dir(scratch)/out.exr with --stats. Expects exit 0, a finite lit beauty layer and the
 // time split: at least one pass, the passes' samples consecutive from the first pass's one sample
