@@ -70,6 +70,20 @@ void warn_unless_frames_in_range(const FrameRange& frames, const Animation& anim
     log_warning(asked + " reaches outside the scene's frame range " + range + ": " + held);
 }
 
+// FrameHooks::visit_frame: `scene` posed at another frame, with its BVH and scene buffers on
+// `context`'s device for the call.
+std::function<void(int, const std::function<void(const FrameScene&)>&)> visit_frame_hook(
+    Context& context, const Scene& scene) {
+    return [&context, &scene](int other, const std::function<void(const FrameScene&)>& use) {
+        Scene posed = scene;
+        posed.set_frame(other);
+        const Bvh other_bvh = build_bvh(posed.mesh, context.bvh_layout());
+        const DeviceBvh other_device_bvh(context, other_bvh);
+        const DeviceScene other_device_scene(context, posed);
+        use({context, posed, other_device_bvh, other_device_scene, other});
+    };
+}
+
 // Poses the scene at `frame`, renders it with `method` (on every device of `contexts`, the
 // first holding the method's state) and writes its image.
 void render_frame(const RenderJob& job, int frame,
@@ -107,14 +121,7 @@ void render_frame(const RenderJob& job, int frame,
     hooks.intermediate = [&](int spp, const Image& image) {
         write_image(intermediate_path(output, spp), written(image), job.write_options);
     };
-    hooks.visit_frame = [&](int other, const std::function<void(const FrameScene&)>& use) {
-        Scene posed = scene;
-        posed.set_frame(other);
-        const Bvh other_bvh = build_bvh(posed.mesh, context.bvh_layout());
-        const DeviceBvh other_device_bvh(context, other_bvh);
-        const DeviceScene other_device_scene(context, posed);
-        use({context, posed, other_device_bvh, other_device_scene, other});
-    };
+    hooks.visit_frame = visit_frame_hook(context, scene);
     const FrameResult result = method.render_frame(
         {context, scene, device_bvh, device_scene, frame, &peers.frames()}, hooks);
     progress.finish();
@@ -126,6 +133,36 @@ void render_frame(const RenderJob& job, int frame,
     log_note("wrote " + output.string() + " (" + std::to_string(result.image.width) + "x" +
              std::to_string(result.image.height) + ", " + std::to_string(result.spp) + " spp)");
     totals.add_frame(frame, output, result, context);
+}
+
+// --dry-run: the first frame posed and on the device, and what the method would do with it
+// (Method::plan) in the stats file; no image. Returns the exit status.
+int dry_run(const RenderJob& job, int frame, Context& context, Scene& scene, Method& method,
+            const std::string& method_name) {
+    if (static_cast<double>(frame) != scene.frame) {
+        scene.set_frame(frame);
+    }
+    const Bvh bvh = build_bvh(scene.mesh, context.bvh_layout());
+    check_device_memory_need(context, frame_need(context, scene, bvh, method));
+    const DeviceBvh device_bvh(context, bvh);
+    const DeviceScene device_scene(context, scene);
+    FrameHooks hooks;
+    hooks.progress = [](double, const std::string&) {};
+    hooks.intermediate = [](int, const Image&) {};
+    hooks.visit_frame = visit_frame_hook(context, scene);
+    const std::optional<nlohmann::json> plan =
+        method.plan({context, scene, device_bvh, device_scene, frame}, hooks);
+    if (!plan) {
+        log_note("dry run: " + method_name + " renders as its options say; it has nothing to plan");
+    }
+    if (!job.stats.empty()) {
+        const nlohmann::json stats = {{"dry_run", true},
+                                      {"method", method_name},
+                                      {"frame", frame},
+                                      {"plan", plan ? *plan : nlohmann::json(nullptr)}};
+        write_file_atomically(job.stats, stats.dump(2) + "\n");
+    }
+    return 0;
 }
 
 // --list-knobs: the quality knobs of --method, or of every method, as text or (--json) JSON.
@@ -207,6 +244,11 @@ int render(const ParsedArguments& arguments) {
     log_note(std::string(contexts.size() > 1 ? "devices " : "device ") + names + "; " +
              std::to_string(scene.mesh.triangle_count()) + " triangles, " +
              std::to_string(scene.lights.lights.size()) + " lights");
+    if (arguments.has("--dry-run")) {
+        const int status = dry_run(job, first, context, scene, *method, entry.name);
+        outputs.commit();
+        return status;
+    }
     Bvh bvh;
     for (long long frame = first; frame <= last; ++frame) {
         render_frame(job, static_cast<int>(frame), contexts, scene, bvh, *method, totals);

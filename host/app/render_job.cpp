@@ -60,6 +60,9 @@ std::vector<OptionSpec> render_option_specs() {
         {"--half", "", "", ".exr: store half floats"},
         {"--aovs", "", "LIST", ".exr: the layers to write, comma-separated (default all)"},
         {"--stats", "", "FILE", "write timings and counts as JSON"},
+        {"--dry-run", "", "",
+         "decide without rendering: --method auto's pilot and plan (its line on stderr, and in "
+         "--stats); no image is written"},
         {"--quiet", "-q", "", "print nothing but errors"},
         {"--list-knobs", "", "",
          "print the quality knobs of --method (default: of every method) from its option table "

@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,13 @@ class Method {
     // refused here (Error, exit status 2), before any device memory is used.
     virtual DeviceMemoryNeed device_memory_need(const Scene& scene,
                                                 const DeviceInfo& device) const = 0;
+    // What it would do with `frame` without rendering it (render --dry-run), for a method that
+    // decides as it renders (auto: its pilot and plan); none: its options say it all.
+    virtual std::optional<nlohmann::json> plan(const FrameScene& frame, const FrameHooks& hooks) {
+        (void)frame;
+        (void)hooks;
+        return std::nullopt;
+    }
     // Whether its frames can share their work among several devices (FrameScene::peers) with an
     // image that does not depend on the split; a render on several devices refuses the others.
     virtual bool splits_across_devices() const { return false; }

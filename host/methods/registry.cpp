@@ -10,6 +10,7 @@
 // `MethodEntry <entry>_entry();`. The order is --help's.
 #define RC_METHODS(X)          \
     X(path_tracer_method)      \
+    X(auto_method)             \
     X(irradiance_cache_method) \
     X(radiance_cache_method)   \
     X(sdrc_method)             \

@@ -1,0 +1,201 @@
+#include "methods/auto/auto_throughput.h"
+
+#include <unistd.h>
+
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "bvh/device_bvh.h"
+#include "methods/auto/auto_pilot.h"
+#include "methods/auto/auto_runs.h"
+#include "scene/device_scene.h"
+#include "scene/scene_files.h"
+#include "scene/scene_loader.h"
+#include "util/error.h"
+#include "util/log.h"
+#include "util/timing.h"
+
+namespace rc {
+namespace {
+
+// The built-in scene: a diffuse box open towards the camera, lit from above, a Phong 8 sphere
+// (radiance caching's kind of lobe) and a Phong 60 sphere (SDRC's).
+constexpr const char* kThroughputScene = R"({
+    "camera": {"position": [0, 0, -3.4], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 42,
+               "resolution": [48, 48]},
+    "materials": {
+        "white": {"type": "diffuse", "reflectance": [0.7, 0.7, 0.7]},
+        "red": {"type": "diffuse", "reflectance": [0.6, 0.15, 0.1]},
+        "satin": {"type": "phong", "diffuse": 0.4, "specular": 0.3, "exponent": 8},
+        "copper": {"type": "phong", "diffuse": 0.2, "specular": 0.6, "exponent": 60}
+    },
+    "shapes": [
+        {"type": "rectangle", "material": "white",
+         "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}}, {"translate": [0, -1, 0]}]},
+        {"type": "rectangle", "material": "white",
+         "transform": [{"rotate": {"axis": [1, 0, 0], "angle": 90}}, {"translate": [0, 1, 0]}]},
+        {"type": "rectangle", "material": "white",
+         "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 180}}, {"translate": [0, 0, 1]}]},
+        {"type": "rectangle", "material": "red",
+         "transform": [{"rotate": {"axis": [0, 1, 0], "angle": -90}}, {"translate": [1, 0, 0]}]},
+        {"type": "rectangle", "material": "white",
+         "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 90}}, {"translate": [-1, 0, 0]}]},
+        {"type": "rectangle", "material": "white", "emitter": {"type": "area", "radiance": 12},
+         "transform": [{"scale": 0.3}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
+                       {"translate": [0, 0.99, 0]}]},
+        {"type": "sphere", "center": [-0.4, -0.6, 0.2], "radius": 0.38, "material": "copper"},
+        {"type": "sphere", "center": [0.45, -0.7, -0.2], "radius": 0.28, "material": "satin"}
+    ],
+    "render": {"max_depth": 64, "rr_depth": 3}
+})";
+
+constexpr int kSide = 48;
+constexpr int kCameraSpp = 8;
+const char* const kCachingMethods[] = {"ic", "rc", "sdrc"};
+
+std::filesystem::path throughput_file(const Context& context) {
+    const std::filesystem::path& dir = context.options().cache_dir;
+    if (dir.empty()) {
+        return {};
+    }
+    const DeviceInfo& device = context.device();
+    const std::string identity = device.platform_name + "|" + device.platform_version + "|" +
+                                 device.name + "|" + device.driver_version;
+    char name[64];
+    std::snprintf(name, sizeof(name), "auto-throughput-%016zx.json",
+                  std::hash<std::string>{}(identity));
+    return dir / name;
+}
+
+nlohmann::json throughput_json(const DeviceThroughput& t, const Context& context) {
+    return {{"device", context.device().name},
+            {"driver", context.device().driver_version},
+            {"pt_seconds_per_ray", t.pt_seconds_per_ray},
+            {"cache_seconds_per_ray", t.cache_seconds_per_ray},
+            {"camera_seconds_per_ray", t.camera_seconds_per_ray}};
+}
+
+bool read_throughput(const std::filesystem::path& file, DeviceThroughput* t) {
+    std::ifstream in(file);
+    if (!in) {
+        return false;
+    }
+    try {
+        const nlohmann::json json = nlohmann::json::parse(in);
+        t->pt_seconds_per_ray = json.at("pt_seconds_per_ray").get<double>();
+        t->cache_seconds_per_ray =
+            json.at("cache_seconds_per_ray").get<std::map<std::string, double>>();
+        t->camera_seconds_per_ray =
+            json.at("camera_seconds_per_ray").get<std::map<std::string, double>>();
+    } catch (const nlohmann::json::exception&) {
+        return false;  // unreadable: measured again and replaced
+    }
+    for (const char* method : kCachingMethods) {
+        if (t->cache_seconds_per_ray.count(method) == 0 ||
+            t->camera_seconds_per_ray.count(method) == 0) {
+            return false;
+        }
+    }
+    return t->pt_seconds_per_ray > 0.0;
+}
+
+// Writes the figures unless another process has cached its own since (the first write wins, so
+// that every plan on the device reads the same figures); returns the figures the file holds.
+DeviceThroughput cache_throughput(const DeviceThroughput& measured, const Context& context) {
+    const std::filesystem::path& file = measured.file;
+    std::error_code error;
+    std::filesystem::create_directories(file.parent_path(), error);
+    const std::filesystem::path temporary =
+        file.string() + ".tmp" + std::to_string(static_cast<long>(::getpid()));
+    {
+        std::ofstream out(temporary);
+        out << throughput_json(measured, context).dump(2) << "\n";
+    }
+    std::filesystem::create_hard_link(temporary, file, error);  // fails if the file exists
+    std::filesystem::remove(temporary, error);
+    DeviceThroughput cached = measured;
+    if (read_throughput(file, &cached)) {
+        cached.measured_now = true;
+        return cached;
+    }
+    return measured;
+}
+
+struct TimedFrame {
+    FrameResult result;
+    double seconds = 0.0;
+};
+
+TimedFrame timed_frame(const FrameScene& frame, const MethodRun& run, int side, int spp,
+                       const FrameHooks& hooks) {
+    MethodSettings settings;
+    settings.width = side;
+    settings.height = side;
+    settings.spp = spp;
+    settings.layers = {"beauty"};
+    const std::unique_ptr<Method> method = make_method(run, settings);
+    const auto start = SteadyClock::now();
+    TimedFrame timed;
+    timed.result = render_quietly(*method, frame, hooks);
+    timed.seconds = seconds_since(start);
+    return timed;
+}
+
+DeviceThroughput measure_throughput(const FrameScene& frame, const FrameHooks& hooks) {
+    DeviceThroughput t;
+    const TimedFrame pt = timed_frame(frame, {"pt", {}}, kSide, kCameraSpp, hooks);
+    t.pt_seconds_per_ray = pt.seconds / static_cast<double>(std::max<uint64_t>(pt.result.rays, 1));
+    for (const char* method : kCachingMethods) {
+        const MethodRun run{method, {{"--ic-rays", "128"}}};
+        timed_frame(frame, run, 8, 1, hooks);  // its programs built (or loaded) before the timing
+        const TimedFrame cached = timed_frame(frame, run, kSide, kCameraSpp, hooks);
+        const uint64_t cache_rays =
+            std::min(cache_rays_of(cached.result.stats), cached.result.rays);
+        const double cache_seconds = std::min(cached.result.cache_seconds, cached.seconds);
+        t.cache_seconds_per_ray[method] =
+            cache_seconds / static_cast<double>(std::max<uint64_t>(cache_rays, 1));
+        t.camera_seconds_per_ray[method] =
+            (cached.seconds - cache_seconds) /
+            static_cast<double>(std::max<uint64_t>(cached.result.rays - cache_rays, 1));
+    }
+    return t;
+}
+
+}  // namespace
+
+double DeviceThroughput::cache_of(const std::string& method) const {
+    const auto found = cache_seconds_per_ray.find(method);
+    return found != cache_seconds_per_ray.end() ? found->second : cache_seconds_per_ray.at("ic");
+}
+
+double DeviceThroughput::camera_of(const std::string& method) const {
+    const auto found = camera_seconds_per_ray.find(method);
+    return found != camera_seconds_per_ray.end() ? found->second : camera_seconds_per_ray.at("ic");
+}
+
+DeviceThroughput device_throughput(Context& context, const FrameHooks& hooks) {
+    DeviceThroughput cached;
+    cached.file = throughput_file(context);
+    if (!cached.file.empty() && read_throughput(cached.file, &cached)) {
+        return cached;
+    }
+    log_note("auto: measuring this device's throughput once (a few seconds; cached in " +
+             (cached.file.empty() ? std::string("no cache directory") : cached.file.string()) +
+             ")");
+    MemoryFiles files;
+    files.add("throughput/scene.json", kThroughputScene);
+    Scene scene = load_scene("throughput/scene.json", files);
+    const Bvh bvh = build_bvh(scene.mesh, context.bvh_layout());
+    const DeviceBvh device_bvh(context, bvh);
+    const DeviceScene device_scene(context, scene);
+    FrameHooks own = hooks;
+    own.visit_frame = nullptr;
+    DeviceThroughput measured =
+        measure_throughput({context, scene, device_bvh, device_scene, 0}, own);
+    measured.file = cached.file;
+    measured.measured_now = true;
+    return measured.file.empty() ? measured : cache_throughput(measured, context);
+}
+
+}  // namespace rc

@@ -1,0 +1,32 @@
+// This device's seconds per ray for the work `--method auto` plans (docs/auto.md, "Seconds from
+// work"): the path tracer's camera samples, and each caching method's record rays and camera-sample
+// rays. Measured once per device on a small built-in scene and cached beside the kernel binaries
+// (the file names the device and its driver), so that every plan on the device converts work to
+// seconds with the same figures, whatever the machine's load when it plans.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "methods/method.h"
+
+namespace rc {
+
+struct DeviceThroughput {
+    double pt_seconds_per_ray = 0.0;
+    std::map<std::string, double> cache_seconds_per_ray;   // by method: ic, rc, sdrc
+    std::map<std::string, double> camera_seconds_per_ray;  // by method: ic, rc, sdrc
+    std::filesystem::path file;  // where it is cached (empty: no cache directory)
+    bool measured_now = false;   // this call measured it (no cached figures were found)
+
+    double cache_of(const std::string& method) const;
+    double camera_of(const std::string& method) const;
+};
+
+// The cached figures of `context`'s device, or measured now (and cached, unless another process
+// cached its own first: then those). Measuring renders pt, ic, rc and sdrc on the built-in scene
+// (a few seconds on 2 CPU cores), after a first tiny render of each so compilation is not counted.
+DeviceThroughput device_throughput(Context& context, const FrameHooks& hooks);
+
+}  // namespace rc

@@ -1,0 +1,162 @@
+// The plan `--method auto` makes from its pilot's figures (methods/auto/auto_plan.h), on figures
+// given here instead of measured: it never plans beyond the budget, more time never raises its
+// predicted error, a budget the cheapest cache does not fit goes to the path tracer with the
+// reason, fixed samples stay fixed; the materials' servers follow radiance caching's tables and
+// the Phong exponent; the embedded model parses and a broken one is refused by key.
+#include "methods/auto/auto_plan.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "methods/auto/auto_materials.h"
+#include "methods/auto/auto_model.h"
+#include "util/error.h"
+
+namespace rc {
+namespace {
+
+struct Figures {
+    AutoModel model = auto_model();
+    DeviceThroughput throughput;
+    PlanInputs in;
+
+    Figures() {
+        throughput.pt_seconds_per_ray = 1e-7;
+        for (const char* method : {"ic", "rc", "sdrc"}) {
+            throughput.cache_seconds_per_ray[method] = 1e-7;
+            throughput.camera_seconds_per_ray[method] = 1e-7;
+        }
+        in.model = &model;
+        in.throughput = &throughput;
+        in.pixels = 256.0 * 256.0;
+        in.noise.size = {32, 32};
+        in.noise.v_pt = 0.2;
+        in.noise.v_direct = 0.03;
+        in.noise.indirect_fraction = 0.3;
+        in.noise.rays_per_sample = 5.0;
+        CachePilot cache;
+        cache.size = {32, 32};
+        cache.ic_rays = 128;
+        cache.accuracy = 0.35;
+        cache.cache_rays = 200000;
+        cache.camera_rays_per_sample = 4.0;
+        in.cache = cache;
+        in.materials = {{"white", LobeServer::kDiffuse, 0.0, -1.0}};
+        in.cache_run = caching_run(in.materials);
+        in.pilot_seconds = 0.05;
+    }
+};
+
+TEST(AutoPlan, NeverPlansBeyondTheBudget) {
+    Figures f;
+    for (double budget : {1.0, 3.0, 10.0, 30.0, 100.0, 1000.0}) {
+        f.in.budget = budget;
+        const AutoPlan plan = choose_plan(f.in);
+        EXPECT_LE(plan.predicted_seconds + plan.pilot_seconds, budget * (1 + 1e-12)) << plan.line();
+        EXPECT_GE(plan.spp, 1);
+    }
+}
+
+TEST(AutoPlan, MoreTimeNeverRaisesThePredictedError) {
+    Figures f;
+    double last = 1e300;
+    for (double budget = 1.0; budget < 2000.0; budget *= 1.5) {
+        f.in.budget = budget;
+        const AutoPlan plan = choose_plan(f.in);
+        EXPECT_LE(plan.predicted_relmse, last * (1 + 1e-12)) << plan.line();
+        last = plan.predicted_relmse;
+    }
+}
+
+TEST(AutoPlan, ABudgetNoCacheFitsGoesToThePathTracerWithTheReason) {
+    Figures f;
+    f.in.cache->cache_rays = 1e10;  // every cache takes far longer than the budget
+    f.in.budget = 10.0;
+    const AutoPlan plan = choose_plan(f.in);
+    EXPECT_EQ(plan.run.method, "pt");
+    EXPECT_GT(plan.spp, 1);
+    EXPECT_NE(plan.line().find("the cheapest cache needs about"), std::string::npos) << plan.line();
+}
+
+TEST(AutoPlan, FixedSamplesStayFixedAndWithoutTimeTheKnobsAreTheDefaults) {
+    Figures f;
+    f.in.spp = 7;
+    f.in.spp_fixed = true;
+    f.in.budget = 100.0;
+    EXPECT_EQ(choose_plan(f.in).spp, 7);
+    f.in.budget = 0.0;
+    const AutoPlan plan = choose_plan(f.in);
+    EXPECT_EQ(plan.spp, 7);
+    EXPECT_EQ(plan.run.method, "ic");
+    EXPECT_EQ(plan.accuracy, 0.35);
+    EXPECT_EQ(plan.ic_rays, 1024);
+}
+
+TEST(AutoPlan, APilotBeyondItsShareOfTheBudgetIsAnError) {
+    Figures f;
+    f.in.pilot_seconds = 2.0;
+    f.in.budget = 5.0;
+    try {
+        choose_plan(f.in);
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.exit_code(), kExitUsage);
+        EXPECT_NE(std::string(e.what()).find("--time 5: too short for --method auto"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(AutoMaterials, RadianceCachingWhereItsTablesHoldTheLobeElseSdrcElsePathTracing) {
+    const AutoModel& model = auto_model();
+    Material diffuse;
+    diffuse.name = "wall";
+    Material broad;
+    broad.name = "satin";
+    broad.kind = MaterialKind::kPhong;
+    broad.specular = glm::vec3(0.3f);
+    broad.exponent = 16;
+    Material sharp = broad;
+    sharp.name = "copper";
+    sharp.exponent = 200;
+    Material mirror = broad;
+    mirror.name = "mirror";
+    mirror.exponent = 10000;
+    const nlohmann::json tables =
+        nlohmann::json::array({{{"name", "satin"}, {"order", 10}, {"fallback_fraction", 0.1}},
+                               {{"name", "copper"}, {"order", 0}, {"fallback_fraction", 1.0}},
+                               {{"name", "mirror"}, {"order", 0}, {"fallback_fraction", 1.0}}});
+    const auto choices = choose_lobe_servers({diffuse, broad, sharp, mirror}, model, &tables);
+    ASSERT_EQ(choices.size(), 4u);
+    EXPECT_EQ(choices[0].server, LobeServer::kDiffuse);
+    EXPECT_EQ(choices[1].server, LobeServer::kRadianceCache);
+    EXPECT_EQ(choices[2].server, LobeServer::kSdrc);
+    EXPECT_EQ(choices[3].server, LobeServer::kPath);
+    // One glossy cache for every glossy lobe is that method; a mix is irradiance caching with the
+    // per-material list.
+    EXPECT_EQ(caching_run({choices[0], choices[1]}).method, "rc");
+    EXPECT_EQ(caching_run({choices[0], choices[2]}).method, "sdrc");
+    const MethodRun mixed = caching_run(choices);
+    EXPECT_EQ(mixed.command_line(), "ic --glossy satin=rc,copper=sdrc,mirror=path");
+    EXPECT_EQ(model_key(choices), "sdrc");
+}
+
+TEST(AutoModel, TheEmbeddedModelParsesAndABrokenOneIsRefusedByKey) {
+    const AutoModel& model = auto_model();
+    for (const char* method : {"ic", "rc", "sdrc"}) {
+        EXPECT_GT(model.cost_of(method).scale, 0.0) << method;
+        EXPECT_NO_THROW(model.error_of(method));
+    }
+    EXPECT_FALSE(model.accuracies.empty());
+    nlohmann::json broken = nlohmann::json::parse(R"({"pilot": {"divisor": 8}})");
+    try {
+        parse_auto_model(broken);
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("'pilot.min_side'"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace rc

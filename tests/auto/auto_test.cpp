@@ -1,0 +1,242 @@
+// `--method auto` through the command line (docs/auto.md): the per-material choice on scenes whose
+// lobes say what serves them (a diffuse box; a Phong 10 000 near-mirror; a Phong 16 and a Phong
+// 200 sphere; a static clip and one whose every object moves fast), the rules for --spp without
+// --time and for a budget too small for the pilot, a scene without emitters, --dry-run, --time
+// kept, and the same plan and image from the same seed and options.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "glossy_scenes.h"
+#include "image/image.h"
+#include "image/image_io.h"
+#include "test_support.h"
+#include "timed_render.h"
+#include "util/file_io.h"
+
+namespace rc {
+namespace {
+
+std::string cornell_box() {
+    return (test::source_dir() / "scenes/cornell-box/scene.json").string();
+}
+
+// A diffuse box lit from above with a sphere of each given material (JSON) in a row.
+std::string spheres_scene(const std::string& scratch, const std::vector<std::string>& materials,
+                          const std::string& animation = "") {
+    const auto dir = test::scratch_dir(scratch);
+    std::string material_json = R"("white": {"type": "diffuse", "reflectance": 0.7},
+        "red": {"type": "diffuse", "reflectance": [0.6, 0.1, 0.1]})";
+    std::string spheres;
+    for (size_t i = 0; i < materials.size(); ++i) {
+        const std::string name = "m" + std::to_string(i);
+        material_json += ",\n\"" + name + "\": " + materials[i];
+        const double x = -0.5 + (materials.size() > 1 ? i / (materials.size() - 1.0) : 0.5);
+        spheres += R"(, {"type": "sphere", "name": "ball)" + std::to_string(i) +
+                   R"(", "center": [)" + std::to_string(x) + R"(, -0.6, 0], "radius": 0.35,
+                   "material": ")" +
+                   name + "\"}";
+    }
+    std::ofstream(dir / "scene.json") << R"({
+        "camera": {"position": [0, 0, -3.4], "look_at": [0, 0, 0], "fov": 42, "resolution": [24, 24]},
+        "materials": {)" + material_json + R"(},
+        "shapes": [
+            {"type": "rectangle", "name": "floor", "material": "white",
+             "transform": [{"rotate": {"axis": [1, 0, 0], "angle": -90}}, {"translate": [0, -1, 0]}]},
+            {"type": "rectangle", "name": "back", "material": "white",
+             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": 180}}, {"translate": [0, 0, 1]}]},
+            {"type": "rectangle", "name": "left", "material": "red",
+             "transform": [{"rotate": {"axis": [0, 1, 0], "angle": -90}}, {"translate": [1, 0, 0]}]},
+            {"type": "rectangle", "name": "light", "material": "white",
+             "emitter": {"type": "area", "radiance": 12},
+             "transform": [{"scale": 0.3}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
+                           {"translate": [0, 0.99, 0]}]})" +
+                                             spheres + "]" + animation + "}";
+    return (dir / "scene.json").string();
+}
+
+// `render SCENE --method auto --dry-run` with `options`: the plan of its --stats (exit 0 asserted).
+nlohmann::json dry_run(const std::string& scene, const std::string& scratch,
+                       const std::vector<std::string>& options) {
+    const auto dir = test::scratch_dir(scratch);
+    std::vector<std::string> args = {
+        "render", scene, "--method", "auto", "--dry-run", "--stats", (dir / "plan.json").string()};
+    args.insert(args.end(), options.begin(), options.end());
+    if (std::find(options.begin(), options.end(), "-o") == options.end()) {
+        args.insert(args.end(), {"-o", (dir / "out.exr").string()});
+    }
+    const test::CommandResult result = test::run_radcache(args);
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.exr")) << "a dry run writes no image";
+    EXPECT_NE(result.output.find("auto: "), std::string::npos) << result.output;
+    return nlohmann::json::parse(read_file(dir / "plan.json")).at("plan");
+}
+
+std::string server_of(const nlohmann::json& plan, const std::string& material) {
+    for (const nlohmann::json& m : plan.at("materials")) {
+        if (m.at("name") == material) {
+            return m.at("server").get<std::string>();
+        }
+    }
+    ADD_FAILURE() << "no material " << material << " in " << plan.dump();
+    return "";
+}
+
+TEST(AutoChoice, ADiffuseSceneCachesEveryMaterialWithIrradianceCaching) {
+    const nlohmann::json plan =
+        dry_run(cornell_box(), "auto_diffuse", {"--spp", "4", "--width", "24", "--height", "24"});
+    ASSERT_FALSE(plan.at("materials").empty());
+    for (const nlohmann::json& m : plan.at("materials")) {
+        EXPECT_EQ(m.at("server"), "ic") << m.dump();
+    }
+    EXPECT_EQ(plan.at("method"), "ic");
+    EXPECT_EQ(plan.at("pilot").at("cache").at("run").get<std::string>().rfind("ic ", 0), 0u);
+}
+
+TEST(AutoChoice, ANearMirrorIsPathTraced) {
+    const std::string scene = spheres_scene(
+        "auto_mirror",
+        {R"({"type": "phong", "diffuse": 0.02, "specular": 0.9, "exponent": 10000})"});
+    const nlohmann::json plan = dry_run(scene, "auto_mirror_plan", {"--spp", "2"});
+    EXPECT_EQ(server_of(plan, "m0"), "pt");
+    EXPECT_EQ(server_of(plan, "white"), "ic");
+    // Radiance caching's tables leave the whole lobe to Monte Carlo.
+    for (const nlohmann::json& m : plan.at("materials")) {
+        if (m.at("name") == "m0") {
+            EXPECT_EQ(m.at("rc_fallback").get<double>(), 1.0);
+        }
+    }
+}
+
+TEST(AutoChoice, AStaticClipIsCachedOverTimeAFastOneIsNot) {
+    const nlohmann::json still = dry_run(
+        cornell_box(), "auto_still_clip",
+        {"--spp", "2", "--width", "16", "--height", "16", "--frames", "0:3", "-o", "f####.exr"});
+    EXPECT_TRUE(still.at("temporal").get<bool>()) << still.dump();
+    EXPECT_NE(still.at("command").get<std::string>().find("--temporal"), std::string::npos);
+    // Every sphere crosses the box in three frames.
+    const std::string animation = R"(, "animation": {"frame_start": 0, "frame_end": 3, "tracks": [
+        {"target": "shape:ball0", "keyframes": [{"frame": 0, "translate": [-1.2, 0, 0]},
+                                                {"frame": 3, "translate": [1.2, 0, 0]}]},
+        {"target": "shape:ball1", "keyframes": [{"frame": 0, "translate": [1.2, 0, 0]},
+                                                {"frame": 3, "translate": [-1.2, 0, 0]}]}]})";
+    const std::string fast = spheres_scene("auto_fast_clip",
+                                           {R"({"type": "diffuse", "reflectance": 0.5})",
+                                            R"({"type": "diffuse", "reflectance": 0.3})"},
+                                           animation);
+    const nlohmann::json moving =
+        dry_run(fast, "auto_fast_clip_plan", {"--spp", "2", "--frames", "0:3", "-o", "f####.exr"});
+    EXPECT_FALSE(moving.at("temporal").get<bool>()) << moving.dump();
+    EXPECT_GT(moving.at("motion").get<double>(), still.at("motion").get<double>());
+}
+
+TEST(AutoRules, SppWithoutTimeFixesTheSamplesAndKeepsTheDefaultKnobs) {
+    const nlohmann::json plan =
+        dry_run(cornell_box(), "auto_spp", {"--spp", "8", "--width", "16", "--height", "16"});
+    EXPECT_EQ(plan.at("spp").get<int>(), 8);
+    EXPECT_EQ(plan.at("accuracy").get<double>(), 0.35);
+    EXPECT_EQ(plan.at("ic_rays").get<int>(), 1024);
+}
+
+TEST(AutoRules, SppWithTimeFixesTheSamplesAndTheKnobsFitTheBudget) {
+    const nlohmann::json plan =
+        dry_run(cornell_box(), "auto_spp_time",
+                {"--spp", "3", "--time", "20", "--width", "16", "--height", "16"});
+    EXPECT_EQ(plan.at("spp").get<int>(), 3);
+    EXPECT_LE(plan.at("predicted").at("seconds").get<double>() +
+                  plan.at("pilot").at("seconds").get<double>(),
+              20.0);
+}
+
+TEST(AutoRules, ABudgetTooSmallForThePilotIsRefused) {
+    const auto dir = test::scratch_dir("auto_tiny_budget");
+    const test::CommandResult result =
+        test::run_radcache({"render", cornell_box(), "--method", "auto", "--time", "0.0001", "-o",
+                            (dir / "out.exr").string(), "--width", "16", "--height", "16"});
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("--time 0.0001: too short for --method auto"), std::string::npos)
+        << result.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.exr"));
+}
+
+TEST(AutoRules, ASceneWithoutEmittersIsWarnedAndRenders) {
+    const auto dir = test::scratch_dir("auto_dark");
+    std::ofstream(dir / "scene.json") << R"({
+        "camera": {"position": [0, 0, -3], "look_at": [0, 0, 0], "fov": 40, "resolution": [12, 12]},
+        "shapes": [{"type": "cube"}]})";
+    const test::CommandResult result =
+        test::run_radcache({"render", (dir / "scene.json").string(), "--method", "auto", "--spp",
+                            "2", "-o", (dir / "out.exr").string()});
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("warning"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("emitter"), std::string::npos) << result.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out.exr"));
+}
+
+TEST(AutoRules, ADryRunOfAnotherMethodSaysItHasNothingToPlan) {
+    const auto dir = test::scratch_dir("auto_dry_pt");
+    const test::CommandResult result =
+        test::run_radcache({"render", cornell_box(), "--method", "pt", "--dry-run", "-o",
+                            (dir / "out.exr").string(), "--width", "8", "--height", "8"});
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("nothing to plan"), std::string::npos) << result.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.exr"));
+}
+
+// The plan without what measures the machine itself (the pilot's wall clock).
+nlohmann::json plan_without_clock(nlohmann::json plan) {
+    plan.at("pilot").erase("measured_seconds");
+    plan.erase("throughput");
+    return plan;
+}
+
+TEST(AutoDeterminism, TheSameSeedAndOptionsGiveTheSamePlanAndImage) {
+    const auto dir = test::scratch_dir("auto_same");
+    std::vector<nlohmann::json> plans;
+    std::vector<Image> images;
+    for (int run = 0; run < 2; ++run) {
+        const std::string stats = (dir / ("stats" + std::to_string(run) + ".json")).string();
+        const std::string out = (dir / ("out" + std::to_string(run) + ".exr")).string();
+        const test::CommandResult result = test::run_radcache(
+            {"render", cornell_box(), "--method", "auto", "--time", "4", "--width", "24",
+             "--height", "24", "--seed", "5", "-o", out, "--stats", stats, "--quiet"});
+        ASSERT_EQ(result.exit_code, 0) << result.output;
+        const nlohmann::json frame = nlohmann::json::parse(read_file(stats)).at("frames").at(0);
+        plans.push_back(plan_without_clock(frame.at("auto")));
+        images.push_back(read_image(out));
+    }
+    EXPECT_EQ(plans[0], plans[1]);
+    EXPECT_TRUE(test::bitwise_equal(images[0], images[1]));
+    // The layers every method auto may choose writes, whichever it chose.
+    std::vector<std::string> layers = layer_names(images[0]);
+    std::sort(layers.begin(), layers.end());
+    EXPECT_EQ(layers,
+              (std::vector<std::string>{"albedo", "beauty", "direct", "indirect", "normal"}));
+}
+
+TEST(AutoTime, TheRenderKeepsToItsBudget) {
+    const auto dir = test::scratch_dir("auto_time");
+    // A first dry run measures the device's throughput if no earlier test has.
+    dry_run(cornell_box(), "auto_time_warm", {"--spp", "1", "--width", "8", "--height", "8"});
+    const double budget = 6.0;
+    const test::CommandResult result = test::run_radcache(
+        {"render", cornell_box(), "--method", "auto", "--time", "6", "--width", "32", "--height",
+         "32", "-o", (dir / "out.exr").string(), "--stats", (dir / "stats.json").string(), "-q"});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const nlohmann::json stats = nlohmann::json::parse(read_file(dir / "stats.json"));
+    const nlohmann::json& plan = stats.at("frames").at(0).at("auto");
+    // The plan fits the budget by its own prediction; the render keeps to it within a generous
+    // bound (the precise figures are tools/bench/auto.py's).
+    EXPECT_LE(plan.at("predicted").at("seconds").get<double>() +
+                  plan.at("pilot").at("seconds").get<double>(),
+              budget);
+    EXPECT_LT(stats.at("seconds").at("render").get<double>(), 4.0 * budget);
+    test::expect_finite_lit_beauty(dir / "out.exr");
+}
+
+}  // namespace
+}  // namespace rc

@@ -1,0 +1,260 @@
+#!/usr/bin/env python3
+"""Measures and fits the model `radcache render --method auto` plans with (docs/auto.md).
+
+  tools/auto_model.py measure [--scenes cornell-box two-rooms glossy-box] [--sizes 64 128]
+                              [--out build/auto_model]
+  tools/auto_model.py fit [--data build/auto_model/dataset.json]
+                          [--write host/methods/auto/auto_model.json]
+
+`measure` renders (skipping a run whose stats file OUT already holds), per scene and image width: auto's pilot (`--dry-run`: the path tracer's noise
+v_pt, v_dir and the indirect share f), each caching method's cache pilot (the pilot's size, 1/8 of
+the rays, one sample) and the same method at the full size over a small grid of accuracies, rays
+per record and samples per pixel: its cache rays W and its relMSE against the scene's reference
+(net of the reference's noise). Every run lands in OUT/dataset.json.
+
+`fit` fits, per caching method, the cost law W = scale W_p (P/P_p)^gamma (R/R_p)^rho
+(a_p/a)^alpha s^sigma (least squares in logarithms) and the error law relMSE =
+(delta v_dir + phi v_ind)/s + beta a^2 f^2 + kappa v_ind/R (non-negative least squares on relative residuals), prints each run's
+predicted against measured figures, and writes the constants into the model file (its other
+sections kept). The C++ build embeds that file. numpy only.
+"""
+
+import argparse
+import datetime
+import itertools
+import json
+import os
+import subprocess
+import sys
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+sys.path.insert(0, os.path.join(ROOT, "tools", "bench"))
+import references  # noqa: E402
+from arg_types import positive_int  # noqa: E402
+from radcache_process import run  # noqa: E402
+
+MODEL = os.path.join(ROOT, "host", "methods", "auto", "auto_model.json")
+SHARED_REFERENCES = os.path.join(ROOT, "..", "shared", "references")
+GLOSSY_METHODS = ["ic", "rc", "sdrc"]
+KNOBS = [(0.35, 1024), (0.2, 512), (0.5, 256)]  # (accuracy, rays per record)
+PILOT_RAYS = 128  # the pilot's: the default 1024 over the model's rays_divisor 8
+
+
+def reference_of(scene):
+    """The scene's reference: the 65 536-spp one of ../shared/references when there is one."""
+    shared = os.path.join(SHARED_REFERENCES, scene + ".exr")
+    if os.path.exists(shared):
+        return shared
+    return references.reference_path(os.path.join(ROOT, "scenes", scene))
+
+
+def scene_json(scene):
+    return os.path.join(ROOT, "scenes", scene, "scene.json")
+
+
+def camera_size(scene, width):
+    """width and the height of the scene camera's aspect."""
+    with open(scene_json(scene)) as f:
+        text = references.strip_comments(f.read())
+    w, h = json.loads(text)["camera"]["resolution"]
+    return width, max(1, round(width * h / w))
+
+
+def frame_stats(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def cache_rays(frame):
+    rays = frame.get("record_rays", 0)
+    for cache in ("radiance_cache", "sdrc"):
+        rays += frame.get(cache, {}).get("record_rays", 0)
+    return rays
+
+
+def run_unless_done(result, args):
+    """radcache ARGS unless `result`, the file it writes, exists (from an earlier measurement)."""
+    if not os.path.exists(result):
+        run(args)
+
+
+def relmse(image, reference, out):
+    path = image + ".compare.json"
+    run_unless_done(path, ["compare", image, reference, "--json", path])
+    with open(path) as f:
+        c = json.load(f)
+    return c["relmse_net"] if c.get("relmse_net") is not None else c["relmse"]
+
+
+def has_glossy(scene):
+    with open(scene_json(scene)) as f:
+        materials = json.loads(references.strip_comments(f.read())).get("materials", {})
+    return any(m.get("type") in ("phong", "ward") for m in materials.values())
+
+
+def measure_scene(scene, width, out, rows):
+    w, h = camera_size(scene, width)
+    size = ["--width", str(w), "--height", str(h)]
+    name = "%s-%d" % (scene, w)
+    pilot_stats = os.path.join(out, name + ".pilot.json")
+    run_unless_done(pilot_stats, ["render", scene_json(scene), "--method", "auto", "--dry-run",
+                                  "--time", "1000", "--stats", pilot_stats, "--quiet"] + size)
+    plan = frame_stats(pilot_stats)["plan"]
+    pilot = plan["pilot"]
+    noise = {k: pilot[k] for k in ("v_pt", "v_direct", "indirect_fraction")}
+    methods = GLOSSY_METHODS if has_glossy(scene) else ["ic"]
+    for method in methods:
+        cache_pilot = os.path.join(out, "%s-%s.cache-pilot.json" % (name, method))
+        run_unless_done(cache_pilot, [
+             "render", scene_json(scene), "--method", method, "--spp", "1", "--ic-rays",
+             str(PILOT_RAYS), "--width", str(pilot["width"]), "--height", str(pilot["height"]),
+             "--aovs", "beauty", "-o", os.path.join(out, "pilot.exr"), "--stats", cache_pilot,
+             "--quiet"])
+        pilot_frame = frame_stats(cache_pilot)["frames"][0]
+        spps = [4, 32] if width >= 128 else [8]
+        for (accuracy, rays), spp in itertools.product(KNOBS, spps):
+            stem = os.path.join(out, "%s-%s-a%g-r%d-s%d" % (name, method, accuracy, rays, spp))
+            run_unless_done(stem + ".json", [
+                "render", scene_json(scene), "--method", method, "--spp", str(spp),
+                "--accuracy", "%g" % accuracy, "--ic-rays", str(rays), "-o", stem + ".exr",
+                "--stats", stem + ".json", "--quiet"] + size)
+            stats = frame_stats(stem + ".json")
+            frame = stats["frames"][0]
+            row = {"scene": scene, "method": method, "width": w, "height": h,
+                   "accuracy": accuracy, "rays": rays, "spp": spp,
+                   "pilot_width": pilot["width"], "pilot_height": pilot["height"],
+                   "pilot_rays": PILOT_RAYS, "pilot_accuracy": 0.35,
+                   "pilot_cache_rays": cache_rays(pilot_frame),
+                   "cache_rays": cache_rays(frame),
+                   "render_seconds": stats["seconds"]["render"],
+                   "relmse": relmse(stem + ".exr", reference_of(scene), out)}
+            row.update(noise)
+            rows.append(row)
+            print("%s %s a=%g R=%d s=%d: W %.3g (pilot %.3g), relMSE %.3e, %.1f s" % (
+                scene, method, accuracy, rays, spp, row["cache_rays"], row["pilot_cache_rays"],
+                row["relmse"], row["render_seconds"]), flush=True)
+
+
+def measure(args):
+    """Every scene and size not yet in OUT/dataset.json (the file is rewritten after each, so an
+    interrupted measurement goes on where it stopped)."""
+    os.makedirs(args.out, exist_ok=True)
+    path = os.path.join(args.out, "dataset.json")
+    rows = []
+    if os.path.exists(path):
+        with open(path) as f:
+            rows = json.load(f)["rows"]
+    git = subprocess.run(["git", "-C", ROOT, "describe", "--always", "--dirty"],
+                         capture_output=True, text=True).stdout.strip()
+    for scene in args.scenes:
+        for width in args.sizes:
+            if any(r["scene"] == scene and r["width"] == width for r in rows):
+                continue
+            measure_scene(scene, width, args.out, rows)
+            with open(path, "w") as f:
+                json.dump({"date": datetime.date.today().isoformat(), "git": git, "rows": rows},
+                          f, indent=1)
+    print("wrote %s (%d runs)" % (path, len(rows)))
+
+
+def fit_cost(rows, np):
+    """scale, gamma, rho, alpha, sigma by least squares on log(W / W_p)."""
+    a = np.array([[1.0,
+                   np.log(r["width"] * r["height"] / (r["pilot_width"] * r["pilot_height"])),
+                   np.log(r["rays"] / r["pilot_rays"]),
+                   np.log(r["pilot_accuracy"] / r["accuracy"]),
+                   np.log(r["spp"])] for r in rows])
+    y = np.array([np.log(max(r["cache_rays"], 1) / max(r["pilot_cache_rays"], 1)) for r in rows])
+    coef = np.linalg.lstsq(a, y, rcond=None)[0]
+    return {"scale": float(np.exp(coef[0])), "gamma": max(0.0, float(coef[1])),
+            "rho": max(0.0, float(coef[2])), "alpha": max(0.0, float(coef[3])),
+            "sigma": max(0.0, float(coef[4]))}
+
+
+ERROR_CONSTANTS = ["delta", "phi", "beta", "kappa"]
+
+
+def error_features(r):
+    v_ind = max(r["v_pt"] - r["v_direct"], 0.0)
+    f = r["indirect_fraction"]
+    return [r["v_direct"] / r["spp"], v_ind / r["spp"], r["accuracy"] ** 2 * f * f,
+            v_ind / r["rays"]]
+
+
+def fit_error(rows, np):
+    """delta, phi, beta, kappa >= 0 minimising the relative residuals (every active set tried)."""
+    x = np.array([error_features(r) for r in rows])
+    y = np.array([max(r["relmse"], 1e-12) for r in rows])
+    weight = 1.0 / y
+    best = None
+    n = len(ERROR_CONSTANTS)
+    for active in itertools.product([False, True], repeat=n):
+        cols = [i for i in range(n) if active[i]]
+        coef = np.zeros(n)
+        if cols:
+            sol = np.linalg.lstsq(x[:, cols] * weight[:, None], y * weight, rcond=None)[0]
+            if (sol < 0).any():
+                continue
+            coef[cols] = sol
+        residual = float(np.sum(((x @ coef - y) * weight) ** 2))
+        if best is None or residual < best[0]:
+            best = (residual, coef)
+    return {name: float(c) for name, c in zip(ERROR_CONSTANTS, best[1])}
+
+
+def predicted_error(r, e):
+    return sum(e[name] * x for name, x in zip(ERROR_CONSTANTS, error_features(r)))
+
+
+def predicted_cost(r, c):
+    return (c["scale"] * r["pilot_cache_rays"] *
+            (r["width"] * r["height"] / (r["pilot_width"] * r["pilot_height"])) ** c["gamma"] *
+            (r["rays"] / r["pilot_rays"]) ** c["rho"] *
+            (r["pilot_accuracy"] / r["accuracy"]) ** c["alpha"] * r["spp"] ** c["sigma"])
+
+
+def fit(args):
+    import numpy as np
+    with open(args.data) as f:
+        data = json.load(f)
+    with open(args.write) as f:
+        model = json.load(f)
+    print("| scene | method | size | a | R | spp | W / predicted | relMSE | predicted |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    for method in sorted({r["method"] for r in data["rows"]}):
+        rows = [r for r in data["rows"] if r["method"] == method]
+        model["cost"][method] = {k: round(v, 4) for k, v in fit_cost(rows, np).items()}
+        model["error"][method] = {k: float("%.4g" % v) for k, v in fit_error(rows, np).items()}
+        for r in rows:
+            print("| %s | %s | %dx%d | %g | %d | %d | %.2f | %.2e | %.2e |" % (
+                r["scene"], method, r["width"], r["height"], r["accuracy"], r["rays"], r["spp"],
+                r["cache_rays"] / predicted_cost(r, model["cost"][method]), r["relmse"],
+                predicted_error(r, model["error"][method])))
+    model["fitted"] = ("tools/auto_model.py fit, %s, from %d runs measured %s at git %s (%s)" % (
+        datetime.date.today().isoformat(), len(data["rows"]), data["date"], data["git"],
+        ", ".join(sorted({r["scene"] for r in data["rows"]}))))
+    with open(args.write, "w") as f:
+        f.write(json.dumps(model, indent=4) + "\n")
+    print("wrote %s" % args.write)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    sub = parser.add_subparsers(dest="command", required=True)
+    m = sub.add_parser("measure", help="render the runs the fit reads")
+    m.add_argument("--scenes", nargs="+", default=["cornell-box", "two-rooms", "glossy-box"])
+    m.add_argument("--sizes", nargs="+", type=positive_int, default=[64, 128])
+    m.add_argument("--out", default=os.path.join(ROOT, "build", "auto_model"))
+    f = sub.add_parser("fit", help="fit the constants and write the model file")
+    f.add_argument("--data", default=os.path.join(ROOT, "build", "auto_model", "dataset.json"))
+    f.add_argument("--write", default=MODEL)
+    args = parser.parse_args()
+    if args.command == "measure":
+        measure(args)
+    else:
+        fit(args)
+
+
+if __name__ == "__main__":
+    main()
