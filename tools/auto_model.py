@@ -14,7 +14,8 @@ per record and samples per pixel: its cache rays W and its relMSE against the sc
 
 `fit` fits, per caching method, the cost law W = scale W_p (P/P_p)^gamma (R/R_p)^rho
 (a_p/a)^alpha s^sigma (least squares in logarithms) and the error law relMSE =
-(delta v_dir + phi v_ind)/s + beta a^2 f^2 + kappa v_ind/R (non-negative least squares on relative residuals), prints each run's
+(delta v_dir + phi v_ind)/s + beta a^2 f^2 + kappa v_ind/R (non-negative least squares on relative
+residuals, refined to least squares of log(predicted / measured)), prints each run's
 predicted against measured figures, and writes the constants into the model file (its other
 sections kept). The C++ build embeds that file. numpy only.
 """
@@ -35,18 +36,9 @@ from arg_types import positive_int  # noqa: E402
 from radcache_process import run  # noqa: E402
 
 MODEL = os.path.join(ROOT, "host", "methods", "auto", "auto_model.json")
-SHARED_REFERENCES = os.path.join(ROOT, "..", "shared", "references")
 GLOSSY_METHODS = ["ic", "rc", "sdrc"]
 KNOBS = [(0.35, 1024), (0.2, 512), (0.5, 256)]  # (accuracy, rays per record)
 PILOT_RAYS = 128  # the pilot's: the default 1024 over the model's rays_divisor 8
-
-
-def reference_of(scene):
-    """The scene's reference: the 65 536-spp one of ../shared/references when there is one."""
-    shared = os.path.join(SHARED_REFERENCES, scene + ".exr")
-    if os.path.exists(shared):
-        return shared
-    return references.reference_path(os.path.join(ROOT, "scenes", scene))
 
 
 def scene_json(scene):
@@ -128,7 +120,9 @@ def measure_scene(scene, width, out, rows):
                    "pilot_cache_rays": cache_rays(pilot_frame),
                    "cache_rays": cache_rays(frame),
                    "render_seconds": stats["seconds"]["render"],
-                   "relmse": relmse(stem + ".exr", reference_of(scene), out)}
+                   "relmse": relmse(stem + ".exr",
+                                    references.best_reference_path(os.path.dirname(scene_json(scene))),
+                                    out)}
             row.update(noise)
             rows.append(row)
             print("%s %s a=%g R=%d s=%d: W %.3g (pilot %.3g), relMSE %.3e, %.1f s" % (
@@ -200,7 +194,34 @@ def fit_error(rows, np):
         residual = float(np.sum(((x @ coef - y) * weight) ** 2))
         if best is None or residual < best[0]:
             best = (residual, coef)
-    return {name: float(c) for name, c in zip(ERROR_CONSTANTS, best[1])}
+    coef = refine_in_logarithms(x, y, best[1], np)
+    return {name: float(c) for name, c in zip(ERROR_CONSTANTS, coef)}
+
+
+def refine_in_logarithms(x, y, start, np, steps=300):
+    """The constants minimising sum log(predicted / measured)^2 (over- and under-prediction by
+    the same factor weigh the same), by Levenberg-Marquardt on their logarithms from `start`
+    (a constant at 0 starts at 1e-9 of the largest feature's scale)."""
+    floor = 1e-9 * np.maximum(y.max() / np.maximum(x.max(axis=0), 1e-300), 1e-300)
+    theta = np.log(np.maximum(start, floor))
+    damping = 1e-3
+
+    def residuals(t):
+        return np.log(x @ np.exp(t)) - np.log(y)
+
+    r = residuals(theta)
+    for _ in range(steps):
+        c = np.exp(theta)
+        jacobian = (x * c) / (x @ c)[:, None]
+        normal = jacobian.T @ jacobian
+        step = np.linalg.solve(normal + damping * np.diag(np.diag(normal) + 1e-12),
+                               -jacobian.T @ r)
+        trial = residuals(theta + step)
+        if trial @ trial < r @ r:
+            theta, r, damping = theta + step, trial, damping * 0.5
+        else:
+            damping *= 4.0
+    return np.exp(theta)
 
 
 def predicted_error(r, e):
@@ -225,7 +246,8 @@ def fit(args):
     for method in sorted({r["method"] for r in data["rows"]}):
         rows = [r for r in data["rows"] if r["method"] == method]
         model["cost"][method] = {k: round(v, 4) for k, v in fit_cost(rows, np).items()}
-        model["error"][method] = {k: float("%.4g" % v) for k, v in fit_error(rows, np).items()}
+        wide = [r for r in rows if r["width"] >= args.error_min_width] or rows
+        model["error"][method] = {k: float("%.4g" % v) for k, v in fit_error(wide, np).items()}
         for r in rows:
             print("| %s | %s | %dx%d | %g | %d | %d | %.2f | %.2e | %.2e |" % (
                 r["scene"], method, r["width"], r["height"], r["accuracy"], r["rays"], r["spp"],
@@ -249,6 +271,10 @@ def main():
     f = sub.add_parser("fit", help="fit the constants and write the model file")
     f.add_argument("--data", default=os.path.join(ROOT, "build", "auto_model", "dataset.json"))
     f.add_argument("--write", default=MODEL)
+    f.add_argument("--error-min-width", type=positive_int, default=128,
+                   help="fit the error law to runs at least this wide only (default %(default)s: "
+                        "at fewer pixels the light's edges at a few samples dominate the error, "
+                        "which the law does not model); the cost law is fitted to every run")
     args = parser.parse_args()
     if args.command == "measure":
         measure(args)

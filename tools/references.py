@@ -103,6 +103,28 @@ def reference_path(scene_dir, frame=None):
     return os.path.join(scene_dir, reference_name(end > start, frame))
 
 
+SHARED_REFERENCES = os.path.normpath(os.path.join(ROOT, "..", "shared", "references"))
+
+
+def best_reference_path(scene_dir):
+    """A still scene's least noisy reference: the 65 536-spp one of ../shared/references
+    (NAME.exr) where there is one, else its shipped reference.exr."""
+    shared = os.path.join(SHARED_REFERENCES, os.path.basename(os.path.normpath(scene_dir)) + ".exr")
+    return shared if os.path.exists(shared) else reference_path(scene_dir)
+
+
+def require_references(parser, scenes):
+    """Stops `parser` with one line for a shipped scene (scenes/NAME) that does not exist or has
+    no reference (the benchmark scripts' --scenes)."""
+    for scene in scenes:
+        try:
+            reference = reference_path(os.path.join(ROOT, "scenes", scene))
+        except ReferenceError as e:
+            parser.error("--scenes %s: %s" % (scene, e))
+        if not os.path.isfile(reference):
+            parser.error("--scenes %s: the scene has no reference (%s)" % (scene, reference))
+
+
 def record(stats, scene_dir, dest, command, git, date):
     """The records of one reference render: {path: record} for every frame in its --stats."""
     animated = is_animated(os.path.join(scene_dir, "scene.json"))

@@ -29,7 +29,8 @@ every curve sets and pt's varies, is the render's own setting, not a method's kn
 tables have and the sweep has no curated curves for is swept along a generated ladder (below) of
 each of its knobs that has one.
 
-The curated curves: pt (--pt-spp); ic (one curve per --ic-rays x --ic-spp x --ic-min-spacing,
+The curated curves: pt (--pt-spp); auto (`--method auto`, one point per --auto-time budget:
+the method, knobs and samples it chooses itself, docs/auto.md); ic (one curve per --ic-rays x --ic-spp x --ic-min-spacing,
 --ic-accuracy along it); ic-ivg (--ic-accuracy at the first --ic-spp, --ic-rays and
 --ic-min-spacing); rc (radiance caching for glossy lobes beside ic's defaults for diffuse ones:
 one curve per --rc-rays, --ic-accuracy along it at the first --ic-spp); sdrc (spatial
@@ -145,7 +146,7 @@ KNOB_COLUMNS = ["spp", "accuracy", "ic_rays", "ic_min_spacing", "rc_rays", "sdrc
 IVG_FLAG = "--ic-ivg"
 # The curves a sweep without --methods and --ladder draws (checked against the registry like any
 # --methods).
-DEFAULT_METHODS = ["pt", "ic"]
+DEFAULT_METHODS = ["pt", "auto", "ic"]
 GRID_FORM = re.compile(r"^(auto|auto\*(\d+(\.\d+)?)|\d+x\d+x\d+)$")
 SPACING_FORM = re.compile(r"^(default|\d+(\.\d+)?(px|u)?)$")
 LENGTH_FORM = re.compile(r"^\d*\.?\d+(%|u)?$")
@@ -270,6 +271,13 @@ def spacing_label(spacing):
     return "" if spacing == "default" else ", min spacing %s" % spacing
 
 
+def auto_runs(args, auto_cells):
+    """--method auto at each --auto-time budget: its own choice of method, knobs and samples."""
+    return [("auto", "auto", "time=%g" % budget, {"time": budget},
+             ["--method", "auto", "--time", "%g" % budget])
+            for budget in args.auto_time]
+
+
 def pt_runs(args, auto_cells):
     return [("pt", "pt", "spp=%d" % spp, {"spp": spp}, ["--method", "pt", "--spp", str(spp)])
             for spp in args.pt_spp]
@@ -363,6 +371,7 @@ def decomposition_runs(args, auto_cells):
 Curated = collections.namedtuple("Curated", "method flags varies sets runs")
 CURATED = collections.OrderedDict([
     ("pt", Curated("pt", [], [], [], pt_runs)),
+    ("auto", Curated("auto", [], [], [], auto_runs)),
     ("ic", Curated("ic", [], ["--accuracy", "--ic-rays", "--ic-min-spacing"], [], ic_runs)),
     ("ic-ivg", Curated("ic", [IVG_FLAG], ["--accuracy", "--ic-rays", "--ic-min-spacing"], [],
                        ic_ivg_runs)),
@@ -658,6 +667,8 @@ def parse_arguments(argv):
                                  sweep_knobs.DECREASE_STEP))
     parser.add_argument("--ladder-spp", type=int,
                         help="--ladder curves' camera samples per pixel (default: the scene's)")
+    parser.add_argument("--auto-time", nargs="+", type=float, default=[3, 10, 30, 100],
+                        help="auto's budgets (--time), one point each (default: %(default)s)")
     parser.add_argument("--pt-spp", nargs="+", type=int,
                         default=[1, 2, 4, 8, 16, 32, 64, 128, 256, 512],
                         help="pt's samples per pixel (default: %(default)s)")

@@ -15,6 +15,9 @@ CASES = [
     ("equal_time.py", ["--budgets", "0"], "--budgets"),
     ("equal_time.py", ["--budgets", "ten"], "--budgets"),
     ("equal_time.py", ["--width", "0"], "--width"),
+    ("auto.py", ["--scenes", "no-such-scene"], "--scenes no-such-scene"),
+    ("auto.py", ["--budgets", "-3"], "--budgets"),
+    ("auto.py", ["--width", "0"], "--width"),
     ("temporal.py", ["--frames", "x"], "--frames"),
     ("temporal.py", ["--frames", "5:2"], "--frames"),
 ]

@@ -89,13 +89,7 @@ def main(argv):
     parser.add_argument("--height", type=positive_int, default=128)
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "equal_time"))
     args, extra = parse_with_extra(parser, argv)
-    for scene in args.scenes:
-        try:
-            reference = references.reference_path(os.path.join(ROOT, "scenes", scene))
-        except references.ReferenceError as e:
-            parser.error("--scenes %s: %s" % (scene, e))
-        if not os.path.isfile(reference):
-            parser.error("--scenes %s: the scene has no reference (%s)" % (scene, reference))
+    references.require_references(parser, args.scenes)
     os.makedirs(args.out, exist_ok=True)
     warm = os.path.join(ROOT, "scenes", args.scenes[0], "scene.json")
     for method in args.methods:  # kernel binaries built and cached before any timed run
