@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "device/buffer.h"
@@ -14,6 +15,10 @@
 #include "shared/types.h"
 
 namespace rc {
+
+// Per scene material: nonzero where a glossy cache serves its specular lobe; empty: every material
+// (a cache's camera samples on the others are left to path tracing, glossy entries of order -1).
+using ServedMaterials = std::vector<uint8_t>;
 
 class GlossyCache {
    public:
@@ -32,6 +37,8 @@ class GlossyCache {
     // seconds their placement and computation took (the cache's share of a render by time).
     virtual uint64_t rays() const = 0;
     virtual double record_seconds() const = 0;
+    // Its statistics of the frame so far (null: none).
+    virtual nlohmann::json statistics() const { return nullptr; }
 };
 
 }  // namespace rc

@@ -68,7 +68,7 @@ __kernel void rc_glossy_splat(uint begin, uint end, RcParams params, RecordGrid 
     out.weight = 0.0f;
     out.order = q.order;
     out.hits = 0.0f;
-    out.pad0 = 0;
+    out.rc_order = q.order;
     const int cell = q.order > 0 ? rc_ic_grid_cell(&grid, q.position.xyz) : -1;
     if (cell >= 0) {
         const BrdfTableInfo info = infos[q.material];

@@ -208,7 +208,7 @@ RC_FUNC FilmSample rc_shade_camera_sample(const PixelShader* shader, uint pixel,
     const size_t entry = (size_t)pixel * (uint)params->camera_spp + s;
     RC_GLOBAL const RcGlossySample* glossy = params->glossy_cache != 0 ? shader->glossy + entry : 0;
     c.glossy = (float3)(0.0f);
-    c.order = glossy != 0 ? (float)max(glossy->order, 0) : 0.0f;
+    c.order = glossy != 0 ? (float)max(glossy->rc_order, 0) : 0.0f;
     c.hits = glossy != 0 ? glossy->hits : 0.0f;
     c.light = rc_ic_cached_radiance(shader->scene, shader->cache, shader->splat + entry, glossy,
                                     &c.glossy, ray, &rng, true, params->light_samples, 0,

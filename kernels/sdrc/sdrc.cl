@@ -25,7 +25,7 @@ __kernel void sdrc_queries(uint begin, uint end, IcParams params, CameraParams c
     cleared.weight = 0.0f;
     cleared.order = -1;
     cleared.hits = 0.0f;
-    cleared.pad0 = 0;
+    cleared.rc_order = 0;
     glossy[i] = cleared;
 }
 
@@ -83,7 +83,7 @@ __kernel void sdrc_interpolate(uint begin, uint end, SdrcParams params,
     out.weight = 1.0f;
     out.order = 1;
     out.hits = 1.0f - (float)missed / (float)params.interp;
-    out.pad0 = 0;
+    out.rc_order = 0;
     glossy[sample] = out;
     atomic_add(&counters[0], answered);
     atomic_add(&counters[1], range_queries);

@@ -65,14 +65,15 @@ typedef struct RcQuery {
 // A camera sample's glossy indirect light from a glossy cache (read by the render pass), with
 // unit specular reflectance: radiance caching's rc_glossy_splat writes the sum over covering
 // records of w <rotate(lambda + grad), b(w_o)> and sum w (0: no record covers the sample); SDRC's
-// interpolation the lobe's estimate with weight 1.
+// interpolation the lobe's estimate with weight 1. Order -1: no cache serves the sample's
+// specular lobe (the render pass path traces it with the other lobes).
 typedef struct RcGlossySample {
     float4 reflected;  // xyz: sum w L_o; w: 0
     float weight;      // sum w
     int order;         // RcQuery.order
     float hits;        // SDRC: fraction of the sample's directions answered from the L-trees
                        // (the sdrc-hits layer); 0 for radiance caching
-    int pad0;
+    int rc_order;      // radiance caching: RcQuery.order (the rc-order layer); 0 for SDRC
 } RcGlossySample;
 
 // Parameters of radiance caching's record and splat kernels.
@@ -127,6 +128,7 @@ RC_SHARED_END
     FIELD(RcGlossySample, weight)                   \
     FIELD(RcGlossySample, order)                    \
     FIELD(RcGlossySample, hits)                     \
+    FIELD(RcGlossySample, rc_order)                 \
     STRUCT(RcParams)                                \
     FIELD(RcParams, order)                          \
     FIELD(RcParams, strata_m)                       \

@@ -42,6 +42,9 @@ std::vector<Case> cases() {
     all.push_back({"rc_temporal",
                    "glossy-box",
                    {"--method", "rc", "--temporal", "--frames", "0:1", "-o", "#"}});
+    all.push_back({"ic_glossy_rc", "glossy-box", {"--method", "ic", "--glossy", "rc"}});
+    all.push_back(
+        {"ic_glossy_mix", "glossy-box", {"--method", "ic", "--glossy", "satin=rc,brushed=sdrc"}});
     all.push_back({"decomposition_path",
                    "cornell-box",
                    {"--method", "decomposition", "--decomp-source", "path"}});

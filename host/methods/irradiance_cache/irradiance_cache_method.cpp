@@ -1,8 +1,12 @@
 // `--method ic`: irradiance caching (DESIGN.md §6.2) as a registered method: its options, its
-// statistics per frame, and (with --ic-ivg) the irradiance vector grid as the radiance its
-// hemisphere rays read beyond their hits.
+// statistics per frame, (with --ic-ivg) the irradiance vector grid as the radiance its
+// hemisphere rays read beyond their hits, and (with --glossy) the glossy caches serving the
+// specular lobes of the materials it names (methods/glossy_plan.h).
 #include <memory>
 
+#include "methods/glossy_caches.h"
+#include "methods/glossy_method.h"
+#include "methods/glossy_plan.h"
 #include "methods/grid/ivg_options.h"
 #include "methods/light_samples.h"
 #include "methods/method.h"
@@ -26,6 +30,7 @@ struct IrradianceCachingOptions {
     bool with_grid = false;  // --ic-ivg
     IvgOptions grid;
     TemporalOptions temporal;
+    GlossySpec glossy;  // --glossy: what serves each material's specular lobe
 };
 
 OptionTable<IrradianceCachingOptions> irradiance_caching_table() {
@@ -36,7 +41,14 @@ OptionTable<IrradianceCachingOptions> irradiance_caching_table() {
               "hemisphere rays read the irradiance vector grid at their hits instead of path "
               "tracing beyond them (the grid's options apply)")
         .include(ivg_option_table(), &O::grid)
-        .include(temporal_option_table(), &O::temporal);
+        .include(temporal_option_table(), &O::temporal)
+        .parsed<GlossySpec>(
+            "--glossy", "SPEC", &O::glossy, "text", parse_glossy_spec, glossy_spec_text,
+            "what serves the specular lobes: path (path tracing), a glossy cache (" +
+                glossy_cache_names() +
+                ") for every material, or a list NAME=CACHE,... of the scene's "
+                "materials with *=CACHE for the rest (the others: path); the "
+                "caches take the options --method rc and sdrc take when none is given");
     return table;
 }
 
@@ -54,6 +66,12 @@ void finish_irradiance_caching(IrradianceCachingOptions& options,
     } else {
         refuse_ivg_options(arguments, "applies to --method ivg, ivg-gather, or ic with --ic-ivg");
     }
+    if (!options.glossy.caches().empty() && (options.with_grid || options.temporal.enabled)) {
+        throw Error("--glossy " + glossy_spec_text(options.glossy) +
+                        ": the glossy caches read the records' first level, not the grid "
+                        "(--ic-ivg), and do not cache over time (--temporal)",
+                    kExitUsage);
+    }
     if (options.temporal.enabled) {
         if (options.with_grid) {
             throw Error("--temporal: the hemisphere rays cannot read the grid (--ic-ivg)",
@@ -70,6 +88,7 @@ class IrradianceCaching final : public Method {
     IrradianceCaching(const IrradianceCachingOptions& options, const MethodSettings& settings)
         : options_(irradiance_record_options(options.records, settings)),
           with_grid_(options.with_grid),
+          glossy_(options.glossy),
           time_(settings.time) {
         if (options.temporal.enabled) {
             temporal_ = std::make_unique<TemporalIrradianceCache>(
@@ -89,6 +108,9 @@ class IrradianceCaching final : public Method {
                      " new, " + t["recomputed"].dump() + " recomputed, " + t["reused"].dump() +
                      " reused, " + t["dropped"].dump() + " dropped)");
             return result;
+        }
+        if (!glossy_.caches().empty()) {
+            return render_glossy_frame(frame, hooks);
         }
         // The grid (--ic-ivg) is built first; a budget (--time) counts its build.
         const auto start = SteadyClock::now();
@@ -123,11 +145,18 @@ class IrradianceCaching final : public Method {
         if (temporal_) {
             programs.push_back({"temporal/temporal.cl", ""});
         }
+        for (const ProgramRequest& request : glossy_programs(glossy_)) {
+            programs.push_back(request);
+        }
         return programs;
     }
 
     DeviceMemoryNeed device_memory_need(const Scene& scene, const DeviceInfo&) const override {
-        DeviceMemoryNeed cache = irradiance_cache_device_need(options_, scene);
+        check_glossy_spec(glossy_, scene);
+        std::string excludes;
+        const GlossySampleBytes glossy = glossy_sample_bytes(glossy_, &excludes);
+        DeviceMemoryNeed cache = irradiance_cache_device_need(options_, scene, glossy);
+        cache.excludes += excludes;
         if (temporal_) {
             cache.excludes += ", their reprojection and the look-ahead frames' scenes and BVHs";
         }
@@ -141,8 +170,25 @@ class IrradianceCaching final : public Method {
     }
 
    private:
+    // A frame with the glossy caches of --glossy serving the specular lobes of their materials
+    // (methods/glossy_method.h, as --method rc and sdrc render theirs).
+    FrameResult render_glossy_frame(const FrameScene& frame, const FrameHooks& hooks) {
+        const std::unique_ptr<GlossyMix> glossy = make_glossy_mix(frame, options_, glossy_);
+        IrradianceCacheStats stats;
+        FrameResult result = render_with_glossy_cache(
+            frame, options_, *glossy, time_, hooks,
+            [&](FrameResult& pass, const IrradianceCacheStats&) {
+                pass.stats.update(glossy->statistics());
+            },
+            &stats);
+        log_note(std::to_string(stats.records) +
+                 " irradiance records; glossy lobes: " + glossy_spec_text(glossy_));
+        return result;
+    }
+
     IrradianceCacheOptions options_;
     bool with_grid_;
+    GlossySpec glossy_;
     double time_;  // --time (0: --spp)
     std::unique_ptr<TemporalIrradianceCache> temporal_;
     IvgOptions grid_options_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "methods/glossy_mix.h"
 #include "methods/radiance_cache/radiance_records.h"
 #include "methods/records/cache_file.h"
 #include "methods/records/record_grid.h"
@@ -38,12 +39,16 @@ std::shared_ptr<const BrdfTables> build_tables(const FrameScene& frame,
     return tables;
 }
 
-// The highest order any material's table represents: the records' order (TVCG §4.2 projects
-// each record at the order its surface needs; one order for all keeps the payloads uniform).
-int records_order(const BrdfTables& tables) {
+// The highest order any served material's table represents: the records' order (TVCG §4.2
+// projects each record at the order its surface needs; one order for all keeps the payloads
+// uniform).
+int records_order(const BrdfTables& tables, const ServedMaterials& served) {
     int order = 0;
-    for (const shared::BrdfTableInfo& info : tables.infos()) {
-        order = std::max(order, info.order);
+    const std::vector<shared::BrdfTableInfo>& infos = tables.infos();
+    for (size_t m = 0; m < infos.size(); ++m) {
+        if (served.empty() || (m < served.size() && served[m] != 0)) {
+            order = std::max(order, infos[m].order);
+        }
     }
     return order;
 }
@@ -98,7 +103,7 @@ RadianceCache::RadianceCache(const FrameScene& frame, const RadianceCacheOptions
     : FrameBound(frame),
       options_(options),
       tables_(build_tables(frame, options, std::move(tables), &stats_.table_seconds)),
-      order_(records_order(*tables_)),
+      order_(records_order(*tables_, options.materials)),
       store_(radiance_store(options.accuracy, std::max(order_, 1))),
       queries_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_queries")),
       project_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_record_project")),
@@ -220,6 +225,7 @@ Buffer<shared::RcQuery> RadianceCache::queries(const shared::IcParams& params,
     Buffer<shared::RcQuery> device(context_, samples, "rc_queries");
     context_.launch(queries_kernel_, samples, params, camera, SceneArguments(bvh_, device_scene_),
                     tables_->device_infos(), tables_->orders(), device);
+    restrict_glossy_queries(context_, options_.materials, device);
     stats_.query_seconds += seconds_since(start);
     return device;
 }

@@ -37,6 +37,7 @@ struct RadianceCacheOptions : SharedSettings {
     bool count_emission = false;      // count emitters the hemisphere rays see (tests)
     std::filesystem::path cache_in;   // radiance records to start from (--rc-cache-in)
     std::filesystem::path cache_out;  // where to save the radiance records (--rc-cache-out)
+    ServedMaterials materials;        // the materials served (empty: every one; GlossyCache)
 };
 
 struct RadianceCacheStats {
@@ -122,6 +123,8 @@ class RadianceCache final : public GlossyCache, private FrameBound {
     std::vector<FilmLayer> layers() const override {
         return {{"rc-order", RC_CACHED_FILM_ORDER, 1}};
     }
+    // The statistics file's "radiance_cache" object (radiance_cache_stats.cpp).
+    nlohmann::json statistics() const override;
 
     const RecordStore& store() const { return store_; }
     const std::shared_ptr<const BrdfTables>& tables() const { return tables_; }

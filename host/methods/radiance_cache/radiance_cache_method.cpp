@@ -130,7 +130,7 @@ class RadianceCaching final : public Method {
         FrameResult result = render_with_glossy_cache(
             frame, ic_, glossy, time_, hooks,
             [&](FrameResult& pass, const IrradianceCacheStats&) {
-                pass.stats["radiance_cache"] = radiance_stats(glossy.stats());
+                pass.stats["radiance_cache"] = glossy.statistics();
             },
             &stats);
         const RadianceCacheStats& rc = glossy.stats();
@@ -169,48 +169,6 @@ class RadianceCaching final : public Method {
     }
 
    private:
-    static nlohmann::json radiance_stats(const RadianceCacheStats& rc) {
-        nlohmann::json materials = nlohmann::json::array();
-        for (const BrdfTableSummary& m : rc.materials) {
-            materials.push_back({{"name", m.name},
-                                 {"kind", brdf_kind_name(m.kind)},
-                                 {"order", m.order},
-                                 {"fallback_fraction", m.fallback_fraction}});
-        }
-        nlohmann::json passes = nlohmann::json::array();
-        for (const PlacementPass& pass : rc.placement.passes) {
-            passes.push_back({{"stride", pass.stride},
-                              {"candidates", pass.candidates},
-                              {"uncovered", pass.uncovered},
-                              {"records", pass.records}});
-        }
-        const double coefficients = static_cast<double>(rc.records) * 3.0 * rc.order * rc.order;
-        return {
-            {"records", rc.records},
-            {"order", rc.order},
-            {"strata", {rc.strata_m, rc.strata_n}},
-            {"materials", materials},
-            {"placement_passes", passes},
-            {"glossy_samples", rc.placement.glossy_samples},
-            {"fallback_samples", rc.placement.fallback_samples},
-            {"fallback_fraction", rc.placement.glossy_samples > 0
-                                      ? static_cast<double>(rc.placement.fallback_samples) /
-                                            static_cast<double>(rc.placement.glossy_samples)
-                                      : 0.0},
-            {"record_rays", rc.record_rays},
-            {"reflections", rc.reflections},
-            {"coefficients_projected_per_second",
-             rc.placement.record_seconds > 0.0 ? coefficients / rc.placement.record_seconds : 0.0},
-            {"reflections_per_second",
-             rc.splat_seconds > 0.0 ? static_cast<double>(rc.reflections) / rc.splat_seconds : 0.0},
-            {"seconds",
-             {{"tables", rc.table_seconds},
-              {"queries", rc.query_seconds},
-              {"placement", rc.placement.placement_seconds},
-              {"records", rc.placement.record_seconds},
-              {"splatting", rc.splat_seconds}}}};
-    }
-
     IrradianceCacheOptions ic_;
     RadianceCacheOptions rc_;
     double time_;                                             // --time (0: --spp)

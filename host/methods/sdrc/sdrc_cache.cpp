@@ -4,6 +4,7 @@
 #include <cmath>
 #include <thread>
 
+#include "methods/glossy_mix.h"
 #include "methods/records/record_grid.h"
 #include "methods/scene_arguments.h"
 #include "methods/shared_settings.h"
@@ -244,10 +245,11 @@ Buffer<shared::RcGlossySample> SdrcCache::glossy_samples(const shared::IcParams&
     stats_.samples = base.samples;
     // 1. The camera samples as SDRC sees them; every glossy-buffer entry cleared.
     auto start = SteadyClock::now();
-    const Buffer<shared::RcQuery> queries(context_, samples, "sdrc_queries");
+    Buffer<shared::RcQuery> queries(context_, samples, "sdrc_queries");
     Buffer<shared::RcGlossySample> glossy(context_, samples, "sdrc_glossy");
     context_.launch(queries_kernel_, samples, params, camera, SceneArguments(bvh_, device_scene_),
                     queries, glossy);
+    restrict_glossy_queries(context_, options_.materials, queries);
     stats_.query_seconds = seconds_since(start);
     // 2. Placement, coarse to fine (GlossyPlacement; SDRC §4.2: a new record where S(p) is empty).
     const uint32_t width = static_cast<uint32_t>(params.width);

@@ -42,6 +42,7 @@ struct SdrcOptions : SharedSettings {
     // the image does not depend on them (tests).
     size_t record_batch = 0;
     size_t round_batch = 0;
+    ServedMaterials materials;  // the materials served (empty: every one; GlossyCache)
 };
 
 // Directions of a new record for these options at `spp` camera samples per pixel: N if given,
@@ -87,6 +88,8 @@ class SdrcCache final : public GlossyCache, private FrameBound {
     std::vector<FilmLayer> layers() const override {
         return {{"sdrc-hits", RC_CACHED_FILM_HITS, 1}};
     }
+    // The statistics file's "sdrc" object (sdrc_stats.cpp).
+    nlohmann::json statistics() const override;
 
     const RecordStore& store() const { return store_; }
     const std::vector<LTree>& trees() const { return trees_; }

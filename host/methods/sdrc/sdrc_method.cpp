@@ -52,42 +52,6 @@ SdrcOptions sdrc_options(SdrcOptions sdrc, const IrradianceCacheOptions& ic) {
     return sdrc;
 }
 
-nlohmann::json sdrc_stats(const SdrcStats& s) {
-    nlohmann::json passes = nlohmann::json::array();
-    for (const PlacementPass& pass : s.placement.passes) {
-        passes.push_back({{"stride", pass.stride},
-                          {"candidates", pass.candidates},
-                          {"uncovered", pass.uncovered},
-                          {"records", pass.records}});
-    }
-    const auto ratio = [](double a, double b) { return b > 0.0 ? a / b : 0.0; };
-    return {{"records", s.records},
-            {"samples_per_record", s.samples},
-            {"placement_passes", passes},
-            {"glossy_samples", s.placement.glossy_samples},
-            {"ltree_nodes", s.ltree_nodes},
-            {"ltree_bytes", s.ltree_nodes * sizeof(shared::LTreeNode)},
-            {"record_rays", s.record_rays},
-            {"directions", s.directions},
-            {"answered", s.answered},
-            {"hit_rate", ratio(static_cast<double>(s.answered), static_cast<double>(s.directions))},
-            {"range_queries", s.range_queries},
-            {"misses", s.misses},
-            {"unstored_misses", s.unstored},
-            {"miss_rays", s.miss_rays},
-            {"rebuilds", s.rebuilds},
-            {"directions_per_second",
-             ratio(static_cast<double>(s.directions), s.interpolation_seconds)},
-            {"range_queries_per_second",
-             ratio(static_cast<double>(s.range_queries), s.interpolation_seconds)},
-            {"seconds",
-             {{"queries", s.query_seconds},
-              {"placement", s.placement.placement_seconds},
-              {"records", s.placement.record_seconds},
-              {"tree_builds", s.tree_build_seconds},
-              {"interpolation", s.interpolation_seconds}}}};
-}
-
 class SpatialDirectionalRadianceCaching final : public Method {
    public:
     SpatialDirectionalRadianceCaching(const SdrcMethodOptions& options,
@@ -102,7 +66,7 @@ class SpatialDirectionalRadianceCaching final : public Method {
         FrameResult result = render_with_glossy_cache(
             frame, ic_, glossy, time_, hooks,
             [&](FrameResult& pass, const IrradianceCacheStats&) {
-                pass.stats["sdrc"] = sdrc_stats(glossy.stats());
+                pass.stats["sdrc"] = glossy.statistics();
             },
             &stats);
         const SdrcStats& s = glossy.stats();
