@@ -18,7 +18,7 @@ ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)),
 SWEEP = os.path.join(ROOT, "tools", "sweep.py")
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 SCRATCH = os.path.join(os.environ.get("RADCACHE_TEST_SCRATCH_DIR") or "/tmp", "sweep_peers_test")
-SIZE = ["--width", "24", "--height", "24"]
+SIZE = ["--width", "16", "--height", "16"]
 
 
 def missing_package():
