@@ -12,14 +12,14 @@ points (not a timed full run): 35-40 minutes per 512-pixel scene on 2 CPU cores 
 for the 256-pixel moving sphere (docs/benchmarks.md, "Error against time").
 
 Usage: tools/results.py [--scenes cornell-box two-rooms ...] [--repeats N] [--no-povray]
-           [--no-peers] [--quick|--tiny] [--reuse] [--out build/results] [-- extra radcache
+           [--no-peers] [--no-bench] [--quick|--tiny] [--reuse] [--out build/results] [-- extra radcache
            render options, e.g. --device 0:0]
 Every sweep has the peers (tools/sweep.py --denoise --mitsuba: each method's images through
 OIDN, and Mitsuba 3's path tracer; each skipped with a warning without its package or, for
 Mitsuba, on a scene its exporter refuses) unless --no-peers, and the page opens with which curve
 wins at 10 s, 100 s and 1000 s on each scene (tools/winners.py).
 --tiny sweeps a few points per scene (TINY below: pt to 64 spp, one point of each caching method,
-Mitsuba to 64 spp): minutes per scene, for a machine that cannot spend hours.
+Mitsuba to 16 spp): minutes per scene, for a machine that cannot spend hours.
 --quick sweeps fewer points per scene (QUICK below: pt to 256 spp, ic and rc at 1024 rays and
 the default spacing, the grid at its automatic size, two decomposition clusters; every accuracy
 and photon count kept), about a third of the time. --reuse takes a scene's sweep from OUT/SCENE/
@@ -53,7 +53,7 @@ TINY = ["--pt-spp", "1", "4", "16", "64", "--ic-accuracy", "0.6", "--ic-rays", "
         "--ic-min-spacing", "default", "--rc-rays", "1024", "--sdrc-interp", "1", "--ivg-grid",
         "auto", "--ivg-photons", "262144", "--gather-rays", "4", "--decomp-cluster", "20%"]
 # The Mitsuba peer's samples per pixel: the sweep's default, and under --tiny.
-TINY_MITSUBA = ["4", "16", "64"]
+TINY_MITSUBA = ["4", "16"]
 
 
 run = functools.partial(echoed_run, "results")
@@ -149,6 +149,15 @@ def time_to_error(curve, key, target):
     return None
 
 
+def bench_section(table):
+    """`bench all`'s table, or a line saying it was not run (--no-bench)."""
+    lines = ["## Kernel throughput (`radcache bench all`)", ""]
+    if table is None:
+        return lines + ["Not measured in this run (`--no-bench`); the kernels' throughput is "
+                        "measured in [`benchmarks.md`](benchmarks.md).", ""]
+    return lines + ["```", table.rstrip(), "```", ""]
+
+
 def preset(args):
     """tools/sweep.py's knobs and peers for the chosen preset."""
     knobs = TINY if args.tiny else QUICK if args.quick else []
@@ -183,6 +192,8 @@ def main(argv):
     parser.add_argument("--tiny", action="store_true",
                         help="a few points per sweep (TINY): pt, one point of each caching "
                              "method, Mitsuba at %s spp" % " ".join(TINY_MITSUBA))
+    parser.add_argument("--no-bench", action="store_true",
+                        help="leave `radcache bench all` out (the page then says so)")
     parser.add_argument("--no-peers", action="store_true",
                         help="leave out the Mitsuba peer and the +oidn curves")
     parser.add_argument("--reuse", action="store_true",
@@ -223,7 +234,9 @@ def main(argv):
         at = extra.index("--device")
         bench_device = extra[at:at + 2]
     bench_text = os.path.join(args.out, "bench-all.txt")
-    if args.reuse and os.path.isfile(bench_text):
+    if args.no_bench:
+        table = None
+    elif args.reuse and os.path.isfile(bench_text):
         with open(bench_text) as f:
             table = f.read()
     else:
@@ -261,14 +274,7 @@ def main(argv):
         "- References: path-traced by radcache ([`scenes/README.md`](../scenes/README.md)); each "
         "scene's section names its reference, samples per pixel, device and git revision.",
         "",
-    ] + winners_section(winners) + sections + [
-        "## Kernel throughput (`radcache bench all`)",
-        "",
-        "```",
-        table.rstrip(),
-        "```",
-        "",
-    ]
+    ] + winners_section(winners) + sections + bench_section(table)
     with open(os.path.join(DOCS, "results.md"), "w") as f:
         f.write("\n".join(lines))
     print("written docs/results.md and docs/results/*.png")
