@@ -68,8 +68,9 @@ def draw_chart(rows, key, title, path, label="relMSE"):
         members = sorted((r for r in points if r["curve"] == curve),
                          key=lambda r: r["render_seconds"])
         method = members[0]["method"]
-        # Curves of one method share its colour and differ by line style.
-        style = styles[seen.get(method, 0) % len(styles)]
+        # Curves of one method share its colour and differ by line style; a denoised curve is
+        # always dashed.
+        style = "--" if method.endswith(DENOISED) else styles[seen.get(method, 0) % len(styles)]
         seen[method] = seen.get(method, 0) + 1
         axes.errorbar([r["render_seconds"] for r in members], [r[key] for r in members],
                       xerr=time_spread(members), marker=markers[i % len(markers)],
