@@ -186,9 +186,9 @@ def sensor(camera, width, height, spp):
 
 
 def scene_dict(scene_json, width=None, height=None, spp=None, integrator=None):
-    """The Mitsuba scene of a radcache scene.json. integrator: a Mitsuba integrator dict (default:
-    `path` with the scene's depth settings). Raises ExportError naming what is not exported."""
-    import mitsuba as mi  # noqa: F401  (the caller has set the variant)
+    """The Mitsuba scene of a radcache scene.json (the caller has imported mitsuba and set its
+    variant). integrator: a Mitsuba integrator dict (default: `path` with the scene's depth
+    settings). Raises ExportError naming what is not exported."""
     scene = load_json_with_comments(scene_json)
     folder = os.path.dirname(os.path.abspath(scene_json))
     render = dict(RENDER_DEFAULTS, **scene.get("render", {}))
