@@ -87,7 +87,11 @@ def draw_chart(rows, key, title, path, label="relMSE"):
     axes.set_ylabel(label)
     axes.set_title(title)
     axes.grid(True, which="both", alpha=0.3)
-    axes.legend(fontsize=7)
+    if len(curve_order(points)) > 8:  # many curves (peers, +oidn): the legend beside the axes
+        figure.set_size_inches(10, 5)
+        axes.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    else:
+        axes.legend(fontsize=7)
     figure.tight_layout()
     figure.savefig(path)
     plt.close(figure)
