@@ -12,14 +12,15 @@ points (not a timed full run): 35-40 minutes per 512-pixel scene on 2 CPU cores 
 for the 256-pixel moving sphere (docs/benchmarks.md, "Error against time").
 
 Usage: tools/results.py [--scenes cornell-box two-rooms ...] [--repeats N] [--no-povray]
-           [--no-peers] [--no-bench] [--quick|--tiny] [--reuse] [--out build/results] [-- extra radcache
-           render options, e.g. --device 0:0]
+           [--no-peers] [--no-bench] [--note TEXT] [--quick|--tiny] [--reuse]
+           [--out build/results] [-- extra radcache render options, e.g. --device 0:0]
 Every sweep has the peers (tools/sweep.py --denoise --mitsuba: each method's images through
 OIDN, and Mitsuba 3's path tracer; each skipped with a warning without its package or, for
 Mitsuba, on a scene its exporter refuses) unless --no-peers, and the page opens with which curve
 wins at 10 s, 100 s and 1000 s on each scene (tools/winners.py).
 --tiny sweeps a few points per scene (TINY below: pt to 64 spp, one point of each caching method,
-Mitsuba to 16 spp): minutes per scene, for a machine that cannot spend hours.
+Mitsuba to 16 spp): 17 minutes for the 512-pixel Cornell box on 2 cores shared with other
+builds (docs/lab/peers.md), for a machine that cannot spend hours.
 --quick sweeps fewer points per scene (QUICK below: pt to 256 spp, ic and rc at 1024 rays and
 the default spacing, the grid at its automatic size, two decomposition clusters; every accuracy
 and photon count kept), about a third of the time. --reuse takes a scene's sweep from OUT/SCENE/
