@@ -56,7 +56,7 @@ class SweepPeersTest(unittest.TestCase):
         cls.cornell = reference("cornell-box", "cornell")
         cls.out = os.path.join(SCRATCH, "out")
         cls.result = run([sys.executable, SWEEP, os.path.join(ROOT, "scenes", "cornell-box"),
-                          "--reference", cls.cornell, "--methods", "pt", "--pt-spp", "1", "4",
+                          "--reference", cls.cornell, "--methods", "pt", "--pt-spp", "1",
                           "--repeats", "1", "--denoise", "--mitsuba", "2", "--out", cls.out] + SIZE)
 
     def test_denoised_rows_carry_the_denoise_time(self):
