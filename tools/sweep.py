@@ -11,8 +11,9 @@ warning) and writes
                                   one curve per method and setting, a horizontal bar over each
                                   point from its fastest to its slowest repeat, the Pareto front
                                   over all points marked
+  OUT/flip-vs-time.png            the same for the mean HDR-FLIP of the image (with flip-evaluator)
   OUT/indirect-error-vs-time.png  the same for the indirect layer (methods that write it)
-  OUT/index.html                  both charts, equal-time crops of every curve beside the
+  OUT/index.html                  the charts, equal-time crops of every curve beside the
                                   reference's, and false-colour relMSE images
 
 Methods and knobs come from radcache's option tables, read once at start through the same
