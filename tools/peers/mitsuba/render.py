@@ -65,7 +65,9 @@ def main(argv):
         sys.exit("mitsuba peer: %s: %s" % (args.scene, e))
     loaded = time.perf_counter()
     image = mi.render(scene, seed=args.seed)
-    mi.Bitmap(image, channel_names=["R", "G", "B"]).write(args.output)
+    partial = args.output + ".partial.exr"
+    mi.Bitmap(image, channel_names=["R", "G", "B"]).write(partial)
+    os.replace(partial, args.output)
     rendered = time.perf_counter()
     import drjit as dr
     record = {"spp": scene.sensors()[0].sampler().sample_count(), "variant": args.variant,
