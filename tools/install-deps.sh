@@ -52,3 +52,18 @@ else
         python3 -m pip install --quiet --disable-pip-version-check --user \
             --break-system-packages -r "$requirements"
 fi
+
+# The optional peers' Python packages (tools/requirements-peers.txt: Mitsuba 3, OIDN, OpenEXR for
+# tools/sweep.py --mitsuba --denoise). Never fails the install: without them the sweeps skip
+# those curves with one warning.
+peers="$(dirname "$0")/requirements-peers.txt"
+if python3 -c "import mitsuba, pyoidn, OpenEXR" 2>/dev/null; then
+    echo "install-deps: the optional peers' Python packages present"
+elif python3 -m pip install --quiet --disable-pip-version-check -r "$peers" 2>/dev/null ||
+        python3 -m pip install --quiet --disable-pip-version-check --user \
+            --break-system-packages -r "$peers"; then
+    echo "install-deps: installed the optional peers' Python packages ($peers)"
+else
+    echo "install-deps: warning: pip could not install $peers: tools/sweep.py will skip the" \
+         "Mitsuba and +oidn curves"
+fi

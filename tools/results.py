@@ -12,19 +12,28 @@ points (not a timed full run): 35-40 minutes per 512-pixel scene on 2 CPU cores 
 for the 256-pixel moving sphere (docs/benchmarks.md, "Error against time").
 
 Usage: tools/results.py [--scenes cornell-box two-rooms ...] [--repeats N] [--no-povray]
-           [--quick] [--reuse] [--out build/results] [-- extra radcache render options, e.g.
-           --device 0:0]
+           [--no-peers] [--no-bench] [--note TEXT] [--quick|--tiny] [--reuse]
+           [--out build/results] [-- extra radcache render options, e.g. --device 0:0]
+Every sweep has the peers (tools/sweep.py --denoise --mitsuba: each method's images through
+OIDN, and Mitsuba 3's path tracer; each skipped with a warning without its package or, for
+Mitsuba, on a scene its exporter refuses) unless --no-peers, and the page opens with which curve
+wins at 10 s, 100 s and 1000 s on each scene (tools/winners.py).
+--tiny sweeps a few points per scene (TINY below: pt to 64 spp, one point of each caching method,
+Mitsuba to 16 spp): 17 minutes for the 512-pixel Cornell box on 2 cores shared with other
+builds (docs/lab/peers.md), for a machine that cannot spend hours.
 --quick sweeps fewer points per scene (QUICK below: pt to 256 spp, ic and rc at 1024 rays and
 the default spacing, the grid at its automatic size, two decomposition clusters; every accuracy
 and photon count kept), about a third of the time. --reuse takes a scene's sweep from OUT/SCENE/
 sweep.json where one is there instead of sweeping it again (each scene's section quotes the
-sweep command that made it).
+sweep command that made it), and `bench all`'s table from OUT/bench-all.txt.
 The default scenes are every shipped scene with a reference (scenes/README.md); an animated
 scene is swept at its first frame.
 """
 
 import argparse
 import functools
+
+from winners import winners_lines, winners_section
 import json
 import os
 import shutil
@@ -40,6 +49,12 @@ DOCS = os.path.join(ROOT, "docs")
 QUICK = ["--pt-spp", "1", "2", "4", "8", "16", "32", "64", "128", "256", "--ic-rays", "1024",
          "--ic-min-spacing", "default", "--rc-rays", "1024", "--ivg-grid", "auto",
          "--decomp-cluster", "20%", "5%"]
+# tools/sweep.py's knobs under --tiny: a few pt points and one point of each caching method.
+TINY = ["--pt-spp", "1", "4", "16", "64", "--ic-accuracy", "0.6", "--ic-rays", "1024",
+        "--ic-min-spacing", "default", "--rc-rays", "1024", "--sdrc-interp", "1", "--ivg-grid",
+        "auto", "--ivg-photons", "262144", "--gather-rays", "4", "--decomp-cluster", "20%"]
+# The Mitsuba peer's samples per pixel: the sweep's default, and under --tiny.
+TINY_MITSUBA = ["4", "16"]
 
 
 run = functools.partial(echoed_run, "results")
@@ -135,6 +150,39 @@ def time_to_error(curve, key, target):
     return None
 
 
+def bench_section(table):
+    """`bench all`'s table, or a line saying it was not run (--no-bench)."""
+    lines = ["## Kernel throughput (`radcache bench all`)", ""]
+    if table is None:
+        return lines + ["Not measured in this run (`--no-bench`); the kernels' throughput is "
+                        "measured in [`benchmarks.md`](benchmarks.md).", ""]
+    return lines + ["```", table.rstrip(), "```", ""]
+
+
+def scenes_phrase(scenes):
+    """What the page covers: every shipped scene with a reference, or the ones named."""
+    if sorted(scenes) == scenes_with_references():
+        return "the shipped scenes that have a path-traced reference"
+    return "%s (of the shipped scenes with a reference: %s; the others were not swept in this " \
+           "run)" % (", ".join("`%s`" % s for s in scenes),
+                     ", ".join("`%s`" % s for s in scenes_with_references()))
+
+
+def preset(args):
+    """tools/sweep.py's knobs and peers for the chosen preset."""
+    knobs = TINY if args.tiny else QUICK if args.quick else []
+    if args.no_peers:
+        return knobs
+    return knobs + ["--denoise", "--mitsuba"] + (TINY_MITSUBA if args.tiny else [])
+
+
+def skipped_lines(report):
+    """The curves a sweep skipped (a peer that refused the scene, a missing package)."""
+    if not report.get("skipped"):
+        return []
+    return ["Not in this sweep: %s." % "; ".join(report["skipped"]), ""]
+
+
 def scenes_with_references():
     """Every shipped scene with a reference (reference.exr, or reference/ of an animated one)."""
     folder = os.path.join(ROOT, "scenes")
@@ -151,6 +199,15 @@ def main(argv):
     parser.add_argument("--no-povray", action="store_true", help="leave the POV-Ray peer out")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "results"))
     parser.add_argument("--quick", action="store_true", help="fewer points per sweep (QUICK)")
+    parser.add_argument("--tiny", action="store_true",
+                        help="a few points per sweep (TINY): pt, one point of each caching "
+                             "method, Mitsuba at %s spp" % " ".join(TINY_MITSUBA))
+    parser.add_argument("--no-bench", action="store_true",
+                        help="leave `radcache bench all` out (the page then says so)")
+    parser.add_argument("--note", help="one more line for the page's header (e.g. how loaded "
+                                       "the machine was)")
+    parser.add_argument("--no-peers", action="store_true",
+                        help="leave out the Mitsuba peer and the +oidn curves")
     parser.add_argument("--reuse", action="store_true",
                         help="take a scene's existing OUT/SCENE/sweep.json instead of sweeping")
     args, extra = parse_with_extra(parser, argv)
@@ -159,11 +216,12 @@ def main(argv):
 
     sections = []
     reports = []
+    winners = []
     for scene in args.scenes:
         out = os.path.join(args.out, scene)
         command = [sys.executable, os.path.join(ROOT, "tools", "sweep.py"),
                    os.path.join("scenes", scene), "--out", out, "--repeats", str(args.repeats),
-                   "--methods", "all"] + (QUICK if args.quick else [])
+                   "--methods", "all"] + preset(args)
         if scene == "cornell-box" and not args.no_povray and shutil.which("povray"):
             command.append("--povray")
         if extra:
@@ -178,25 +236,36 @@ def main(argv):
             name = "%s-%s" % (scene, chart)
             shutil.copyfile(os.path.join(out, chart), os.path.join(DOCS, "results", name))
             charts.append(name)
-        sections += scene_section(report, charts) + equal_error_lines(report)
+        sections += (scene_section(report, charts) + skipped_lines(report) +
+                     equal_error_lines(report))
+        winners.append(winners_lines(report))
 
     # bench all measures every device unless the renders were given one.
     bench_device = []
     if "--device" in extra:
         at = extra.index("--device")
         bench_device = extra[at:at + 2]
-    table = run([RADCACHE, "bench", "all", "--json", os.path.join(args.out, "bench-all.json")] +
-                bench_device)
+    bench_text = os.path.join(args.out, "bench-all.txt")
+    if args.no_bench:
+        table = None
+    elif args.reuse and os.path.isfile(bench_text):
+        with open(bench_text) as f:
+            table = f.read()
+    else:
+        table = run([RADCACHE, "bench", "all", "--json",
+                     os.path.join(args.out, "bench-all.json")] + bench_device)
+        with open(bench_text, "w") as f:
+            f.write(table)
 
     first = reports[0] if reports else {"date": "", "machine": "", "device": "", "git": ""}
     lines = [
         "# Results",
         "",
-        "Error against time for every method on the shipped scenes that have a path-traced "
-        "reference, and every kernel family's throughput. Generated by `tools/results.py%s` "
-        "(this file and `docs/results/*.png`; the sweeps' images, CSV, JSON and HTML pages with "
-        "equal-time crops and error images are left in `%s`)." % (
-            (" " + " ".join(argv)) if argv else "", os.path.relpath(args.out, ROOT)),
+        "Error against time for every method on %s, and every kernel family's throughput. "
+        "Generated by `tools/results.py%s` (this file and `docs/results/*.png`; the sweeps' "
+        "images, CSV, JSON and HTML pages with equal-time crops and error images are left in "
+        "`%s`)." % (scenes_phrase(args.scenes), (" " + " ".join(argv)) if argv else "",
+                    os.path.relpath(args.out, ROOT)),
         "",
         "- Date: %s; git %s." % (first["date"], first["git"]),
         "- Machine: %s." % first["machine"],
@@ -210,18 +279,15 @@ def main(argv):
         "image writing excluded; kernel binaries warm, so compilation is excluded), the median "
         "of %d repeats (the charts' bars and the tables' fastest–slowest span them; the "
         "repeats' images are checked bitwise identical); POV-Ray: wall clock of its whole "
-        "process (parsing included), all cores, one run." % args.repeats,
+        "process (parsing included), all cores, one run; Mitsuba 3 (its path tracer, "
+        "[`peers.md`](peers.md)): `mi.render` alone, one run; `+oidn`: the point's time plus "
+        "the denoise step's (OIDN with the albedo and normal layers, `tools/denoise.py`)." %
+        args.repeats,
+    ] + (["- Note: %s" % args.note] if args.note else []) + [
         "- References: path-traced by radcache ([`scenes/README.md`](../scenes/README.md)); each "
         "scene's section names its reference, samples per pixel, device and git revision.",
         "",
-    ] + sections + [
-        "## Kernel throughput (`radcache bench all`)",
-        "",
-        "```",
-        table.rstrip(),
-        "```",
-        "",
-    ]
+    ] + winners_section(winners) + sections + bench_section(table)
     with open(os.path.join(DOCS, "results.md"), "w") as f:
         f.write("\n".join(lines))
     print("written docs/results.md and docs/results/*.png")

@@ -11,8 +11,9 @@ warning) and writes
                                   one curve per method and setting, a horizontal bar over each
                                   point from its fastest to its slowest repeat, the Pareto front
                                   over all points marked
+  OUT/flip-vs-time.png            the same for the mean HDR-FLIP of the image (with flip-evaluator)
   OUT/indirect-error-vs-time.png  the same for the indirect layer (methods that write it)
-  OUT/index.html                  both charts, equal-time crops of every curve beside the
+  OUT/index.html                  the charts, equal-time crops of every curve beside the
                                   reference's, and false-colour relMSE images
 
 Methods and knobs come from radcache's option tables, read once at start through the same
@@ -77,8 +78,8 @@ measured once, on the first repeat's image. The time columns are the median over
 Columns: scene, frame, method, curve, setting, spp, accuracy, ic_rays, ic_min_spacing, rc_rays, sdrc_interp,
 photons, grid, gather_rays, repeats, wall_seconds, wall_seconds_min, wall_seconds_max,
 render_seconds, render_seconds_min, render_seconds_max, kernel_seconds, kernel_seconds_min,
-kernel_seconds_max, compile_seconds, rmse, relmse, relmse_net, flip, indirect_relmse, records,
-device, image.
+kernel_seconds_max, compile_seconds, denoise_seconds, rmse, relmse, relmse_net, flip,
+indirect_relmse, records, device, image.
 
 relmse_net is the image's relMSE net of the reference's own noise (`radcache compare`: relmse
 minus the mean of (stddev^2/spp_ref)/(r^2+0.01)); empty unless the reference has a stddev layer
@@ -95,13 +96,25 @@ and lets the device generate code for the launch shapes, and compile_seconds (th
 program builds, from that cache; median) says what was left. Peers (POV-Ray, `--povray`) run once
 (repeats 1), timed by the wall clock of the whole peer process, parsing included.
 
+Peers and denoised curves (tools/sweep_peers.py; both optional: without their Python packages
+the sweep skips their curves with one warning, as it does FLIP). --denoise passes every radcache
+point's image through OIDN with its albedo and normal layers (tools/denoise.py) and adds it as
+the method METHOD+oidn, curve "CURVE +oidn": its times are the point's plus the denoise step's
+(reading, OIDN and writing the EXR, OIDN's device warmed by one untimed denoise first), in the
+column denoise_seconds; its indirect_relmse stays empty (only the beauty is denoised).
+--mitsuba [SPP ...] adds Mitsuba 3's path tracer (tools/peers/mitsuba/ladder.py) at those samples
+per pixel (default 4 16 64 256), method mitsuba: render_seconds is mi.render alone, wall_seconds
+the whole process; a scene the exporter refuses (a material without an exact counterpart) gets
+no Mitsuba curve and one warning naming it. Every chart also has a FLIP twin (flip-vs-time.png).
+
 Usage: tools/sweep.py SCENE [--frame F] [--reference EXR] [--repeats N] [--methods pt ic ...|all]
            [--ladder METHOD:OPTION[=V1,V2,...] ...] [--ladder-spp N]
            [--pt-spp 1 2 4 ...] [--ic-accuracy ...] [--ic-rays ...] [--ic-spp ...]
            [--ic-min-spacing ...] [--ivg-photons ...] [--ivg-grid ...] [--ivg-spp N]
            [--gather-rays ...] [--gather-spp N] [--decomp-alpha ...] [--decomp-cluster ...]
            [--decomp-rays ...] [--decomp-spp N] [--width N --height N]
-           [--povray [SETTING ...]] [--out DIR] [-- extra radcache render options]
+           [--povray [SETTING ...]] [--mitsuba [SPP ...]] [--denoise] [--out DIR]
+           [-- extra radcache render options]
 SCENE is a scene directory or its scene.json. The reference defaults to the scene's shipped one
 for the frame (tools/references.py: reference.exr beside it, or reference/frameFFFF.exr of an
 animated scene); --frame F (default: the scene's first) renders that frame of an animated scene.
@@ -127,6 +140,7 @@ import time
 from arg_types import positive_int
 import references
 import sweep_knobs
+import sweep_peers
 import sweep_report
 from extra_options import parse_with_extra
 
@@ -136,8 +150,8 @@ TIMES = ["wall_seconds", "render_seconds", "kernel_seconds"]
 COLUMNS = ["scene", "frame", "method", "curve", "setting", "spp", "accuracy", "ic_rays",
            "ic_min_spacing", "rc_rays", "sdrc_interp", "photons", "grid", "gather_rays", "repeats"] + [
            "%s%s" % (t, suffix) for t in TIMES for suffix in ("", "_min", "_max")] + [
-           "compile_seconds", "rmse", "relmse", "relmse_net", "flip", "indirect_relmse",
-           "records", "device", "image"]
+           "compile_seconds", "denoise_seconds", "rmse", "relmse", "relmse_net", "flip",
+           "indirect_relmse", "records", "device", "image"]
 # The columns a point's knobs fill (the rest come from its --stats); a ladder of the option
 # --NAME-WITH-DASHES fills the column NAME_WITH_DASHES when there is one.
 KNOB_COLUMNS = ["spp", "accuracy", "ic_rays", "ic_min_spacing", "rc_rays", "sdrc_interp",
@@ -150,6 +164,8 @@ DEFAULT_METHODS = ["pt", "auto", "ic"]
 GRID_FORM = re.compile(r"^(auto|auto\*(\d+(\.\d+)?)|\d+x\d+x\d+)$")
 SPACING_FORM = re.compile(r"^(default|\d+(\.\d+)?(px|u)?)$")
 LENGTH_FORM = re.compile(r"^\d*\.?\d+(%|u)?$")
+# The Mitsuba peer's samples per pixel when --mitsuba names none.
+MITSUBA_SPP = [4, 16, 64, 256]
 
 
 def fail(message):
@@ -589,6 +605,7 @@ def radcache_rows(runs, measured, first_stats, reference, out):
                     "photons": grid.get("photons", ""), "records": frame.get("records", ""),
                     "device": stats["device"]})
         row.update(time_columns(measured[index]))
+        row["denoise_seconds"] = ""
         measure(row, os.path.join(out, name + ".exr"), reference, out, name)
         rows.append(row)
     return rows
@@ -615,6 +632,7 @@ def povray_rows(args, scene, reference, out):
                    "ic_min_spacing": "", "rc_rays": "", "sdrc_interp": "", "photons": "", "grid": "", "gather_rays": "",
                    "repeats": 1, "kernel_seconds": "", "kernel_seconds_min": "",
                    "kernel_seconds_max": "", "compile_seconds": "", "records": "",
+                   "denoise_seconds": "",
                    "device": "POV-Ray, %s threads" % peer["threads"]}
             for key in ("wall_seconds", "render_seconds"):
                 row[key] = row[key + "_min"] = row[key + "_max"] = seconds
@@ -717,12 +735,24 @@ def parse_arguments(argv):
     parser.add_argument("--height", type=positive_int)
     parser.add_argument("--povray", nargs="*", metavar="SETTING",
                         help="add the POV-Ray peer (Cornell box only): its settings, default all")
+    parser.add_argument("--denoise", action="store_true",
+                        help="beside every radcache point, its image through OIDN with its "
+                             "albedo and normal layers (tools/denoise.py), the denoise time "
+                             "added to the point's")
+    parser.add_argument("--mitsuba", nargs="*", type=int, metavar="SPP",
+                        help="add the Mitsuba 3 peer's path tracer at these samples per pixel "
+                             "(default %s; tools/peers/mitsuba)" % " ".join(
+                                 str(s) for s in MITSUBA_SPP))
     parser.add_argument("--crop", type=int, nargs=4, metavar=("X", "Y", "W", "H"),
                         help="equal-time crop (default: the middle half)")
     parser.add_argument("--out", help="output directory (default build/sweep/SCENE)")
     args, args.extra = parse_with_extra(parser, argv)
     if args.methods is None:
         args.methods = [] if args.ladder else DEFAULT_METHODS
+    if args.mitsuba is not None and any(v < 1 for v in args.mitsuba):
+        parser.error("--mitsuba: samples per pixel must be positive")
+    if args.mitsuba == []:
+        args.mitsuba = MITSUBA_SPP
     if args.ladder_spp is not None and args.ladder_spp < 1:
         parser.error("--ladder-spp: must be positive, got %d" % args.ladder_spp)
     for name in ("pt_spp", "ic_rays", "ic_spp", "rc_rays", "sdrc_interp", "ivg_photons",
@@ -780,6 +810,9 @@ def write_outputs(report, out, crop):
     if sweep_report.draw_chart(rows, "relmse", "%s: image relMSE against time" % scene_name,
                                os.path.join(out, "error-vs-time.png")):
         report["charts"].append("error-vs-time.png")
+    if sweep_report.draw_chart(rows, "flip", "%s: image FLIP against time" % scene_name,
+                               os.path.join(out, "flip-vs-time.png"), "mean HDR-FLIP"):
+        report["charts"].append("flip-vs-time.png")
     indirect = [dict(r, relmse_indirect=r["indirect_relmse"]) for r in rows]
     if sweep_report.draw_chart(indirect, "relmse_indirect",
                                "%s: indirect relMSE against time" % scene_name,
@@ -801,6 +834,7 @@ def main(argv):
     methods = selected_methods(args.methods, tables)
     ladders = sweep_ladders(args, methods, tables)
     check_tools(args.repeats)
+    args.denoise, mitsuba = sweep_peers.check(args.denoise, args.mitsuba is not None)
     scene, reference, frame, animated = scene_paths(args.scene, args.reference, args.frame)
     check_reference_size(reference, args.width, args.height)
     scene_name = os.path.basename(os.path.dirname(scene))
@@ -825,6 +859,14 @@ def main(argv):
     rows = radcache_rows(runs, measured, first_stats, reference, out)
     if args.povray is not None:
         rows += povray_rows(args, scene, reference, out)
+
+    def measure_peer(row, image, name):
+        measure(row, image, reference, out, name)
+    if mitsuba:
+        rows += sweep_peers.mitsuba_rows(scene, args.mitsuba, (args.width, args.height), out,
+                                         measure_peer)
+    if args.denoise:
+        rows += sweep_peers.denoised_rows(rows, out, measure_peer)
     for row in rows:
         row["scene"] = scene_name
         row["frame"] = frame
@@ -837,9 +879,12 @@ def main(argv):
         "command": " ".join(["tools/sweep.py"] + argv),
         "timing": "median over %d repeats of the render phase of radcache --stats (scene "
                   "loading, device start-up and image writing excluded; kernel binaries warm, "
-                  "compilation excluded), bars from the fastest to the slowest; POV-Ray: wall "
-                  "clock of the whole process, one run" % args.repeats,
-        "columns": COLUMNS, "rows": rows, "charts": []}
+                  "compilation excluded), bars from the fastest to the slowest; +oidn: that "
+                  "plus the denoise step (tools/denoise.py: reading, OIDN and writing, its "
+                  "device warm), once; POV-Ray: wall clock of the whole process, one run; "
+                  "Mitsuba: mi.render alone, one run (wall_seconds: the whole process)"
+                  % args.repeats,
+        "columns": COLUMNS, "rows": rows, "charts": [], "skipped": sweep_peers.SKIPPED}
     write_outputs(report, out, args.crop)
     print("%-34s %-36s %9s %15s %11s %8s" % ("curve", "setting", "median s", "min-max s",
                                              "relMSE", "FLIP"))

@@ -8,7 +8,9 @@ import math
 import os
 
 METHOD_COLOURS = {"pt": "tab:blue", "ic": "tab:orange", "ic-ivg": "tab:brown", "ivg": "tab:purple",
-                  "ivg-gather": "tab:red", "povray": "tab:green"}
+                  "ivg-gather": "tab:red", "povray": "tab:green", "mitsuba": "tab:olive"}
+# A denoised curve (METHOD+oidn, tools/sweep_peers.py) takes its method's colour.
+DENOISED = "+oidn"
 
 
 def pyplot():
@@ -48,7 +50,11 @@ def curve_order(points):
     return curves
 
 
-def draw_chart(rows, key, title, path):
+def method_colour(method):
+    return METHOD_COLOURS.get(method[:-len(DENOISED)] if method.endswith(DENOISED) else method)
+
+
+def draw_chart(rows, key, title, path, label="relMSE"):
     """Writes the chart of column `key` against render time; False when no row has it."""
     plt = pyplot()
     points = [r for r in rows if r.get(key) not in ("", None) and r[key] > 0]
@@ -62,12 +68,13 @@ def draw_chart(rows, key, title, path):
         members = sorted((r for r in points if r["curve"] == curve),
                          key=lambda r: r["render_seconds"])
         method = members[0]["method"]
-        # Curves of one method share its colour and differ by line style.
-        style = styles[seen.get(method, 0) % len(styles)]
+        # Curves of one method share its colour and differ by line style; a denoised curve is
+        # always dashed.
+        style = "--" if method.endswith(DENOISED) else styles[seen.get(method, 0) % len(styles)]
         seen[method] = seen.get(method, 0) + 1
         axes.errorbar([r["render_seconds"] for r in members], [r[key] for r in members],
                       xerr=time_spread(members), marker=markers[i % len(markers)],
-                      color=METHOD_COLOURS.get(method), linestyle=style, capsize=2,
+                      color=method_colour(method), linestyle=style, capsize=2,
                       elinewidth=0.8, label=curve)
     front = pareto_front([(r["render_seconds"], r[key]) for r in points])
     axes.plot([t for t, _ in front], [e for _, e in front], color="black", linestyle="--",
@@ -77,10 +84,14 @@ def draw_chart(rows, key, title, path):
     axes.set_xscale("log")
     axes.set_yscale("log")
     axes.set_xlabel("render time (s): median of the repeats, bar from fastest to slowest")
-    axes.set_ylabel("relMSE")
+    axes.set_ylabel(label)
     axes.set_title(title)
     axes.grid(True, which="both", alpha=0.3)
-    axes.legend(fontsize=7)
+    if len(curve_order(points)) > 8:  # many curves (peers, +oidn): the legend beside the axes
+        figure.set_size_inches(10, 5)
+        axes.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    else:
+        axes.legend(fontsize=7)
     figure.tight_layout()
     figure.savefig(path)
     plt.close(figure)

@@ -30,7 +30,8 @@ DOCUMENTED_COLUMNS = ["scene", "frame", "method", "curve", "setting", "spp", "ac
                       "gather_rays", "repeats",
                       "wall_seconds", "wall_seconds_min", "wall_seconds_max", "render_seconds",
                       "render_seconds_min", "render_seconds_max", "kernel_seconds",
-                      "kernel_seconds_min", "kernel_seconds_max", "compile_seconds", "rmse",
+                      "kernel_seconds_min", "kernel_seconds_max", "compile_seconds",
+                      "denoise_seconds", "rmse",
                       "relmse", "relmse_net", "flip", "indirect_relmse", "records", "device",
                       "image"]
 # A radcache that renders with a new seed at every call: its repeats differ.

@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""The Mitsuba 3 peer (tools/peers/mitsuba) on the Cornell box: the exported scene loads and its
+camera is radcache's (the first hit's shading normal, radcache's `normal` layer against
+Mitsuba's `aov` integrator, agrees on at least 99% of 64x48 pixels, where a one-pixel shift of
+the same image does not), a material without an exact counterpart is refused by name with one
+line, and the ladder writes its images and times. Skips (exit 0) only when the mitsuba package
+is not installed. Run by CTest with $RADCACHE set to the built executable."""
+
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+import unittest
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+PEER = os.path.join(ROOT, "tools", "peers", "mitsuba")
+RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
+CORNELL = os.path.join(ROOT, "scenes", "cornell-box", "scene.json")
+SCRATCH = os.path.join(os.environ.get("RADCACHE_TEST_SCRATCH_DIR") or "/tmp", "mitsuba_peer_test")
+# Not square, so that a field of view along the wrong axis shows.
+WIDTH, HEIGHT = 64, 48
+# Both images average 256 jittered camera samples per pixel (box filter): a pixel on an edge
+# between two faces is the mean normal of the fraction of samples on each, a binomial fraction
+# whose standard deviation at 256 samples is at most 0.5/16 = 0.031; two independent estimates
+# differ by at most 0.044 |n1 - n2| <= 0.063 (perpendicular faces), so 0.2 is over 3 standard
+# deviations. A camera off by a pixel (or mirrored, or of another fov) moves every edge: the
+# edge pixels then differ by up to |n1 - n2| ~ 1.4.
+SPP = 256
+TOLERANCE = 0.2
+
+
+def import_mitsuba():
+    try:
+        import mitsuba as mi
+    except ImportError:
+        return None
+    mi.set_variant("scalar_rgb")
+    return mi
+
+
+def run(command):
+    return subprocess.run(command, capture_output=True, text=True)
+
+
+class MitsubaPeerTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        shutil.rmtree(SCRATCH, ignore_errors=True)
+        os.makedirs(SCRATCH)
+        sys.path.insert(0, PEER)
+        sys.path.insert(0, os.path.join(ROOT, "tools"))
+
+    def radcache_normals(self):
+        image = os.path.join(SCRATCH, "normals.exr")
+        result = run([RADCACHE, "render", CORNELL, "-o", image, "--width", str(WIDTH),
+                      "--height", str(HEIGHT), "--spp", str(SPP), "-D", "max_depth=0", "--aovs",
+                      "normal", "--quiet"])
+        self.assertEqual(result.returncode, 0, result.stderr)
+        return numpy().array(MI.Bitmap(image))
+
+    def mitsuba_normals(self):
+        import export
+        scene = MI.load_dict(export.scene_dict(
+            CORNELL, WIDTH, HEIGHT, SPP, integrator={"type": "aov", "aovs": "nn:sh_normal"}))
+        return numpy().array(MI.render(scene))
+
+    def test_camera_matches_radcache_normals(self):
+        ours, theirs = self.radcache_normals(), self.mitsuba_normals()
+        self.assertEqual(ours.shape, (HEIGHT, WIDTH, 3))
+        self.assertEqual(theirs.shape, (HEIGHT, WIDTH, 3))
+        np = numpy()
+        agree = (np.linalg.norm(ours - theirs, axis=2) < TOLERANCE).mean()
+        self.assertGreaterEqual(agree, 0.99)
+        shifted = (np.linalg.norm(ours - np.roll(theirs, 1, axis=1), axis=2) < TOLERANCE).mean()
+        self.assertLess(shifted, 0.99, "a one-pixel shift must fail the same check")
+
+    def test_refuses_a_material_without_counterpart_by_name(self):
+        with open(CORNELL) as f:
+            text = "".join(line for line in f if not line.lstrip().startswith("//"))
+        scene = json.loads(text)
+        scene["materials"]["shiny"] = {"type": "phong", "diffuse": 0.4, "specular": 0.3,
+                                       "exponent": 20}
+        for shape in scene["shapes"]:
+            shape["file"] = os.path.join(ROOT, "scenes", "cornell-box", shape["file"])
+        scene["shapes"][5]["material"] = "shiny"
+        path = os.path.join(SCRATCH, "phong.json")
+        with open(path, "w") as f:
+            json.dump(scene, f)
+        image = os.path.join(SCRATCH, "phong.exr")
+        result = run([sys.executable, os.path.join(PEER, "render.py"), path, image])
+        self.assertEqual(result.returncode, 1, result.stdout + result.stderr)
+        lines = result.stderr.strip().splitlines()
+        self.assertEqual(len(lines), 1, result.stderr)
+        self.assertIn("'shiny'", lines[0])
+        self.assertIn("phong", lines[0])
+        self.assertFalse(os.path.exists(image))
+
+    def test_ladder_writes_images_and_times(self):
+        out = os.path.join(SCRATCH, "ladder")
+        result = run([sys.executable, os.path.join(PEER, "ladder.py"), CORNELL, "--spp", "1",
+                      "4", "--width", "16", "--height", "16", "--out", out])
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(out, "mitsuba.csv")) as f:
+            rows = list(csv.DictReader(f))
+        self.assertEqual([r["spp"] for r in rows], ["1", "4"])
+        for row in rows:
+            self.assertGreater(float(row["render_seconds"]), 0.0)
+            self.assertGreater(float(row["wall_seconds"]), float(row["render_seconds"]))
+            image = numpy().array(MI.Bitmap(row["image"]))
+            self.assertEqual(image.shape, (16, 16, 3))
+            self.assertTrue(numpy().isfinite(image).all())
+            self.assertGreater(image.mean(), 0.0)
+
+
+def numpy():
+    import numpy as np
+    return np
+
+
+MI = import_mitsuba()
+
+if __name__ == "__main__":
+    if MI is None:
+        print("mitsuba_peer_test: skipped: the mitsuba package is not installed "
+              "(tools/install-deps.sh)")
+        sys.exit(0)
+    unittest.main()
