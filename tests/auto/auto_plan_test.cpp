@@ -4,6 +4,7 @@
 // reason, fixed samples stay fixed; the materials' servers follow radiance caching's tables and
 // the Phong exponent; the embedded model parses and a broken one is refused by key.
 #include "methods/auto/auto_plan.h"
+#include "methods/glossy_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -43,7 +44,9 @@ struct Figures {
         cache.camera_rays_per_sample = 4.0;
         in.cache = cache;
         in.materials = {{"white", LobeServer::kDiffuse, 0.0, -1.0}};
-        in.cache_run = caching_run(in.materials);
+        Material white;
+        white.name = "white";
+        in.cache_run = caching_run(in.materials, {white});
         in.pilot_seconds = 0.05;
     }
 };
@@ -135,10 +138,15 @@ TEST(AutoMaterials, RadianceCachingWhereItsTablesHoldTheLobeElseSdrcElsePathTrac
     EXPECT_EQ(choices[3].server, LobeServer::kPath);
     // One glossy cache for every glossy lobe is that method; a mix is irradiance caching with the
     // per-material list.
-    EXPECT_EQ(caching_run({choices[0], choices[1]}).method, "rc");
-    EXPECT_EQ(caching_run({choices[0], choices[2]}).method, "sdrc");
-    const MethodRun mixed = caching_run(choices);
-    EXPECT_EQ(mixed.command_line(), "ic --glossy satin=rc,copper=sdrc,mirror=path");
+    EXPECT_EQ(caching_run({choices[0], choices[1]}, {diffuse, broad}).method, "rc");
+    EXPECT_EQ(caching_run({choices[0], choices[2]}, {diffuse, sharp}).method, "sdrc");
+    const MethodRun mixed = caching_run(choices, {diffuse, broad, sharp, mirror});
+    ASSERT_EQ(mixed.options.size(), 1u);
+    EXPECT_EQ(mixed.options[0].first, "--glossy");
+    // The list --glossy reads gives each material its server (path tracing for the rest).
+    const std::vector<std::string> served = resolve_glossy_spec(
+        parse_glossy_spec(mixed.options[0].second), {diffuse, broad, sharp, mirror});
+    EXPECT_EQ(served, (std::vector<std::string>{"path", "rc", "sdrc", "path"}));
     EXPECT_EQ(model_key(choices), "sdrc");
 }
 

@@ -112,6 +112,28 @@ TEST(AutoChoice, ANearMirrorIsPathTraced) {
     }
 }
 
+TEST(AutoChoice, ABroadAndASharpGlossyLobeGetDifferentGlossyCaches) {
+    const std::string scene =
+        spheres_scene("auto_two_lobes",
+                      {R"({"type": "phong", "diffuse": 0.2, "specular": 0.5, "exponent": 16})",
+                       R"({"type": "phong", "diffuse": 0.2, "specular": 0.5, "exponent": 200})"});
+    const nlohmann::json plan = dry_run(scene, "auto_two_lobes_plan", {"--spp", "2"});
+    EXPECT_EQ(server_of(plan, "m0"), "rc");
+    EXPECT_EQ(server_of(plan, "m1"), "sdrc");
+    EXPECT_NE(plan.at("command").get<std::string>().find("--glossy"), std::string::npos)
+        << plan.dump();
+    // The plan renders: both caches in one ic render.
+    const auto dir = test::scratch_dir("auto_two_lobes_render");
+    const test::CommandResult result = test::run_radcache(
+        {"render", scene, "--method", "auto", "--spp", "2", "-o", (dir / "out.exr").string(),
+         "--stats", (dir / "stats.json").string(), "-q"});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const nlohmann::json frame =
+        nlohmann::json::parse(read_file(dir / "stats.json")).at("frames").at(0);
+    EXPECT_EQ(frame.at("auto").at("command"), plan.at("command"));
+    test::expect_finite_lit_beauty(dir / "out.exr");
+}
+
 TEST(AutoChoice, AStaticClipIsCachedOverTimeAFastOneIsNot) {
     const nlohmann::json still = dry_run(
         cornell_box(), "auto_still_clip",

@@ -89,7 +89,7 @@ def table(rows, scene, budget):
     for r in at:
         lines.append("| %s | %.1f | %d | %.3e | %.2f |" % (
             r["method"], r["seconds"], r["spp"], r["relmse"], r["relmse"] / auto["relmse"]))
-    lines += ["", "auto: %s" % auto.get("plan", ""),
+    lines += ["", "plan: %s" % auto.get("plan", ""),
               "auto / best (%s): %.2f (target <= 1.1); render s / budget: %.2f" % (
                   best["method"], auto["relmse"] / best["relmse"], auto["seconds"] / budget)]
     if pt:

@@ -132,20 +132,14 @@ class AutoMethod final : public Method {
                           const DeviceThroughput& throughput, PlanInputs* in) {
         const auto& materials = frame.scene.materials;
         const bool glossy = std::any_of(materials.begin(), materials.end(), has_glossy_lobe);
-        std::optional<CachePilot> rc_pilot;
+        nlohmann::json tables;
         if (glossy) {
-            rc_pilot = cache_pilot(frame, settings_, model, {"rc", {}}, hooks);
-            add_pilot_seconds(*rc_pilot, "rc", throughput, in);
+            const TablePilot pilot = brdf_table_pilot(frame, settings_, hooks);
+            tables = pilot.materials;
+            in->pilot_seconds += static_cast<double>(pilot.rays) * throughput.cache_of("rc");
         }
-        const nlohmann::json* tables = rc_pilot && rc_pilot->stats.contains("radiance_cache")
-                                           ? &rc_pilot->stats.at("radiance_cache").at("materials")
-                                           : nullptr;
-        in->materials = choose_lobe_servers(materials, model, tables);
-        in->cache_run = caching_run(in->materials);
-        if (rc_pilot && in->cache_run.method == "rc" && in->cache_run.options.empty()) {
-            in->cache = rc_pilot;
-            return;
-        }
+        in->materials = choose_lobe_servers(materials, model, glossy ? &tables : nullptr);
+        in->cache_run = caching_run(in->materials, materials);
         in->cache = cache_pilot(frame, settings_, model, in->cache_run, hooks);
         add_pilot_seconds(*in->cache, model_key(in->materials), throughput, in);
     }

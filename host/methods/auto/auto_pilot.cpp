@@ -102,6 +102,21 @@ NoisePilot noise_pilot(const FrameScene& frame, const MethodSettings& settings,
     return pilot;
 }
 
+TablePilot brdf_table_pilot(const FrameScene& frame, const MethodSettings& settings,
+                            const FrameHooks& hooks) {
+    const PilotSize size{std::min(8, render_width(settings, frame)),
+                         std::min(8, render_height(settings, frame))};
+    const std::unique_ptr<Method> rc = make_method(
+        {"rc", {{"--ic-rays", "16"}}}, pilot_settings(settings, size, 1, pilot_seed(settings.seed, 3)));
+    const FrameResult result = render_quietly(*rc, frame, hooks);
+    TablePilot pilot;
+    pilot.rays = result.rays;
+    if (result.stats.contains("radiance_cache")) {
+        pilot.materials = result.stats.at("radiance_cache").value("materials", pilot.materials);
+    }
+    return pilot;
+}
+
 uint64_t cache_rays_of(const nlohmann::json& stats) {
     uint64_t rays = stats.value("record_rays", uint64_t{0});
     for (const char* cache : {"radiance_cache", "sdrc"}) {

@@ -61,6 +61,17 @@ struct CachePilot {
 CachePilot cache_pilot(const FrameScene& frame, const MethodSettings& settings,
                        const AutoModel& model, MethodRun run, const FrameHooks& hooks);
 
+// What radiance caching's BRDF tables make of the scene's materials (the adaptive order, TVCG
+// 2005 §4.1): its statistics' "materials" ({name, kind, order, fallback_fraction}), from a render
+// of 8 x 8 pixels with 16 rays per record (the tables do not depend on the image).
+struct TablePilot {
+    nlohmann::json materials = nlohmann::json::array();
+    uint64_t rays = 0;
+};
+
+TablePilot brdf_table_pilot(const FrameScene& frame, const MethodSettings& settings,
+                            const FrameHooks& hooks);
+
 // The record rays of every cache in a caching method's frame statistics.
 uint64_t cache_rays_of(const nlohmann::json& stats);
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "methods/glossy_spec.h"
 #include "util/error.h"
 
 namespace rc {
@@ -171,31 +172,33 @@ std::string model_key(const std::vector<MaterialChoice>& materials) {
     return rc ? "rc" : "ic";
 }
 
-MethodRun caching_run(const std::vector<MaterialChoice>& materials) {
+MethodRun caching_run(const std::vector<MaterialChoice>& choices,
+                      const std::vector<Material>& materials) {
     size_t glossy = 0;
     size_t rc = 0;
     size_t sdrc = 0;
-    std::string list;
-    for (const MaterialChoice& m : materials) {
-        if (m.server == LobeServer::kDiffuse) {
-            continue;
-        }
-        ++glossy;
+    std::vector<GlossyServer> servers;
+    for (const MaterialChoice& m : choices) {
+        glossy += m.server != LobeServer::kDiffuse;
         rc += m.server == LobeServer::kRadianceCache;
         sdrc += m.server == LobeServer::kSdrc;
-        const char* server = m.server == LobeServer::kPath ? "path" : lobe_server_name(m.server);
-        list += (list.empty() ? "" : ",") + m.name + "=" + server;
+        servers.push_back(m.server == LobeServer::kRadianceCache ? GlossyServer::kRc
+                          : m.server == LobeServer::kSdrc        ? GlossyServer::kSdrc
+                                                                 : GlossyServer::kPath);
     }
     if (rc + sdrc == 0) {
         return {"ic", {}};
     }
-    if (rc == glossy) {
-        return {"rc", {}};
+    if (rc == glossy || sdrc == glossy) {
+        return {rc == glossy ? "rc" : "sdrc", {}};
     }
-    if (sdrc == glossy) {
-        return {"sdrc", {}};
+    try {
+        return {"ic", {{"--glossy", glossy_spec_of(servers, materials)}}};
+    } catch (const Error&) {
+        // A material the list cannot name (a ',' or '=' in its name, or a name two materials
+        // share): one cache serves every glossy lobe, SDRC where any lobe needs it.
+        return {sdrc > 0 ? "sdrc" : "rc", {}};
     }
-    return {"ic", {{"--glossy", list}}};
 }
 
 AutoPlan choose_plan(const PlanInputs& in) {

@@ -60,9 +60,11 @@ struct AutoPlan {
 // budget does not hold the pilot's share (model.max_pilot_fraction).
 AutoPlan choose_plan(const PlanInputs& inputs);
 
-// The caching method that serves `materials`: ic when no glossy lobe is cached, rc or sdrc when
-// one of them serves every glossy lobe, else ic with the per-material --glossy list.
-MethodRun caching_run(const std::vector<MaterialChoice>& materials);
+// The caching method that serves `choices` (one per material of `materials`): ic when no glossy
+// lobe is cached, rc or sdrc when one of them serves every glossy lobe, else ic with the
+// per-material --glossy list (methods/glossy_spec.h).
+MethodRun caching_run(const std::vector<MaterialChoice>& choices,
+                      const std::vector<Material>& materials);
 
 // The model constants' name for a caching run ("ic", "rc" or "sdrc").
 std::string model_key(const std::vector<MaterialChoice>& materials);
