@@ -243,8 +243,13 @@ def fit(args):
         model = json.load(f)
     print("| scene | method | size | a | R | spp | W / predicted | relMSE | predicted |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    glossy = {scene: has_glossy(scene) for scene in {r["scene"] for r in data["rows"]}}
     for method in sorted({r["method"] for r in data["rows"]}):
-        rows = [r for r in data["rows"] if r["method"] == method]
+        # ic renders under auto only where no glossy lobe is cached: its constants come from the
+        # scenes without glossy lobes (on the others it path-traces them, another regime).
+        rows = [r for r in data["rows"] if r["method"] == method and
+                not (method == "ic" and glossy[r["scene"]] and
+                     any(not glossy[q["scene"]] for q in data["rows"] if q["method"] == "ic"))]
         model["cost"][method] = {k: round(v, 4) for k, v in fit_cost(rows, np).items()}
         wide = [r for r in rows if r["width"] >= args.error_min_width] or rows
         model["error"][method] = {k: float("%.4g" % v) for k, v in fit_error(wide, np).items()}

@@ -15,8 +15,8 @@ first; auto's throughput measured then if it was not cached).
 Usage: tools/bench/auto.py [--scenes cornell-box two-rooms glossy-box] [--budgets 10 30 100]
            [--methods pt ic rc sdrc ivg-gather decomposition] [--width 256]
            [--out build/bench/auto] [-- extra render options]
-Writes OUT/auto.json (every run) and OUT/auto.md (the tables), and prints the tables. Python 3
-standard library only.
+Writes OUT/auto.json (every run), OUT/auto.md (the tables) and OUT/auto-SCENE.png (relMSE against
+the budget, a line per method; with matplotlib), and prints the tables.
 """
 
 import argparse
@@ -99,6 +99,33 @@ def table(rows, scene, budget):
     return "\n".join(lines) + "\n"
 
 
+def chart(rows, scene, path):
+    """relMSE against the budget, one line per method, auto's thicker: OUT/auto-SCENE.png."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    methods = []
+    for r in rows:
+        if r["scene"] == scene and r["method"] not in methods:
+            methods.append(r["method"])
+    for method in methods:
+        points = sorted((r["budget"], r["relmse"]) for r in rows
+                        if r["scene"] == scene and r["method"] == method)
+        ax.plot([p[0] for p in points], [p[1] for p in points], marker="o", label=method,
+                linewidth=3 if method == "auto" else 1.2, zorder=3 if method == "auto" else 2)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("--time (s)")
+    ax.set_ylabel("image relMSE")
+    ax.set_title("%s: every method at its defaults, and auto" % scene)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--scenes", nargs="+", default=["cornell-box", "two-rooms", "glossy-box"])
@@ -123,6 +150,11 @@ def main(argv):
         json.dump(rows, f, indent=1)
     with open(os.path.join(args.out, "auto.md"), "w") as f:
         f.write(text)
+    try:
+        for scene in args.scenes:
+            chart(rows, scene, os.path.join(args.out, "auto-%s.png" % scene))
+    except ImportError:
+        print("auto.py: matplotlib is not installed: no charts", file=sys.stderr)
     print(text)
 
 
