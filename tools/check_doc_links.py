@@ -36,6 +36,9 @@ HTML_ANCHOR = re.compile(r"<a\s+(?:name|id)\s*=\s*\"([^\"]+)\"")
 
 def markdown_files(paths):
     if paths:
+        for p in paths:
+            if not os.path.isfile(p):
+                sys.exit("check_doc_links: %s: no such Markdown file" % p)
         return [os.path.abspath(p) for p in paths]
     files = [os.path.join(ROOT, "README.md")]
     for pattern in ("docs/**/*.md", "scenes/**/*.md"):

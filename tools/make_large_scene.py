@@ -49,9 +49,12 @@ def main():
     parser.add_argument("out")
     parser.add_argument("--triangles", type=positive_int, default=5_000_000)
     args = parser.parse_args()
-    with open(args.out, "w") as out:
-        json.dump(scene(args.triangles), out, indent=1)
-        out.write("\n")
+    try:
+        with open(args.out, "w") as out:
+            json.dump(scene(args.triangles), out, indent=1)
+            out.write("\n")
+    except OSError as e:
+        parser.error("%s: %s" % (args.out, e.strerror))
 
 
 if __name__ == "__main__":

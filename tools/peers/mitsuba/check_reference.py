@@ -70,6 +70,9 @@ def main(argv):
     parser.add_argument("--out", default="build/peers/mitsuba-check")
     parser.add_argument("--json")
     args = parser.parse_args(argv)
+    for needed in ("reference.exr", "reference.json"):
+        if not os.path.isfile(os.path.join(args.scene, needed)):
+            parser.error("%s: no %s (a scene directory with its reference)" % (args.scene, needed))
     import mitsuba as mi
     mi.set_variant("scalar_rgb")
     reference_path = os.path.join(args.scene, "reference.exr")
