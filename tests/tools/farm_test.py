@@ -1,0 +1,155 @@
+#!/usr/bin/env python3
+"""tools/farm.py and tools/farm/local-slurm.sh (docs/farm.md). Without Slurm: the dry run's
+scripts (the array, the merge after it by afterok, --gres with --gpu) and one clear line when
+sbatch is missing. On the local one-node cluster (tools/farm/local-slurm.sh start; skipped, saying
+so, only when no cluster answers): a 6-frame clip split 2 frames a task is bitwise the clip of one
+process; the Cornell box split into 4 sample ranges merges to the single render (beauty within
+relative 1e-6 of its value, the stddev layer within 1e-4, by OpenImageIO's idiff); a task killed mid-render is reported
+by name and log, and a second call renders only it, the frames then right. Run by CTest with
+$RADCACHE set to the built executable."""
+
+import os
+import shutil
+import subprocess
+import sys
+import unittest
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+FARM = os.path.join(ROOT, "tools", "farm.py")
+RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
+SCRATCH = os.path.join(os.environ.get("RADCACHE_TEST_SCRATCH_DIR") or "/tmp", "farm_test")
+CORNELL = os.path.join(ROOT, "scenes", "cornell-box", "scene.json")
+SPHERE = os.path.join(ROOT, "scenes", "moving-sphere", "scene.json")
+
+
+def slurm_answers():
+    if shutil.which("sinfo") is None:
+        return False
+    try:
+        result = subprocess.run(["sinfo", "-h", "-o", "%T"], capture_output=True, text=True,
+                                timeout=20)
+    except subprocess.TimeoutExpired:
+        return False
+    return result.returncode == 0 and result.stdout.strip() != ""
+
+
+def farm(args, env=None):
+    return subprocess.run([sys.executable, FARM, "--radcache", RADCACHE, "--poll", "0.5"] + args,
+                          capture_output=True, text=True, env=env, timeout=900)
+
+
+def differs(a, b, channels, relative, scratch):
+    """Where the channels of .exr files a and b differ (OpenImageIO's idiff: a pixel fails where
+    a channel differs by more than `relative` times its value; 0: any difference), or ''."""
+    picked = []
+    for name, path in (("a", a), ("b", b)):
+        picked.append(os.path.join(scratch, f"{name}-layer.exr"))
+        subprocess.run(["oiiotool", path, "--ch", channels, "-o", picked[-1]], check=True)
+    result = subprocess.run(["idiff", "-fail", "0", "-warn", "0", "-failrelative", str(relative),
+                             "-warnrelative", str(relative)] + picked,
+                            capture_output=True, text=True)
+    return "" if result.returncode == 0 else result.stdout
+
+
+def render(args):
+    result = subprocess.run([RADCACHE, "render", "--quiet"] + args, capture_output=True,
+                            text=True)
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+class FarmWithoutSlurm(unittest.TestCase):
+    def test_dry_run_ties_the_merge_to_the_array(self):
+        result = farm([SPHERE, "--out", os.path.join(SCRATCH, "dry"), "--frames", "0:5",
+                       "--frames-per-task", "2", "--tiles", "2x1", "--width", "32", "--height",
+                       "32", "--spp", "4", "--gpu", "--dry-run"])
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("#SBATCH --array=0,1,2,3,4,5", result.stdout)
+        self.assertIn("#SBATCH --gres=gpu:1", result.stdout)
+        self.assertIn("--dependency=afterok", result.stdout)
+        self.assertIn("--crop 16:32,0:32", result.stdout)
+        self.assertEqual(result.stdout.count(" merge --quiet "), 6)
+
+    def test_a_missing_sbatch_is_one_line(self):
+        bare = os.path.join(SCRATCH, "bare-path")
+        os.makedirs(bare, exist_ok=True)
+        result = farm([CORNELL, "--out", os.path.join(SCRATCH, "nosbatch"), "--width", "8",
+                       "--height", "8"], env=dict(os.environ, PATH=bare))
+        self.assertEqual(result.returncode, 1)
+        self.assertEqual(result.stderr.count("\n"), 1, result.stderr)
+        self.assertIn("not found", result.stderr)
+
+
+@unittest.skipUnless(slurm_answers(), "Slurm is not running: tools/farm/local-slurm.sh start")
+class FarmOnLocalSlurm(unittest.TestCase):
+    def setUp(self):
+        self.dir = os.path.join(SCRATCH, self.id().split(".")[-1])
+        shutil.rmtree(self.dir, ignore_errors=True)
+        os.makedirs(self.dir)
+
+    def test_frames_are_bitwise_those_of_one_process(self):
+        out = os.path.join(self.dir, "farm")
+        result = farm([SPHERE, "--out", out, "--frames", "0:5", "--frames-per-task", "2",
+                       "--width", "32", "--height", "32", "--spp", "4"])
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        self.assertIn("3/3 tasks done", result.stdout)
+        render([SPHERE, "--frames", "0:5", "--width", "32", "--height", "32", "--spp", "4",
+                "--write-sums", "-o", os.path.join(self.dir, "one.####.exr")])
+        for frame in range(6):
+            one = os.path.join(self.dir, f"one.{frame:04d}.exr")
+            farmed = os.path.join(out, f"frame.{frame:04d}.exr")
+            for channels in ("R,G,B", "stddev.R,stddev.G,stddev.B", "albedo.R,albedo.G,albedo.B"):
+                self.assertEqual(differs(farmed, one, channels, 0, self.dir), "",
+                                 f"frame {frame} {channels}")
+
+    def test_sample_ranges_merge_to_the_single_render(self):
+        out = os.path.join(self.dir, "farm")
+        result = farm([CORNELL, "--out", out, "--sample-ranges", "4", "--spp", "64", "--width",
+                       "24", "--height", "24"])
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        one = os.path.join(self.dir, "one.exr")
+        render([CORNELL, "--width", "24", "--height", "24", "--spp", "64", "--write-sums",
+                "-o", one])
+        merged = os.path.join(out, "frame.0000.exr")
+        # Not bitwise: the single render adds its 64 samples one by one in float32.
+        self.assertNotEqual(differs(merged, one, "R,G,B", 0, self.dir), "")
+        for channels, bound in (("R,G,B", 1e-6), ("stddev.R,stddev.G,stddev.B", 1e-4)):
+            self.assertEqual(differs(merged, one, channels, bound, self.dir), "", channels)
+
+    def test_a_killed_task_is_reported_and_rendered_again(self):
+        # The radcache the tasks run: task f2-3's first attempt is killed mid-render.
+        flag = os.path.join(self.dir, "killed-once")
+        wrapper = os.path.join(self.dir, "radcache-wrapper.sh")
+        with open(wrapper, "w") as file:
+            file.write(f"""#!/bin/bash
+if [[ "$*" == *"--frames 2:3"* && ! -e {flag} ]]; then
+    touch {flag}
+    {RADCACHE} "$@" & sleep 0.3; kill -9 $!; exit 137
+fi
+exec {RADCACHE} "$@"
+""")
+        os.chmod(wrapper, 0o755)
+        out = os.path.join(self.dir, "farm")
+        args = [SPHERE, "--out", out, "--frames", "0:5", "--frames-per-task", "2", "--width",
+                "32", "--height", "32", "--spp", "4"]
+        first = subprocess.run([sys.executable, FARM, "--radcache", wrapper, "--poll", "0.5"]
+                               + args, capture_output=True, text=True, timeout=900)
+        self.assertEqual(first.returncode, 1, first.stdout + first.stderr)
+        self.assertIn("task 1 (f2-3.t0.s0-4) failed; log", first.stderr)
+        self.assertIn("task-1.log", first.stderr)
+        self.assertFalse(os.path.exists(os.path.join(out, "frame.0000.exr")))
+        second = subprocess.run([sys.executable, FARM, "--radcache", wrapper, "--poll", "0.5"]
+                                + args, capture_output=True, text=True, timeout=900)
+        self.assertEqual(second.returncode, 0, second.stdout + second.stderr)
+        self.assertIn("(1 of 3 tasks)", second.stdout)
+        render([SPHERE, "--frames", "2:3", "--width", "32", "--height", "32", "--spp", "4",
+                "--write-sums", "-o", os.path.join(self.dir, "one.####.exr")])
+        for frame in (2, 3):
+            self.assertEqual(differs(os.path.join(out, f"frame.{frame:04d}.exr"),
+                                     os.path.join(self.dir, f"one.{frame:04d}.exr"), "R,G,B", 0,
+                                     self.dir), "")
+
+
+if __name__ == "__main__":
+    shutil.rmtree(SCRATCH, ignore_errors=True)
+    os.makedirs(SCRATCH, exist_ok=True)
+    unittest.main()
