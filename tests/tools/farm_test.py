@@ -5,7 +5,8 @@ sbatch is missing. On the local one-node cluster (tools/farm/local-slurm.sh star
 so, only when no cluster answers): a 6-frame clip split 2 frames a task is bitwise the clip of one
 process; the Cornell box split into 4 sample ranges merges to the single render (beauty within
 relative 1e-6 of its value, the stddev layer within 1e-4, by OpenImageIO's idiff); a task killed mid-render is reported
-by name and log, and a second call renders only it, the frames then right. Run by CTest with
+by name and log, and a second call renders only it, the frames then right; 2x2 tiles merge to
+the single render bitwise, and a part of another scene is refused. Run by CTest with
 $RADCACHE set to the built executable."""
 
 import os
@@ -114,6 +115,33 @@ class FarmOnLocalSlurm(unittest.TestCase):
         self.assertNotEqual(differs(merged, one, "R,G,B", 0, self.dir), "")
         for channels, bound in (("R,G,B", 1e-6), ("stddev.R,stddev.G,stddev.B", 1e-4)):
             self.assertEqual(differs(merged, one, channels, bound, self.dir), "", channels)
+
+    def test_tiles_merge_to_the_single_render_bitwise_and_another_scene_is_refused(self):
+        out = os.path.join(self.dir, "farm")
+        result = farm([CORNELL, "--out", out, "--tiles", "2x2", "--spp", "4", "--width", "24",
+                       "--height", "20"])
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        self.assertIn("4/4 tasks done", result.stdout)
+        one = os.path.join(self.dir, "one.exr")
+        render([CORNELL, "--width", "24", "--height", "20", "--spp", "4", "--write-sums",
+                "-o", one])
+        merged = os.path.join(out, "frame.0000.exr")
+        for channels in ("R,G,B", "stddev.R,stddev.G,stddev.B", "count.Y"):
+            self.assertEqual(differs(merged, one, channels, 0, self.dir), "", channels)
+        # A window of another scene, rendered as the farm's tasks are, is refused by name.
+        other = os.path.join(self.dir, "furnace-part.exr")
+        furnace = os.path.join(ROOT, "scenes", "furnace", "scene.json")
+        render([furnace, "--width", "24", "--height", "20", "--spp", "4", "--write-sums",
+                "--frames", "0:0", "--crop", "12:24,10:20", "-o", other])
+        parts = sorted(os.path.join(out, "parts", name) for name in os.listdir(
+            os.path.join(out, "parts")))
+        target = os.path.join(self.dir, "mixed.exr")
+        mixed = subprocess.run([RADCACHE, "merge", target] + parts[:3] + [other],
+                               capture_output=True, text=True)
+        self.assertNotEqual(mixed.returncode, 0)
+        self.assertIn("furnace-part.exr: another scene file", mixed.stderr)
+        self.assertEqual(mixed.stderr.count("\n"), 1, mixed.stderr)
+        self.assertFalse(os.path.exists(target))
 
     def test_a_killed_task_is_reported_and_rendered_again(self):
         # The radcache the tasks run: task f2-3's first attempt is killed mid-render.
