@@ -172,6 +172,10 @@ void read_part_options(const ParsedArguments& arguments, RenderJob* job) {
         throw Error("--write-sums needs an .exr output (-o " + job->output_pattern + ")",
                     kExitUsage);
     }
+    if (job->write_sums && arguments.has("--half")) {
+        throw Error("--write-sums writes float32 sums (half floats would not add up): drop --half",
+                    kExitUsage);
+    }
 }
 
 }  // namespace

@@ -179,6 +179,7 @@ TEST(RenderParts, BadPartOptionsFailClearlyWithoutOutput) {
         {{"--sample-range", "0:4", "--method", "ic"}, "--sample-range applies to --method pt only"},
         {{"--write-sums", "--method", "ic"}, "--write-sums applies to --method pt only"},
         {{"--write-sums", "-o", (dir / "out.png").string()}, "--write-sums needs an .exr output"},
+        {{"--write-sums", "--half"}, "drop --half"},
     };
     for (const auto& [options, expected] : cases) {
         std::vector<std::string> args = {"render", scene("cornell-box"), "--width",
