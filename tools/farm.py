@@ -3,8 +3,8 @@
 as the tasks of a job array, and their merge (radcache merge) after it (docs/farm.md).
 
     tools/farm.py SCENE --out DIR [--frames A:B] [--frames-per-task N] [--tiles CxR]
-                  [--sample-ranges K] [--spp N] [--gpu] [--radcache PATH | --bundle DIR]
-                  [--dry-run] -- [radcache render options]
+                  [--sample-ranges K] [--spp N] [--gpu] [--cache-prepass]
+                  [--radcache PATH | --bundle DIR] [--dry-run] -- [radcache render options]
 
 DIR receives the batch scripts (scripts/), the tasks' logs (logs/), their parts (parts/), a mark
 for each task that finished (done/) and the frames (frame.####.exr, merged). Run again with the
@@ -67,6 +67,10 @@ def arguments(argv):
     parser.add_argument("--width", type=int, required=True)
     parser.add_argument("--height", type=int, required=True)
     parser.add_argument("--gpu", action="store_true", help="ask one GPU per task (--gres=gpu:1)")
+    parser.add_argument("--cache-prepass", action="store_true",
+                        help="caching methods (ic, rc, sdrc), one frame: a job before the array "
+                             "renders the frame with --cache-out DIR/cache.rcc, every task reads "
+                             "it with --cache-in (tiles then show no seams)")
     parser.add_argument("--partition", help="the Slurm partition (default: the cluster's)")
     parser.add_argument("--radcache", default=os.environ.get("RADCACHE", "radcache"),
                         help="the radcache the nodes run (default $RADCACHE, else on the PATH)")
@@ -85,6 +89,13 @@ def arguments(argv):
                     "--width", "--height", "--write-sums"):
         if refused in options.render:
             fail(f"{refused} after --: the farm sets it", 2)
+    if options.cache_prepass:
+        first, last = parse_range(options.frames, "--frames")
+        if first != last:
+            fail("--cache-prepass: a cache file holds one frame; give --frames A:A", 2)
+        for refused in ("--cache-in", "--cache-out"):
+            if refused in options.render:
+                fail(f"{refused} after --: --cache-prepass sets it", 2)
     if not options.scene.is_file():
         fail(f"{options.scene}: scene file not found", 2)
     return options
@@ -120,12 +131,15 @@ def plan(options):
                 name = f"f{a}-{b}.t{t}.s{s0}-{s1}"
                 command = [radcache, "render", str(options.scene.resolve()), "--quiet",
                            "--frames", f"{a}:{b}", "-o", str(out / "parts" / f"{name}.####.exr"),
-                           "--width", str(options.width), "--height", str(options.height),
-                           "--write-sums"]
-                command += ["--sample-range", f"{s0}:{s1}"] if k > 1 else ["--spp", str(spp)]
+                           "--width", str(options.width), "--height", str(options.height)]
+                # Sums (pt's) only where ranges are added: windows and frames need none.
+                command += (["--sample-range", f"{s0}:{s1}", "--write-sums"] if k > 1
+                            else ["--spp", str(spp)])
                 if crop:
                     command += ["--crop", crop]
                 command += options.render
+                if options.cache_prepass:
+                    command += ["--cache-in", str(out / "cache.rcc")]
                 tasks.append({"name": name, "frames": (a, b), "command": command})
     return tasks
 
@@ -143,10 +157,28 @@ def header(options, name, log):
     return lines
 
 
+def prepass_script(options):
+    """The cache pre-pass: the frame whole, its cache written to DIR/cache.rcc."""
+    out = options.out.resolve()
+    radcache = str(options.bundle.resolve() / "radcache") if options.bundle else options.radcache
+    first, _ = parse_range(options.frames, "--frames")
+    command = [radcache, "render", str(options.scene.resolve()), "--quiet", "--frames",
+               f"{first}:{first}", "-o", str(out / "prepass.exr"), "--width", str(options.width),
+               "--height", str(options.height), "--spp", str(options.spp)] + options.render
+    command += ["--cache-out", str(out / "cache.rcc")]
+    lines = header(options, "radcache-prepass", out / "logs" / "prepass.log")
+    if options.gpu:
+        lines.append("#SBATCH --gres=gpu:1")
+    lines += ["set -euo pipefail", shlex.join(command),
+              f"touch {shlex.quote(str(out / 'done' / 'prepass'))}"]
+    return "\n".join(lines) + "\n"
+
+
 def render_script(options, tasks, indices):
     out = options.out.resolve()
     lines = header(options, "radcache-render", out / "logs" / "task-%a.log")
     lines.append(f"#SBATCH --array={','.join(str(i) for i in indices)}")
+    lines.append("#SBATCH --kill-on-invalid-dep=yes")
     if options.gpu:
         lines.append("#SBATCH --gres=gpu:1")
     lines += ["set -euo pipefail", 'case "$SLURM_ARRAY_TASK_ID" in']
@@ -244,7 +276,13 @@ def main(argv):
     tasks = plan(options)
     out = options.out.resolve()
     if options.dry_run:
-        print(f"# {out / 'scripts' / RENDER_ARRAY}")
+        if options.cache_prepass:
+            print(f"# {out / 'scripts' / PREPASS}")
+            print(prepass_script(options))
+            print(f"# {out / 'scripts' / RENDER_ARRAY} (after the pre-pass: "
+                  "--dependency=afterok:PREPASS)")
+        else:
+            print(f"# {out / 'scripts' / RENDER_ARRAY}")
         print(render_script(options, tasks, range(len(tasks))))
         print(f"# {out / 'scripts' / MERGE} (after the array: --dependency=afterok:ARRAY)")
         print(merge_script(options, tasks))
@@ -254,17 +292,28 @@ def main(argv):
     missing = [i for i in range(len(tasks)) if not (out / "done" / f"task-{i}").exists()]
     (out / "done" / "merge").unlink(missing_ok=True)
     jobs = []
+    prepass = None
+    if options.cache_prepass and missing and not (out / "done" / "prepass").exists():
+        script = out / "scripts" / PREPASS
+        script.write_text(prepass_script(options))
+        prepass = submit(script)
+        jobs.append(prepass)
+        print(f"farm: submitted cache pre-pass job {prepass}", flush=True)
+    array = None
     if missing:
         script = out / "scripts" / RENDER_ARRAY
         script.write_text(render_script(options, tasks, missing))
-        jobs.append(submit(script))
-        print(f"farm: submitted render array job {jobs[0]} ({len(missing)} of {len(tasks)} "
+        array = submit(script, prepass)
+        jobs.append(array)
+        print(f"farm: submitted render array job {array} ({len(missing)} of {len(tasks)} "
               "tasks)", flush=True)
     merge = out / "scripts" / MERGE
     merge.write_text(merge_script(options, tasks))
-    jobs.append(submit(merge, jobs[0] if jobs else None))
+    jobs.append(submit(merge, array))
     print(f"farm: submitted merge job {jobs[-1]}", flush=True)
     failed = follow(options, tasks, jobs)
+    if prepass and not (out / "done" / "prepass").exists():
+        fail(f"the cache pre-pass failed; log {out / 'logs' / 'prepass.log'}")
     if failed:
         report_failures(options, tasks, failed)
         return 1

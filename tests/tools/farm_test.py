@@ -6,7 +6,8 @@ so, only when no cluster answers): a 6-frame clip split 2 frames a task is bitwi
 process; the Cornell box split into 4 sample ranges merges to the single render (beauty within
 relative 1e-6 of its value, the stddev layer within 1e-4, by OpenImageIO's idiff); a task killed mid-render is reported
 by name and log, and a second call renders only it, the frames then right; 2x2 tiles merge to
-the single render bitwise, and a part of another scene is refused. Run by CTest with
+the single render bitwise, and a part of another scene is refused; ic tiles rendered with the
+cache of a pre-pass job merge to the single render bitwise. Run by CTest with
 $RADCACHE set to the built executable."""
 
 import os
@@ -126,7 +127,7 @@ class FarmOnLocalSlurm(unittest.TestCase):
         render([CORNELL, "--width", "24", "--height", "20", "--spp", "4", "--write-sums",
                 "-o", one])
         merged = os.path.join(out, "frame.0000.exr")
-        for channels in ("R,G,B", "stddev.R,stddev.G,stddev.B", "count.Y"):
+        for channels in ("R,G,B", "stddev.R,stddev.G,stddev.B", "normal.R,normal.G,normal.B"):
             self.assertEqual(differs(merged, one, channels, 0, self.dir), "", channels)
         # A window of another scene, rendered as the farm's tasks are, is refused by name.
         other = os.path.join(self.dir, "furnace-part.exr")
@@ -142,6 +143,23 @@ class FarmOnLocalSlurm(unittest.TestCase):
         self.assertIn("furnace-part.exr: another scene file", mixed.stderr)
         self.assertEqual(mixed.stderr.count("\n"), 1, mixed.stderr)
         self.assertFalse(os.path.exists(target))
+
+    def test_ic_tiles_with_a_cache_prepass_show_no_seams(self):
+        out = os.path.join(self.dir, "farm")
+        result = farm([CORNELL, "--out", out, "--tiles", "2x2", "--spp", "2", "--width", "24",
+                       "--height", "24", "--cache-prepass", "--", "--method", "ic"])
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        self.assertIn("cache pre-pass job", result.stdout)
+        # The tiles, each rendered with the pre-pass's cache, merge to bitwise the image of one
+        # render with that cache and to the pre-pass's own image.
+        one = os.path.join(self.dir, "one.exr")
+        render([CORNELL, "--method", "ic", "--width", "24", "--height", "24", "--spp", "2",
+                "--cache-in", os.path.join(out, "cache.rcc"), "-o", one])
+        merged = os.path.join(out, "frame.0000.exr")
+        for reference in (one, os.path.join(out, "prepass.exr")):
+            for channels in ("R,G,B", "indirect.R,indirect.G,indirect.B"):
+                self.assertEqual(differs(merged, reference, channels, 0, self.dir), "",
+                                 f"{reference} {channels}")
 
     def test_a_killed_task_is_reported_and_rendered_again(self):
         # The radcache the tasks run: task f2-3's first attempt is killed mid-render.
