@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """tools/farm.py and tools/farm/local-slurm.sh (docs/farm.md). Without Slurm: the dry run's
 scripts (the array, the merge after it by afterok, --gres with --gpu) and one clear line when
-sbatch is missing. On the local one-node cluster (tools/farm/local-slurm.sh start; skipped, saying
+sbatch is missing or the controller does not answer. On the local one-node cluster (tools/farm/local-slurm.sh start; skipped, saying
 so, only when no cluster answers): a 6-frame clip split 2 frames a task is bitwise the clip of one
 process; the Cornell box split into 4 sample ranges merges to the single render (beauty within
 relative 1e-6 of its value, the stddev layer within 1e-4, by OpenImageIO's idiff); a task killed mid-render is reported
@@ -79,6 +79,20 @@ class FarmWithoutSlurm(unittest.TestCase):
         self.assertEqual(result.returncode, 1)
         self.assertEqual(result.stderr.count("\n"), 1, result.stderr)
         self.assertIn("not found", result.stderr)
+
+
+    @unittest.skipUnless(shutil.which("sinfo"), "no Slurm client (sinfo)")
+    def test_a_cluster_that_does_not_answer_is_one_line(self):
+        conf = os.path.join(SCRATCH, "dead-slurm.conf")
+        with open(conf, "w") as file:
+            file.write("ClusterName=dead\nSlurmctldHost=localhost(127.0.0.1)\n"
+                       "SlurmctldPort=6999\nNodeName=dead CPUs=1 State=UNKNOWN\n"
+                       "PartitionName=dead Nodes=dead Default=YES\n")
+        result = farm([CORNELL, "--out", os.path.join(SCRATCH, "dead"), "--width", "8",
+                       "--height", "8"], env=dict(os.environ, SLURM_CONF=conf))
+        self.assertEqual(result.returncode, 1)
+        self.assertEqual(result.stderr.count("\n"), 1, result.stderr)
+        self.assertIn("farm: the Slurm cluster does not answer", result.stderr)
 
 
 @unittest.skipUnless(slurm_answers(), "Slurm is not running: tools/farm/local-slurm.sh start")
