@@ -144,9 +144,9 @@ def plan(options):
     return tasks
 
 
-def frame_parts(out, tasks, frame):
-    return [str(out / "parts" / f"{t['name']}.{frame:04d}.exr") for t in tasks
-            if t["frames"][0] <= frame <= t["frames"][1]]
+def group_parts(out, tasks, frames):
+    """The part patterns of the tasks of frames (a, b)."""
+    return [str(out / "parts" / f"{t['name']}.####.exr") for t in tasks if t["frames"] == frames]
 
 
 def header(options, name, log):
@@ -192,13 +192,13 @@ def render_script(options, tasks, indices):
 def merge_script(options, tasks):
     out = options.out.resolve()
     radcache = str(options.bundle.resolve() / "radcache") if options.bundle else options.radcache
-    first, last = parse_range(options.frames, "--frames")
     lines = header(options, "radcache-merge", out / "logs" / "merge.log")
     lines += ["#SBATCH --kill-on-invalid-dep=yes", "set -euo pipefail"]
-    for frame in range(first, last + 1):
-        target = str(out / f"frame.{frame:04d}.exr")
-        lines.append(shlex.join([radcache, "merge", "--quiet", target]
-                                + frame_parts(out, tasks, frame)))
+    # One merge a group of frames (the frames of a task): it holds them in memory at once.
+    for frames in sorted({t["frames"] for t in tasks}):
+        lines.append(shlex.join([radcache, "merge", "--quiet", "--frames",
+                                 f"{frames[0]}:{frames[1]}", str(out / "frame.####.exr")]
+                                + group_parts(out, tasks, frames)))
     lines.append(f"touch {shlex.quote(str(out / 'done' / 'merge'))}")
     return "\n".join(lines) + "\n"
 

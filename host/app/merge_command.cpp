@@ -1,6 +1,7 @@
 // `radcache merge OUT PART...`: the parts of one render (app/merge_parts.h) as one image.
 #include "app/commands.h"
 #include "app/merge_parts.h"
+#include "app/render_job.h"
 #include "image/image_io.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -8,6 +9,11 @@
 
 namespace rc {
 namespace {
+
+// The frames of --frames A:B, or the one frame (first == last, `given` false).
+FrameRange merge_frames(const ParsedArguments& arguments) {
+    return arguments.has("--frames") ? parse_frames(arguments.value("--frames")) : FrameRange{};
+}
 
 int merge(const ParsedArguments& arguments) {
     const std::vector<std::string>& words = arguments.positionals();
@@ -17,24 +23,47 @@ int merge(const ParsedArguments& arguments) {
             "--help)",
             kExitUsage);
     }
-    const std::filesystem::path output = words[0];
-    check_output_path(output);
-    RunFiles run;
-    std::vector<std::filesystem::path> parts;
-    for (size_t i = 1; i < words.size(); ++i) {
-        parts.emplace_back(words[i]);
-        run.input("part", parts.back());
+    const FrameRange frames = merge_frames(arguments);
+    if (frames.given) {
+        for (const std::string& word : words) {
+            if (word.find('#') == std::string::npos) {
+                throw Error("merge --frames: " + word + " needs a #### pattern in the name",
+                            kExitUsage);
+            }
+        }
     }
-    run.output("OUT", output);
+    const auto name = [&](const std::string& word, int frame) {
+        return frames.given ? frame_path(word, frame) : std::filesystem::path(word);
+    };
+    RunFiles run;
+    for (int frame = frames.first; frame <= frames.last; ++frame) {
+        check_output_path(name(words[0], frame));
+        for (size_t i = 1; i < words.size(); ++i) {
+            run.input("part", name(words[i], frame));
+        }
+    }
+    run.output_frames("OUT", words[0], frames.first, frames.last);
     run.check();
     set_quiet(arguments.has("--quiet"));
-    const Image merged = merge_parts(parts);
+    // Every frame merged before any is written: a refused part leaves no output.
+    std::vector<Image> merged;
+    for (int frame = frames.first; frame <= frames.last; ++frame) {
+        std::vector<std::filesystem::path> parts;
+        for (size_t i = 1; i < words.size(); ++i) {
+            parts.push_back(name(words[i], frame));
+        }
+        merged.push_back(merge_parts(parts));
+    }
     ImageWriteOptions options;
     options.half = arguments.has("--half");
-    write_image(output, merged, options);
-    log_note("merged " + std::to_string(parts.size()) + " parts into " + output.string() + " (" +
-             std::to_string(merged.width) + "x" + std::to_string(merged.height) + ", samples " +
-             merged.metadata.at("radcache:samples") + ")");
+    for (int frame = frames.first; frame <= frames.last; ++frame) {
+        const Image& image = merged[static_cast<size_t>(frame - frames.first)];
+        write_image(name(words[0], frame), image, options);
+        log_note("merged " + std::to_string(words.size() - 1) + " parts into " +
+                 name(words[0], frame).string() + " (" + std::to_string(image.width) + "x" +
+                 std::to_string(image.height) + ", samples " +
+                 image.metadata.at("radcache:samples") + ")");
+    }
     return 0;
 }
 
@@ -52,7 +81,10 @@ CommandSpec merge_command() {
                 "would resolve them. Parts of another scene, method, options, image size or "
                 "frame, overlapping windows or sample ranges, and gaps are refused naming the "
                 "part; nothing is written then (docs/farm.md).",
-            .options = {{"--half", "", "", ".exr: store half floats"},
+            .options = {{"--frames", "", "A:B",
+                         "merge frames A to B: #### in OUT and each PART becomes the frame "
+                         "number"},
+                        {"--half", "", "", ".exr: store half floats"},
                         {"--quiet", "-q", "", "print nothing but errors"}},
             .run = merge};
 }

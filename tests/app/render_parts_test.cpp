@@ -94,6 +94,42 @@ TEST(RenderParts, CropsMergeIntoTheWholeRenderBitwise) {
     EXPECT_EQ(merged.pixels, whole.pixels);
 }
 
+TEST(RenderParts, MergeFramesMergesEachFrameOrWritesNone) {
+    const auto dir = test::scratch_dir("parts_merge_frames");
+    const std::vector<std::string> clip = {"--spp", "2", "--frames", "3:4"};
+    auto with = [&](std::vector<std::string> more) {
+        more.insert(more.end(), clip.begin(), clip.end());
+        return more;
+    };
+    for (const auto& [name, crop] :
+         {std::pair{"whole", "0:24,0:16"}, {"top", "0:24,0:5"}, {"bottom", "0:24,5:16"}}) {
+        const test::CommandResult rendered =
+            test::run_radcache(with({"render", scene("moving-sphere"), "-o",
+                                     (dir / (std::string(name) + ".####.exr")).string(), "--width",
+                                     "24", "--height", "16", "--quiet", "--crop", crop}));
+        ASSERT_EQ(rendered.exit_code, 0) << rendered.output;
+    }
+    const auto merged = dir / "merged.####.exr";
+    test::CommandResult result =
+        test::run_radcache({"merge", "--quiet", "--frames", "3:4", merged.string(),
+                            (dir / "top.####.exr").string(), (dir / "bottom.####.exr").string()});
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    for (const char* frame : {"0003", "0004"}) {
+        const Image whole = read_image(dir / (std::string("whole.") + frame + ".exr"));
+        EXPECT_EQ(read_image(dir / (std::string("merged.") + frame + ".exr")).pixels, whole.pixels)
+            << frame;
+        EXPECT_EQ(whole.metadata.at("radcache:frame"), std::to_string(std::stoi(frame)));
+    }
+    EXPECT_NE(read_image(dir / "whole.0003.exr").pixels, read_image(dir / "whole.0004.exr").pixels);
+    // Frame 5 has no parts: nothing is written, not even frames 3 and 4.
+    result = test::run_radcache({"merge", "--quiet", "--frames", "3:5",
+                                 (dir / "again.####.exr").string(), (dir / "top.####.exr").string(),
+                                 (dir / "bottom.####.exr").string()});
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_NE(result.output.find("top.0005.exr"), std::string::npos) << result.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "again.0003.exr"));
+}
+
 TEST(RenderParts, SampleRangesAddUpToTheWholeRender) {
     const auto dir = test::scratch_dir("parts_ranges");
     const Image whole = render(dir / "whole.exr", {"--spp", "16", "--write-sums"});

@@ -69,7 +69,8 @@ class FarmWithoutSlurm(unittest.TestCase):
         self.assertIn("#SBATCH --gres=gpu:1", result.stdout)
         self.assertIn("--dependency=afterok", result.stdout)
         self.assertIn("--crop 16:32,0:32", result.stdout)
-        self.assertEqual(result.stdout.count(" merge --quiet "), 6)
+        self.assertEqual(result.stdout.count(" merge --quiet --frames "), 3)
+        self.assertIn("--frames 2:3 ", result.stdout)
 
     def test_a_missing_sbatch_is_one_line(self):
         bare = os.path.join(SCRATCH, "bare-path")
