@@ -4,6 +4,8 @@
 # (libFuzzer, the sanitizers) build the fuzz targets (tools/fuzz.sh), which CI runs.
 # mesa-opencl-icd is a second OpenCL implementation (rusticl; its CPU device appears with
 # RUSTICL_ENABLE=llvmpipe: docs/devices.md).
+# slurmctld, slurmd, slurm-client and munge run the one-node cluster of the farm tests
+# (tools/farm/local-slurm.sh, docs/farm.md).
 # Idempotent: runs `apt-get update` at most once, and only when something is missing.
 set -euo pipefail
 
@@ -13,6 +15,7 @@ packages=(
     libembree-dev libopenimageio-dev openimageio-tools libglm-dev nlohmann-json3-dev
     libtinyobjloader-dev libtinygltf-dev libassimp-dev libcli11-dev libgtest-dev googletest
     clang libclang-rt-dev
+    slurmctld slurmd slurm-client munge
 )
 
 missing=()

@@ -13,7 +13,8 @@ CommandLine radcache_command_line() {
     line.version = "radcache 0.1.0";
     line.groups = {{"bench", "benchmark"}};
     for (const CommandSpec& command :
-         {devices_command(), render_command(), compare_command(), convert_command(),
+         {devices_command(), render_command(), compare_command(), merge_command(),
+          convert_command(),
           warmup_command(), bench_all_command(), bench_rays_command(), bench_pt_command(),
           bench_sh_command(), bench_insertion_command(), bench_compile_command(),
           reference_command()}) {

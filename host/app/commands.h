@@ -18,6 +18,7 @@ int run_render_command(const std::vector<std::string>& args);
 CommandSpec devices_command();
 CommandSpec render_command();
 CommandSpec compare_command();
+CommandSpec merge_command();
 CommandSpec convert_command();
 CommandSpec warmup_command();
 CommandSpec reference_command();

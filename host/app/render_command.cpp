@@ -11,6 +11,7 @@
 #include "app/progress_bar.h"
 #include "app/render_devices.h"
 #include "app/render_job.h"
+#include "app/render_parts.h"
 #include "app/render_stats.h"
 #include "bvh/device_bvh.h"
 #include "image/image_io.h"
@@ -88,7 +89,7 @@ std::function<void(int, const std::function<void(const FrameScene&)>&)> visit_fr
 // first holding the method's state) and writes its image.
 void render_frame(const RenderJob& job, int frame,
                   const std::vector<std::unique_ptr<Context>>& contexts, Scene& scene, Bvh& bvh,
-                  Method& method, RenderTotals& totals) {
+                  Method& method, PartIdentity identity, RenderTotals& totals) {
     Context& context = *contexts[0];
     if (static_cast<double>(frame) != scene.frame) {
         scene.set_frame(frame);
@@ -128,10 +129,14 @@ void render_frame(const RenderJob& job, int frame,
     totals.phase("render") += seconds_since(start);
 
     start = SteadyClock::now();
-    write_image(output, written(result.image), job.write_options);
+    if (job.samples.end == 0) {
+        identity.samples = {0, result.spp};
+    }
+    write_image(output, part_image(result, job.layers, job.write_sums, identity, frame),
+                job.write_options);
     totals.phase("write") += seconds_since(start);
-    log_note("wrote " + output.string() + " (" + std::to_string(result.image.width) + "x" +
-             std::to_string(result.image.height) + ", " + std::to_string(result.spp) + " spp)");
+    log_note("wrote " + output.string() + " (" + std::to_string(identity.crop.width()) + "x" +
+             std::to_string(identity.crop.height()) + ", " + std::to_string(result.spp) + " spp)");
     totals.add_frame(frame, output, result, context);
 }
 
@@ -227,6 +232,11 @@ int render(const ParsedArguments& arguments) {
         job.frames.given ? job.frames.first : static_cast<int>(scene.animation.frame_start);
     const int last = job.frames.given ? job.frames.last : first;
     check_run_files(job, entry, arguments, scene_files, first, last);
+    const int width = static_cast<int>(arguments.integer("--width", scene.camera.width));
+    const int height = static_cast<int>(arguments.integer("--height", scene.camera.height));
+    check_part_options(job, entry, width, height);
+    const PartIdentity identity = part_identity(arguments, job.scene.string(), entry.name, width,
+                                                height, job.crop, job.samples);
     warn_unless_frames_in_range(job.frames, scene.animation);
     const std::unique_ptr<Method> method =
         entry.create(job.method_options, method_settings(arguments, settings, job, first, last));
@@ -251,7 +261,7 @@ int render(const ParsedArguments& arguments) {
     }
     Bvh bvh;
     for (long long frame = first; frame <= last; ++frame) {
-        render_frame(job, static_cast<int>(frame), contexts, scene, bvh, *method, totals);
+        render_frame(job, static_cast<int>(frame), contexts, scene, bvh, *method, identity, totals);
     }
     if (!job.stats.empty()) {
         const nlohmann::json stats =

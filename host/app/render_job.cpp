@@ -1,6 +1,7 @@
 #include "app/render_job.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdlib>
 #include <regex>
@@ -69,6 +70,17 @@ std::vector<OptionSpec> render_option_specs() {
          "and exit (no scene needed)"},
         {"--json", "", "", "--list-knobs: as JSON"},
         {"--strict", "", "", "treat every warning (no emitter, dropped samples, ...) as an error"},
+        {"--crop", "", "X0:X1,Y0:Y1",
+         "render only columns X0 to X1 - 1 and rows Y0 to Y1 - 1 of the image, each pixel as the "
+         "whole render has it; the image is the window's (.exr: placed in the whole image's "
+         "window), for radcache merge (docs/farm.md)"},
+        {"--sample-range", "", "S0:S1",
+         "pt: render samples S0 to S1 - 1 of each pixel, those a single render of S1 samples "
+         "draws (instead of --spp), for radcache merge (docs/farm.md)"},
+        {"--write-sums", "", "",
+         "pt, .exr: also write each pixel's sums of samples, of the squares of its beauty samples "
+         "and its count of samples (layers beauty_sum, beauty_sumsq, direct_sum, indirect_sum, "
+         "albedo_sum, normal_sum, count), so parts add up exactly in radcache merge"},
     };
     for (const MethodEntry& method : method_registry()) {
         std::string layers;
@@ -138,6 +150,56 @@ std::vector<std::string> parse_layers(const std::string& text) {
 
 }  // namespace
 
+namespace {
+
+// --crop, --sample-range and --write-sums, and what they cannot go with.
+void read_part_options(const ParsedArguments& arguments, RenderJob* job) {
+    if (arguments.has("--crop")) {
+        job->crop = parse_crop(arguments.value("--crop"));
+    }
+    if (arguments.has("--sample-range")) {
+        const std::string range = arguments.value("--sample-range");
+        job->samples = parse_sample_range(range);
+        for (const char* other : {"--spp", "--time"}) {
+            if (arguments.has(other)) {
+                throw Error("--sample-range " + range + " renders S1 - S0 samples: drop " + other,
+                            kExitUsage);
+            }
+        }
+    }
+    job->write_sums = arguments.has("--write-sums");
+    std::string extension = std::filesystem::path(job->output_pattern).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (job->write_sums && extension != ".exr") {
+        throw Error("--write-sums needs an .exr output (-o " + job->output_pattern + ")",
+                    kExitUsage);
+    }
+    if (job->write_sums && arguments.has("--half")) {
+        throw Error("--write-sums writes float32 sums (half floats would not add up): drop --half",
+                    kExitUsage);
+    }
+}
+
+}  // namespace
+
+void check_part_options(const RenderJob& job, const MethodEntry& entry, int width, int height) {
+    if (entry.name != "pt") {
+        for (const auto& [given, name] :
+             {std::pair{job.samples.end > 0, "--sample-range"}, {job.write_sums, "--write-sums"}}) {
+            if (given) {
+                throw Error(std::string(name) + " applies to --method pt only", kExitUsage);
+            }
+        }
+    }
+    const PixelWindow& c = job.crop;
+    if (!c.empty() && (c.x1 > width || c.y1 > height)) {
+        throw Error("--crop " + window_text(c) + " reaches outside the image (" +
+                        std::to_string(width) + "x" + std::to_string(height) + ")",
+                    kExitUsage);
+    }
+}
+
 RenderJob read_render_job(const ParsedArguments& arguments) {
     if (arguments.positionals().size() != 1) {
         throw Error("radcache render needs exactly one scene file (see radcache render --help)",
@@ -156,6 +218,7 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
             kExitUsage);
     }
     check_output_path(frame_path(job.output_pattern, job.frames.first));
+    read_part_options(arguments, &job);
     if (job.frames.given) {
         check_output_path(frame_path(job.output_pattern, job.frames.last));
     }
@@ -278,6 +341,12 @@ MethodSettings method_settings(const ParsedArguments& arguments, const RenderSet
     method.frame_count = static_cast<int>(std::min<long long>(frames, 1 << 30));
     method.first_frame = first;
     method.layers = job.layers;
+    method.crop = job.crop;
+    if (job.samples.end > 0) {
+        method.first_sample = job.samples.first;
+        method.spp = job.samples.end - job.samples.first;
+    }
+    method.write_sums = job.write_sums;
     return method;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/recorded_files.h"
+#include "app/render_parts.h"
 #include "image/image_io.h"
 #include "methods/method.h"
 #include "scene/camera.h"
@@ -36,11 +37,21 @@ struct RenderJob {
     std::filesystem::path stats;  // empty: no stats file
     std::vector<std::string> layers;
     ImageWriteOptions write_options;
+    // A part of a larger render (docs/farm.md): --crop (empty: the whole image), --sample-range
+    // (given: samples.end > 0), --write-sums.
+    PixelWindow crop;
+    SampleRange samples;
+    bool write_sums = false;
     // The method's options, read once: by read_render_job when --method names the method,
     // otherwise once the scene's render defaults name it (read_method_options).
     std::string method;
     MethodOptions method_options;
 };
+
+// Error (exit status 2) naming the option when --sample-range or --write-sums is given to a
+// method other than pt (the only method whose image is a mean of independent samples per pixel),
+// or --crop reaches outside a width x height image.
+void check_part_options(const RenderJob& job, const MethodEntry& entry, int width, int height);
 
 // Reads the options of the method `entry` into job->method_options unless they are read already;
 // Error (exit status 2) naming an option another method declares or a combination that cannot

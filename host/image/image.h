@@ -1,6 +1,7 @@
 // A float image in scene-linear RGB(A), rows top to bottom.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,14 @@ struct Image {
     int channels = 0;
     std::vector<float> pixels;  // width * height * channels, interleaved
     std::vector<std::string> channel_names;
+    // .exr: where the pixels lie in a larger image (its data window's origin and its display
+    // window's size; full_width 0: the image is whole), and string attributes written and read
+    // as they are (`radcache merge` reads a part's "radcache:*" attributes).
+    int origin_x = 0;
+    int origin_y = 0;
+    int full_width = 0;
+    int full_height = 0;
+    std::map<std::string, std::string> metadata;
 
     Image() = default;
     Image(int width, int height, int channels);

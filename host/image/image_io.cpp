@@ -131,6 +131,17 @@ void write_image(const std::filesystem::path& path, const Image& image,
     OIIO::ImageSpec spec(image.width, image.height, channels, stored);
     if (format == Format::kExr) {
         spec.attribute("compression", "zip");
+        if (image.full_width > 0) {
+            spec.x = image.origin_x;
+            spec.y = image.origin_y;
+            spec.full_x = 0;
+            spec.full_y = 0;
+            spec.full_width = image.full_width;
+            spec.full_height = image.full_height;
+        }
+        for (const auto& [name, value] : image.metadata) {
+            spec.attribute(name, value);
+        }
     }
     spec.channelnames.assign(image.channel_names.begin(), image.channel_names.begin() + channels);
     if (format == Format::kPng) {
@@ -208,6 +219,19 @@ DecodedImage read_opened(OIIO::ImageInput& in, const std::string& name, StderrCa
     image = Image(spec.width, spec.height, spec.nchannels);
     image.channel_names.assign(spec.channelnames.begin(), spec.channelnames.end());
     image.channel_names.resize(static_cast<size_t>(spec.nchannels));
+    if (spec.x != 0 || spec.y != 0 || spec.full_width != spec.width ||
+        spec.full_height != spec.height) {
+        image.origin_x = spec.x;
+        image.origin_y = spec.y;
+        image.full_width = spec.full_width;
+        image.full_height = spec.full_height;
+    }
+    for (const OIIO::ParamValue& attribute : spec.extra_attribs) {
+        if (attribute.type() == OIIO::TypeDesc::STRING &&
+            attribute.name().string().rfind("radcache:", 0) == 0) {
+            image.metadata[attribute.name().string()] = attribute.get_string();
+        }
+    }
     const bool read =
         in.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data());
     std::string message = read ? "" : in.geterror();

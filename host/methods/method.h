@@ -31,6 +31,7 @@ struct MethodSettings : SharedSettings {
     int frame_count = 1;  // frames this render will ask for
     int first_frame = 0;  // the first of them (they come in order, one apart)
     std::vector<std::string> layers;  // the AOV layers that will be written (empty: all)
+    bool write_sums = false;          // --write-sums: the frame's FrameResult::sums are written too
 
     // Whether `layer` will be written.
     bool writes_layer(const std::string& layer) const;
@@ -66,6 +67,9 @@ struct FrameResult {
     // Of the frame's time, the seconds that built its cache (the rest grows with the samples);
     // a render by time (methods/sample_passes.h) plans its passes from it. 0: not told.
     double cache_seconds = 0.0;
+    // With MethodSettings::write_sums, the per-pixel sums of the frame's samples
+    // (image/sample_sums.h), of the same pixels as `image`.
+    Image sums;
 };
 
 class Method {

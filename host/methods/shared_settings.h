@@ -7,10 +7,27 @@
 
 namespace rc {
 
+// A window of the image's pixels: columns x0 .. x1 - 1, rows y0 .. y1 - 1 (--crop). Empty (x1 ==
+// 0): the whole image.
+struct PixelWindow {
+    int x0 = 0;
+    int x1 = 0;
+    int y0 = 0;
+    int y1 = 0;
+
+    bool empty() const { return x1 <= x0 || y1 <= y0; }
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+};
+
 struct SharedSettings {
     int width = 0;  // 0: the scene camera's
     int height = 0;
     int spp = 16;  // camera samples per pixel
+    // The index of the first camera sample of each pixel (--sample-range S0:S1 renders samples
+    // S0 .. S0 + spp - 1: those a single render of S0 + spp samples would draw).
+    int first_sample = 0;
+    PixelWindow crop;  // --crop: the pixels rendered (empty: all)
     uint64_t seed = 0;
     int max_depth = 64;
     int rr_depth = 3;

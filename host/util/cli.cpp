@@ -115,6 +115,14 @@ std::vector<std::string> ParsedArguments::values(const std::string& name) const 
     return found == values_.end() ? std::vector<std::string>{} : found->second;
 }
 
+std::vector<std::string> ParsedArguments::names() const {
+    std::vector<std::string> names;
+    for (const auto& [name, values] : values_) {
+        names.push_back(name);
+    }
+    return names;
+}
+
 long long ParsedArguments::integer(const std::string& name, long long fallback) const {
     if (!has(name)) {
         return fallback;

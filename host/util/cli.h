@@ -56,6 +56,8 @@ class ParsedArguments {
     long long integer(const std::string& name, long long fallback) const;
     double number(const std::string& name, double fallback) const;
     const std::vector<std::string>& positionals() const { return positionals_; }
+    // The names of the options given, sorted.
+    std::vector<std::string> names() const;
 
    private:
     std::map<std::string, std::vector<std::string>> values_;

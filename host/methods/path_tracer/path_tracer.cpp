@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "image/film.h"
+#include "image/sample_sums.h"
 #include "methods/scene_arguments.h"
 #include "methods/shared_settings.h"
 #include "scene/camera.h"
@@ -45,33 +46,26 @@ PathTracer::PathTracer(const FrameScene& frame)
       frame_(frame),
       kernel_(frame.context.kernel("path_tracer/path_tracer.cl", "path_trace_pass")) {}
 
-Image PathTracer::resolve(std::vector<shared::float4> means, int width, int height) {
+Image PathTracer::resolve(const std::vector<shared::float4>& film, int width,
+                          const PixelWindow& window, Image* sums_out) {
     // The sums become means over the pixel's finite samples (the beauty slot's w), and the sums
     // of squares the standard deviation of one sample, unbiased variance estimate (that of the
     // mean is stddev / sqrt(n)): unlike the mean's variance it keeps its precision in half floats.
-    const size_t pixels = static_cast<size_t>(width) * height;
-    for (size_t p = 0; p < pixels; ++p) {
-        shared::float4* s = &means[RC_PT_FILM_SLOTS * p];
-        const float n = s[RC_PT_FILM_BEAUTY].w;
-        const float inv = n > 0.0f ? 1.0f / n : 0.0f;
-        for (int k = 0; k < RC_PT_FILM_SLOTS; ++k) {
-            s[k] = {s[k].x * inv, s[k].y * inv, s[k].z * inv, 0.0f};
-        }
-        const float* mean = &s[RC_PT_FILM_BEAUTY].x;
-        float* square = &s[RC_PT_FILM_BEAUTY_SQUARED].x;
-        for (int c = 0; c < 3; ++c) {
-            square[c] =
-                n > 1.0f ? std::sqrt(std::max(0.0f, square[c] - mean[c] * mean[c]) * n / (n - 1.0f))
-                         : 0.0f;
-        }
+    std::vector<shared::float4> cut(static_cast<size_t>(window.width()) * window.height() *
+                                    RC_PT_FILM_SLOTS);
+    for (int y = window.y0; y < window.y1; ++y) {
+        const auto from =
+            film.begin() + (static_cast<ptrdiff_t>(y) * width + window.x0) * RC_PT_FILM_SLOTS;
+        std::copy(from, from + static_cast<ptrdiff_t>(window.width()) * RC_PT_FILM_SLOTS,
+                  cut.begin() +
+                      static_cast<ptrdiff_t>(y - window.y0) * window.width() * RC_PT_FILM_SLOTS);
     }
-    return unpack_film(means, RC_PT_FILM_SLOTS, width, height,
-                       {{"beauty", RC_PT_FILM_BEAUTY},
-                        {"direct", RC_PT_FILM_DIRECT},
-                        {"indirect", RC_PT_FILM_INDIRECT},
-                        {"albedo", RC_PT_FILM_ALBEDO},
-                        {"normal", RC_PT_FILM_NORMAL},
-                        {"stddev", RC_PT_FILM_BEAUTY_SQUARED}});
+    Image sums = film_sums(cut, window.width(), window.height());
+    Image image = resolve_sums(sums);
+    if (sums_out != nullptr) {
+        *sums_out = std::move(sums);
+    }
+    return image;
 }
 
 shared::PathTracerParams PathTracer::pass_params(const PathTracerOptions& options, int width,
@@ -83,25 +77,36 @@ shared::PathTracerParams PathTracer::pass_params(const PathTracerOptions& option
     return params;
 }
 
-Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stats) {
+namespace {
+
+// The window of `options` in a width x height image: the whole image when none is given; Error
+// (exit status 2) naming --crop when it reaches outside the image.
+PixelWindow render_window(const PathTracerOptions& options, int width, int height) {
+    if (options.crop.empty()) {
+        return {0, width, 0, height};
+    }
+    const PixelWindow& c = options.crop;
+    if (c.x0 < 0 || c.y0 < 0 || c.x1 > width || c.y1 > height) {
+        throw Error("--crop " + std::to_string(c.x0) + ":" + std::to_string(c.x1) + "," +
+                        std::to_string(c.y0) + ":" + std::to_string(c.y1) +
+                        " reaches outside the image (" + std::to_string(width) + "x" +
+                        std::to_string(height) + ")",
+                    kExitUsage);
+    }
+    return c;
+}
+
+}  // namespace
+
+PathTracerStats PathTracer::render_passes(const PathTracerOptions& options,
+                                          const PixelWindow& window, Buffer<shared::float4>& film) {
     const int width = options.width > 0 ? options.width : scene_.camera.width;
     const int height = options.height > 0 ? options.height : scene_.camera.height;
-    check_film_size(width, height, context_.device());
-    const double pixels = static_cast<double>(width) * static_cast<double>(height);
-    if (options.spp < 1 && options.time_limit <= 0.0) {
-        throw Error("samples per pixel must be at least 1", kExitUsage);
-    }
-    if (frame_.peers != nullptr && !frame_.peers->empty()) {
-        return render_split(options, width, height, stats);
-    }
-    const auto count = static_cast<size_t>(pixels);
-    Buffer<shared::float4> film(context_, count * RC_PT_FILM_SLOTS, "film");
-    film.fill_zero();
     Buffer<unsigned> counters(context_, 3, "path_counters");
-
     shared::PathTracerParams params = pass_params(options, width, height);
     const shared::CameraParams camera = camera_params(scene_.camera, width, height);
-
+    // A window as wide as the image is one range of pixels; another, a range per row.
+    const bool whole_rows = window.x0 == 0 && window.x1 == width;
     PathTracerStats result;
     const auto start = SteadyClock::now();
     auto elapsed = [&] { return seconds_since(start); };
@@ -110,11 +115,15 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
                                      : pass >= options.spp) {
             break;
         }
-        params.sample = pass;
+        params.sample = options.first_sample + pass;
         const std::vector<unsigned> zero = {0u, 0u, 0xffffffffu};
         counters.upload(zero);
-        context_.launch(kernel_, count, params, camera, SceneArguments(bvh_, device_scene_), film,
-                        counters);
+        for (int y = window.y0; y < window.y1; y = whole_rows ? window.y1 : y + 1) {
+            const size_t row = static_cast<size_t>(y) * width;
+            const size_t last_row = whole_rows ? static_cast<size_t>(window.y1 - 1) * width : row;
+            context_.launch_range(kernel_, row + window.x0, last_row + window.x1, params, camera,
+                                  SceneArguments(bvh_, device_scene_), film, counters);
+        }
         const std::vector<unsigned> c = counters.download();
         result.rays += c[0];
         result.nonfinite_samples += c[1];
@@ -123,7 +132,7 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
         }
         result.spp = pass + 1;
         if (options.on_power_of_two && (result.spp & (result.spp - 1)) == 0) {
-            options.on_power_of_two(result.spp, resolve(film.download(), width, height));
+            options.on_power_of_two(result.spp, resolve(film.download(), width, window));
         }
         if (options.on_progress) {
             options.on_progress(options.time_limit > 0.0
@@ -133,10 +142,36 @@ Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stat
         }
     }
     result.seconds = elapsed();
+    return result;
+}
+
+Image PathTracer::render(const PathTracerOptions& options, PathTracerStats* stats) {
+    const int width = options.width > 0 ? options.width : scene_.camera.width;
+    const int height = options.height > 0 ? options.height : scene_.camera.height;
+    check_film_size(width, height, context_.device());
+    const PixelWindow window = render_window(options, width, height);
+    if (options.spp < 1 && options.time_limit <= 0.0) {
+        throw Error("samples per pixel must be at least 1", kExitUsage);
+    }
+    if (frame_.peers != nullptr && !frame_.peers->empty()) {
+        const std::string devices = std::to_string(frame_.peers->size() + 1);
+        if (!options.crop.empty()) {
+            throw Error("--crop renders on one device; --device names " + devices, kExitUsage);
+        }
+        if (options.first_sample != 0) {
+            throw Error("--sample-range renders on one device; --device names " + devices,
+                        kExitUsage);
+        }
+        return render_split(options, width, height, stats);
+    }
+    const size_t count = static_cast<size_t>(width) * static_cast<size_t>(height);
+    Buffer<shared::float4> film(context_, count * RC_PT_FILM_SLOTS, "film");
+    film.fill_zero();
+    const PathTracerStats result = render_passes(options, window, film);
     if (stats != nullptr) {
         *stats = result;
     }
-    return resolve(film.download(), width, height);
+    return resolve(film.download(), width, window, options.sums);
 }
 
 }  // namespace rc

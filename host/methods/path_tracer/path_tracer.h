@@ -20,6 +20,8 @@ struct PathTracerOptions : SharedSettings {
     std::function<void(int spp, const Image& image)> on_power_of_two;
     // Called after each pass with the fraction done (of spp or of the time limit).
     std::function<void(double fraction, int spp)> on_progress;
+    // When set, receives the film's sums (image/sample_sums.h) of the rendered pixels.
+    Image* sums = nullptr;
 };
 
 // One device's share of a render on several devices (PathTracer::render with peers).
@@ -57,14 +59,23 @@ class PathTracer : private FrameBound {
     // renders every pass of a chunk, so a pixel's sum of samples is the one device's in pass
     // order: the image is bitwise the one-device image on identical devices, whatever the split.
     // --time and intermediate images (on_power_of_two) need one device (Error, exit status 2).
+    // With options.crop, only the window's pixels are traced, each with the samples (seeded by
+    // its index in the whole image) it has in the whole render, and the image is the window's;
+    // with options.first_sample, the passes draw samples first_sample .. first_sample + spp - 1.
+    // Both render on one device (Error, exit status 2, with peers).
     Image render(const PathTracerOptions& options, PathTracerStats* stats = nullptr);
 
    private:
     // The kernel's parameters but the pass (params.sample).
     static shared::PathTracerParams pass_params(const PathTracerOptions& options, int width,
                                                 int height);
-    // The film's sums as the image of means and standard deviations.
-    static Image resolve(std::vector<shared::float4> sums, int width, int height);
+    // The film's sums (of the whole image, `width` pixels a row) in `window` as the image of
+    // means and standard deviations; *sums_out, when given, receives the sums.
+    static Image resolve(const std::vector<shared::float4>& film, int width,
+                         const PixelWindow& window, Image* sums_out = nullptr);
+    // Passes first .. first + spp - 1 over the pixels of `window` (or until the time limit).
+    PathTracerStats render_passes(const PathTracerOptions& options, const PixelWindow& window,
+                                  Buffer<shared::float4>& film);
     Image render_split(const PathTracerOptions& options, int width, int height,
                        PathTracerStats* stats);
 

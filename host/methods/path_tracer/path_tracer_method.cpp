@@ -39,6 +39,9 @@ class PathTracerMethod final : public Method {
         };
         PathTracerStats stats;
         FrameResult result;
+        if (settings_.write_sums) {
+            options.sums = &result.sums;
+        }
         result.image = tracer.render(options, &stats);
         result.spp = stats.spp;
         result.rays = stats.rays;

@@ -122,7 +122,7 @@ Image PathTracer::render_split(const PathTracerOptions& options, int width, int 
     if (stats != nullptr) {
         *stats = result;
     }
-    return resolve(std::move(sums), width, height);
+    return resolve(sums, width, {0, width, 0, height}, options.sums);
 }
 
 }  // namespace rc
