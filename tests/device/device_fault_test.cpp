@@ -321,6 +321,11 @@ std::vector<SmallRender> small_renders() {
         if (glossy) {
             renders.push_back(only_first_calls(render));
             renders.push_back(only_last_calls(render));
+        } else if (method.name == "auto") {
+            // auto's plan renders ic at its default 1024 rays per record (auto has no knob to turn
+            // down), whose record launches fill the first chunk, so how many calls come last
+            // depends on the launches' times: its first calls only (ic's cases reach the rest).
+            renders.push_back(only_first_calls(render));
         } else {
             renders.push_back(render);
         }
