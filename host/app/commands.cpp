@@ -14,10 +14,9 @@ CommandLine radcache_command_line() {
     line.groups = {{"bench", "benchmark"}};
     for (const CommandSpec& command :
          {devices_command(), render_command(), compare_command(), merge_command(),
-          convert_command(),
-          warmup_command(), bench_all_command(), bench_rays_command(), bench_pt_command(),
-          bench_sh_command(), bench_insertion_command(), bench_compile_command(),
-          reference_command()}) {
+          convert_command(), warmup_command(), bench_all_command(), bench_rays_command(),
+          bench_pt_command(), bench_sh_command(), bench_insertion_command(),
+          bench_compile_command(), reference_command()}) {
         line.commands.push_back(fill_in_usage(line.program, command));
     }
     return line;

@@ -4,7 +4,6 @@
 // reason, fixed samples stay fixed; the materials' servers follow radiance caching's tables and
 // the Phong exponent; the embedded model parses and a broken one is refused by key.
 #include "methods/auto/auto_plan.h"
-#include "methods/glossy_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +11,7 @@
 
 #include "methods/auto/auto_materials.h"
 #include "methods/auto/auto_model.h"
+#include "methods/glossy_spec.h"
 #include "util/error.h"
 
 namespace rc {

@@ -106,8 +106,9 @@ TablePilot brdf_table_pilot(const FrameScene& frame, const MethodSettings& setti
                             const FrameHooks& hooks) {
     const PilotSize size{std::min(8, render_width(settings, frame)),
                          std::min(8, render_height(settings, frame))};
-    const std::unique_ptr<Method> rc = make_method(
-        {"rc", {{"--ic-rays", "16"}}}, pilot_settings(settings, size, 1, pilot_seed(settings.seed, 3)));
+    const std::unique_ptr<Method> rc =
+        make_method({"rc", {{"--ic-rays", "16"}}},
+                    pilot_settings(settings, size, 1, pilot_seed(settings.seed, 3)));
     const FrameResult result = render_quietly(*rc, frame, hooks);
     TablePilot pilot;
     pilot.rays = result.rays;
