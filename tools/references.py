@@ -113,6 +113,17 @@ def best_reference_path(scene_dir):
     return shared if os.path.exists(shared) else reference_path(scene_dir)
 
 
+def shipped_scene_json(scene):
+    """scenes/NAME/scene.json of a shipped scene."""
+    return os.path.join(ROOT, "scenes", scene, "scene.json")
+
+
+def camera_size(scene_json, width):
+    """(width, the height that keeps the scene camera's aspect)."""
+    w, h = load_scene_json(scene_json)["camera"].get("resolution", [512, 512])
+    return width, max(1, round(width * h / w))
+
+
 def require_references(parser, scenes):
     """Stops `parser` with one line for a shipped scene (scenes/NAME) that does not exist or has
     no reference (the benchmark scripts' --scenes)."""

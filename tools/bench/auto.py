@@ -29,27 +29,11 @@ sys.path.insert(0, os.path.join(ROOT, "tools"))
 import references  # noqa: E402
 from arg_types import positive_int, positive_seconds  # noqa: E402
 from extra_options import parse_with_extra  # noqa: E402
-from radcache_process import run  # noqa: E402
+from radcache_process import compared_relmse, run  # noqa: E402
+from references import shipped_scene_json as scene_json  # noqa: E402
 
 DEFAULT_METHODS = ["pt", "ic", "rc", "sdrc", "ivg-gather", "decomposition"]
 TARGET_OVER_PT_AT_30 = {"cornell-box": 20.0, "two-rooms": 50.0, "glossy-box": 4.0}
-
-
-def image_size(scene, width):
-    camera = references.load_scene_json(scene_json(scene))["camera"]
-    w, h = camera.get("resolution", [512, 512])
-    return width, max(1, round(width * h / w))
-
-
-def scene_json(scene):
-    return os.path.join(ROOT, "scenes", scene, "scene.json")
-
-
-def relmse(image, reference, path):
-    run(["compare", image, reference, "--json", path])
-    with open(path) as f:
-        c = json.load(f)
-    return c["relmse_net"] if c.get("relmse_net") is not None else c["relmse"]
 
 
 def measure(scene, method, budget, size, extra, out):
@@ -65,7 +49,7 @@ def measure(scene, method, budget, size, extra, out):
     reference = references.best_reference_path(os.path.join(ROOT, "scenes", scene))
     row = {"scene": scene, "method": method, "budget": budget,
            "seconds": stats["seconds"]["render"], "spp": frame["spp"],
-           "relmse": relmse(image, reference, os.path.join(out, name + ".compare.json"))}
+           "relmse": compared_relmse(image, reference, os.path.join(out, name + ".compare.json"))}
     if "auto" in frame:
         row["plan"] = frame["auto"]["line"]
     return row
@@ -139,7 +123,7 @@ def main(argv):
     warm_up(args.scenes, ["auto"] + args.methods, extra, args.out)
     rows = []
     for scene in args.scenes:
-        size = image_size(scene, args.width)
+        size = references.camera_size(scene_json(scene), args.width)
         for budget in args.budgets:
             for method in ["auto"] + args.methods:
                 rows.append(measure(scene, method, budget, size, extra, args.out))

@@ -1,6 +1,7 @@
 """What the benchmark scripts share: the radcache executable ($RADCACHE, else build/radcache),
 running it (exit with its output when it fails) and the CPU seconds its processes have used."""
 
+import json
 import os
 import resource
 import subprocess
@@ -22,3 +23,12 @@ def cpu_seconds():
     """User + system CPU seconds of every finished child process so far."""
     usage = resource.getrusage(resource.RUSAGE_CHILDREN)
     return usage.ru_utime + usage.ru_stime
+
+
+def compared_relmse(image, reference, json_path, aov="beauty"):
+    """`radcache compare`'s relMSE of IMAGE's AOV against REFERENCE (written to JSON_PATH), net of
+    the reference's noise where compare knows it."""
+    run(["compare", image, reference, "--aov", aov, "--json", json_path])
+    with open(json_path) as f:
+        c = json.load(f)
+    return c["relmse_net"] if c.get("relmse_net") is not None else c["relmse"]

@@ -8,9 +8,6 @@
 namespace rc {
 namespace {
 
-constexpr int kDefaultIcRays = 1024;       // --ic-rays' default (records/irradiance_cache.h)
-constexpr double kDefaultAccuracy = 0.35;  // --accuracy's default
-
 // A pilot seed: the render's, moved so the pilot's samples are not the render's own.
 uint64_t pilot_seed(uint64_t seed, uint64_t which) {
     return seed ^ (0x9e3779b97f4a7c15ull * (which + 1));
@@ -132,8 +129,9 @@ CachePilot cache_pilot(const FrameScene& frame, const MethodSettings& settings,
                        const AutoModel& model, MethodRun run, const FrameHooks& hooks) {
     CachePilot pilot;
     pilot.size = pilot_size(model, render_width(settings, frame), render_height(settings, frame));
-    pilot.ic_rays = std::max(4, kDefaultIcRays / model.pilot_rays_divisor);
-    pilot.accuracy = kDefaultAccuracy;
+    const int default_rays = static_cast<int>(declared_default(run.method, "--ic-rays"));
+    pilot.ic_rays = std::max(4, default_rays / model.pilot_rays_divisor);
+    pilot.accuracy = declared_default(run.method, "--accuracy");
     run.options.push_back({"--ic-rays", std::to_string(pilot.ic_rays)});
     pilot.run = run;
     const MethodSettings pilot_run =

@@ -11,8 +11,6 @@
 namespace rc {
 namespace {
 
-constexpr double kDefaultAccuracy = 0.35;
-constexpr int kDefaultIcRays = 1024;
 constexpr int kMaxSpp = 1 << 20;
 
 std::string number_text(double value, const char* format = "%g") {
@@ -209,7 +207,9 @@ AutoPlan choose_plan(const PlanInputs& in) {
     if (!in.cache) {
         plan.why = "no lobe to cache";
     } else if (in.budget <= 0.0) {
-        plan = cache_plan(in, kDefaultAccuracy, kDefaultIcRays, in.spp);
+        plan = cache_plan(in, declared_default(in.cache_run.method, "--accuracy"),
+                          static_cast<int>(declared_default(in.cache_run.method, "--ic-rays")),
+                          in.spp);
     } else {
         double cheapest = 0.0;
         const std::optional<AutoPlan> cached = best_cache_plan(in, available, &cheapest);

@@ -61,6 +61,19 @@ std::unique_ptr<Method> make_method(const MethodRun& run, const MethodSettings& 
     return entry.create(entry.read(run_arguments(entry, run)), settings);
 }
 
+double declared_default(const std::string& method, const std::string& option) {
+    for (const OptionInfo& info : find_method(method).table) {
+        if (info.spec.name == option) {
+            try {
+                return std::stod(info.default_text);
+            } catch (const std::exception&) {
+                break;
+            }
+        }
+    }
+    throw Error("--method auto: " + method + " states no numeric default for " + option);
+}
+
 FrameHooks quiet_hooks(const FrameHooks& hooks) {
     FrameHooks quiet;
     quiet.progress = [](double, const std::string&) {};

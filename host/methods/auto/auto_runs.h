@@ -25,6 +25,10 @@ struct MethodRun {
 // does not declare or a value its declaration refuses.
 std::unique_ptr<Method> make_method(const MethodRun& run, const MethodSettings& settings);
 
+// The default of `method`'s `option` as its option table states it ("0.35", "1024"), read as a
+// number; Error when the method does not declare it or its default is not a number.
+double declared_default(const std::string& method, const std::string& option);
+
 // Hooks that report nothing (a pilot's), visiting other frames through `hooks`.
 FrameHooks quiet_hooks(const FrameHooks& hooks);
 
