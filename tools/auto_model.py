@@ -2,6 +2,7 @@
 """Measures and fits the model `radcache render --method auto` plans with (docs/auto.md).
 
   tools/auto_model.py measure [--scenes cornell-box two-rooms glossy-box] [--sizes 64 128]
+                              [--spps S ...] [--knobs A:R ...] [--methods ic rc sdrc]
                               [--out build/auto_model]
   tools/auto_model.py fit [--data build/auto_model/dataset.json]
                           [--write host/methods/auto/auto_model.json]
@@ -15,7 +16,8 @@ per record and samples per pixel: its cache rays W and its relMSE against the sc
 `fit` fits, per caching method, the cost law W = scale W_p (P/P_p)^gamma (R/R_p)^rho
 (a_p/a)^alpha s^sigma (least squares in logarithms) and the error law relMSE =
 (delta v_dir + phi v_ind)/s + beta a^2 f^2 + kappa v_ind/R (non-negative least squares on relative
-residuals, refined to least squares of log(predicted / measured)), prints each run's
+residuals, refined to least squares of log(predicted / measured)) and the error law's spread
+(exp of the root mean square of log(predicted / measured)), prints each run's
 predicted against measured figures, and writes the constants into the model file (its other
 sections kept). The C++ build embeds that file. numpy only.
 """
@@ -74,7 +76,19 @@ def has_glossy(scene):
     return any(m.get("type") in ("phong", "ward") for m in materials.values())
 
 
-def measure_scene(scene, width, out, rows):
+def knob(text):
+    """An (accuracy, rays per record) pair written A:R."""
+    try:
+        accuracy, rays = text.split(":")
+        pair = (float(accuracy), int(rays))
+    except ValueError:
+        raise argparse.ArgumentTypeError("%r is not ACCURACY:RAYS (e.g. 0.35:1024)" % text)
+    if not (0.0 < pair[0] <= 1.0) or pair[1] < 1:
+        raise argparse.ArgumentTypeError("%r: accuracy in (0, 1], rays at least 1" % text)
+    return pair
+
+
+def measure_scene(scene, width, out, rows, args):
     w, h = references.camera_size(scene_json(scene), width)
     size = ["--width", str(w), "--height", str(h)]
     name = "%s-%d" % (scene, w)
@@ -84,7 +98,7 @@ def measure_scene(scene, width, out, rows):
     plan = frame_stats(pilot_stats)["plan"]
     pilot = plan["pilot"]
     noise = {k: pilot[k] for k in ("v_pt", "v_direct", "indirect_fraction")}
-    methods = GLOSSY_METHODS if has_glossy(scene) else ["ic"]
+    methods = [m for m in args.methods if m == "ic" or has_glossy(scene)]
     for method in methods:
         cache_pilot = os.path.join(out, "%s-%s.cache-pilot.json" % (name, method))
         run_unless_done(cache_pilot, [
@@ -93,8 +107,8 @@ def measure_scene(scene, width, out, rows):
              "--aovs", "beauty", "-o", os.path.join(out, "pilot.exr"), "--stats", cache_pilot,
              "--quiet"])
         pilot_frame = frame_stats(cache_pilot)["frames"][0]
-        spps = [4, 32] if width >= 128 else [8]
-        for (accuracy, rays), spp in itertools.product(KNOBS, spps):
+        spps = args.spps or ([4, 32] if width >= 128 else [8])
+        for (accuracy, rays), spp in itertools.product(args.knobs or KNOBS, spps):
             stem = os.path.join(out, "%s-%s-a%g-r%d-s%d" % (name, method, accuracy, rays, spp))
             run_unless_done(stem + ".json", [
                 "render", scene_json(scene), "--method", method, "--spp", str(spp),
@@ -133,7 +147,7 @@ def measure(args):
         for width in args.sizes:
             if any(r["scene"] == scene and r["width"] == width for r in rows):
                 continue
-            measure_scene(scene, width, args.out, rows)
+            measure_scene(scene, width, args.out, rows, args)
             with open(path, "w") as f:
                 json.dump({"date": datetime.date.today().isoformat(), "git": git, "rows": rows},
                           f, indent=1)
@@ -216,6 +230,14 @@ def predicted_error(r, e):
     return sum(e[name] * x for name, x in zip(ERROR_CONSTANTS, error_features(r)))
 
 
+def error_spread(rows, e, np):
+    """The law's typical factor of error on `rows`: exp of the root mean square of
+    log(predicted / measured), at least 1 (auto keeps a method's default knobs unless others are
+    predicted better by more than this)."""
+    logs = [np.log(max(predicted_error(r, e), 1e-300) / max(r["relmse"], 1e-300)) for r in rows]
+    return max(1.0, float(np.exp(np.sqrt(np.mean(np.square(logs)))))) if logs else 1.0
+
+
 def predicted_cost(r, c):
     return (c["scale"] * r["pilot_cache_rays"] *
             (r["width"] * r["height"] / (r["pilot_width"] * r["pilot_height"])) ** c["gamma"] *
@@ -241,6 +263,8 @@ def fit(args):
         model["cost"][method] = {k: round(v, 4) for k, v in fit_cost(rows, np).items()}
         wide = [r for r in rows if r["width"] >= args.error_min_width] or rows
         model["error"][method] = {k: float("%.4g" % v) for k, v in fit_error(wide, np).items()}
+        model["error"][method]["spread"] = float("%.4g" % error_spread(wide, model["error"][method],
+                                                                       np))
         for r in rows:
             print("| %s | %s | %dx%d | %g | %d | %d | %.2f | %.2e | %.2e |" % (
                 r["scene"], method, r["width"], r["height"], r["accuracy"], r["rays"], r["spp"],
@@ -260,6 +284,15 @@ def main():
     m = sub.add_parser("measure", help="render the runs the fit reads")
     m.add_argument("--scenes", nargs="+", default=["cornell-box", "two-rooms", "glossy-box"])
     m.add_argument("--sizes", nargs="+", type=positive_int, default=[64, 128])
+    m.add_argument("--spps", nargs="+", type=positive_int,
+                   help="samples per pixel of each run (default: 4 and 32 at 128 wide and more, "
+                        "8 below)")
+    m.add_argument("--knobs", nargs="+", type=knob,
+                   help="(accuracy, rays per record) pairs A:R (default: %s)" %
+                        " ".join("%g:%d" % k for k in KNOBS))
+    m.add_argument("--methods", nargs="+", choices=GLOSSY_METHODS, default=GLOSSY_METHODS,
+                   help="caching methods to measure (ic on every scene, rc and sdrc on scenes "
+                        "with glossy materials)")
     m.add_argument("--out", default=os.path.join(ROOT, "build", "auto_model"))
     f = sub.add_parser("fit", help="fit the constants and write the model file")
     f.add_argument("--data", default=os.path.join(ROOT, "build", "auto_model", "dataset.json"))

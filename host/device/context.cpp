@@ -73,6 +73,7 @@ Context::~Context() {
         }
     }
     programs_.clear();
+    derived_.clear();  // their buffers released while the queue and context still stand
     if (queue_ != nullptr) {
         // No clFinish: every launch and transfer has been waited for, and releasing the queue
         // flushes it (a failure here could only be ignored).

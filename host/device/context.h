@@ -120,6 +120,20 @@ class Context {
     size_t local_size_for(const Kernel& kernel) const;
 
     void finish();
+
+    // Device data derived from the scene once and reused by every later render on this context
+    // (radiance caching's BRDF tables: the next frame, or --method auto's render after its
+    // pilot): the entry under `key`, made by `make` on the first call. Released with the context.
+    template <class T, class Make>
+    std::shared_ptr<const T> derived(const std::string& key, Make&& make) {
+        auto found = derived_.find(key);
+        if (found == derived_.end()) {
+            std::shared_ptr<const T> made = make();
+            found = derived_.emplace(key, std::move(made)).first;
+        }
+        return std::static_pointer_cast<const T>(found->second);
+    }
+
     _cl_context* cl_context() const { return context_; }
     _cl_command_queue* cl_queue() const { return queue_; }
 
@@ -157,6 +171,7 @@ class Context {
     std::vector<ProgramRequest> prebuild_requests_;
     std::vector<ProgramBuildReport> builds_;
     std::map<std::string, KernelTime> kernel_times_;
+    std::map<std::string, std::shared_ptr<const void>> derived_;  // derived()'s
     std::shared_ptr<DeviceMemory> memory_ = std::make_shared<DeviceMemory>();
 };
 

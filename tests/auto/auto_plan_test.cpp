@@ -61,14 +61,40 @@ TEST(AutoPlan, NeverPlansBeyondTheBudget) {
     }
 }
 
-TEST(AutoPlan, MoreTimeNeverRaisesThePredictedError) {
+TEST(AutoPlan, MoreTimeNeverRaisesTheTrustedError) {
     Figures f;
     double last = 1e300;
     for (double budget = 1.0; budget < 2000.0; budget *= 1.5) {
         f.in.budget = budget;
         const AutoPlan plan = choose_plan(f.in);
-        EXPECT_LE(plan.predicted_relmse, last * (1 + 1e-12)) << plan.line();
-        last = plan.predicted_relmse;
+        EXPECT_LE(plan.trusted_relmse, last * (1 + 1e-12)) << plan.line();
+        EXPECT_GE(plan.trusted_relmse, plan.predicted_relmse) << plan.line();
+        last = plan.trusted_relmse;
+    }
+}
+
+// Other knobs than the defaults win only when predicted better by more than the law's spread:
+// with no spread the plan is the lowest predicted error of all the knobs; with a spread larger
+// than any ratio of predictions, the defaults whenever they fit.
+TEST(AutoPlan, TheDefaultKnobsAreKeptUnlessOthersWinBeyondTheSpread) {
+    Figures f;
+    f.in.budget = 60.0;
+    f.model.error["ic"].spread = 1.0;
+    const AutoPlan searched = choose_plan(f.in);
+    ASSERT_TRUE(searched.caches()) << searched.line();
+    f.model.error["ic"].spread = 1e6;
+    const AutoPlan kept = choose_plan(f.in);
+    ASSERT_TRUE(kept.caches()) << kept.line();
+    EXPECT_TRUE(kept.default_knobs) << kept.line();
+    EXPECT_EQ(kept.accuracy, declared_default("ic", "--accuracy"));
+    EXPECT_EQ(kept.ic_rays, static_cast<int>(declared_default("ic", "--ic-rays")));
+    EXPECT_LE(searched.predicted_relmse, kept.predicted_relmse * (1 + 1e-12));
+    // No plan of the grid is predicted lower than the searched one.
+    for (double spread : {1.0, 1.3, 2.0}) {
+        f.model.error["ic"].spread = spread;
+        const AutoPlan plan = choose_plan(f.in);
+        EXPECT_TRUE(plan.default_knobs || plan.predicted_relmse * spread < kept.predicted_relmse)
+            << plan.line();
     }
 }
 

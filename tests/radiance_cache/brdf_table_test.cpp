@@ -2,8 +2,8 @@
 // kernels/radiance_cache/rc_brdf_table.h): the dot product of a radiance's coefficients with a
 // table's lookup equals the direct integral of f cos L (host quadrature of the material's own
 // BRDF evaluation), the adaptive order grows with the Phong exponent, the glossy-box scene's
-// materials are classified (and the classification printed), bad options are refused, and the
-// build is deterministic.
+// materials are classified (and the classification printed), bad options are refused, the
+// build is deterministic, and tables are built once per context and materials.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -276,6 +276,35 @@ TEST(BrdfTable, BuildIsDeterministic) {
     const BrdfTables b(other, materials, options);
     EXPECT_EQ(a.coefficients().download(), b.coefficients().download());
     EXPECT_EQ(a.texel_orders(), b.texel_orders());
+}
+
+// Tables are built once per context and materials: the same materials and options get the same
+// tables without a build; another material, other options or another context build their own,
+// equal to a fresh build's.
+TEST(BrdfTable, SharedTablesAreBuiltOncePerContextAndMaterials) {
+    std::vector<Material> materials = {test::pure_phong(8.0f), ward(0.2f, 0.4f)};
+    BrdfTableOptions options;
+    options.resolution = 8;
+    Context context(test::default_context_options());
+    bool built = false;
+    const auto first = shared_brdf_tables(context, materials, options, &built);
+    EXPECT_TRUE(built);
+    const auto again = shared_brdf_tables(context, materials, options, &built);
+    EXPECT_FALSE(built);
+    EXPECT_EQ(first.get(), again.get());
+    EXPECT_EQ(first->coefficients().download(),
+              BrdfTables(context, materials, options).coefficients().download());
+
+    materials[0] = test::pure_phong(9.0f);
+    const auto other_material = shared_brdf_tables(context, materials, options, &built);
+    EXPECT_TRUE(built);
+    EXPECT_NE(other_material->coefficients().download(), first->coefficients().download());
+    options.max_error = 0.05;
+    shared_brdf_tables(context, materials, options, &built);
+    EXPECT_TRUE(built);
+    Context other(test::default_context_options());
+    shared_brdf_tables(other, materials, options, &built);
+    EXPECT_TRUE(built);
 }
 
 }  // namespace

@@ -50,6 +50,8 @@ std::filesystem::path source_dir() { return RADCACHE_SOURCE_DIR; }
 
 std::filesystem::path radcache_executable() { return RADCACHE_EXECUTABLE; }
 
+std::filesystem::path kernel_cache_dir() { return RADCACHE_TEST_CACHE_DIR; }
+
 Scene load_cornell_box() { return load_scene(source_dir() / "scenes/cornell-box/scene.json"); }
 
 Scene load_scene_at_frame(const std::filesystem::path& path, int frame) {

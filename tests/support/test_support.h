@@ -32,6 +32,8 @@ Context& layout_context(BvhLayout layout);
 
 std::filesystem::path source_dir();
 std::filesystem::path radcache_executable();
+// The kernel binary cache (and --method auto's throughput file) the suite's renders share.
+std::filesystem::path kernel_cache_dir();
 Scene load_cornell_box();
 // The scene of `path` posed at `frame`.
 Scene load_scene_at_frame(const std::filesystem::path& path, int frame);

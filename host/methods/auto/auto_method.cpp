@@ -137,6 +137,8 @@ class AutoMethod final : public Method {
             const TablePilot pilot = brdf_table_pilot(frame, settings_, hooks);
             tables = pilot.materials;
             in->pilot_seconds += static_cast<double>(pilot.rays) * throughput.cache_of("rc");
+            in->tables_seconds =
+                static_cast<double>(pilot.glossy_materials) * throughput.table_seconds_per_material;
         }
         in->materials = choose_lobe_servers(materials, model, glossy ? &tables : nullptr);
         in->cache_run = caching_run(in->materials, materials);

@@ -86,7 +86,11 @@ AutoModel parse_auto_model(const nlohmann::json& json) {
         const std::string path = "error." + method + ".";
         model.error[method] = {
             positive_number(constants, "delta", path), positive_number(constants, "phi", path),
-            positive_number(constants, "beta", path), positive_number(constants, "kappa", path)};
+            positive_number(constants, "beta", path), positive_number(constants, "kappa", path),
+            positive_number(constants, "spread", path)};
+        if (model.error[method].spread < 1.0) {
+            throw Error("auto model: " + path + "spread must be at least 1");
+        }
     }
     const nlohmann::json& glossy = member(json, "glossy", "");
     model.rc_max_fallback = positive_number(glossy, "rc_max_fallback", "glossy.");

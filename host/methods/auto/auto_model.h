@@ -31,6 +31,11 @@ struct AutoErrorModel {
     double phi = 0.1;    // the share of the indirect noise the camera samples keep
     double beta = 0.05;  // interpolation error per a^2 f^2
     double kappa = 1.0;  // record noise per v_ind / R
+    // The law's typical factor of error on the runs it was fitted to (exp of the root mean square
+    // of log(predicted / measured)): knobs other than the method's defaults are chosen only when
+    // predicted better than the defaults by more than this (the defaults' error is measured where
+    // the law's is extrapolated).
+    double spread = 1.0;
 };
 
 struct AutoModel {

@@ -112,6 +112,9 @@ TablePilot brdf_table_pilot(const FrameScene& frame, const MethodSettings& setti
     if (result.stats.contains("radiance_cache")) {
         pilot.materials = result.stats.at("radiance_cache").value("materials", pilot.materials);
     }
+    for (const nlohmann::json& material : pilot.materials) {
+        pilot.glossy_materials += material.value("kind", std::string()) != "diffuse";
+    }
     return pilot;
 }
 

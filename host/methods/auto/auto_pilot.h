@@ -67,6 +67,7 @@ CachePilot cache_pilot(const FrameScene& frame, const MethodSettings& settings,
 struct TablePilot {
     nlohmann::json materials = nlohmann::json::array();
     uint64_t rays = 0;
+    size_t glossy_materials = 0;  // the tables built (kind glossy or fallback)
 };
 
 TablePilot brdf_table_pilot(const FrameScene& frame, const MethodSettings& settings,

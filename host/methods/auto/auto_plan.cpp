@@ -88,6 +88,7 @@ AutoPlan path_tracer_plan(const PlanInputs& in, double available) {
         in.spp_fixed || in.budget <= 0.0 ? in.spp : std::max(1, samples_in(available, per_sample));
     plan.predicted_seconds = plan.spp * per_sample;
     plan.predicted_relmse = in.noise.v_pt / plan.spp;
+    plan.trusted_relmse = plan.predicted_relmse;
     plan.pt_relmse = plan.predicted_relmse;
     return plan;
 }
@@ -96,6 +97,9 @@ AutoPlan cache_plan(const PlanInputs& in, double accuracy, int rays, int spp) {
     const std::string key = model_key(in.materials);
     const CacheCost cost = cache_cost(in, key, accuracy, rays, spp);
     AutoPlan plan;
+    plan.default_knobs =
+        accuracy == declared_default(in.cache_run.method, "--accuracy") &&
+        rays == static_cast<int>(declared_default(in.cache_run.method, "--ic-rays"));
     plan.run = in.cache_run;
     plan.run.options.push_back({"--accuracy", number_text(accuracy)});
     plan.run.options.push_back({"--ic-rays", std::to_string(rays)});
@@ -105,31 +109,47 @@ AutoPlan cache_plan(const PlanInputs& in, double accuracy, int rays, int spp) {
     plan.predicted_cache_seconds = cost.cache_seconds;
     plan.predicted_seconds = cost.cache_seconds + spp * cost.sample_seconds;
     plan.predicted_relmse = cache_relmse(in, key, accuracy, rays, spp);
+    // Knobs other than the defaults are trusted only beyond the law's spread: their error is
+    // extrapolated, the defaults' measured (AutoErrorModel::spread).
+    plan.trusted_relmse =
+        plan.predicted_relmse * (plan.default_knobs ? 1.0 : in.model->error_of(key).spread);
     return plan;
 }
 
-// The knobs with the lowest predicted relMSE whose cache and samples fit in `available`; none
-// when no cache fits with one sample per pixel (cache_min_seconds: the cheapest one's seconds).
+// The knobs searched: the model's grid and the caching method's defaults.
+std::vector<std::pair<double, int>> searched_knobs(const PlanInputs& in) {
+    std::vector<std::pair<double, int>> knobs = {
+        {declared_default(in.cache_run.method, "--accuracy"),
+         static_cast<int>(declared_default(in.cache_run.method, "--ic-rays"))}};
+    for (double accuracy : in.model->accuracies) {
+        for (int rays : in.model->ic_rays) {
+            if (std::pair(accuracy, rays) != knobs.front()) {
+                knobs.emplace_back(accuracy, rays);
+            }
+        }
+    }
+    return knobs;
+}
+
+// The knobs with the lowest trusted relMSE (AutoPlan::trusted_relmse) whose cache and samples fit
+// in `available`; none when no cache fits with one sample per pixel (cache_min_seconds: the
+// cheapest one's seconds).
 std::optional<AutoPlan> best_cache_plan(const PlanInputs& in, double available,
                                         double* cache_min_seconds) {
     std::optional<AutoPlan> best;
     *cache_min_seconds = std::numeric_limits<double>::infinity();
     const std::string key = model_key(in.materials);
-    for (double accuracy : in.model->accuracies) {
-        for (int rays : in.model->ic_rays) {
-            const CacheCost one = cache_cost(in, key, accuracy, rays, 1);
-            *cache_min_seconds =
-                std::min(*cache_min_seconds, one.cache_seconds + one.sample_seconds);
-            const int spp =
-                in.spp_fixed ? in.spp : samples_within(in, key, accuracy, rays, available);
-            const CacheCost cost = cache_cost(in, key, accuracy, rays, std::max(spp, 1));
-            if (spp < 1 || cost.cache_seconds + spp * cost.sample_seconds > available) {
-                continue;
-            }
-            AutoPlan plan = cache_plan(in, accuracy, rays, spp);
-            if (!best || plan.predicted_relmse < best->predicted_relmse) {
-                best = plan;
-            }
+    for (const auto& [accuracy, rays] : searched_knobs(in)) {
+        const CacheCost one = cache_cost(in, key, accuracy, rays, 1);
+        *cache_min_seconds = std::min(*cache_min_seconds, one.cache_seconds + one.sample_seconds);
+        const int spp = in.spp_fixed ? in.spp : samples_within(in, key, accuracy, rays, available);
+        const CacheCost cost = cache_cost(in, key, accuracy, rays, std::max(spp, 1));
+        if (spp < 1 || cost.cache_seconds + spp * cost.sample_seconds > available) {
+            continue;
+        }
+        AutoPlan plan = cache_plan(in, accuracy, rays, spp);
+        if (!best || plan.trusted_relmse < best->trusted_relmse) {
+            best = plan;
         }
     }
     return best;
@@ -201,7 +221,8 @@ MethodRun caching_run(const std::vector<MaterialChoice>& choices,
 
 AutoPlan choose_plan(const PlanInputs& in) {
     check_pilot_share(in);
-    const double available = in.budget > 0.0 ? in.budget - in.pilot_seconds : 0.0;
+    const double available =
+        in.budget > 0.0 ? std::max(0.0, in.budget - in.pilot_seconds - in.tables_seconds) : 0.0;
     AutoPlan pt = path_tracer_plan(in, available);
     AutoPlan plan = pt;
     if (!in.cache) {
@@ -213,12 +234,12 @@ AutoPlan choose_plan(const PlanInputs& in) {
     } else {
         double cheapest = 0.0;
         const std::optional<AutoPlan> cached = best_cache_plan(in, available, &cheapest);
-        if (cached && cached->predicted_relmse < pt.predicted_relmse) {
+        if (cached && cached->trusted_relmse < pt.predicted_relmse) {
             plan = *cached;
         } else if (cached) {
             plan.why = "the path tracer's error is predicted lower: " +
                        number_text(pt.predicted_relmse, "%.2e") + " against " +
-                       number_text(cached->predicted_relmse, "%.2e");
+                       number_text(cached->trusted_relmse, "%.2e");
         } else {
             plan.why = "the cheapest cache needs about " + number_text(cheapest, "%.3g") +
                        " s with one sample per pixel, " + number_text(available, "%.3g") +
@@ -281,7 +302,8 @@ nlohmann::json AutoPlan::json(const PlanInputs& in) const {
                             {"v_direct", in.noise.v_direct},
                             {"indirect_fraction", in.noise.indirect_fraction},
                             {"pt_rays_per_sample", in.noise.rays_per_sample},
-                            {"seconds", pilot_seconds}};
+                            {"seconds", pilot_seconds},
+                            {"tables_seconds", in.tables_seconds}};
     if (in.cache) {
         pilot["cache"] = {{"run", in.cache->run.command_line()},
                           {"cache_rays", in.cache->cache_rays},
@@ -300,6 +322,7 @@ nlohmann::json AutoPlan::json(const PlanInputs& in) const {
                             {{"seconds", predicted_seconds},
                              {"cache_seconds", predicted_cache_seconds},
                              {"relmse", predicted_relmse},
+                             {"trusted_relmse", trusted_relmse},
                              {"pt_relmse", pt_relmse}}},
                            {"pilot", pilot},
                            {"model", in.model->fitted},
@@ -307,6 +330,7 @@ nlohmann::json AutoPlan::json(const PlanInputs& in) const {
     if (caches()) {
         json["accuracy"] = accuracy;
         json["ic_rays"] = ic_rays;
+        json["default_knobs"] = default_knobs;
     } else {
         json["why"] = why;
     }

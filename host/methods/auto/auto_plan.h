@@ -31,6 +31,9 @@ struct PlanInputs {
     std::vector<MaterialChoice> materials;
     MethodRun cache_run;         // the caching method that serves the materials (without knobs)
     double pilot_seconds = 0.0;  // the pilot's work at the device's throughput
+    // Radiance caching's BRDF tables, built by the pilot and kept for the render (their time is
+    // the plan's, not the pilot's share).
+    double tables_seconds = 0.0;
 };
 
 struct AutoPlan {
@@ -44,6 +47,10 @@ struct AutoPlan {
     double predicted_seconds = 0.0;        // the frame after the pilot
     double predicted_cache_seconds = 0.0;  // of which the caches
     double predicted_relmse = 0.0;
+    // What the plan is chosen by: the predicted relMSE, times the error law's spread where the
+    // knobs are not the method's defaults (AutoErrorModel::spread); the path tracer's is its own.
+    double trusted_relmse = 0.0;
+    bool default_knobs = false;      // the caching method's --accuracy and --ic-rays defaults
     double pt_relmse = 0.0;          // the path tracer's in the same time
     double cache_min_seconds = 0.0;  // the cheapest cache the plan could have built
     std::string why;                 // why the path tracer renders, when it does
@@ -55,9 +62,9 @@ struct AutoPlan {
     nlohmann::json json(const PlanInputs& inputs) const;
 };
 
-// The plan with the lowest predicted relMSE within the budget (without one: the materials'
-// methods at their default knobs and the render's samples). Error (exit status 2) when the
-// budget does not hold the pilot's share (model.max_pilot_fraction).
+// The plan with the lowest trusted relMSE (AutoPlan::trusted_relmse) within the budget (without
+// one: the materials' methods at their default knobs and the render's samples). Error (exit status
+// 2) when the budget does not hold the pilot's share (model.max_pilot_fraction).
 AutoPlan choose_plan(const PlanInputs& inputs);
 
 // The caching method that serves `choices` (one per material of `materials`): ic when no glossy

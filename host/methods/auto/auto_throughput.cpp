@@ -76,7 +76,8 @@ nlohmann::json throughput_json(const DeviceThroughput& t, const Context& context
             {"driver", context.device().driver_version},
             {"pt_seconds_per_ray", t.pt_seconds_per_ray},
             {"cache_seconds_per_ray", t.cache_seconds_per_ray},
-            {"camera_seconds_per_ray", t.camera_seconds_per_ray}};
+            {"camera_seconds_per_ray", t.camera_seconds_per_ray},
+            {"table_seconds_per_material", t.table_seconds_per_material}};
 }
 
 bool read_throughput(const std::filesystem::path& file, DeviceThroughput* t) {
@@ -91,6 +92,7 @@ bool read_throughput(const std::filesystem::path& file, DeviceThroughput* t) {
             json.at("cache_seconds_per_ray").get<std::map<std::string, double>>();
         t->camera_seconds_per_ray =
             json.at("camera_seconds_per_ray").get<std::map<std::string, double>>();
+        t->table_seconds_per_material = json.at("table_seconds_per_material").get<double>();
     } catch (const nlohmann::json::exception&) {
         return false;  // unreadable: measured again and replaced
     }
@@ -100,11 +102,12 @@ bool read_throughput(const std::filesystem::path& file, DeviceThroughput* t) {
             return false;
         }
     }
-    return t->pt_seconds_per_ray > 0.0;
+    return t->pt_seconds_per_ray > 0.0 && t->table_seconds_per_material >= 0.0;
 }
 
 // Writes the figures unless another process has cached its own since (the first write wins, so
-// that every plan on the device reads the same figures); returns the figures the file holds.
+// that every plan on the device reads the same figures); a file that cannot be read (an older
+// radcache's, without a figure this one needs) is replaced. Returns the figures the file holds.
 DeviceThroughput cache_throughput(const DeviceThroughput& measured, const Context& context) {
     const std::filesystem::path& file = measured.file;
     std::error_code error;
@@ -116,8 +119,11 @@ DeviceThroughput cache_throughput(const DeviceThroughput& measured, const Contex
         out << throughput_json(measured, context).dump(2) << "\n";
     }
     std::filesystem::create_hard_link(temporary, file, error);  // fails if the file exists
-    std::filesystem::remove(temporary, error);
     DeviceThroughput cached = measured;
+    if (error && !read_throughput(file, &cached)) {
+        std::filesystem::rename(temporary, file, error);  // the unreadable file replaced
+    }
+    std::filesystem::remove(temporary, error);
     if (read_throughput(file, &cached)) {
         cached.measured_now = true;
         return cached;
@@ -145,6 +151,20 @@ TimedFrame timed_frame(const FrameScene& frame, const MethodRun& run, int side, 
     return timed;
 }
 
+// The BRDF tables' seconds per glossy material, from an rc render whose tables are new (another
+// --rc-max-error than the renders before; the tables are kept per device, Context::derived) and
+// whose programs are built.
+double table_seconds_per_material(const FrameScene& frame, const FrameHooks& hooks) {
+    const TimedFrame tables = timed_frame(
+        frame, {"rc", {{"--ic-rays", "16"}, {"--rc-max-error", "0.0999"}}}, 8, 1, hooks);
+    const nlohmann::json& rc = tables.result.stats.at("radiance_cache");
+    size_t glossy = 0;
+    for (const nlohmann::json& material : rc.at("materials")) {
+        glossy += material.value("kind", std::string()) != "diffuse";
+    }
+    return rc.at("seconds").value("tables", 0.0) / static_cast<double>(std::max<size_t>(glossy, 1));
+}
+
 DeviceThroughput measure_throughput(const FrameScene& frame, const FrameHooks& hooks) {
     DeviceThroughput t;
     timed_frame(frame, {"pt", {}}, 8, 1, hooks);  // its programs built before the timing
@@ -153,6 +173,9 @@ DeviceThroughput measure_throughput(const FrameScene& frame, const FrameHooks& h
     for (const char* method : kCachingMethods) {
         const MethodRun run{method, {{"--ic-rays", "128"}}};
         timed_frame(frame, run, 8, 1, hooks);  // its programs built (or loaded) before the timing
+        if (std::string(method) == "rc") {
+            t.table_seconds_per_material = table_seconds_per_material(frame, hooks);
+        }
         const TimedFrame cached = timed_frame(frame, run, kSide, kCameraSpp, hooks);
         const uint64_t cache_rays =
             std::min(cache_rays_of(cached.result.stats), cached.result.rays);

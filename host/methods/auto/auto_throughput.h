@@ -17,6 +17,9 @@ struct DeviceThroughput {
     double pt_seconds_per_ray = 0.0;
     std::map<std::string, double> cache_seconds_per_ray;   // by method: ic, rc, sdrc
     std::map<std::string, double> camera_seconds_per_ray;  // by method: ic, rc, sdrc
+    // Radiance caching's BRDF tables (built once per render and device, whatever the image):
+    // seconds per material with a glossy lobe.
+    double table_seconds_per_material = 0.0;
     std::filesystem::path file;  // where it is cached (empty: no cache directory)
     bool measured_now = false;   // this call measured it (no cached figures were found)
 

@@ -1,6 +1,8 @@
 #include "methods/radiance_cache/brdf_tables.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstring>
 
 #include "device/context.h"
 #include "methods/radiance_cache/gauss_legendre.h"
@@ -174,6 +176,43 @@ void BrdfTables::choose_orders(const std::vector<Material>& materials) {
 
 size_t BrdfTables::bytes() const {
     return device_infos_.bytes() + coefficients_.bytes() + orders_.bytes();
+}
+
+namespace {
+
+// What the tables depend on: the options and every material's device form (its kernel input).
+std::string tables_key(const std::vector<Material>& materials, const BrdfTableOptions& o) {
+    char text[160];
+    std::snprintf(text, sizeof(text), "brdf-tables %d %d %a %d %d %d:", o.resolution, o.max_order,
+                  o.max_error, o.basis, o.theta_nodes, o.phi_nodes);
+    std::string key = text;
+    for (const Material& material : materials) {
+        const shared::Material m = to_device(material);
+        unsigned char bytes[sizeof m];
+        std::memcpy(bytes, &m, sizeof m);
+        for (unsigned char byte : bytes) {
+            std::snprintf(text, sizeof(text), "%02x", byte);
+            key += text;
+        }
+        key += ';';
+    }
+    return key;
+}
+
+}  // namespace
+
+std::shared_ptr<const BrdfTables> shared_brdf_tables(Context& context,
+                                                     const std::vector<Material>& materials,
+                                                     const BrdfTableOptions& options, bool* built) {
+    bool made = false;
+    auto tables = context.derived<BrdfTables>(tables_key(materials, options), [&] {
+        made = true;
+        return std::make_shared<const BrdfTables>(context, materials, options);
+    });
+    if (built != nullptr) {
+        *built = made;
+    }
+    return tables;
 }
 
 }  // namespace rc

@@ -4,6 +4,7 @@
 // kernels read with kernels/radiance_cache/rc_brdf_table.h.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -80,5 +81,14 @@ class BrdfTables {
     Buffer<float> coefficients_;
     Buffer<int> orders_;
 };
+
+// The tables of `materials` for `options`, built once per context: a later render on the same
+// device with the same materials (the next frame under `ic --glossy`, --method auto's render after
+// its pilot) gets the same tables without building them again (Context::derived). *built: whether
+// this call built them.
+std::shared_ptr<const BrdfTables> shared_brdf_tables(Context& context,
+                                                     const std::vector<Material>& materials,
+                                                     const BrdfTableOptions& options,
+                                                     bool* built = nullptr);
 
 }  // namespace rc

@@ -19,12 +19,12 @@ namespace {
 
 constexpr size_t kMaxBatchCells = size_t{1} << 22;  // hemisphere cells per record launch
 
-// The scene's BRDF tables for these options (their options checked first), the build time
-// into *seconds; `built` when given.
+// The scene's BRDF tables for these options (their options checked first), the seconds taken
+// into *seconds and whether they were built now into *built_now; `built` when given.
 std::shared_ptr<const BrdfTables> build_tables(const FrameScene& frame,
                                                const RadianceCacheOptions& options,
                                                std::shared_ptr<const BrdfTables> built,
-                                               double* seconds) {
+                                               double* seconds, bool* built_now) {
     check_radiance_cache_options(options);
     if (built) {
         return built;
@@ -33,7 +33,7 @@ std::shared_ptr<const BrdfTables> build_tables(const FrameScene& frame,
     table.max_order = options.order > 0 ? options.order : RC_SH_MAX_ORDER;
     table.max_error = options.max_error;
     const auto start = SteadyClock::now();
-    auto tables = std::make_shared<const BrdfTables>(frame.context, frame.scene.materials, table);
+    auto tables = shared_brdf_tables(frame.context, frame.scene.materials, table, built_now);
     frame.context.finish();
     *seconds = seconds_since(start);
     return tables;
@@ -102,7 +102,8 @@ RadianceCache::RadianceCache(const FrameScene& frame, const RadianceCacheOptions
                              std::shared_ptr<const BrdfTables> tables)
     : FrameBound(frame),
       options_(options),
-      tables_(build_tables(frame, options, std::move(tables), &stats_.table_seconds)),
+      tables_(build_tables(frame, options, std::move(tables), &stats_.table_seconds,
+                           &stats_.tables_built)),
       order_(records_order(*tables_, options.materials)),
       store_(radiance_store(options.accuracy, std::max(order_, 1))),
       queries_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_queries")),

@@ -51,6 +51,7 @@ struct RadianceCacheStats {
     uint64_t record_rays = 0;
     uint64_t reflections = 0;  // record reflections evaluated (one rotation each)
     double table_seconds = 0.0;
+    bool tables_built = false;  // by this cache (else built before on the device and kept)
     double query_seconds = 0.0;
     double splat_seconds = 0.0;  // the glossy buffer
 };

@@ -26,6 +26,7 @@ nlohmann::json RadianceCache::statistics() const {
             {"order", rc.order},
             {"strata", {rc.strata_m, rc.strata_n}},
             {"materials", materials},
+            {"tables_built", rc.tables_built},
             {"placement_passes", passes},
             {"glossy_samples", rc.placement.glossy_samples},
             {"fallback_samples", rc.placement.fallback_samples},
