@@ -93,9 +93,18 @@ AccessorBytes accessor_bytes(const tinygltf::Model& model, int index, const std:
         throw Error(name + ": byte range too large");
     }
     const size_t end = accessor.byteOffset + (accessor.count - 1) * bytes.stride + element;
-    if (end > view.byteLength || view.byteOffset + view.byteLength > data.size()) {
-        throw Error(name + ": reads past the end of its buffer view or buffer (" +
-                    std::to_string(accessor.count) + " elements)");
+    if (view.byteOffset + view.byteLength > data.size()) {
+        throw Error(name + ": buffer view " + std::to_string(accessor.bufferView) + " (bytes " +
+                    std::to_string(view.byteOffset) + " to " +
+                    std::to_string(view.byteOffset + view.byteLength) +
+                    ") runs past the end of buffer " + std::to_string(view.buffer) + " (" +
+                    std::to_string(data.size()) + " bytes)");
+    }
+    if (end > view.byteLength) {
+        throw Error(name + ": its " + std::to_string(accessor.count) + " elements (to byte " +
+                    std::to_string(end) + ") run past the end of buffer view " +
+                    std::to_string(accessor.bufferView) + " (" + std::to_string(view.byteLength) +
+                    " bytes)");
     }
     bytes.first = data.data() + view.byteOffset + accessor.byteOffset;
     return bytes;

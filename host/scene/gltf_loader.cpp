@@ -175,7 +175,7 @@ class GltfSceneBuilder {
             warn("animations", "ignored: the static pose is rendered");
         }
         for (int root : model_.scenes[index].nodes) {
-            visit(root, glm::mat4(1.0f), 0);
+            visit(root, glm::mat4(1.0f), 0, "scene " + std::to_string(index));
         }
         scene_.base_camera = choose_camera(camera_name);
     }
@@ -202,10 +202,13 @@ class GltfSceneBuilder {
         }
     }
 
-    void visit(int index, const glm::mat4& parent, int depth) {
+    // Node `index` and its children; `from` names what lists it ("scene 0", "node 3").
+    void visit(int index, const glm::mat4& parent, int depth, const std::string& from) {
         const std::string what = file_ + ": node " + std::to_string(index);
         if (index < 0 || static_cast<size_t>(index) >= model_.nodes.size()) {
-            throw Error(what + " does not exist");
+            throw Error(file_ + ": " + from + " lists node " + std::to_string(index) +
+                        ", which does not exist (the file has " +
+                        std::to_string(model_.nodes.size()) + " nodes)");
         }
         if (depth > 256 || !on_path_.insert(index).second) {
             throw Error(what + ": the node hierarchy has a cycle (or is deeper than 256)");
@@ -226,7 +229,7 @@ class GltfSceneBuilder {
         }
         add_light(node, what, world);
         for (int child : node.children) {
-            visit(child, world, depth + 1);
+            visit(child, world, depth + 1, "node " + std::to_string(index));
         }
         on_path_.erase(index);
     }

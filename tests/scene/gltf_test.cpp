@@ -166,7 +166,15 @@ TEST(Gltf, MalformedFilesAreRefusedCleanly) {
     cases.push_back({"wrong_type", m.dump(), "wrong_type.gltf"});
     m = model;
     m["accessors"][0]["count"] = 100000;
-    cases.push_back({"past_buffer", m.dump(), "past the end"});
+    cases.push_back({"past_buffer", m.dump(), "elements (to byte"});
+    // Each index error names its own cause: the view past its buffer (not the accessor), the
+    // node that lists a missing child (not the child alone).
+    m = model;
+    m["bufferViews"][1]["byteOffset"] = 1 << 20;
+    cases.push_back({"view_past_buffer", m.dump(), "buffer view 1 (bytes 1048576 to"});
+    m = model;
+    m["nodes"][1]["children"] = {77};
+    cases.push_back({"missing_child", m.dump(), "node 1 lists node 77, which does not exist"});
     m = model;
     m["meshes"][0]["primitives"][0]["indices"] = 0;  // the positions as indices: wrong type
     cases.push_back({"bad_indices", m.dump(), "indices"});
