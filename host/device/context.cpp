@@ -189,6 +189,7 @@ void Context::run_chunked(Kernel& kernel, size_t first, size_t end) {
         double seconds = static_cast<double>(ended - started) * 1e-9;
         if (seconds * kImplausibleProfileRatio < waited_seconds) {
             seconds = waited_seconds;
+            time.host_timed += 1;
         }
         time.seconds += seconds;
         time.launches += 1;

@@ -55,6 +55,7 @@ struct KernelTime {
     double seconds = 0.0;
     size_t launches = 0;
     size_t items = 0;
+    size_t host_timed = 0;  // launches whose events did not measure: the host's time instead
 };
 
 class Context {

@@ -1,0 +1,32 @@
+// What `radcache devices` asks of each device (host/device/device_features.h): which of the
+// extensions radcache's kernels use its OpenCL C compiler defines, and a launch long enough for
+// its profiling events to measure.
+
+// Bit 0: cl_khr_fp64 (ray_triangle.h's exact edge functions); bit 1: cl_khr_int64_base_atomics
+// (compat.h's 64-bit atomic addition of the irradiance vector grid's sums).
+__kernel void device_features(uint begin, uint end, __global int* out) {
+    if (begin + get_global_id(0) != 0u || end == 0u) {
+        return;
+    }
+    int features = 0;
+#ifdef cl_khr_fp64
+    features |= 1;
+#endif
+#ifdef cl_khr_int64_base_atomics
+    features |= 2;
+#endif
+    out[0] = features;
+}
+
+// A few milliseconds of arithmetic per launch of 2^16 items.
+__kernel void device_busy(uint begin, uint end, __global float* out) {
+    const uint i = begin + get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    float x = (float)i * 1e-6f;
+    for (int k = 0; k < 2048; ++k) {
+        x = x * 0.999f + 0.001f;
+    }
+    out[i] = x;
+}
