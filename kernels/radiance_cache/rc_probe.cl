@@ -71,11 +71,12 @@ void rc_probe_rotation(__global const float4* rotations, uint i, float r[9]) {
     }
 }
 
-// Item i: rotates `vectors` coefficient vectors of order `order` at coefficients[i * vectors *
-// order^2 ...] in place by the rotation whose rows are rotations[3 i .. 3 i + 2].xyz.
-__kernel void rc_rotation_probe(uint begin, uint end, int order, int vectors,
-                                __global const float4* rotations, __global float* coefficients) {
-    RC_RANGE_ITEM(i);
+// Item i of the two rotation probes: rotates `vectors` coefficient vectors of order `order` at
+// coefficients[i * vectors * order^2 ...] in place by the rotation whose rows are
+// rotations[3 i .. 3 i + 2].xyz; by rc_sh_rotate, or where x90 is given by the zxzxz factorization
+// (shared/sh_rotation_zxz.h) with that table of rc_sh_x90_table.
+void rc_probe_rotate_item(uint i, int order, int vectors, __global const float4* rotations,
+                          __global const float* x90, __global float* coefficients) {
     float r[9];
     rc_probe_rotation(rotations, i, r);
     const int count = rc_sh_count(order);
@@ -83,29 +84,29 @@ __kernel void rc_rotation_probe(uint begin, uint end, int order, int vectors,
     for (int k = 0; k < vectors * count; ++k) {
         c[k] = coefficients[i * vectors * count + k];
     }
-    rc_sh_rotate(r, order, c, vectors, count);
+    if (x90 != 0) {
+        rc_sh_rotate_zxz(r, x90, order, c, vectors, count);
+    } else {
+        rc_sh_rotate(r, order, c, vectors, count);
+    }
     for (int k = 0; k < vectors * count; ++k) {
         coefficients[i * vectors * count + k] = c[k];
     }
 }
 
-// Item i: as rc_rotation_probe, by the zxzxz factorization (shared/sh_rotation_zxz.h) with the
-// table x90 of rc_sh_x90_table.
+// Item i: rc_probe_rotate_item by rc_sh_rotate.
+__kernel void rc_rotation_probe(uint begin, uint end, int order, int vectors,
+                                __global const float4* rotations, __global float* coefficients) {
+    RC_RANGE_ITEM(i);
+    rc_probe_rotate_item(i, order, vectors, rotations, 0, coefficients);
+}
+
+// Item i: rc_probe_rotate_item by the zxzxz factorization with the table x90.
 __kernel void rc_rotation_zxz_probe(uint begin, uint end, int order, int vectors,
                                     __global const float4* rotations, __global const float* x90,
                                     __global float* coefficients) {
     RC_RANGE_ITEM(i);
-    float r[9];
-    rc_probe_rotation(rotations, i, r);
-    const int count = rc_sh_count(order);
-    float c[3 * RC_SH_MAX_COEFFICIENTS];
-    for (int k = 0; k < vectors * count; ++k) {
-        c[k] = coefficients[i * vectors * count + k];
-    }
-    rc_sh_rotate_zxz(r, x90, order, c, vectors, count);
-    for (int k = 0; k < vectors * count; ++k) {
-        coefficients[i * vectors * count + k] = c[k];
-    }
+    rc_probe_rotate_item(i, order, vectors, rotations, x90, coefficients);
 }
 
 // Item i: the frame rotation from frame (rows from[3 i .. 3 i + 2]: t, b, n) to frame `to` into
