@@ -10,6 +10,7 @@
 #include <regex>
 
 #include "methods/decomposition/decomposition.h"
+#include "methods/device_shares.h"
 #include "methods/grid/ivg_options.h"
 #include "methods/light_samples.h"
 #include "methods/method.h"
@@ -125,24 +126,20 @@ nlohmann::json pass_json(const DecompositionStats& s) {
               {"shading", s.shading_seconds}}}};
 }
 
-// Each device's share of pass 2 (several devices).
-nlohmann::json devices_json(const std::vector<DecompDeviceShare>& shares) {
-    nlohmann::json devices = nlohmann::json::array();
-    for (const DecompDeviceShare& d : shares) {
-        devices.push_back({{"device", d.device},
-                           {"radiosity_triangles", d.radiosity_triangles},
-                           {"radiosity_rays", d.radiosity_rays},
-                           {"radiosity_seconds", d.radiosity_seconds},
-                           {"cluster_ranges", d.cluster_ranges},
-                           {"clusters", d.clusters},
-                           {"cluster_rays", d.cluster_rays},
-                           {"cluster_seconds", d.cluster_seconds},
-                           {"chunks", d.chunks},
-                           {"pixels", d.pixels},
-                           {"shading_rays", d.shading_rays},
-                           {"seconds", d.seconds}});
-    }
-    return devices;
+// One device's share of pass 2 (several devices: add_device_shares).
+nlohmann::json device_share_json(const DecompDeviceShare& d) {
+    return {{"device", d.device},
+            {"radiosity_triangles", d.radiosity_triangles},
+            {"radiosity_rays", d.radiosity_rays},
+            {"radiosity_seconds", d.radiosity_seconds},
+            {"cluster_ranges", d.cluster_ranges},
+            {"clusters", d.clusters},
+            {"cluster_rays", d.cluster_rays},
+            {"cluster_seconds", d.cluster_seconds},
+            {"chunks", d.chunks},
+            {"pixels", d.pixels},
+            {"shading_rays", d.shading_rays},
+            {"seconds", d.seconds}};
 }
 
 // The coarse solution the cluster rays read at their hits (--decomp-source).
@@ -359,9 +356,7 @@ class Decomposition final : public Method {
                 part.nonfinite_samples = stats.nonfinite_samples;
                 part.first_nonfinite_pixel = stats.first_nonfinite_pixel;
                 part.stats = pass_json(stats);
-                if (!stats.devices.empty()) {
-                    part.stats["devices"] = devices_json(stats.devices);
-                }
+                add_device_shares(stats.devices, &part.stats, device_share_json);
                 return part;
             });
         const size_t pixels = static_cast<size_t>(result.image.width) * result.image.height;
@@ -431,9 +426,7 @@ class Decomposition final : public Method {
         result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
         const size_t pixels = static_cast<size_t>(result.image.width) * result.image.height;
         result.stats.update(stats_json(stats, *options, result.rays, pixels));
-        if (!stats.devices.empty()) {
-            result.stats["devices"] = devices_json(stats.devices);
-        }
+        add_device_shares(stats.devices, &result.stats, device_share_json);
         log_note(std::to_string(stats.sh_samples) + " far-field samples, " +
                  std::to_string(stats.near_triangles) + " near-field triangles (alpha " +
                  std::to_string(options->alpha) + ")");
