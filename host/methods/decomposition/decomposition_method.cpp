@@ -7,7 +7,6 @@
 #include <glm/geometric.hpp>
 #include <limits>
 #include <memory>
-#include <regex>
 
 #include "methods/decomposition/decomposition.h"
 #include "methods/device_shares.h"
@@ -19,6 +18,7 @@
 #include "shared/decomposition.h"
 #include "util/error.h"
 #include "util/log.h"
+#include "util/number_with_unit.h"
 #include "util/timing.h"
 
 namespace rc {
@@ -44,18 +44,13 @@ std::string length_text(const SceneLength& length) {
 }
 
 SceneLength parse_length(const std::string& option, const std::string& text) {
-    static const std::regex form(R"(^\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*(%|u)?\s*$)");
-    std::smatch match;
-    if (!std::regex_match(text, match, form)) {
-        throw Error(option +
-                        ": expected a length in scene units (\"0.2\", \"0.2u\") or a "
-                        "percentage of the scene's diagonal (\"5%\"), got '" +
-                        text + "'",
-                    kExitUsage);
-    }
+    const NumberWithUnit number = parse_number_with_unit(
+        option, text, "%|u",
+        "a length in scene units (\"0.2\", \"0.2u\") or a percentage of the scene's diagonal "
+        "(\"5%\")");
     SceneLength length;
-    length.value = std::stof(match[1].str());
-    length.relative = match[2].str() == "%";
+    length.value = number.value;
+    length.relative = number.unit == "%";
     if (!std::isfinite(length.value) || length.value < 0.0f) {
         throw Error(option + ": must be finite and at least 0, got '" + text + "'", kExitUsage);
     }
