@@ -389,12 +389,8 @@ class Decomposition final : public Method {
         shading.add("film", buffer_bytes(pixels * RC_DECOMP_FILM_SLOTS, sizeof(shared::float4)));
         shading.add("counters", buffer_bytes(3, sizeof(unsigned)));
         shading.excludes = "the near field's triangles and the far field's records";
-        if (!with_grid_) {
-            return shading;
-        }
-        const IvgDeviceNeed grid = ivg_device_need(grid_options_, scene);
-        shading.add_all(grid.built);
-        return peak_of(grid.building, shading);
+        // The grid is built first and read until the frame ends.
+        return with_grid_ ? with_grid_need(grid_options_, scene, shading) : shading;
     }
 
    private:
