@@ -108,14 +108,8 @@ void IrradianceCache::restart_stats() {
 }
 
 Kernel& IrradianceCache::cells_kernel(const RadianceSource& source) {
-    const std::string options = source.build_options();
-    auto found = cells_kernels_.find(options);
-    if (found == cells_kernels_.end()) {
-        Kernel kernel =
-            context_.kernel("irradiance_cache/ic_record_cells.cl", "ic_record_cells", options);
-        found = cells_kernels_.emplace(options, std::move(kernel)).first;
-    }
-    return found->second;
+    return source_kernel(context_, &cells_kernels_, "irradiance_cache/ic_record_cells.cl",
+                         "ic_record_cells", source);
 }
 
 shared::IcParams IrradianceCache::level_params(int level) const {
