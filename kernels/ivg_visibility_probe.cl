@@ -3,6 +3,7 @@
 // rays for the rest) and by a shadow ray to every corner, as the lookup traced them before the
 // cells had planes.
 #include "common/ivg_visibility.h"
+#include "common/kernel_range.h"
 #include "scene_arguments.h"
 
 // Item i: at the first hit of rays[i], out[i] = (corners seen by rc_ivg_visible_corners, corners
@@ -12,10 +13,7 @@ __kernel void ivg_visibility_probe(uint begin, uint end, IvgParams params,
                                    __global const IvgCellPlanes* cell_planes,
                                    __global const IvgPlane* planes, RC_SCENE_PARAMETERS,
                                    __global const Ray* rays, __global uint4* out) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const Ray ray = rays[i];
     const Hit hit = rc_trace_closest(nodes, triangles, ray);

@@ -1,6 +1,7 @@
 // Test kernels (tests/common/light_sampling_test.cpp, tests/common/direct_light_test.cpp):
 // next-event estimation's light sampling from one point, the density MIS evaluates for a direction,
 // the spherical-triangle sampler, and the direct light of a Lambertian point.
+#include "common/kernel_range.h"
 #include "common/light.h"
 #include "common/path_radiance.h"
 #include "scene_arguments.h"
@@ -12,10 +13,7 @@
 __kernel void light_sample_probe(uint begin, uint end, float4 p, uint seed, RC_SCENE_PARAMETERS,
                                  __global float4* choice, __global float4* geometry,
                                  __global float4* radiance) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     RngStream rng = rc_rng_stream(seed, 0u, i, 0u);
     const float u = rc_rng_next_float(&rng);
@@ -35,10 +33,7 @@ __kernel void light_sample_probe(uint begin, uint end, float4 p, uint seed, RC_S
 // ray from p meets first, seen from its emitting side; 0 otherwise), into pdfs[i].
 __kernel void light_pdf_probe(uint begin, uint end, float4 p, RC_SCENE_PARAMETERS,
                               __global const float4* directions, __global float* pdfs) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     Ray ray;
     ray.origin = (float4)(p.xyz, 0.0f);
@@ -59,10 +54,7 @@ __kernel void light_pdf_probe(uint begin, uint end, float4 p, RC_SCENE_PARAMETER
 // (u1, u2 from stream i of `seed`), into directions[i] (w: the solid angle).
 __kernel void spherical_triangle_probe(uint begin, uint end, float4 a, float4 b, float4 c,
                                        uint seed, __global float4* directions) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     RngStream rng = rc_rng_stream(seed, 0u, i, 0u);
     const float u1 = rc_rng_next_float(&rng);
     const float u2 = rc_rng_next_float(&rng);
@@ -78,10 +70,7 @@ __kernel void spherical_triangle_probe(uint begin, uint end, float4 a, float4 b,
 __kernel void direct_light_probe(uint begin, uint end, float4 p, float4 n, int light_samples,
                                  uint seed, RC_SCENE_PARAMETERS, __global float4* light_part,
                                  __global float4* brdf_part) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     SurfacePoint sp;
     sp.position = sp.origin = p.xyz;

@@ -1,5 +1,6 @@
 // Test kernels (tests/common/material_test.cpp): sampling, evaluation and pdf of one material for
 // one outgoing direction, in the local shading frame.
+#include "common/kernel_range.h"
 #include "common/material.h"
 #include "shared/rng.h"
 
@@ -7,10 +8,7 @@
 // sampler fails (a direction below the surface).
 __kernel void material_sample_probe(uint begin, uint end, Material material, float4 wo, uint seed,
                                     __global float4* samples, __global float4* values) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SurfaceMaterial m = rc_surface_material_of(&material);
     RngStream rng = rc_rng_stream(seed, 0u, i, 0u);
     const float u_lobe = rc_rng_next_float(&rng);
@@ -31,10 +29,7 @@ __kernel void material_sample_probe(uint begin, uint end, Material material, flo
 // For direction i: (f, pdf) of the material.
 __kernel void material_eval_probe(uint begin, uint end, Material material, float4 wo,
                                   __global const float4* directions, __global float4* out) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SurfaceMaterial m = rc_surface_material_of(&material);
     const float3 wi = directions[i].xyz;
     out[i] = (float4)(rc_material_eval(&m, wo.xyz, wi), rc_material_pdf(&m, wo.xyz, wi));

@@ -1,12 +1,10 @@
 // Test kernel (tests/scene/texture_test.cpp): texture lookups at given coordinates.
+#include "common/kernel_range.h"
 #include "common/texture.h"
 
 __kernel void texture_lookup_probe(uint begin, uint end, TextureInfo info,
                                    __global const float4* texels, __global const float2* uvs,
                                    __global float4* out) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     out[i] = (float4)(rc_texture_lookup(texels, info, uvs[i]), 0.0f);
 }

@@ -2,6 +2,7 @@
 // frame rendered by irradiance caching with the cache serving the specular lobes.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,19 @@ void share_record_settings(const IrradianceCacheOptions& ic, GlossyOptions* glos
     glossy->min_spacing = ic.min_spacing;
     glossy->max_spacing = ic.max_spacing;
     glossy->share(ic);
+}
+
+// A glossy cache of type Cache for `frame` (GlossyCacheEntry::create, methods/glossy_caches.h):
+// its options `Options` at their defaults with the settings it takes from the irradiance
+// records' (share_record_settings), serving the materials `served` marks.
+template <class Cache, class Options>
+std::unique_ptr<GlossyCache> make_glossy_cache(const FrameScene& frame,
+                                               const IrradianceCacheOptions& ic,
+                                               const ServedMaterials& served) {
+    Options options;
+    share_record_settings(ic, &options);
+    options.materials = served;
+    return std::make_unique<Cache>(frame, options);
 }
 
 // One frame by irradiance caching with `glossy` serving the specular lobes, in one pass or by

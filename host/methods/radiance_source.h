@@ -5,8 +5,10 @@
 // irradiance vector grid and a deeper irradiance-cache level, each in its method's folder.
 #pragma once
 
+#include <map>
 #include <string>
 
+#include "device/context.h"
 #include "device/kernel.h"
 #include "shared/radiance_sources.h"
 
@@ -24,6 +26,12 @@ class RadianceSource : public KernelArgumentGroup {
 inline std::string radiance_source_define(int kind) {
     return "-DRC_RADIANCE_SOURCE=" + std::to_string(kind);
 }
+
+// The kernel `name` of program `entry` (relative to kernels/) built with `source`'s definitions:
+// built at its first use with each kind of source and kept in *kernels (by name and options).
+Kernel& source_kernel(Context& context, std::map<std::string, Kernel>* kernels,
+                      const std::string& entry, const std::string& name,
+                      const RadianceSource& source);
 
 // Path-traced continuation: nothing to bind.
 class PathContinuation final : public RadianceSource {

@@ -2,6 +2,7 @@
 // factor, the distant term, the near correction, the hidden distant power and the split
 // triangles' radiosity points, each on given inputs (the fit's own kernel, decomp_fit, is the
 // method's).
+#include "common/kernel_range.h"
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_form_factor.h"
 #include "decomposition/decomp_near.h"
@@ -13,10 +14,7 @@
 __kernel void decomp_form_factors(uint begin, uint end, __global const float4* points,
                                   __global const float4* normals,
                                   __global const NearTriangle* triangles, __global float* out) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     out[i] = rc_decomp_form_factor(points[i].xyz, normals[i].xyz, triangles[i].v0.xyz,
                                    triangles[i].v1.xyz, triangles[i].v2.xyz);
 }
@@ -26,10 +24,7 @@ __kernel void decomp_form_factors(uint begin, uint end, __global const float4* p
 __kernel void decomp_hidden_at(uint begin, uint end, __global const ShSample* sample,
                                __global const float4* points, __global const float4* normals,
                                __global const NearTriangle* triangles, __global float4* hidden) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const ShSample far = sample[0];
     const float3 p = points[i].xyz;
     const float3 n = normals[i].xyz;
@@ -43,10 +38,7 @@ __kernel void decomp_hidden_at(uint begin, uint end, __global const ShSample* sa
 __kernel void decomp_sh_terms(uint begin, uint end, __global const ShSample* samples,
                               __global const float4* normals, __global float4* irradiance,
                               __global float4* radiance) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(q);
     const ShSample s = samples[q];
     irradiance[q] = (float4)(rc_decomp_sh_irradiance(&s, normals[q].xyz), 0.0f);
     radiance[q] = (float4)(rc_decomp_sh_radiance(&s, normals[q].xyz), 0.0f);
@@ -59,10 +51,7 @@ __kernel void decomp_sh_irradiance_at(uint begin, uint end, __global const ShSam
                                       __global const ShGradient* gradients,
                                       __global const Record* centre, __global const float4* points,
                                       __global const float4* normals, __global float4* irradiance) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(q);
     const FarCoefficients far = {coefficients, gradients};
     ShSample s;
     for (int i = 0; i < RC_DECOMP_SH_COEFFICIENTS; ++i) {
@@ -81,10 +70,7 @@ __kernel void decomp_near_correction_at(
     __global const int* near_list, __global const NearTriangle* near_triangles,
     __global const float4* radiance, __global const float4* points, __global const float4* normals,
     __global float4* correction) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(q);
     params.near_visibility = 0;
     const NearField near = rc_decomp_near_field(near_grid, near_start, near_list, near_triangles,
                                                 radiance, &params, 0);
@@ -107,10 +93,7 @@ __kernel void decomp_triangle_points(uint begin, uint end, DecompParams params, 
                                      __global const NearTriangle* split, int count,
                                      __global uint* placed_primitives, __global float4* placed,
                                      __global uint* traced_primitives, __global float4* traced) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint t = i / (uint)count;
     RngStream rng;

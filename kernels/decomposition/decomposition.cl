@@ -2,6 +2,7 @@
 // paper: Arikan, Forsyth and O'Brien 2005): the G-buffer, the split triangles' radiosity, a
 // cluster's far-field rays and their least-squares fit, the two terms of eq. 3 per camera sample,
 // and the render pass. Built for the radiance source the rays read (the irradiance vector grid).
+#include "common/kernel_range.h"
 #include "decomposition/decomp_radiosity.h"
 #include "decomposition/decomp_radiosity_rays.h"
 #include "decomposition/decomp_shading.h"
@@ -12,10 +13,7 @@
 // Entry i = pixel * spp + s: the first hit of that camera sample.
 __kernel void decomp_gbuffer(uint begin, uint end, DecompParams params, CameraParams camera,
                              RC_SCENE_PARAMETERS, __global GBufferSample* gbuffer) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint spp = (uint)params.camera_spp;
     gbuffer[i] = rc_decomp_gbuffer_sample(&params, &scene, &camera, i / spp, i % spp);
@@ -28,10 +26,7 @@ __kernel void decomp_radiosity(
     uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
     RC_RADIANCE_SOURCE_PARAMETERS __global const NearTriangle* near_triangles,
     __global const uint* listed, __global float4* radiance, __global uint* counters) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const uint t = listed[i];
     const SceneData scene = RC_SCENE_DATA();
     const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
@@ -49,10 +44,7 @@ __kernel void decomp_radiosity_direct(uint begin, uint end, DecompParams params,
                                       __global const NearTriangle* near_triangles,
                                       __global float4* direct, __global float4* reflectance,
                                       __global uint* counters) {
-    const uint t = begin + (uint)get_global_id(0);
-    if (t >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(t);
     const SceneData scene = RC_SCENE_DATA();
     uint rays = 0;
     float3 rho;
@@ -70,10 +62,7 @@ __kernel void decomp_radiosity_traced(uint begin, uint end, DecompParams params,
                                       __global const NearTriangle* near_triangles,
                                       __global const uint* listed, int count,
                                       __global float4* radiance, __global uint* counters) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const uint t = listed[i];
     const SceneData scene = RC_SCENE_DATA();
     uint rays = 0;
@@ -92,10 +81,7 @@ __kernel void decomp_radiosity_coverage(uint begin, uint end, RecordGrid far_gri
                                         __global const ShSample* coefficients,
                                         __global const NearTriangle* near_triangles,
                                         uint reach_needed, __global uint* covered) {
-    const uint t = begin + (uint)get_global_id(0);
-    if (t >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(t);
     const FarField far = {far_grid, far_start, far_samples, samples, coefficients, 0};
     covered[t] = rc_decomp_triangle_covered(&far, near_triangles + t, reach_needed != 0);
 }
@@ -114,10 +100,7 @@ __kernel void decomp_radiosity_gather(
     __global const float4* reflectance, __global const uint* covered, __global const float4* traced,
     __global const float4* previous, uint with_near, __global float4* radiance,
     __global uint* counters) {
-    const uint t = begin + (uint)get_global_id(0);
-    if (t >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(t);
     if (covered[t] == 0) {
         radiance[t] = traced[t];
         return;
@@ -142,10 +125,7 @@ __kernel void decomp_cluster_rays(
     RC_RADIANCE_SOURCE_PARAMETERS __global const DecompCluster* clusters,
     __global const uint* members, __global const GBufferSample* gbuffer,
     __global ClusterRay* rays_out, __global uint* counters) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
     const uint per_cluster = (uint)params.cluster_rays;
@@ -166,10 +146,7 @@ __kernel void decomp_cluster_hits(uint begin, uint end, DecompParams params, RC_
                                   __global const uint* members,
                                   __global const GBufferSample* gbuffer,
                                   __global ClusterRay* rays_out, __global uint* counters) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint per_cluster = (uint)params.cluster_rays;
     const DecompCluster cluster = clusters[i / per_cluster];
@@ -184,10 +161,7 @@ __kernel void decomp_cluster_hits(uint begin, uint end, DecompParams params, RC_
 __kernel void decomp_radiosity_rays(uint begin, uint end, __global const ClusterRay* traced,
                                     __global const float4* radiance,
                                     __global ClusterRay* rays_out) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     rays_out[i] = rc_decomp_radiosity_ray(traced[i], radiance);
 }
 
@@ -195,10 +169,7 @@ __kernel void decomp_radiosity_rays(uint begin, uint end, __global const Cluster
 // params.gradients first order in the rays' origins) and its rays' counts.
 __kernel void decomp_fit(uint begin, uint end, DecompParams params, __global const ClusterRay* rays,
                          __global ClusterFit* fits) {
-    const uint c = begin + (uint)get_global_id(0);
-    if (c >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(c);
     fits[c] = rc_decomp_fit_cluster(&params, rays + (size_t)c * (uint)params.cluster_rays);
 }
 
@@ -214,10 +185,7 @@ __kernel void decomp_irradiance(uint begin, uint end, DecompParams params, RC_SC
                                 __global const NearTriangle* near_triangles,
                                 __global const float4* radiance,
                                 __global DecompIrradiance* irradiance) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const FarField far = {far_grid, far_start,    far_samples,
                           samples,  coefficients, params.gradients != 0 ? gradients : 0};
@@ -233,10 +201,7 @@ __kernel void decomp_irradiance(uint begin, uint end, DecompParams params, RC_SC
 __kernel void decomp_shade(uint begin, uint end, DecompParams params, CameraParams camera,
                            RC_SCENE_PARAMETERS, __global const DecompIrradiance* irradiance,
                            __global float4* film, __global uint* counters) {
-    const uint pixel = begin + (uint)get_global_id(0);
-    if (pixel >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(pixel);
     const SceneData scene = RC_SCENE_DATA();
     rc_decomp_shade_pixel(&params, &scene, &camera, irradiance, pixel, film, counters);
 }

@@ -2,6 +2,7 @@
 // G-buffer, the hemisphere hits a deeper level must cover, the reduction of a record's hemisphere
 // samples (the sampling itself: ic_record_cells.cl), record gathering (coverage and
 // interpolation), and the final shading pass.
+#include "common/kernel_range.h"
 #include "irradiance_cache/ic_splat.h"
 #include "records/ic_shading.h"
 #include "scene_arguments.h"
@@ -9,10 +10,7 @@
 // Entry i = pixel * spp + s: the first hit of that camera sample.
 __kernel void ic_gbuffer(uint begin, uint end, IcParams params, CameraParams camera,
                          RC_SCENE_PARAMETERS, __global GBufferSample* gbuffer) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint spp = (uint)params.camera_spp;
     const uint pixel = i / spp;
@@ -30,10 +28,7 @@ __kernel void ic_gbuffer(uint begin, uint end, IcParams params, CameraParams cam
 __kernel void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
                              __global const Record* records, __global const float4* origins,
                              __global const uint* streams, __global GBufferSample* hits) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint per_record = (uint)(params.strata_m * params.strata_n);
     const uint b = i / per_record;
@@ -51,10 +46,7 @@ __kernel void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PAR
 __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global const float4* cells,
                                __global const Record* records, __global const uint* streams,
                                __global IrradiancePayload* payloads, __global float4* distances) {
-    const uint b = begin + (uint)get_global_id(0);
-    if (b >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(b);
     const uint per_record = (uint)(params.strata_m * params.strata_n);
     const RecordEstimate e =
         rc_ic_reduce(&params, streams[b], records[b].normal.xyz, cells + (size_t)b * per_record);
@@ -77,10 +69,7 @@ __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global c
 __kernel void ic_tile_depths(uint begin, uint end, IcParams params, CameraParams camera,
                              SplatTileGrid tiles, __global const GBufferSample* gbuffer,
                              __global TileDepths* depths) {
-    const uint t = begin + (uint)get_global_id(0);
-    if (t >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(t);
     depths[t] = rc_ic_tile_depths(&params, &camera, &tiles, gbuffer, t);
 }
 
@@ -96,10 +85,7 @@ __kernel void ic_uncovered(uint begin, uint end, IcParams params, SplatTileGrid 
                            __global const IrradiancePayload* payloads,
                            __global const GBufferSample* gbuffer, __global uint* uncovered,
                            __global uint* count) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(q);
     const uint i = rc_ic_candidate(&params, q);
     const GBufferSample g = gbuffer[i];
     if (g.served == 0) {
@@ -117,10 +103,7 @@ __kernel void ic_uncovered(uint begin, uint end, IcParams params, SplatTileGrid 
 // Item k: G-buffer entry indices[k], copied to out[k].
 __kernel void ic_gbuffer_select(uint begin, uint end, __global const GBufferSample* gbuffer,
                                 __global const uint* indices, __global GBufferSample* out) {
-    const uint k = begin + (uint)get_global_id(0);
-    if (k >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(k);
     out[k] = gbuffer[indices[k]];
 }
 
@@ -131,10 +114,7 @@ __kernel void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
                         __global const int* cell_start, __global const int* cell_records,
                         __global const Record* records, __global const IrradiancePayload* payloads,
                         __global const GBufferSample* gbuffer, __global float4* sums) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(q);
     const GBufferSample g = gbuffer[rc_ic_candidate(&params, q)];
     sums[q] = g.served == 0
                   ? (float4)(0.0f)
@@ -149,10 +129,7 @@ __kernel void ic_splat(uint begin, uint end, IcParams params, SplatTileGrid tile
                        __global const int* tile_start, __global const int* tile_records,
                        __global const Record* records, __global const IrradiancePayload* payloads,
                        __global const GBufferSample* gbuffer, __global float4* sums) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(q);
     const uint i = rc_ic_candidate(&params, q);
     const GBufferSample g = gbuffer[i];
     sums[q] = g.served == 0 ? (float4)(0.0f)
@@ -169,10 +146,7 @@ __kernel void ic_records_used(uint begin, uint end, IcParams params, SplatTileGr
                               __global const Record* records,
                               __global const IrradiancePayload* payloads,
                               __global const GBufferSample* gbuffer, __global uint* used) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const GBufferSample g = gbuffer[i];
     if (g.served == 0) {
         return;
@@ -199,10 +173,7 @@ __kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camer
                        __global const IrradiancePayload* payloads, __global const float4* splat,
                        __global const RcGlossySample* glossy, __global float4* film,
                        __global uint* counters) {
-    const uint pixel = begin + (uint)get_global_id(0);
-    if (pixel >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(pixel);
     const SceneData scene = RC_SCENE_DATA();
     const RecordCache cache = {grid,     cell_start,      cell_records,     records,
                                payloads, params.accuracy, params.max_weight};

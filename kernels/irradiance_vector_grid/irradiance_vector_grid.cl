@@ -1,6 +1,7 @@
 // Entry kernels of the irradiance vector grid (host/methods/irradiance_vector_grid/: the grid,
 // ivg_method.cpp): photon tracing, deposition of given segments (tests),
 // normalisation, lookups (tests) and the render pass of `ivg` and `ivg-gather`.
+#include "common/kernel_range.h"
 #include "irradiance_vector_grid/ivg_photons.h"
 #include "irradiance_vector_grid/ivg_shading.h"
 #include "scene_arguments.h"
@@ -9,10 +10,7 @@
 // counters[0] counts crossings, counters[1] rays.
 __kernel void ivg_trace_photons(uint begin, uint end, IvgParams params, RC_SCENE_PARAMETERS,
                                 __global long* accum, __global uint* counters) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     uint rays = 0;
     const uint crossings =
@@ -25,10 +23,7 @@ __kernel void ivg_trace_photons(uint begin, uint end, IvgParams params, RC_SCENE
 __kernel void ivg_deposit_segments(uint begin, uint end, IvgParams params,
                                    __global const float4* from, __global const float4* to,
                                    __global const float4* flux, __global long* accum) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     rc_ivg_deposit_segment(&params, from[i].xyz, to[i].xyz, flux[i].xyz, accum);
 }
 
@@ -37,10 +32,7 @@ __kernel void ivg_deposit_segments(uint begin, uint end, IvgParams params,
 // direction.
 __kernel void ivg_normalize(uint begin, uint end, IvgParams params, __global const long* accum,
                             __global float* values) {
-    const uint v = begin + (uint)get_global_id(0);
-    if (v >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(v);
     const int columns = params.cells.x + 1;
     const int rows = params.cells.y + 1;
     const int i = (int)v % columns;
@@ -62,10 +54,7 @@ __kernel void ivg_normalize(uint begin, uint end, IvgParams params, __global con
 __kernel void ivg_lookup(uint begin, uint end, IvgParams params, __global const float* values,
                          __global const half* packed, __global const float4* positions,
                          __global const float4* normals, __global float4* out) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(q);
     out[q] =
         (float4)(rc_ivg_irradiance(&params, values, packed, positions[q].xyz, normals[q].xyz, 0xff),
                  0.0f);
@@ -79,10 +68,7 @@ __kernel void ivg_shade(uint begin, uint end, IvgParams params, __global const f
                         __global const half* packed, __global const IvgCellPlanes* cell_planes,
                         __global const IvgPlane* planes, CameraParams camera, RC_SCENE_PARAMETERS,
                         __global float4* film, __global uint* counters) {
-    const uint pixel = begin + (uint)get_global_id(0);
-    if (pixel >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(pixel);
     const SceneData scene = RC_SCENE_DATA();
     const VectorGrid grid = {params, values, packed, cell_planes, planes};
     const PixelShader shader = {&scene, &grid, &camera};

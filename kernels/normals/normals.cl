@@ -1,4 +1,5 @@
 // Entry kernel of the geometry preview (host/methods/normals/normals.cpp).
+#include "common/kernel_range.h"
 #include "normals/normals.h"
 
 __kernel void render_normals(uint begin, uint end, CameraParams camera,
@@ -6,10 +7,7 @@ __kernel void render_normals(uint begin, uint end, CameraParams camera,
                              __global const Triangle* triangles,
                              __global const uint* triangle_of_primitive, uint first, uint samples,
                              uint jitter, uint seed_lo, uint seed_hi, __global float4* film) {
-    const uint pixel = begin + (uint)get_global_id(0);
-    if (pixel >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(pixel);
     film[pixel] = rc_normals_pixel(&camera, nodes, triangles, triangle_of_primitive, pixel, first,
                                    samples, jitter, seed_lo, seed_hi);
 }

@@ -1,6 +1,7 @@
 // Entry kernel of the path tracer (host/methods/path_tracer/): one sample for every pixel,
 // accumulated into the film. Each pixel is written by one work item per pass, so the sums are
 // deterministic.
+#include "common/kernel_range.h"
 #include "path_tracer/path_tracer.h"
 #include "scene_arguments.h"
 #include "shared/film.h"
@@ -9,10 +10,7 @@
 // counters: [0] rays traced, [1] non-finite samples (dropped), [2] first pixel with one.
 __kernel void path_trace_pass(uint begin, uint end, PathTracerParams params, CameraParams camera,
                               RC_SCENE_PARAMETERS, __global float4* film, __global uint* counters) {
-    const uint pixel = begin + (uint)get_global_id(0);
-    if (pixel >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(pixel);
     const SceneData scene = RC_SCENE_DATA();
     const PathSample s = rc_path_sample(&scene, &camera, &params, pixel);
     atomic_add(&counters[0], s.rays);

@@ -1,4 +1,5 @@
 // Entry kernels of radiance caching (DESIGN.md §6.4). Item index: begin + get_global_id(0).
+#include "common/kernel_range.h"
 #include "radiance_cache/rc_brdf_table.h"
 
 // One texel of one material's BRDF table (rc_brdf_table_texel): its coefficients into
@@ -7,10 +8,7 @@
 __kernel void rc_brdf_table_texels(uint begin, uint end, Material material, BrdfTableParams params,
                                    __global const float* nodes, __global float* coefficients,
                                    __global float* errors) {
-    const uint texel = begin + (uint)get_global_id(0);
-    if (texel >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(texel);
     float c[RC_SH_MAX_COEFFICIENTS];
     float e[RC_SH_MAX_ORDER];
     rc_brdf_table_texel(&material, &params, (int)texel, nodes, c, e);

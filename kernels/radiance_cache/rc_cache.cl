@@ -1,5 +1,6 @@
 // Entry kernels of radiance caching's records and interpolation (host/methods/radiance_cache/
 // radiance_cache.h; DESIGN.md §6.4). Item index: begin + get_global_id(0).
+#include "common/kernel_range.h"
 #include "radiance_cache/rc_records.h"
 #include "scene_arguments.h"
 
@@ -8,10 +9,7 @@
 __kernel void rc_glossy_queries(uint begin, uint end, IcParams params, CameraParams camera,
                                 RC_SCENE_PARAMETERS, __global const BrdfTableInfo* infos,
                                 __global const int* orders, __global RcQuery* queries) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint spp = (uint)params.camera_spp;
     queries[i] = rc_camera_query(&scene, &params, &camera, infos, orders, i / spp, i % spp);
@@ -24,10 +22,7 @@ __kernel void rc_glossy_queries(uint begin, uint end, IcParams params, CameraPar
 __kernel void rc_record_project(uint begin, uint end, RcParams params, __global const uint* streams,
                                 __global const float4* cells, __global float* payloads,
                                 __global float4* distances) {
-    const uint b = begin + (uint)get_global_id(0);
-    if (b >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(b);
     const int per_record = params.strata_m * params.strata_n;
     __global const float4* own = cells + (size_t)b * (uint)per_record;
     uint key_lo, key_hi;
@@ -58,10 +53,7 @@ __kernel void rc_glossy_splat(uint begin, uint end, RcParams params, RecordGrid 
                               __global const RcQuery* queries, __global const BrdfTableInfo* infos,
                               __global const float* table, __global const float* x90,
                               __global RcGlossySample* glossy, __global uint* counters) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const RcQuery q = queries[i];
     RcGlossySample out;
     out.reflected = (float4)(0.0f);

@@ -1,5 +1,6 @@
 // Test kernels of radiance caching's foundations (tests/radiance_cache/,
 // tests/shared/sh_*_test.cpp; `radcache bench sh`). Item index: begin + get_global_id(0).
+#include "common/kernel_range.h"
 #include "radiance_cache/rc_brdf_table.h"
 #include "radiance_cache/rc_gradients.h"
 #include "radiance_cache/rc_interpolation.h"
@@ -11,10 +12,7 @@
 // The basis functions of `basis` at directions[i] into out[i * order^2 ...].
 __kernel void rc_basis_probe(uint begin, uint end, int basis, int order,
                              __global const float4* directions, __global float* out) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     float y[RC_SH_MAX_COEFFICIENTS];
     const float4 d = directions[i];
     rc_basis_eval(basis, d.x, d.y, d.z, order, y);
@@ -35,10 +33,7 @@ __kernel void rc_basis_probe(uint begin, uint end, int basis, int order,
 __kernel void rc_cells_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi, int mode,
                              int basis, int function, float exponent, float4 colour,
                              __global float4* cells) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const uint record = i / (uint)(m * n);
     const int cell = (int)(i % (uint)(m * n));
     const float3 d = rc_stratum_direction(key_lo, key_hi, record, cell, m, n);
@@ -57,10 +52,7 @@ __kernel void rc_cells_probe(uint begin, uint end, int m, int n, uint key_lo, ui
 __kernel void rc_projection_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi,
                                   int basis, int order, __global const float4* cells,
                                   __global float* out) {
-    const uint record = begin + (uint)get_global_id(0);
-    if (record >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(record);
     float c[3 * RC_SH_MAX_COEFFICIENTS];
     rc_project_cells(cells + record * (uint)(m * n), m, n, key_lo, key_hi, record, basis, order, c);
     const int count = 3 * rc_sh_count(order);
@@ -79,14 +71,12 @@ void rc_probe_rotation(__global const float4* rotations, uint i, float r[9]) {
     }
 }
 
-// Item i: rotates `vectors` coefficient vectors of order `order` at coefficients[i * vectors *
-// order^2 ...] in place by the rotation whose rows are rotations[3 i .. 3 i + 2].xyz.
-__kernel void rc_rotation_probe(uint begin, uint end, int order, int vectors,
-                                __global const float4* rotations, __global float* coefficients) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+// Item i of the two rotation probes: rotates `vectors` coefficient vectors of order `order` at
+// coefficients[i * vectors * order^2 ...] in place by the rotation whose rows are
+// rotations[3 i .. 3 i + 2].xyz; by rc_sh_rotate, or where x90 is given by the zxzxz factorization
+// (shared/sh_rotation_zxz.h) with that table of rc_sh_x90_table.
+void rc_probe_rotate_item(uint i, int order, int vectors, __global const float4* rotations,
+                          __global const float* x90, __global float* coefficients) {
     float r[9];
     rc_probe_rotation(rotations, i, r);
     const int count = rc_sh_count(order);
@@ -94,42 +84,36 @@ __kernel void rc_rotation_probe(uint begin, uint end, int order, int vectors,
     for (int k = 0; k < vectors * count; ++k) {
         c[k] = coefficients[i * vectors * count + k];
     }
-    rc_sh_rotate(r, order, c, vectors, count);
+    if (x90 != 0) {
+        rc_sh_rotate_zxz(r, x90, order, c, vectors, count);
+    } else {
+        rc_sh_rotate(r, order, c, vectors, count);
+    }
     for (int k = 0; k < vectors * count; ++k) {
         coefficients[i * vectors * count + k] = c[k];
     }
 }
 
-// Item i: as rc_rotation_probe, by the zxzxz factorization (shared/sh_rotation_zxz.h) with the
-// table x90 of rc_sh_x90_table.
+// Item i: rc_probe_rotate_item by rc_sh_rotate.
+__kernel void rc_rotation_probe(uint begin, uint end, int order, int vectors,
+                                __global const float4* rotations, __global float* coefficients) {
+    RC_RANGE_ITEM(i);
+    rc_probe_rotate_item(i, order, vectors, rotations, 0, coefficients);
+}
+
+// Item i: rc_probe_rotate_item by the zxzxz factorization with the table x90.
 __kernel void rc_rotation_zxz_probe(uint begin, uint end, int order, int vectors,
                                     __global const float4* rotations, __global const float* x90,
                                     __global float* coefficients) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
-    float r[9];
-    rc_probe_rotation(rotations, i, r);
-    const int count = rc_sh_count(order);
-    float c[3 * RC_SH_MAX_COEFFICIENTS];
-    for (int k = 0; k < vectors * count; ++k) {
-        c[k] = coefficients[i * vectors * count + k];
-    }
-    rc_sh_rotate_zxz(r, x90, order, c, vectors, count);
-    for (int k = 0; k < vectors * count; ++k) {
-        coefficients[i * vectors * count + k] = c[k];
-    }
+    RC_RANGE_ITEM(i);
+    rc_probe_rotate_item(i, order, vectors, rotations, x90, coefficients);
 }
 
 // Item i: the frame rotation from frame (rows from[3 i .. 3 i + 2]: t, b, n) to frame `to` into
 // out[3 i .. 3 i + 2] (rows of R).
 __kernel void rc_frame_rotation_probe(uint begin, uint end, __global const float4* from,
                                       __global const float4* to, __global float4* out) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     Frame a;
     a.t = from[3 * i].xyz;
     a.b = from[3 * i + 1].xyz;
@@ -150,10 +134,7 @@ __kernel void rc_brdf_lookup_probe(uint begin, uint end, BrdfTableInfo info, int
                                    __global const float* coefficients, __global const int* orders,
                                    __global const float4* wo, __global float* out,
                                    __global int* out_orders) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     float c[RC_SH_MAX_COEFFICIENTS];
     rc_brdf_table_coefficients(coefficients, &info, wo[i].xyz, order, c);
     const int count = rc_sh_count(order);
@@ -170,10 +151,7 @@ __kernel void rc_brdf_lookup_probe(uint begin, uint end, BrdfTableInfo info, int
 __kernel void rc_ceiling_cells_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi,
                                      uint stream, float spot, float4 colour,
                                      __global const float4* positions, __global float4* cells) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const uint record = i / (uint)(m * n);
     const int cell = (int)(i % (uint)(m * n));
     const float3 d = rc_grid_stratum_direction(key_lo, key_hi, stream, cell, m, n);
@@ -191,10 +169,7 @@ __kernel void rc_ceiling_cells_probe(uint begin, uint end, int m, int n, uint ke
 __kernel void rc_gradient_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi,
                                 uint stream, int basis, int order, __global const float4* cells,
                                 __global float* out) {
-    const uint record = begin + (uint)get_global_id(0);
-    if (record >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(record);
     float c[3 * RC_SH_MAX_COEFFICIENTS];
     float g[6 * RC_SH_MAX_COEFFICIENTS];
     rc_project_cells_with_gradients(cells + record * (uint)(m * n), m, n, key_lo, key_hi, stream,
@@ -218,10 +193,7 @@ __kernel void rc_reflection_probe(uint begin, uint end, int order, BrdfTableInfo
                                   __global const float4* displacements,
                                   __global const float4* rotations, __global const float4* wo,
                                   __global float4* out) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const int count = rc_sh_count(order);
     float c[3 * RC_SH_MAX_COEFFICIENTS];
     float g[6 * RC_SH_MAX_COEFFICIENTS];

@@ -1,6 +1,7 @@
 // Entry kernel of radiance caching's hemisphere sampling (host/methods/radiance_cache/): the
 // radiance arriving through each cell of a batch of records, the light beyond the hemisphere
 // rays' hits read from the source the program is built for (records/radiance_source.h).
+#include "common/kernel_range.h"
 #include "radiance_cache/rc_records.h"
 #include "scene_arguments.h"
 // The source after the method's own headers (see records/radiance_source.h).
@@ -18,10 +19,7 @@ __kernel void rc_record_cells(uint begin, uint end, RcParams params, RC_SCENE_PA
                               __global const RcQuery* sites, __global const uint* streams,
                               RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
                               __global uint* counters) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
     const uint per_record = (uint)(params.strata_m * params.strata_n);

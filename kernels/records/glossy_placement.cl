@@ -1,6 +1,7 @@
 // Entry kernels of the glossy caches' record placement (host/methods/glossy_placement.h): which
 // camera samples a glossy cache serves, and which of them no record covers yet. Shared by
 // radiance caching and SDRC (DESIGN.md §6.4, §6.5). Item index: begin + get_global_id(0).
+#include "common/kernel_range.h"
 #include "records/ic_records.h"
 #include "shared/radiance_cache.h"
 
@@ -9,10 +10,7 @@
 // serves (order >= 0), counts[2] those left to Monte Carlo (order 0).
 __kernel void rc_served_queries(uint begin, uint end, __global const RcQuery* queries,
                                 __global uint* served, __global uint* counts) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const int order = queries[i].order;
     if (order >= 0) {
         atomic_inc(&counts[1]);
@@ -28,10 +26,7 @@ __kernel void rc_served_queries(uint begin, uint end, __global const RcQuery* qu
 // Item k: queries[indices[k]] into selected[k].
 __kernel void rc_select_queries(uint begin, uint end, __global const RcQuery* queries,
                                 __global const uint* indices, __global RcQuery* selected) {
-    const uint k = begin + (uint)get_global_id(0);
-    if (k >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(k);
     selected[k] = queries[indices[k]];
 }
 
@@ -43,10 +38,7 @@ __kernel void rc_uncovered(uint begin, uint end, float accuracy, float max_weigh
                            __global const Record* records, __global const RcQuery* queries,
                            __global const uint* candidates, __global uint* uncovered,
                            __global uint* uncovered_count) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(q);
     const RcQuery query = queries[candidates[q]];
     const int cell = rc_ic_grid_cell(&grid, query.position.xyz);
     if (cell >= 0) {
@@ -68,10 +60,7 @@ __kernel void rc_records_used(uint begin, uint end, float accuracy, float max_we
                               RecordGrid grid, __global const int* cell_start,
                               __global const int* cell_records, __global const Record* records,
                               __global const RcQuery* queries, __global uint* used) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(q);
     const RcQuery query = queries[q];
     const int cell = query.order > 0 ? rc_ic_grid_cell(&grid, query.position.xyz) : -1;
     if (cell < 0) {

@@ -1,5 +1,6 @@
 // Entry kernels of SDRC's queries, record radii and interpolation (host/methods/sdrc/; DESIGN.md
 // §6.5). Item index: begin + get_global_id(0).
+#include "common/kernel_range.h"
 #include "scene_arguments.h"
 #include "sdrc/sdrc_interpolation.h"
 
@@ -10,10 +11,7 @@
 __kernel void sdrc_queries(uint begin, uint end, IcParams params, CameraParams camera,
                            RC_SCENE_PARAMETERS, __global RcQuery* queries,
                            __global RcGlossySample* glossy) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint spp = (uint)params.camera_spp;
     bool served;
@@ -34,10 +32,7 @@ __kernel void sdrc_queries(uint begin, uint end, IcParams params, CameraParams c
 __kernel void sdrc_record_radius(uint begin, uint end, SdrcParams params,
                                  __global const Material* materials, __global const RcQuery* sites,
                                  __global const float4* samples, __global float4* radii) {
-    const uint b = begin + (uint)get_global_id(0);
-    if (b >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(b);
     const RcQuery site = sites[b];
     radii[b] = rc_sdrc_record_radius(&params, materials, &site, (uint)params.first_record + b,
                                      samples + (size_t)b * (uint)params.samples);
@@ -56,10 +51,7 @@ __kernel void sdrc_interpolate(uint begin, uint end, SdrcParams params,
                                __global const RcQuery* queries, __global const uint* samples,
                                __global RcGlossySample* glossy, __global SdrcMiss* misses,
                                __global uint* counters) {
-    const uint k = begin + (uint)get_global_id(0);
-    if (k >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(k);
     SdrcCache cache;
     cache.grid = grid;
     cache.cell_start = cell_start;
@@ -95,10 +87,7 @@ __kernel void sdrc_interpolate(uint begin, uint end, SdrcParams params,
 __kernel void sdrc_add_misses(uint begin, uint end, SdrcParams params, __global const uint* samples,
                               __global const SdrcMiss* misses, __global const float4* radiance,
                               __global RcGlossySample* glossy) {
-    const uint k = begin + (uint)get_global_id(0);
-    if (k >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(k);
     const size_t first = (size_t)k * (uint)params.interp;
     float3 sum = (float3)(0.0f);
     for (int j = 0; j < params.interp; ++j) {

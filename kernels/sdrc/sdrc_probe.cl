@@ -1,5 +1,6 @@
 // Test kernels of SDRC's L-tree (tests/sdrc/sdrc_ltree_test.cpp). Item index: begin +
 // get_global_id(0).
+#include "common/kernel_range.h"
 #include "sdrc/ltree.h"
 #include "shared/sdrc.h"
 
@@ -11,10 +12,7 @@ __kernel void sdrc_query_probe(uint begin, uint end, __global const LTreeNode* n
                                __global const SdrcTree* trees, __global const uint* records,
                                __global const float4* queries, uint capacity, __global uint* counts,
                                __global float4* sums, __global uint* found) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(q);
     const float4 query = queries[q];
     LTreeFound result;
     result.radiance = (float3)(0.0f);

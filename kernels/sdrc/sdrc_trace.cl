@@ -3,6 +3,7 @@
 // built for (records/radiance_source.h). The rays are the camera hit's first bounce: the emission
 // they see is direct light, left to the render pass's next-event estimation unless the tests ask
 // for it.
+#include "common/kernel_range.h"
 #include "scene_arguments.h"
 #include "sdrc/sdrc_records.h"
 // The source after the method's own headers (see records/radiance_source.h).
@@ -30,10 +31,7 @@ __kernel void sdrc_record_samples(uint begin, uint end, SdrcParams params, RC_SC
                                   __global const RcQuery* sites,
                                   RC_RADIANCE_SOURCE_PARAMETERS __global float4* samples,
                                   __global LTreeNode* out_nodes, __global uint* counters) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
     const uint n = (uint)params.samples;
@@ -71,10 +69,7 @@ __kernel void sdrc_trace_misses(uint begin, uint end, SdrcParams params, RC_SCEN
                                 __global const SdrcMiss* misses,
                                 RC_RADIANCE_SOURCE_PARAMETERS __global float4* radiance,
                                 __global LTreeNode* out_nodes, __global uint* counters) {
-    const uint k = begin + (uint)get_global_id(0);
-    if (k >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(k);
     const SdrcMiss miss = misses[k];
     out_nodes[k].radiance = 0u;
     out_nodes[k].position = RC_LTREE_EMPTY;

@@ -16,7 +16,6 @@
 #include <string>
 #include <vector>
 
-#include "box_walls.h"
 #include "glossy_render.h"
 #include "glossy_scenes.h"
 #include "image/image.h"
@@ -41,31 +40,12 @@ constexpr float kAlbedo200 = 0.8f;
 std::filesystem::path two_sphere_scene() {
     static const std::filesystem::path file = [] {
         const auto dir = test::scratch_dir("glossy_mix_two_spheres");
-        test::BoxWalls walls;
-        walls.right = "red";
-        walls.left = "blue";
-        std::ofstream(dir / "scene.json") << R"({
-            "camera": {"position": [0, 0.2, -3.4], "look_at": [0, -0.4, 0], "up": [0, 1, 0],
-                       "fov": 34, "resolution": [32, 32]},
-            "materials": {
-                "white": {"type": "diffuse", "reflectance": 0.5},
-                "red": {"type": "diffuse", "reflectance": [0.7, 0.1, 0.1]},
-                "blue": {"type": "diffuse", "reflectance": [0.1, 0.15, 0.7]},
-                "phong16": {"type": "phong", "diffuse": 0.1, "specular": 0.6, "exponent": 16},
-                "phong200": {"type": "phong", "diffuse": 0.2, "specular": 0.6, "exponent": 200}
-            },
-            "shapes": [)" << test::box_walls_json(walls)
-                                          << R"(,
-                {"type": "rectangle", "material": "white",
-                 "emitter": {"type": "area", "radiance": 12},
-                 "transform": [{"scale": 0.3}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
-                               {"translate": [0, 0.998, 0]}]},
-                {"type": "sphere", "center": [-0.45, -0.55, 0], "radius": 0.42,
-                 "material": "phong16"},
-                {"type": "sphere", "center": [0.45, -0.55, 0], "radius": 0.42,
-                 "material": "phong200"}
-            ]
-        })";
+        std::ofstream(dir / "scene.json") << test::glossy_box_json(
+            34,
+            R"("phong16": {"type": "phong", "diffuse": 0.1, "specular": 0.6, "exponent": 16},
+               "phong200": {"type": "phong", "diffuse": 0.2, "specular": 0.6, "exponent": 200})",
+            R"({"type": "sphere", "center": [-0.45, -0.55, 0], "radius": 0.42, "material": "phong16"},
+               {"type": "sphere", "center": [0.45, -0.55, 0], "radius": 0.42, "material": "phong200"})");
         return dir / "scene.json";
     }();
     return file;

@@ -35,28 +35,39 @@ double masked_relmse(const Image& image, const Image& reference, const Image& ma
     return *pixels > 0 ? sum / (*pixels * image.channels) : 0.0;
 }
 
-Scene phong_sphere_scene(int exponent, const std::string& owner) {
-    const auto dir = scratch_dir(owner + "_phong_" + std::to_string(exponent));
+std::string glossy_box_json(int fov, const std::string& materials, const std::string& shapes) {
     BoxWalls walls;
     walls.right = "red";
     walls.left = "blue";
-    std::ofstream(dir / "scene.json") << R"({
+    return R"({
         "camera": {"position": [0, 0.2, -3.4], "look_at": [0, -0.4, 0], "up": [0, 1, 0],
-                   "fov": 24, "resolution": [32, 32]},
+                   "fov": )" +
+           std::to_string(fov) + R"(, "resolution": [32, 32]},
         "materials": {
             "white": {"type": "diffuse", "reflectance": 0.5},
             "red": {"type": "diffuse", "reflectance": [0.7, 0.1, 0.1]},
             "blue": {"type": "diffuse", "reflectance": [0.1, 0.15, 0.7]},
-            "sphere": {"type": "phong", "diffuse": 0.1, "specular": 0.6, "exponent": )"
-                                      << exponent << R"(}},
-        "shapes": [)" << box_walls_json(walls)
-                                      << R"(,
+            )" +
+           materials + R"(
+        },
+        "shapes": [)" +
+           box_walls_json(walls) + R"(,
             {"type": "rectangle", "material": "white", "emitter": {"type": "area", "radiance": 12},
              "transform": [{"scale": 0.3}, {"rotate": {"axis": [1, 0, 0], "angle": 90}},
                            {"translate": [0, 0.998, 0]}]},
-            {"type": "sphere", "center": [0, -0.55, 0], "radius": 0.45, "material": "sphere"}
+            )" +
+           shapes + R"(
         ]
     })";
+}
+
+Scene phong_sphere_scene(int exponent, const std::string& owner) {
+    const auto dir = scratch_dir(owner + "_phong_" + std::to_string(exponent));
+    std::ofstream(dir / "scene.json") << glossy_box_json(
+        24,
+        R"("sphere": {"type": "phong", "diffuse": 0.1, "specular": 0.6, "exponent": )" +
+            std::to_string(exponent) + "}",
+        R"({"type": "sphere", "center": [0, -0.55, 0], "radius": 0.45, "material": "sphere"})");
     return load_scene(dir / "scene.json");
 }
 

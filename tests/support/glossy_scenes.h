@@ -25,6 +25,11 @@ double masked_relmse(const Image& image, const Image& reference, const Image& ma
 // program: they run in parallel).
 Scene phong_sphere_scene(int exponent, const std::string& owner);
 
+// The scene.json of that box: the camera (vertical field of view `fov` degrees, 32 x 32), the
+// white, red and blue diffuse materials and `materials` (JSON members, each "name": {...}), the
+// walls (red right, blue left), the small area light and `shapes` (JSON array members).
+std::string glossy_box_json(int fov, const std::string& materials, const std::string& shapes);
+
 // The pixels all of whose camera samples see that sphere (albedo 0.7 in every channel: the
 // walls' are 0.5 or coloured), from the albedo layer.
 Image sphere_mask(const Image& albedo);

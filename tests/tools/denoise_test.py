@@ -11,19 +11,12 @@ import subprocess
 import sys
 import unittest
 
+import optional_packages
+
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 DENOISE = os.path.join(ROOT, "tools", "denoise.py")
 SCRATCH = os.path.join(os.environ.get("RADCACHE_TEST_SCRATCH_DIR") or "/tmp", "denoise_test")
 WIDTH, HEIGHT = 96, 64
-
-
-def missing_package():
-    for name in ("numpy", "OpenEXR", "pyoidn"):
-        try:
-            __import__(name)
-        except ImportError:
-            return name
-    return None
 
 
 def relmse(image, reference):
@@ -99,8 +92,4 @@ class DenoiseTest(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    missing = missing_package()
-    if missing:
-        print("denoise_test: skipped: %s is not installed (tools/install-deps.sh)" % missing)
-        sys.exit(0)
-    unittest.main()
+    optional_packages.main_unless_missing("denoise_test", ("numpy", "OpenEXR", "pyoidn"))

@@ -14,20 +14,13 @@ import subprocess
 import sys
 import unittest
 
+import optional_packages
+
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 SWEEP = os.path.join(ROOT, "tools", "sweep.py")
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 SCRATCH = os.path.join(os.environ.get("RADCACHE_TEST_SCRATCH_DIR") or "/tmp", "sweep_peers_test")
 SIZE = ["--width", "16", "--height", "16"]
-
-
-def missing_package():
-    for name in ("OpenEXR", "pyoidn", "mitsuba"):
-        try:
-            __import__(name)
-        except ImportError:
-            return name
-    return None
 
 
 def run(command, env=None):
@@ -116,8 +109,4 @@ class SweepPeersTest(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    missing = missing_package()
-    if missing:
-        print("sweep_peers_test: skipped: %s is not installed (tools/install-deps.sh)" % missing)
-        sys.exit(0)
-    unittest.main()
+    optional_packages.main_unless_missing("sweep_peers_test", ("OpenEXR", "pyoidn", "mitsuba"))

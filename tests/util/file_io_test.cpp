@@ -14,6 +14,7 @@
 #include "scratch_files.h"
 #include "test_support.h"
 #include "util/error.h"
+#include "util/file_checksum.h"
 #include "util/stderr_capture.h"
 #include "util/text.h"
 
@@ -96,6 +97,26 @@ TEST(FileIo, OutputsThatCannotBeFilesAreRefusedBeforeTheWork) {
     } catch (const Error& error) {
         EXPECT_EQ(error.exit_code(), kExitUsage);
     }
+}
+
+TEST(FileIo, TheTrailingChecksumCatchesAnyChangedByteAndATruncation) {
+    const std::string data = "radcache cache file \x01\x02 payload";
+    std::string bytes = data;
+    append_checksum(bytes);
+    ASSERT_EQ(bytes.size(), data.size() + 8);
+    EXPECT_EQ(bytes.substr(0, data.size()), data);
+    EXPECT_TRUE(has_valid_checksum(bytes));
+    for (size_t i = 0; i < bytes.size(); ++i) {  // the data's bytes and the checksum's own
+        std::string changed = bytes;
+        changed[i] = static_cast<char>(changed[i] ^ 0x10);
+        EXPECT_FALSE(has_valid_checksum(changed)) << "byte " << i;
+    }
+    EXPECT_FALSE(has_valid_checksum(bytes.substr(0, bytes.size() - 1)));
+    EXPECT_FALSE(has_valid_checksum(bytes.substr(1)));
+    EXPECT_FALSE(has_valid_checksum("1234567"));  // shorter than a checksum
+    std::string empty;
+    append_checksum(empty);
+    EXPECT_TRUE(has_valid_checksum(empty));
 }
 
 TEST(Text, ExcerptsAreShortAndOnOneLine) {

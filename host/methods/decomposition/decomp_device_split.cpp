@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "methods/device_shares.h"
 #include "methods/device_split.h"
 #include "methods/scene_arguments.h"
 #include "shared/film.h"
@@ -130,10 +131,8 @@ void merge_device(const PassDevice& device, const PixelChunks& chunks,
     share.shading_rays = c[0];
     out.shading_rays += c[0];
     out.nonfinite_samples += c[1];
-    if (c[1] > 0 &&
-        (out.first_nonfinite_pixel < 0 || static_cast<int64_t>(c[2]) < out.first_nonfinite_pixel)) {
-        out.first_nonfinite_pixel = c[2];
-    }
+    out.first_nonfinite_pixel =
+        first_nonfinite_of(out.first_nonfinite_pixel, c[1] > 0 ? int64_t{c[2]} : -1);
 }
 
 }  // namespace

@@ -7,9 +7,9 @@
 #include <glm/geometric.hpp>
 #include <limits>
 #include <memory>
-#include <regex>
 
 #include "methods/decomposition/decomposition.h"
+#include "methods/device_shares.h"
 #include "methods/grid/ivg_options.h"
 #include "methods/light_samples.h"
 #include "methods/method.h"
@@ -18,6 +18,7 @@
 #include "shared/decomposition.h"
 #include "util/error.h"
 #include "util/log.h"
+#include "util/number_with_unit.h"
 #include "util/timing.h"
 
 namespace rc {
@@ -43,18 +44,13 @@ std::string length_text(const SceneLength& length) {
 }
 
 SceneLength parse_length(const std::string& option, const std::string& text) {
-    static const std::regex form(R"(^\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*(%|u)?\s*$)");
-    std::smatch match;
-    if (!std::regex_match(text, match, form)) {
-        throw Error(option +
-                        ": expected a length in scene units (\"0.2\", \"0.2u\") or a "
-                        "percentage of the scene's diagonal (\"5%\"), got '" +
-                        text + "'",
-                    kExitUsage);
-    }
+    const NumberWithUnit number = parse_number_with_unit(
+        option, text, "%|u",
+        "a length in scene units (\"0.2\", \"0.2u\") or a percentage of the scene's diagonal "
+        "(\"5%\")");
     SceneLength length;
-    length.value = std::stof(match[1].str());
-    length.relative = match[2].str() == "%";
+    length.value = number.value;
+    length.relative = number.unit == "%";
     if (!std::isfinite(length.value) || length.value < 0.0f) {
         throw Error(option + ": must be finite and at least 0, got '" + text + "'", kExitUsage);
     }
@@ -125,24 +121,20 @@ nlohmann::json pass_json(const DecompositionStats& s) {
               {"shading", s.shading_seconds}}}};
 }
 
-// Each device's share of pass 2 (several devices).
-nlohmann::json devices_json(const std::vector<DecompDeviceShare>& shares) {
-    nlohmann::json devices = nlohmann::json::array();
-    for (const DecompDeviceShare& d : shares) {
-        devices.push_back({{"device", d.device},
-                           {"radiosity_triangles", d.radiosity_triangles},
-                           {"radiosity_rays", d.radiosity_rays},
-                           {"radiosity_seconds", d.radiosity_seconds},
-                           {"cluster_ranges", d.cluster_ranges},
-                           {"clusters", d.clusters},
-                           {"cluster_rays", d.cluster_rays},
-                           {"cluster_seconds", d.cluster_seconds},
-                           {"chunks", d.chunks},
-                           {"pixels", d.pixels},
-                           {"shading_rays", d.shading_rays},
-                           {"seconds", d.seconds}});
-    }
-    return devices;
+// One device's share of pass 2 (several devices: add_device_shares).
+nlohmann::json device_share_json(const DecompDeviceShare& d) {
+    return {{"device", d.device},
+            {"radiosity_triangles", d.radiosity_triangles},
+            {"radiosity_rays", d.radiosity_rays},
+            {"radiosity_seconds", d.radiosity_seconds},
+            {"cluster_ranges", d.cluster_ranges},
+            {"clusters", d.clusters},
+            {"cluster_rays", d.cluster_rays},
+            {"cluster_seconds", d.cluster_seconds},
+            {"chunks", d.chunks},
+            {"pixels", d.pixels},
+            {"shading_rays", d.shading_rays},
+            {"seconds", d.seconds}};
 }
 
 // The coarse solution the cluster rays read at their hits (--decomp-source).
@@ -359,9 +351,7 @@ class Decomposition final : public Method {
                 part.nonfinite_samples = stats.nonfinite_samples;
                 part.first_nonfinite_pixel = stats.first_nonfinite_pixel;
                 part.stats = pass_json(stats);
-                if (!stats.devices.empty()) {
-                    part.stats["devices"] = devices_json(stats.devices);
-                }
+                add_device_shares(stats.devices, &part.stats, device_share_json);
                 return part;
             });
         const size_t pixels = static_cast<size_t>(result.image.width) * result.image.height;
@@ -399,12 +389,8 @@ class Decomposition final : public Method {
         shading.add("film", buffer_bytes(pixels * RC_DECOMP_FILM_SLOTS, sizeof(shared::float4)));
         shading.add("counters", buffer_bytes(3, sizeof(unsigned)));
         shading.excludes = "the near field's triangles and the far field's records";
-        if (!with_grid_) {
-            return shading;
-        }
-        const IvgDeviceNeed grid = ivg_device_need(grid_options_, scene);
-        shading.add_all(grid.built);
-        return peak_of(grid.building, shading);
+        // The grid is built first and read until the frame ends.
+        return with_grid_ ? with_grid_need(grid_options_, scene, shading) : shading;
     }
 
    private:
@@ -431,9 +417,7 @@ class Decomposition final : public Method {
         result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
         const size_t pixels = static_cast<size_t>(result.image.width) * result.image.height;
         result.stats.update(stats_json(stats, *options, result.rays, pixels));
-        if (!stats.devices.empty()) {
-            result.stats["devices"] = devices_json(stats.devices);
-        }
+        add_device_shares(stats.devices, &result.stats, device_share_json);
         log_note(std::to_string(stats.sh_samples) + " far-field samples, " +
                  std::to_string(stats.near_triangles) + " near-field triangles (alpha " +
                  std::to_string(options->alpha) + ")");

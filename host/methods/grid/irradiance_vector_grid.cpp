@@ -144,6 +144,13 @@ std::array<int, 3> grid_cells(const IvgOptions& options, glm::vec3 extent) {
 
 }  // namespace
 
+DeviceMemoryNeed with_grid_need(const IvgOptions& options, const Scene& scene,
+                                DeviceMemoryNeed after) {
+    const IvgDeviceNeed grid = ivg_device_need(options, scene);
+    after.add_all(grid.built);
+    return peak_of(grid.building, after);
+}
+
 IvgDeviceNeed ivg_device_need(const IvgOptions& options, const Scene& scene) {
     IvgDeviceNeed need;
     if (!options.grid_in.empty()) {

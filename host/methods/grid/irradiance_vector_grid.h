@@ -84,6 +84,10 @@ struct IvgDeviceNeed {
     DeviceMemoryNeed built;
 };
 IvgDeviceNeed ivg_device_need(const IvgOptions& options, const Scene& scene);
+// The device memory of a frame whose grid is built first and then read while `after` is held:
+// the larger of building the grid and `after` beside the built grid.
+DeviceMemoryNeed with_grid_need(const IvgOptions& options, const Scene& scene,
+                                DeviceMemoryNeed after);
 // Photons `auto` traces per grid vertex.
 constexpr uint64_t kAutoPhotonsPerVertex = 8;
 

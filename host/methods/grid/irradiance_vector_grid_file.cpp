@@ -1,13 +1,12 @@
 #include "methods/grid/irradiance_vector_grid_file.h"
 
-#include <OpenImageIO/hash.h>
-
 #include <cmath>
 #include <cstring>
 
 #include "methods/grid/irradiance_vector_grid.h"
 #include "scene/scene_fingerprint.h"
 #include "util/error.h"
+#include "util/file_checksum.h"
 #include "util/file_io.h"
 
 namespace rc {
@@ -32,10 +31,6 @@ struct Header {
     uint32_t reserved;
 };
 static_assert(sizeof(Header) == 80);
-
-uint64_t checksum(const char* data, size_t size) {
-    return OIIO::farmhash::Fingerprint64(data, size);
-}
 
 std::string resolution(const std::array<int, 3>& cells) {
     return std::to_string(cells[0]) + "x" + std::to_string(cells[1]) + "x" +
@@ -62,8 +57,7 @@ void write_grid_file(const std::filesystem::path& path, const Scene& scene, cons
     bytes.append(reinterpret_cast<const char*>(&header), sizeof header);
     bytes.append(reinterpret_cast<const char*>(grid.values.data()),
                  grid.values.size() * sizeof(float));
-    const uint64_t sum = checksum(bytes.data(), bytes.size());
-    bytes.append(reinterpret_cast<const char*>(&sum), sizeof sum);
+    append_checksum(bytes);
     write_file_atomically(path, bytes);
 }
 
@@ -102,9 +96,7 @@ GridFile parse_grid_file(const std::string& bytes, const std::string& name, uint
         throw Error(name + ": corrupt irradiance vector grid (" + std::to_string(bytes.size()) +
                     " bytes do not match its header)");
     }
-    uint64_t stored_sum;
-    std::memcpy(&stored_sum, bytes.data() + bytes.size() - sizeof stored_sum, sizeof stored_sum);
-    if (checksum(bytes.data(), bytes.size() - sizeof stored_sum) != stored_sum) {
+    if (!has_valid_checksum(bytes)) {
         throw Error(name + ": corrupt irradiance vector grid (checksum mismatch)");
     }
     if (header.scene != scene) {

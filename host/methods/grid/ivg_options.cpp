@@ -1,5 +1,6 @@
 #include "methods/grid/ivg_options.h"
 
+#include "methods/device_shares.h"
 #include "util/error.h"
 #include "util/file_io.h"
 #include "util/log.h"
@@ -106,16 +107,12 @@ nlohmann::json ivg_stats_json(const IvgStats& stats) {
          {{"photons", stats.trace_seconds},
           {"normalize", stats.normalize_seconds},
           {"planes", stats.planes_seconds}}}};
-    if (!stats.devices.empty()) {
-        nlohmann::json devices = nlohmann::json::array();
-        for (const IvgDeviceShare& d : stats.devices) {
-            devices.push_back({{"device", d.device},
-                               {"batches", d.batches},
-                               {"photons", d.photons},
-                               {"seconds", d.seconds}});
-        }
-        json["devices"] = devices;
-    }
+    add_device_shares(stats.devices, &json, [](const IvgDeviceShare& d) {
+        return nlohmann::json{{"device", d.device},
+                              {"batches", d.batches},
+                              {"photons", d.photons},
+                              {"seconds", d.seconds}};
+    });
     return json;
 }
 

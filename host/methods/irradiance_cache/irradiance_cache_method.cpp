@@ -160,13 +160,8 @@ class IrradianceCaching final : public Method {
         if (temporal_) {
             cache.excludes += ", their reprojection and the look-ahead frames' scenes and BVHs";
         }
-        if (!with_grid_) {
-            return cache;
-        }
         // The grid is built first and read until the frame ends.
-        const IvgDeviceNeed grid = ivg_device_need(grid_options_, scene);
-        cache.add_all(grid.built);
-        return peak_of(grid.building, cache);
+        return with_grid_ ? with_grid_need(grid_options_, scene, cache) : cache;
     }
 
    private:

@@ -1,6 +1,7 @@
 // `--method pt`: the reference path tracer (DESIGN.md §6.1) as a registered method.
 #include <memory>
 
+#include "methods/device_shares.h"
 #include "methods/method.h"
 #include "methods/path_tracer/path_tracer.h"
 #include "shared/film.h"
@@ -48,17 +49,13 @@ class PathTracerMethod final : public Method {
         result.nonfinite_samples = stats.nonfinite_samples;
         result.first_nonfinite_pixel = stats.first_nonfinite_pixel;
         result.stats = {{"spp", stats.spp}, {"rays", stats.rays}, {"seconds", stats.seconds}};
-        if (!stats.devices.empty()) {
-            nlohmann::json devices = nlohmann::json::array();
-            for (const PathTracerDeviceShare& d : stats.devices) {
-                devices.push_back({{"device", d.device},
-                                   {"chunks", d.chunks},
-                                   {"pixels", d.pixels},
-                                   {"rays", d.rays},
-                                   {"seconds", d.seconds}});
-            }
-            result.stats["devices"] = devices;
-        }
+        add_device_shares(stats.devices, &result.stats, [](const PathTracerDeviceShare& d) {
+            return nlohmann::json{{"device", d.device},
+                                  {"chunks", d.chunks},
+                                  {"pixels", d.pixels},
+                                  {"rays", d.rays},
+                                  {"seconds", d.seconds}};
+        });
         return result;
     }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "methods/device_shares.h"
 #include "methods/device_split.h"
 #include "methods/path_tracer/path_tracer.h"
 #include "methods/scene_arguments.h"
@@ -50,10 +51,8 @@ void render_chunk(DeviceWork& work, size_t begin, size_t end, shared::PathTracer
         const std::vector<unsigned> c = work.counters.download();
         work.rays += c[0];
         work.nonfinite += c[1];
-        if (c[1] > 0 &&
-            (work.first_nonfinite < 0 || static_cast<int64_t>(c[2]) < work.first_nonfinite)) {
-            work.first_nonfinite = c[2];
-        }
+        work.first_nonfinite =
+            first_nonfinite_of(work.first_nonfinite, c[1] > 0 ? int64_t{c[2]} : -1);
     }
 }
 
@@ -109,10 +108,8 @@ Image PathTracer::render_split(const PathTracerOptions& options, int width, int 
         share.seconds = split.seconds[d];
         result.rays += work.rays;
         result.nonfinite_samples += work.nonfinite;
-        if (work.first_nonfinite >= 0 && (result.first_nonfinite_pixel < 0 ||
-                                          work.first_nonfinite < result.first_nonfinite_pixel)) {
-            result.first_nonfinite_pixel = work.first_nonfinite;
-        }
+        result.first_nonfinite_pixel =
+            first_nonfinite_of(result.first_nonfinite_pixel, work.first_nonfinite);
         result.devices.push_back(share);
     }
     result.seconds = seconds_since(start);

@@ -127,14 +127,8 @@ RadianceCache::RadianceCache(const FrameScene& frame, const RadianceCacheOptions
 }
 
 Kernel& RadianceCache::cells_kernel(const RadianceSource& source) {
-    const std::string options = source.build_options();
-    auto found = cells_kernels_.find(options);
-    if (found == cells_kernels_.end()) {
-        Kernel kernel =
-            context_.kernel("radiance_cache/rc_record_cells.cl", "rc_record_cells", options);
-        found = cells_kernels_.emplace(options, std::move(kernel)).first;
-    }
-    return found->second;
+    return source_kernel(context_, &cells_kernels_, "radiance_cache/rc_record_cells.cl",
+                         "rc_record_cells", source);
 }
 
 shared::RcParams RadianceCache::record_params() const {

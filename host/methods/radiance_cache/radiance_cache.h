@@ -149,7 +149,7 @@ class RadianceCache final : public GlossyCache, private FrameBound {
     Kernel splat_kernel_;
     Kernel used_kernel_;
     GlossyPlacement placement_;
-    std::map<std::string, Kernel> cells_kernels_;  // by build options
+    std::map<std::string, Kernel> cells_kernels_;  // source_kernel's
 };
 
 }  // namespace rc

@@ -1,8 +1,6 @@
 // Radiance caching (DESIGN.md §6.4) as an entry of the glossy-cache registry
 // (methods/glossy_caches.h): `--method ic --glossy rc`, its options --method rc's defaults with the
 // irradiance records' shared settings (share_record_settings), as --method rc makes them.
-#include <memory>
-
 #include "methods/glossy_caches.h"
 #include "methods/glossy_method.h"
 #include "methods/radiance_cache/radiance_cache.h"
@@ -15,13 +13,7 @@ GlossyCacheEntry radiance_cache_glossy_entry() {
     entry.name = "rc";
     entry.layer = "rc-order";
     entry.stats_key = "radiance_cache";
-    entry.create = [](const FrameScene& frame, const IrradianceCacheOptions& ic,
-                      const ServedMaterials& served) -> std::unique_ptr<GlossyCache> {
-        RadianceCacheOptions options;
-        share_record_settings(ic, &options);
-        options.materials = served;
-        return std::make_unique<RadianceCache>(frame, options);
-    };
+    entry.create = make_glossy_cache<RadianceCache, RadianceCacheOptions>;
     entry.programs = {
         {"radiance_cache/radiance_cache.cl", ""},
         {"radiance_cache/rc_cache.cl", ""},

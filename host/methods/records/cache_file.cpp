@@ -1,13 +1,12 @@
 #include "methods/records/cache_file.h"
 
-#include <OpenImageIO/hash.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 
 #include "scene/scene.h"
 #include "util/error.h"
+#include "util/file_checksum.h"
 #include "util/file_io.h"
 
 namespace rc {
@@ -31,10 +30,6 @@ struct Header {
     uint64_t count;
 };
 static_assert(sizeof(Header) == 64);
-
-uint64_t checksum(const char* data, size_t size) {
-    return OIIO::farmhash::Fingerprint64(data, size);
-}
 
 template <class T>
 void append(std::string& bytes, const T* values, size_t count) {
@@ -70,9 +65,7 @@ Header checked_header(const std::string& name, const std::string& bytes, const C
         throw Error(name + ": corrupt " + what + " (" + std::to_string(bytes.size()) +
                     " bytes do not match its header)");
     }
-    uint64_t stored_sum;
-    std::memcpy(&stored_sum, bytes.data() + bytes.size() - sizeof stored_sum, sizeof stored_sum);
-    if (checksum(bytes.data(), bytes.size() - sizeof stored_sum) != stored_sum) {
+    if (!has_valid_checksum(bytes)) {
         throw Error(name + ": corrupt " + what + " (checksum mismatch)");
     }
     return header;
@@ -169,8 +162,7 @@ void write_cache_file(const std::filesystem::path& path, const CacheFileKey& key
             append(bytes, store.payload_data(i), key.payload_bytes);
         }
     }
-    const uint64_t sum = checksum(bytes.data(), bytes.size());
-    append(bytes, &sum, 1);
+    append_checksum(bytes);
     write_file_atomically(path, bytes);
 }
 

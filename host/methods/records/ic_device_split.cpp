@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "methods/device_shares.h"
 #include "methods/device_split.h"
 #include "methods/radiance_source.h"
 #include "methods/records/device_splat.h"
@@ -236,10 +237,8 @@ FinalPassOutput IcDeviceSplit::final_pass(const FinalPassInput& input) {
         const std::vector<unsigned> c = b.counters.download();
         out.rays += c[0];
         out.nonfinite_samples += c[1];
-        if (c[1] > 0 && (out.first_nonfinite_pixel < 0 ||
-                         static_cast<int64_t>(c[2]) < out.first_nonfinite_pixel)) {
-            out.first_nonfinite_pixel = c[2];
-        }
+        out.first_nonfinite_pixel =
+            first_nonfinite_of(out.first_nonfinite_pixel, c[1] > 0 ? int64_t{c[2]} : -1);
         device.final_pass.reset();
     }
     return out;

@@ -1,5 +1,6 @@
 #include "methods/records/ic_stats.h"
 
+#include "methods/device_shares.h"
 namespace rc {
 
 void add_irradiance_cache_stats(const IrradianceCacheStats& stats,
@@ -35,19 +36,15 @@ void add_irradiance_cache_stats(const IrradianceCacheStats& stats,
     s["seconds"] = {{"gbuffer", stats.gbuffer_seconds},     {"placement", stats.placement_seconds},
                     {"records", stats.record_seconds},      {"insertion", stats.insertion_seconds},
                     {"splatting", stats.splatting_seconds}, {"shading", stats.shading_seconds}};
-    if (!stats.devices.empty()) {
-        nlohmann::json devices = nlohmann::json::array();
-        for (const IcDeviceShare& d : stats.devices) {
-            devices.push_back({{"device", d.device},
-                               {"record_ranges", d.record_ranges},
-                               {"records", d.records},
-                               {"record_seconds", d.record_seconds},
-                               {"chunks", d.chunks},
-                               {"pixels", d.pixels},
-                               {"final_seconds", d.final_seconds}});
-        }
-        s["devices"] = devices;
-    }
+    add_device_shares(stats.devices, &s, [](const IcDeviceShare& d) {
+        return nlohmann::json{{"device", d.device},
+                              {"record_ranges", d.record_ranges},
+                              {"records", d.records},
+                              {"record_seconds", d.record_seconds},
+                              {"chunks", d.chunks},
+                              {"pixels", d.pixels},
+                              {"final_seconds", d.final_seconds}};
+    });
 }
 
 }  // namespace rc

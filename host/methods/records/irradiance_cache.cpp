@@ -6,7 +6,6 @@
 #include <glm/geometric.hpp>
 #include <limits>
 #include <optional>
-#include <regex>
 
 #include "image/film.h"
 #include "methods/records/cache_file.h"
@@ -22,6 +21,7 @@
 #include "util/error.h"
 #include "util/glm_helpers.h"
 #include "util/log.h"
+#include "util/number_with_unit.h"
 #include "util/timing.h"
 
 namespace rc {
@@ -36,18 +36,11 @@ constexpr size_t kMaxBatchCells = size_t{1} << 23;  // hemisphere cells per reco
 }  // namespace
 
 Spacing parse_spacing(const std::string& text, const std::string& option) {
-    static const std::regex form(R"(^\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*(px|u)?\s*$)");
-    std::smatch match;
-    if (!std::regex_match(text, match, form)) {
-        throw Error(option +
-                        ": expected a length in pixels (\"4\", \"4px\") or scene units "
-                        "(\"0.5u\"), got '" +
-                        text + "'",
-                    kExitUsage);
-    }
+    const NumberWithUnit number = parse_number_with_unit(
+        option, text, "px|u", "a length in pixels (\"4\", \"4px\") or scene units (\"0.5u\")");
     Spacing spacing;
-    spacing.value = std::stof(match[1].str());
-    spacing.world = match[2].str() == "u";
+    spacing.value = number.value;
+    spacing.world = number.unit == "u";
     if (!(spacing.value > 0.0f) || !std::isfinite(spacing.value)) {
         throw Error(option + ": must be positive, got '" + text + "'", kExitUsage);
     }
@@ -115,14 +108,8 @@ void IrradianceCache::restart_stats() {
 }
 
 Kernel& IrradianceCache::cells_kernel(const RadianceSource& source) {
-    const std::string options = source.build_options();
-    auto found = cells_kernels_.find(options);
-    if (found == cells_kernels_.end()) {
-        Kernel kernel =
-            context_.kernel("irradiance_cache/ic_record_cells.cl", "ic_record_cells", options);
-        found = cells_kernels_.emplace(options, std::move(kernel)).first;
-    }
-    return found->second;
+    return source_kernel(context_, &cells_kernels_, "irradiance_cache/ic_record_cells.cl",
+                         "ic_record_cells", source);
 }
 
 shared::IcParams IrradianceCache::level_params(int level) const {

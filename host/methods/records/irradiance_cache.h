@@ -333,7 +333,7 @@ class IrradianceCache : private FrameBound {
     Kernel select_kernel_;
     Kernel shade_kernel_;
     Kernel records_used_kernel_;
-    std::map<std::string, Kernel> cells_kernels_;  // by build options
+    std::map<std::string, Kernel> cells_kernels_;  // source_kernel's
     PathContinuation path_continuation_;
     RecordSampling sampling_;
     float smallest_radius_ = 0.0f;  // the smallest record radius the scene's extent resolves
