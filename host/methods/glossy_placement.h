@@ -45,6 +45,11 @@ class GlossyPlacement {
                uint32_t spp, Spacing min_spacing, const AddRecords& add_records,
                GlossyPlacementStats* stats);
 
+    // Per record of `store`: 1 where a served query weighs it positively (temporal caching's
+    // test of the records still in use, the report's §5 "Replacement/Deletion Method").
+    std::vector<uint8_t> records_used(const Buffer<shared::RcQuery>& queries,
+                                      const RecordStore& store);
+
     // After place(): the served queries' indices (ascending) and their host copies.
     const std::vector<uint32_t>& served() const { return served_; }
     const std::vector<shared::RcQuery>& copies() const { return copies_; }
@@ -65,6 +70,7 @@ class GlossyPlacement {
     Kernel served_kernel_;
     Kernel select_kernel_;
     Kernel uncovered_kernel_;
+    Kernel used_kernel_;
     std::vector<uint32_t> served_;
     std::vector<shared::RcQuery> copies_;
 };

@@ -5,6 +5,7 @@
 // for it.
 #include "scene_arguments.h"
 #include "sdrc/sdrc_records.h"
+#include "temporal/tc_reprojection.h"
 // The source after the method's own headers (see records/radiance_source.h).
 #include "records/radiance_source.h"
 
@@ -22,12 +23,12 @@ RC_FUNC float4 rc_sdrc_trace(const SceneData* scene, const RadianceSource* sourc
     return (float4)(all(isfinite(s.radiance)) ? s.radiance : (float3)(0.0f), s.distance);
 }
 
-// Item i: sample i % N of batch record i / N (stream params.first_record + i / N) at
-// sites[i / N] (SDRC §4.3): its (L.rgb, hit distance) into samples[i] and its L-tree node into
-// out_nodes[i]; a direction with no ray is infinitely far, black, and an empty node. counters[0]
-// counts the rays traced.
+// Item i: sample i % N of batch record i / N (random stream streams[i / N]) at sites[i / N]
+// (SDRC §4.3): its (L.rgb, hit distance) into samples[i] and its L-tree node into out_nodes[i];
+// a direction with no ray is infinitely far, black, and an empty node. counters[0] counts the
+// rays traced.
 __kernel void sdrc_record_samples(uint begin, uint end, SdrcParams params, RC_SCENE_PARAMETERS,
-                                  __global const RcQuery* sites,
+                                  __global const RcQuery* sites, __global const uint* streams,
                                   RC_RADIANCE_SOURCE_PARAMETERS __global float4* samples,
                                   __global LTreeNode* out_nodes, __global uint* counters) {
     const uint i = begin + (uint)get_global_id(0);
@@ -38,7 +39,7 @@ __kernel void sdrc_record_samples(uint begin, uint end, SdrcParams params, RC_SC
     const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
     const uint n = (uint)params.samples;
     const uint b = i / n;
-    const uint record = (uint)params.first_record + b;
+    const uint record = streams[b];
     const RcQuery site = sites[b];
     float3 w;
     float weight;
@@ -95,4 +96,71 @@ __kernel void sdrc_trace_misses(uint begin, uint end, SdrcParams params, RC_SCEN
         const Frame frame = rc_sdrc_record_frame(sites[miss.record].normal.xyz);
         out_nodes[k] = rc_sdrc_node(&frame, miss.direction.xyz, radiance[k].xyz);
     }
+}
+
+// Item i: cell i % (M N) of batch record i / (M N) (random stream streams[i / (M N)]) at
+// sites[i / (M N)], on M x N uniform cells of the record's hemisphere (RC_TC_CELLS_UNIFORM, the
+// jitter keyed by RC_SDRC_CELL_DOMAIN): its (L.rgb, hit distance) into cells[i], black and
+// infinitely far below the surface's own plane (no ray). These are what temporal caching carries
+// to the next frame (kernels/temporal/temporal.cl) to estimate the record's change (the report's
+// §4.3): the L-tree's lobe-sampled directions fall in no cell grid. counters[0] counts the rays.
+__kernel void sdrc_record_cells(uint begin, uint end, SdrcParams params, int m, int n,
+                                RC_SCENE_PARAMETERS, __global const RcQuery* sites,
+                                __global const uint* streams,
+                                RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
+                                __global uint* counters) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const SceneData scene = RC_SCENE_DATA();
+    const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
+    const uint b = i / (uint)(m * n);
+    const int cell = (int)(i % (uint)(m * n));
+    const RcQuery site = sites[b];
+    const uint key_lo = params.seed_lo ^ RC_SDRC_CELL_DOMAIN;
+    const TcCellJitter jitter = {m, n, RC_TC_CELLS_UNIFORM, key_lo, params.seed_hi, streams[b]};
+    const float3 w = rc_tc_cell_direction(&jitter, cell, site.normal.xyz);
+    if (dot(w, site.geometric_normal.xyz) <= 0.0f) {
+        cells[i] = (float4)(0.0f, 0.0f, 0.0f, INFINITY);
+        return;
+    }
+    // Past the jitter's streams (one per row and column: indices below M N).
+    RngStream rng = rc_rng_stream(key_lo, params.seed_hi, streams[b], (uint)cell + 0x40000000u);
+    uint rays = 0u;
+    cells[i] = rc_sdrc_trace(&scene, &source, &params, site.origin.xyz, w, &rng, &rays);
+    atomic_add(&counters[0], rays);
+}
+
+// Item i: sample i % N of batch record i / N (random stream streams[i / N]) at sites[i / N],
+// which saw samples[i] = (L.rgb, distance) at this frame: its radiance estimated at the next
+// frame into next[i], L moved by the change of the uniform cell its direction passes through
+// (next_cells - cells, sdrc_record_cells' cells carried by temporal caching), at least 0; a
+// direction with no ray, or below the cells' hemisphere, keeps L.
+__kernel void sdrc_record_next(uint begin, uint end, SdrcParams params, int m, int n,
+                               __global const Material* materials, __global const RcQuery* sites,
+                               __global const uint* streams, __global const float4* samples,
+                               __global const float4* cells, __global const float4* next_cells,
+                               __global float4* next) {
+    const uint i = begin + (uint)get_global_id(0);
+    if (i >= end) {
+        return;
+    }
+    const uint b = i / (uint)params.samples;
+    const RcQuery site = sites[b];
+    const float4 seen = samples[i];
+    next[i] = seen;
+    float3 w;
+    float weight;
+    if (!rc_sdrc_record_direction(&params, materials, &site, streams[b],
+                                  i % (uint)params.samples, &w, &weight)) {
+        return;
+    }
+    const Frame frame = rc_sdrc_record_frame(site.normal.xyz);
+    const int cell = rc_tc_cell_of(rc_to_local(&frame, w), m, n, RC_TC_CELLS_UNIFORM);
+    if (cell < 0) {
+        return;
+    }
+    const size_t c = (size_t)b * (size_t)(m * n) + (size_t)cell;
+    next[i] = (float4)(fmax(seen.xyz + next_cells[c].xyz - cells[c].xyz, (float3)(0.0f)), seen.w);
 }
