@@ -135,7 +135,8 @@ __kernel void sdrc_record_cells(uint begin, uint end, SdrcParams params, int m, 
 // Item i: sample i % N of batch record i / N (random stream streams[i / N]) at sites[i / N],
 // which saw samples[i] = (L.rgb, distance) at this frame: its radiance estimated at the next
 // frame into next[i], L moved by the change of the uniform cell its direction passes through
-// (next_cells - cells, sdrc_record_cells' cells carried by temporal caching), at least 0; a
+// (next_cells - cells, sdrc_record_cells' cells carried by temporal caching; L itself where the
+// cell does not change), at least 0; a
 // direction with no ray, or below the cells' hemisphere, keeps L.
 __kernel void sdrc_record_next(uint begin, uint end, SdrcParams params, int m, int n,
                                __global const Material* materials, __global const RcQuery* sites,
@@ -162,5 +163,5 @@ __kernel void sdrc_record_next(uint begin, uint end, SdrcParams params, int m, i
         return;
     }
     const size_t c = (size_t)b * (size_t)(m * n) + (size_t)cell;
-    next[i] = (float4)(fmax(seen.xyz + next_cells[c].xyz - cells[c].xyz, (float3)(0.0f)), seen.w);
+    next[i] = (float4)(fmax(seen.xyz + (next_cells[c].xyz - cells[c].xyz), (float3)(0.0f)), seen.w);
 }
