@@ -22,6 +22,14 @@ int first_candidate_stride(uint32_t i, uint32_t width, uint32_t spp) {
     return 1;
 }
 
+std::vector<unsigned> next_streams(size_t count, unsigned* next) {
+    std::vector<unsigned> streams(count);
+    for (unsigned& stream : streams) {
+        stream = (*next)++;
+    }
+    return streams;
+}
+
 GlossyPlacement::GlossyPlacement(Context& context)
     : context_(context),
       served_kernel_(context.kernel("records/glossy_placement.cl", "rc_served_queries")),

@@ -23,6 +23,9 @@ namespace rc {
 // it is its pixel's first sample, else 1. A sample is a candidate at every stride up to it.
 int first_candidate_stride(uint32_t i, uint32_t width, uint32_t spp);
 
+// The random streams of `count` new records: *next, *next + 1, ..., *next advanced past them.
+std::vector<unsigned> next_streams(size_t count, unsigned* next);
+
 struct GlossyPlacementStats {
     std::vector<PlacementPass> passes;  // level 0 only
     size_t glossy_samples = 0;          // camera samples on a specular lobe the cache serves

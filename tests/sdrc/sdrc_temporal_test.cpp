@@ -7,17 +7,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "box_walls.h"
+#include "frame_renders.h"
 #include "image/image.h"
 #include "image/image_io.h"
 #include "test_support.h"
-#include "util/file_io.h"
 
 namespace rc {
 namespace {
@@ -25,29 +23,16 @@ namespace {
 const std::vector<std::string> kSmall = {"--method", "sdrc",  "--width", "24",        "--height",
                                          "24",       "--spp", "4",       "--ic-rays", "256"};
 
-bool same_pixels(const Image& a, const Image& b) {
-    return a.width == b.width && a.height == b.height && a.channels == b.channels &&
-           std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)) == 0;
-}
-
-std::filesystem::path frame_file(const std::filesystem::path& dir, const std::string& name,
-                                 int frame) {
-    char number[8];
-    std::snprintf(number, sizeof number, "%04d", frame);
-    return dir / (name + number + ".exr");
-}
+using test::expect_static_glossy_records;
+using test::frame_file;
+using test::same_pixels;
 
 // `radcache render SCENE kSmall args -o dir/name####.exr --stats dir/name.json --quiet`; its stats.
 nlohmann::json render_frames(const std::filesystem::path& scene, const std::filesystem::path& dir,
                              const std::string& name, const std::vector<std::string>& args) {
-    std::vector<std::string> command = {"render", scene.string()};
-    command.insert(command.end(), kSmall.begin(), kSmall.end());
-    command.insert(command.end(), args.begin(), args.end());
-    command.insert(command.end(), {"-o", (dir / (name + "####.exr")).string(), "--stats",
-                                   (dir / (name + ".json")).string(), "--quiet"});
-    const test::CommandResult result = test::run_radcache(command);
-    EXPECT_EQ(result.exit_code, 0) << result.output;
-    return nlohmann::json::parse(read_file(dir / (name + ".json")));
+    std::vector<std::string> all = kSmall;
+    all.insert(all.end(), args.begin(), args.end());
+    return test::render_frames(scene, dir, name, all);
 }
 
 // glossy-box (no animation) over frames 0-3 with --temporal: every frame is, every layer bit for
@@ -60,17 +45,9 @@ TEST(SdrcTemporal, StaticSceneRendersFrameZerosImageEveryFrame) {
     render_frames(scene, dir, "single", {"--frames", "0:0"});
     const nlohmann::json stats = render_frames(scene, dir, "t", {"--temporal", "--frames", "0:3"});
     const Image expected = read_image(frame_file(dir, "single", 0));
-    const size_t records = stats["frames"][0]["temporal"]["radiance"]["records"].get<size_t>();
-    EXPECT_GT(records, 0u);
+    expect_static_glossy_records(stats, 3);
     for (int f = 0; f <= 3; ++f) {
         EXPECT_TRUE(same_pixels(read_image(frame_file(dir, "t", f)), expected)) << "frame " << f;
-        const nlohmann::json& r = stats["frames"][f]["temporal"]["radiance"];
-        EXPECT_EQ(r["records"].get<size_t>(), records) << f;
-        EXPECT_EQ(r["created"].get<size_t>(), f == 0 ? records : 0u) << f;
-        EXPECT_EQ(r["reused"].get<size_t>(), f == 0 ? 0u : records) << f;
-        EXPECT_EQ(r["recomputed"].get<size_t>(), 0u) << f;
-        EXPECT_EQ(r["dropped"].get<size_t>(), 0u) << f;
-        EXPECT_EQ(r["record_rays"].get<uint64_t>() > 0, f == 0) << f;
     }
 }
 

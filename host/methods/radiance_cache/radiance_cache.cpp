@@ -225,11 +225,7 @@ void RadianceCache::place(const Buffer<shared::RcQuery>& queries, const shared::
         queries, store_, static_cast<uint32_t>(params.width),
         static_cast<uint32_t>(params.camera_spp), options_.min_spacing,
         [&](const std::vector<shared::RcQuery>& sites) {
-            std::vector<unsigned> streams(sites.size());
-            for (unsigned& stream : streams) {
-                stream = next_stream_++;
-            }
-            add_records(sites, streams, diffuse);
+            add_records(sites, next_streams(sites.size(), &next_stream_), diffuse);
         },
         &stats_.placement);
     stats_.records = store_.size();

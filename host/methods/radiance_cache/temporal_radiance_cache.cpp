@@ -100,17 +100,8 @@ void TemporalRadianceCache::place_frame(const FrameScene& frame, const TcMotion&
     }
     const std::vector<uint8_t> used = cache.records_used(
         queries, radiance_store_of(options_.accuracy, order, parts, host, payloads));
-    std::vector<size_t> replaced;
-    std::vector<shared::RcQuery> sites;
-    std::vector<unsigned> streams;
-    for (size_t i = 0; i < candidates.size(); ++i) {
-        if (used[i] != 0) {
-            replaced.push_back(candidates[i]);
-            sites.push_back(set_.records()[candidates[i]].site);
-            streams.push_back(set_.records()[candidates[i]].stream);
-        }
-    }
-    cache.add_records(sites, streams, diffuse);
+    const TemporalGlossySet::Replacements replaced = set_.replacements(candidates, used);
+    cache.add_records(replaced.sites, replaced.streams, diffuse);
     // New records where the image is not covered.
     cache.place(queries, params, diffuse);
     set_.set_next_stream(cache.next_stream());
@@ -125,7 +116,7 @@ void TemporalRadianceCache::place_frame(const FrameScene& frame, const TcMotion&
     }
     TemporalGlossyFrameStats& stats =
         set_.adopt(t, placed, serving, expired.size(), std::move(carried), std::move(computed),
-                   replaced, static_cast<size_t>(order) * order);
+                   replaced.records, static_cast<size_t>(order) * order);
     stats.record_rays = cache.stats().record_rays;
     stats.placement_seconds = seconds_since(start);
 }

@@ -283,11 +283,7 @@ void SdrcCache::place(const Buffer<shared::RcQuery>& queries, const shared::IcPa
         queries, store_, static_cast<uint32_t>(params.width),
         static_cast<uint32_t>(params.camera_spp), options_.min_spacing,
         [&](const std::vector<shared::RcQuery>& sites) {
-            std::vector<unsigned> streams(sites.size());
-            for (unsigned& stream : streams) {
-                stream = next_stream_++;
-            }
-            add_batches(sites, streams, base, diffuse);
+            add_batches(sites, next_streams(sites.size(), &next_stream_), base, diffuse);
         },
         &stats_.placement);
     stats_.records = store_.size();

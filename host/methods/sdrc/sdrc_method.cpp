@@ -3,7 +3,6 @@
 // diffuse lobes keep irradiance caching's records, with its options, whose first level SDRC's
 // rays read at their hits. With --temporal, SDRC's records and the irradiance records live
 // across frames (TemporalSdrcCache driven by TemporalIrradianceCache, as `rc --temporal`).
-#include <algorithm>
 #include <memory>
 
 #include "methods/glossy_method.h"
@@ -12,7 +11,7 @@
 #include "methods/records/ic_options.h"
 #include "methods/sdrc/sdrc_cache.h"
 #include "methods/sdrc/temporal_sdrc_cache.h"
-#include "methods/temporal/temporal_cache.h"
+#include "methods/temporal/temporal_glossy_method.h"
 #include "methods/temporal/temporal_options.h"
 #include "shared/radiance_cache.h"
 #include "util/error.h"
@@ -55,19 +54,10 @@ OptionTable<SdrcMethodOptions> sdrc_option_table() {
 // The rules between sdrc's options: with --temporal, no cache files and lifespans by change.
 void finish_sdrc(SdrcMethodOptions& options, const ParsedArguments& arguments) {
     finish_irradiance_record_options(options.records);
-    check_temporal_options(options.temporal, arguments);
-    if (!options.temporal.enabled) {
-        return;
-    }
-    if (options.temporal.lifespan == TemporalLifespan::kDeparture) {
-        throw Error(
-            "--temporal-lifespan departure: --method ic only (sdrc's records' lifespans are by "
-            "change)",
-            kExitUsage);
-    }
     const IrradianceCacheOptions& ic = options.records;
-    refuse_cache_files_with_temporal(!ic.cache_in.empty() || !ic.cache_out.empty(),
-                                     "--cache-in/--cache-out");
+    check_glossy_temporal_options(options.temporal, arguments,
+                                  !ic.cache_in.empty() || !ic.cache_out.empty(),
+                                  "--cache-in/--cache-out");
 }
 
 // SDRC's options with the irradiance records' they share (a, the spacing) and the shared
@@ -83,31 +73,13 @@ class SpatialDirectionalRadianceCaching final : public Method {
                                       const MethodSettings& settings)
         : ic_(irradiance_record_options(options.records, settings)),
           sdrc_(sdrc_options(options.sdrc, ic_)),
-          time_(settings.time) {
-        const TemporalOptions& temporal = options.temporal;
-        if (!temporal.enabled) {
-            return;
-        }
-        const long long last =
-            static_cast<long long>(settings.first_frame) + std::max(settings.frame_count, 1) - 1;
-        temporal_glossy_ = std::make_unique<TemporalSdrcCache>(
-            sdrc_, temporal, settings.first_frame, static_cast<int>(last));
-        temporal_ = std::make_unique<TemporalIrradianceCache>(ic_, temporal, settings.first_frame,
-                                                              settings.frame_count);
-        temporal_->set_glossy(temporal_glossy_.get());
-    }
+          time_(settings.time),
+          temporal_(
+              temporal_glossy_render<TemporalSdrcCache>(sdrc_, ic_, options.temporal, settings)) {}
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         if (temporal_) {
-            refuse_temporal_on_several_devices(frame_devices(frame));
-            FrameResult result = temporal_->render_frame(frame, hooks);
-            const nlohmann::json& t = result.stats["temporal"];
-            const nlohmann::json& r = t["radiance"];
-            log_note(t["records"].dump() + " irradiance records, " + r["records"].dump() +
-                     " SDRC records (" + r["created"].dump() + " new, " + r["recomputed"].dump() +
-                     " recomputed, " + r["reused"].dump() + " reused, " + r["dropped"].dump() +
-                     " dropped)");
-            return result;
+            return temporal_->render_frame(frame, hooks, "SDRC");
         }
         SdrcCache glossy(frame, sdrc_);
         IrradianceCacheStats stats;
@@ -155,9 +127,8 @@ class SpatialDirectionalRadianceCaching final : public Method {
    private:
     IrradianceCacheOptions ic_;
     SdrcOptions sdrc_;
-    double time_;                                         // --time (0: --spp)
-    std::unique_ptr<TemporalSdrcCache> temporal_glossy_;  // with --temporal
-    std::unique_ptr<TemporalIrradianceCache> temporal_;
+    double time_;                                     // --time (0: --spp)
+    std::unique_ptr<TemporalGlossyRender> temporal_;  // with --temporal
 };
 
 }  // namespace

@@ -25,22 +25,10 @@ void TcSdrcReprojection::observe(const SdrcBatch& batch) {
                     SceneArguments(bvh_, device_scene_), batch.sites, batch.streams, batch.diffuse,
                     cells, counters);
     rays_ += counters.download()[0];
-    // Step 2: the cells carried to the next frame (the records' frames: their shading normals;
-    // a cell below the surface's own plane traced no ray).
-    std::vector<shared::float4> origins(batch.count), normals(batch.count), surfaces(batch.count);
-    for (size_t b = 0; b < batch.count; ++b) {
-        origins[b] = batch.site_values[b].origin;
-        normals[b] = batch.site_values[b].normal;
-        surfaces[b] = batch.site_values[b].geometric_normal;
-        surfaces[b].w = 1.0f;
-    }
-    const Buffer<shared::float4> origin_buffer(context_, origins, "tc_sdrc_origins");
-    const Buffer<shared::float4> normal_buffer(context_, normals, "tc_sdrc_normals");
-    const Buffer<shared::float4> surface_buffer(context_, surfaces, "tc_sdrc_surfaces");
-    const Buffer<shared::float4> next_cells = cells_.next_cells(
-        motion_, {RC_TC_CELLS_UNIFORM, m, n, batch.params.seed_lo ^ RC_SDRC_CELL_DOMAIN,
-                  batch.params.seed_hi, origin_buffer, normal_buffer, surface_buffer, batch.streams,
-                  cells, batch.count});
+    // Step 2: the cells carried to the next frame.
+    const Buffer<shared::float4> next_cells = cells_.next_glossy_cells(
+        motion_, m, n, batch.params.seed_lo ^ RC_SDRC_CELL_DOMAIN, batch.params.seed_hi,
+        batch.site_values, batch.streams, cells, batch.count);
     // Step 3: every sample's radiance moved by its cell's change.
     Buffer<shared::float4> next(context_, batch.count * samples, "tc_sdrc_next");
     context_.launch(next_kernel, batch.count * samples, batch.params, m, n, device_scene_.materials,

@@ -107,17 +107,8 @@ void TemporalSdrcCache::place_frame(const FrameScene& frame, const TcMotion& mot
     parts_of(candidates, &parts, &host);
     const std::vector<uint8_t> used = cache.records_used(
         queries.queries, records_of(candidates, std::move(parts), std::move(host), -1).store);
-    std::vector<size_t> replaced;
-    std::vector<shared::RcQuery> sites;
-    std::vector<unsigned> streams;
-    for (size_t i = 0; i < candidates.size(); ++i) {
-        if (used[i] != 0) {
-            replaced.push_back(candidates[i]);
-            sites.push_back(set_.records()[candidates[i]].site);
-            streams.push_back(set_.records()[candidates[i]].stream);
-        }
-    }
-    cache.add_records(sites, streams, params, diffuse);
+    const TemporalGlossySet::Replacements replaced = set_.replacements(candidates, used);
+    cache.add_records(replaced.sites, replaced.streams, params, diffuse);
     // New records where the image is not covered.
     cache.place(queries.queries, params, diffuse);
     set_.set_next_stream(cache.next_stream());
@@ -133,7 +124,7 @@ void TemporalSdrcCache::place_frame(const FrameScene& frame, const TcMotion& mot
     const size_t samples = static_cast<size_t>(sdrc_record_samples(options_, params.camera_spp));
     TemporalGlossyFrameStats& stats =
         set_.adopt(t, cache.store(), serving, expired.size(), std::move(carried),
-                   std::move(payloads), replaced, samples);
+                   std::move(payloads), replaced.records, samples);
     stats.record_rays = cache.stats().record_rays + reprojection.rays();
     stats.placement_seconds = seconds_since(start);
 }

@@ -29,15 +29,12 @@ class TemporalSdrcCache final : public TemporalGlossyRecords {
     TemporalSdrcCache(SdrcOptions options, TemporalOptions temporal, int first_frame,
                       int last_frame);
 
-    // Pass 1 at `frame` (in order), once its irradiance records are placed: `params` and `camera`
-    // the irradiance cache's, `diffuse` its first level, `motion` the changes to the next frame.
+    // TemporalGlossyRecords (temporal_glossy.h). Shading builds each serving record's L-tree from
+    // its payload at the frame.
     void place_frame(const FrameScene& frame, const TcMotion& motion,
                      const shared::IcParams& params, const shared::CameraParams& camera,
                      const RadianceSource& diffuse) override;
-    // Pass 2: the glossy cache that shades `frame` (placed before): the records serving it, their
-    // L-trees built from their payloads at that frame.
     std::unique_ptr<GlossyCache> shading(const FrameScene& frame) const override;
-    // The statistics of `frame`'s placement.
     nlohmann::json frame_stats(int frame) const override;
 
     // Every record computed so far, in creation order (tests).

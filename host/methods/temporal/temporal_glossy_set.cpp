@@ -34,6 +34,19 @@ std::vector<size_t> TemporalGlossySet::staying(const std::vector<size_t>& expire
     return staying;
 }
 
+TemporalGlossySet::Replacements TemporalGlossySet::replacements(
+    const std::vector<size_t>& candidates, const std::vector<uint8_t>& used) const {
+    Replacements r;
+    for (size_t i = 0; i < candidates.size(); ++i) {
+        if (used[i] != 0) {
+            r.records.push_back(candidates[i]);
+            r.sites.push_back(records_[candidates[i]].site);
+            r.streams.push_back(records_[candidates[i]].stream);
+        }
+    }
+    return r;
+}
+
 TemporalGlossyFrameStats& TemporalGlossySet::adopt(
     int frame, const RecordStore& placed, const std::vector<size_t>& serving, size_t expired,
     std::vector<CarriedGlossyRecord> carried, std::vector<std::vector<float>> payloads,

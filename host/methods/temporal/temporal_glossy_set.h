@@ -46,6 +46,15 @@ class TemporalGlossySet {
     void select(int frame, std::vector<size_t>* serving, std::vector<size_t>* expired) const;
     // Of `expired`, the records whose own surface stays (the others are dropped, not replaced).
     std::vector<size_t> staying(const std::vector<size_t>& expired) const;
+    // The records computed again in their place: those of `candidates` (staying()) a served
+    // query still weighs (`used`, one flag each; the report's §5), with their sites and streams.
+    struct Replacements {
+        std::vector<size_t> records;
+        std::vector<shared::RcQuery> sites;
+        std::vector<unsigned> streams;
+    };
+    Replacements replacements(const std::vector<size_t>& candidates,
+                              const std::vector<uint8_t>& used) const;
     // After placement at `frame`: the serving records as neighbor clamping left them in `placed`
     // (its first serving.size() records) and the new ones (the rest, observed as `carried`, with
     // `payloads`), lifespans by their change over the payloads' first 3 x `per_channel` floats;
