@@ -29,11 +29,11 @@ RecordStore radiance_store_of(float accuracy, int order, std::vector<shared::Rec
 
 // The glossy cache of one frame's shading: radiance caching's queries and splat over a given
 // store, no placement.
-class TemporalRadianceShading final : public GlossyCache {
+class TemporalRadianceShading final : public TemporalShadingCache<RadianceCache> {
    public:
     TemporalRadianceShading(const FrameScene& frame, const RadianceCacheOptions& options,
                             std::shared_ptr<const BrdfTables> tables, RecordStore store)
-        : cache_(frame, options, std::move(tables)) {
+        : TemporalShadingCache(frame, options, std::move(tables)) {
         cache_.set_store(std::move(store), 0);
     }
 
@@ -42,19 +42,13 @@ class TemporalRadianceShading final : public GlossyCache {
                                                   const RadianceSource&) override {
         return cache_.splat(cache_.queries(params, camera));
     }
-    std::vector<FilmLayer> layers() const override { return cache_.layers(); }
-    uint64_t rays() const override { return cache_.rays(); }
-    double record_seconds() const override { return cache_.record_seconds(); }
-
-   private:
-    RadianceCache cache_;
 };
 
 }  // namespace
 
 TemporalRadianceCache::TemporalRadianceCache(RadianceCacheOptions options, TemporalOptions temporal,
                                              int first_frame, int last_frame)
-    : options_(std::move(options)), set_(temporal, first_frame, last_frame) {}
+    : TemporalGlossySetRecords(temporal, first_frame, last_frame), options_(std::move(options)) {}
 
 RecordStore TemporalRadianceCache::serving_store(int frame, int order, std::vector<size_t>* serving,
                                                  std::vector<size_t>* expired) const {
@@ -139,10 +133,6 @@ std::unique_ptr<GlossyCache> TemporalRadianceCache::shading(const FrameScene& fr
     return std::make_unique<TemporalRadianceShading>(
         frame, options_, tables_,
         radiance_store_of(options_.accuracy, order_, std::move(parts), std::move(host), payloads));
-}
-
-nlohmann::json TemporalRadianceCache::frame_stats(int frame) const {
-    return set_.frame_stats(frame);
 }
 
 }  // namespace rc

@@ -25,7 +25,7 @@
 
 namespace rc {
 
-class TemporalRadianceCache final : public TemporalGlossyRecords {
+class TemporalRadianceCache final : public TemporalGlossySetRecords {
    public:
     TemporalRadianceCache(RadianceCacheOptions options, TemporalOptions temporal, int first_frame,
                           int last_frame);
@@ -38,11 +38,6 @@ class TemporalRadianceCache final : public TemporalGlossyRecords {
     // Pass 2: the glossy cache that shades `frame` (placed before): the records serving it, their
     // payloads at that frame.
     std::unique_ptr<GlossyCache> shading(const FrameScene& frame) const override;
-    // The statistics of `frame`'s placement.
-    nlohmann::json frame_stats(int frame) const override;
-
-    // Every record computed so far, in creation order (tests).
-    const std::vector<TemporalRadianceRecord>& records() const { return set_.records(); }
 
    private:
     // The records serving `frame` (indices appended to *serving) in a store of order `order`,
@@ -53,7 +48,6 @@ class TemporalRadianceCache final : public TemporalGlossyRecords {
     RadianceCacheOptions options_;
     int order_ = 1;  // of the records (the BRDF tables', the same every frame)
     std::shared_ptr<const BrdfTables> tables_;  // built at the first frame, shared by the rest
-    TemporalGlossySet set_;                     // the records across frames
 };
 
 }  // namespace rc

@@ -12,11 +12,11 @@ namespace {
 
 // The glossy cache of one frame's shading: SDRC's queries and interpolation over given records
 // (their placement already covers the frame's camera samples: place() adds none).
-class TemporalSdrcShading final : public GlossyCache {
+class TemporalSdrcShading final : public TemporalShadingCache<SdrcCache> {
    public:
     TemporalSdrcShading(const FrameScene& frame, const SdrcOptions& options, RecordStore store,
                         std::vector<shared::RcQuery> sites, std::vector<LTree> trees)
-        : cache_(frame, options) {
+        : TemporalShadingCache(frame, options) {
         cache_.set_records(std::move(store), std::move(sites), std::move(trees), 0);
     }
 
@@ -28,19 +28,13 @@ class TemporalSdrcShading final : public GlossyCache {
         cache_.interpolate(q, params, diffuse);
         return std::move(q.glossy);
     }
-    std::vector<FilmLayer> layers() const override { return cache_.layers(); }
-    uint64_t rays() const override { return cache_.rays(); }
-    double record_seconds() const override { return cache_.record_seconds(); }
-
-   private:
-    SdrcCache cache_;
 };
 
 }  // namespace
 
 TemporalSdrcCache::TemporalSdrcCache(SdrcOptions options, TemporalOptions temporal, int first_frame,
                                      int last_frame)
-    : options_(std::move(options)), set_(temporal, first_frame, last_frame) {}
+    : TemporalGlossySetRecords(temporal, first_frame, last_frame), options_(std::move(options)) {}
 
 LTree TemporalSdrcCache::tree_at(size_t id, int frame) const {
     const TemporalGlossyRecord& r = set_.records()[id];
@@ -144,7 +138,5 @@ std::unique_ptr<GlossyCache> TemporalSdrcCache::shading(const FrameScene& frame)
                                                  std::move(records.sites),
                                                  std::move(records.trees));
 }
-
-nlohmann::json TemporalSdrcCache::frame_stats(int frame) const { return set_.frame_stats(frame); }
 
 }  // namespace rc

@@ -24,21 +24,17 @@
 
 namespace rc {
 
-class TemporalSdrcCache final : public TemporalGlossyRecords {
+class TemporalSdrcCache final : public TemporalGlossySetRecords {
    public:
     TemporalSdrcCache(SdrcOptions options, TemporalOptions temporal, int first_frame,
                       int last_frame);
 
-    // TemporalGlossyRecords (temporal_glossy.h). Shading builds each serving record's L-tree from
+    // TemporalGlossyRecords (temporal_glossy.h); shading builds each serving record's L-tree from
     // its payload at the frame.
     void place_frame(const FrameScene& frame, const TcMotion& motion,
                      const shared::IcParams& params, const shared::CameraParams& camera,
                      const RadianceSource& diffuse) override;
     std::unique_ptr<GlossyCache> shading(const FrameScene& frame) const override;
-    nlohmann::json frame_stats(int frame) const override;
-
-    // Every record computed so far, in creation order (tests).
-    const std::vector<TemporalGlossyRecord>& records() const { return set_.records(); }
 
    private:
     // A store of the records `ids` (their shared parts and host data as given), their sites and,
@@ -54,7 +50,6 @@ class TemporalSdrcCache final : public TemporalGlossyRecords {
     LTree tree_at(size_t id, int frame) const;
 
     SdrcOptions options_;
-    TemporalGlossySet set_;                              // the records across frames
     std::vector<std::vector<shared::LTreeNode>> nodes_;  // per record: its samples' nodes
 };
 

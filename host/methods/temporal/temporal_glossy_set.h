@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "methods/records/record_store.h"
+#include "methods/temporal/temporal_glossy.h"
 #include "methods/temporal/temporal_glossy_record.h"
 #include "methods/temporal/temporal_options.h"
 
@@ -87,6 +88,21 @@ class TemporalGlossySet {
     std::vector<TemporalGlossyRecord> records_;
     std::vector<std::vector<Serving>> serving_;          // per frame from first_frame_
     std::vector<TemporalGlossyFrameStats> frame_stats_;  // per frame from first_frame_
+};
+
+// A glossy cache's records across frames (TemporalGlossyRecords) kept in a TemporalGlossySet: the
+// statistics and the records are the set's; placement and shading are the deriving cache's.
+class TemporalGlossySetRecords : public TemporalGlossyRecords {
+   public:
+    nlohmann::json frame_stats(int frame) const override { return set_.frame_stats(frame); }
+    // Every record computed so far, in creation order (tests).
+    const std::vector<TemporalGlossyRecord>& records() const { return set_.records(); }
+
+   protected:
+    TemporalGlossySetRecords(TemporalOptions temporal, int first_frame, int last_frame)
+        : set_(temporal, first_frame, last_frame) {}
+
+    TemporalGlossySet set_;  // the records across frames
 };
 
 }  // namespace rc
