@@ -160,14 +160,20 @@ void SdrcCache::add_batches(const std::vector<shared::RcQuery>& sites,
         Buffer<shared::float4> samples(context_, count * n, "sdrc_record_samples");
         Buffer<shared::LTreeNode> nodes(context_, count * n, "sdrc_record_nodes");
         Buffer<shared::float4> radii(context_, count, "sdrc_record_radii");
+        // With an observer, each record's uniform cells too (temporal caching's reprojection).
+        const int cell_m = observer_ != nullptr ? observer_->cell_rows() : 0;
+        const int cell_n = observer_ != nullptr ? observer_->cell_columns() : 0;
+        const size_t cell_items = count * static_cast<size_t>(cell_m) * cell_n;
+        Buffer<shared::float4> cells(context_, std::max<size_t>(1, cell_items), "sdrc_cells");
         counters.fill_zero();
-        context_.launch(trace_kernel(diffuse, "sdrc_record_samples"), count * n, base, scene,
-                        site_buffer, stream_buffer, diffuse, samples, nodes, counters);
+        context_.launch(trace_kernel(diffuse, "sdrc_record_samples"), count * n + cell_items, base,
+                        static_cast<unsigned>(count * n), cell_m, cell_n, scene, site_buffer,
+                        stream_buffer, diffuse, samples, nodes, cells, counters);
         context_.launch(radius_kernel_, count, base, device_scene_.materials, site_buffer,
                         stream_buffer, samples, radii);
         if (observer_ != nullptr) {
-            observer_->observe({base, site_buffer, stream_buffer, samples, nodes, batch.data(),
-                                batch_streams.data(), diffuse, count});
+            observer_->observe({base, site_buffer, stream_buffer, samples, nodes, cells,
+                                batch.data(), batch_streams.data(), diffuse, count});
         }
         const std::vector<shared::LTreeNode> all_nodes = nodes.download();
         const std::vector<shared::float4> radius = radii.download();

@@ -82,6 +82,7 @@ struct SdrcBatch {
     const Buffer<unsigned>& streams;         // their random streams
     const Buffer<shared::float4>& samples;   // count x N: (L.rgb, hit distance)
     const Buffer<shared::LTreeNode>& nodes;  // count x N: the samples' nodes, in sample order
+    const Buffer<shared::float4>& cells;     // count x M N uniform cells (the observer's M x N)
     const shared::RcQuery* site_values;      // the same sites and streams on the host
     const unsigned* stream_values;
     const RadianceSource& diffuse;  // what the samples' rays read beyond their hits
@@ -93,6 +94,10 @@ struct SdrcBatch {
 class SdrcBatchObserver {
    public:
     virtual ~SdrcBatchObserver() = default;
+    // The M x N uniform cells of each record's hemisphere the record kernel also traces for the
+    // observer (SdrcBatch::cells; sdrc_record_samples).
+    virtual int cell_rows() const = 0;
+    virtual int cell_columns() const = 0;
     virtual void observe(const SdrcBatch& batch) = 0;
 };
 

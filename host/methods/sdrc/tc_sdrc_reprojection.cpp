@@ -12,27 +12,17 @@ TcSdrcReprojection::TcSdrcReprojection(const FrameScene& frame, const TcMotion& 
 void TcSdrcReprojection::observe(const SdrcBatch& batch) {
     const int m = kSdrcTemporalRows;
     const int n = kSdrcTemporalColumns;
-    const size_t per_record = static_cast<size_t>(m) * n;
     const size_t samples = static_cast<size_t>(batch.params.samples);
-    // Step 1: the records' uniform hemisphere cells at this frame.
-    const std::string options = batch.diffuse.build_options();
-    Kernel cells_kernel = context_.kernel("sdrc/sdrc_trace.cl", "sdrc_record_cells", options);
-    Kernel next_kernel = context_.kernel("sdrc/sdrc_trace.cl", "sdrc_record_next", options);
-    Buffer<shared::float4> cells(context_, batch.count * per_record, "tc_sdrc_cells");
-    Buffer<unsigned> counters(context_, 1, "tc_sdrc_counters");
-    counters.fill_zero();
-    context_.launch(cells_kernel, batch.count * per_record, batch.params, m, n,
-                    SceneArguments(bvh_, device_scene_), batch.sites, batch.streams, batch.diffuse,
-                    cells, counters);
-    rays_ += counters.download()[0];
-    // Step 2: the cells carried to the next frame.
+    Kernel next_kernel =
+        context_.kernel("sdrc/sdrc_trace.cl", "sdrc_record_next", batch.diffuse.build_options());
+    // Step 1: the records' uniform cells (traced by the record kernel) carried to the next frame.
     const Buffer<shared::float4> next_cells = cells_.next_glossy_cells(
         motion_, m, n, batch.params.seed_lo ^ RC_SDRC_CELL_DOMAIN, batch.params.seed_hi,
-        batch.site_values, batch.streams, cells, batch.count);
-    // Step 3: every sample's radiance moved by its cell's change.
+        batch.site_values, batch.streams, batch.cells, batch.count);
+    // Step 2: every sample's radiance moved by its cell's change.
     Buffer<shared::float4> next(context_, batch.count * samples, "tc_sdrc_next");
     context_.launch(next_kernel, batch.count * samples, batch.params, m, n, device_scene_.materials,
-                    batch.sites, batch.streams, batch.samples, cells, next_cells, next);
+                    batch.sites, batch.streams, batch.samples, batch.cells, next_cells, next);
     const std::vector<shared::float4> now = batch.samples.download();
     const std::vector<shared::float4> later = next.download();
     const std::vector<shared::LTreeNode> nodes = batch.nodes.download();

@@ -1,12 +1,12 @@
 // Temporal caching's estimate of each new SDRC record's value at the next frame (`--method sdrc
 // --temporal`; the report's §4.3 applied to SDRC's records, as its §3 applies it to any cached
-// payload): shown every batch of records SdrcCache computes (SdrcBatchObserver), it samples each
-// record's hemisphere on uniform cells (sdrc_record_cells: the L-tree's lobe-sampled directions
-// fall in no cell grid), carries the cells to the next frame with temporal caching's one carry
-// kernel (TcCellCarrier: the same carrying, depth test and 3 x 3 hole filling as irradiance and
-// radiance records'), and moves each L-tree sample's radiance by the change of the cell its
-// direction passes through (sdrc_record_next). The payload is the samples' radiance, channel by
-// channel in sample order, as the record kernel drew them.
+// payload): shown every batch of records SdrcCache computes (SdrcBatchObserver), with each
+// record's hemisphere sampled on uniform cells by the record kernel (sdrc_record_samples: the
+// L-tree's lobe-sampled directions fall in no cell grid), it carries the cells to the next frame
+// with temporal caching's one carry kernel (TcCellCarrier: the same carrying, depth test and 3 x 3
+// hole filling as irradiance and radiance records'), and moves each L-tree sample's radiance by the
+// change of the cell its direction passes through (sdrc_record_next). The payload is the samples'
+// radiance, channel by channel in sample order, as the record kernel drew them.
 #pragma once
 
 #include <cstdint>
@@ -39,18 +39,17 @@ class TcSdrcReprojection final : public SdrcBatchObserver, private FrameBound {
     // Records at `frame`, whose changes to the next frame are `motion`'s.
     TcSdrcReprojection(const FrameScene& frame, const TcMotion& motion);
 
+    int cell_rows() const override { return kSdrcTemporalRows; }
+    int cell_columns() const override { return kSdrcTemporalColumns; }
     void observe(const SdrcBatch& batch) override;
 
     // Every record observed so far, in observation order; clears the list.
     std::vector<CarriedSdrcRecord> take();
-    // The rays of the cells traced so far.
-    uint64_t rays() const { return rays_; }
 
    private:
     const TcMotion& motion_;
     TcCellCarrier cells_;
     std::vector<CarriedSdrcRecord> carried_;
-    uint64_t rays_ = 0;
 };
 
 }  // namespace rc

@@ -119,7 +119,7 @@ void TemporalSdrcCache::place_frame(const FrameScene& frame, const TcMotion& mot
     TemporalGlossyFrameStats& stats =
         set_.adopt(t, cache.store(), serving, expired.size(), std::move(carried),
                    std::move(payloads), replaced.records, samples);
-    stats.record_rays = cache.stats().record_rays + reprojection.rays();
+    stats.record_rays = cache.stats().record_rays;  // the cells' rays included
     stats.placement_seconds = seconds_since(start);
 }
 
