@@ -134,9 +134,8 @@ __kernel void sdrc_trace_misses(uint begin, uint end, SdrcParams params, RC_SCEN
 // Item i: sample i % N of batch record i / N (random stream streams[i / N]) at sites[i / N],
 // which saw samples[i] = (L.rgb, distance) at this frame: its radiance estimated at the next
 // frame into next[i], L moved by the change of the uniform cell its direction passes through
-// (next_cells - cells, sdrc_record_cells' cells carried by temporal caching; L itself where the
-// cell does not change), at least 0; a
-// direction with no ray, or below the cells' hemisphere, keeps L.
+// (next_cells - cells: rc_sdrc_cell's cells carried by temporal caching; L itself where the cell
+// does not change), at least 0; a direction with no ray, or below the cells' hemisphere, keeps L.
 __kernel void sdrc_record_next(uint begin, uint end, SdrcParams params, int m, int n,
                                __global const Material* materials, __global const RcQuery* sites,
                                __global const uint* streams, __global const float4* samples,
