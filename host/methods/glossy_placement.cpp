@@ -22,11 +22,37 @@ int first_candidate_stride(uint32_t i, uint32_t width, uint32_t spp) {
     return 1;
 }
 
+std::vector<unsigned> next_streams(size_t count, unsigned* next) {
+    std::vector<unsigned> streams(count);
+    for (unsigned& stream : streams) {
+        stream = (*next)++;
+    }
+    return streams;
+}
+
 GlossyPlacement::GlossyPlacement(Context& context)
     : context_(context),
       served_kernel_(context.kernel("records/glossy_placement.cl", "rc_served_queries")),
       select_kernel_(context.kernel("records/glossy_placement.cl", "rc_select_queries")),
-      uncovered_kernel_(context.kernel("records/glossy_placement.cl", "rc_uncovered")) {}
+      uncovered_kernel_(context.kernel("records/glossy_placement.cl", "rc_uncovered")),
+      used_kernel_(context.kernel("records/glossy_placement.cl", "rc_records_used")) {}
+
+std::vector<uint8_t> GlossyPlacement::records_used(const Buffer<shared::RcQuery>& queries,
+                                                   const RecordStore& store) {
+    if (store.size() == 0) {
+        return {};
+    }
+    const RecordGridData data = build_record_grid(store.records(), store.accuracy());
+    const Buffer<shared::Record> records(context_, store.records(), "glossy_used_records");
+    const Buffer<int> cell_start(context_, data.cell_start, "glossy_used_cell_start");
+    const Buffer<int> cell_records(context_, data.cell_records, "glossy_used_cell_records");
+    Buffer<unsigned> used(context_, store.size(), "glossy_records_used");
+    used.fill_zero();
+    context_.launch(used_kernel_, queries.size(), store.accuracy(), kIrradianceCacheMaxWeight,
+                    data.grid, cell_start, cell_records, records, queries, used);
+    const std::vector<unsigned> flags = used.download();
+    return std::vector<uint8_t>(flags.begin(), flags.end());
+}
 
 void GlossyPlacement::select_served(const Buffer<shared::RcQuery>& queries,
                                     GlossyPlacementStats* stats) {

@@ -23,6 +23,9 @@ namespace rc {
 // it is its pixel's first sample, else 1. A sample is a candidate at every stride up to it.
 int first_candidate_stride(uint32_t i, uint32_t width, uint32_t spp);
 
+// The random streams of `count` new records: *next, *next + 1, ..., *next advanced past them.
+std::vector<unsigned> next_streams(size_t count, unsigned* next);
+
 struct GlossyPlacementStats {
     std::vector<PlacementPass> passes;  // level 0 only
     size_t glossy_samples = 0;          // camera samples on a specular lobe the cache serves
@@ -45,6 +48,11 @@ class GlossyPlacement {
                uint32_t spp, Spacing min_spacing, const AddRecords& add_records,
                GlossyPlacementStats* stats);
 
+    // Per record of `store`: 1 where a served query weighs it positively (temporal caching's
+    // test of the records still in use, the report's §5 "Replacement/Deletion Method").
+    std::vector<uint8_t> records_used(const Buffer<shared::RcQuery>& queries,
+                                      const RecordStore& store);
+
     // After place(): the served queries' indices (ascending) and their host copies.
     const std::vector<uint32_t>& served() const { return served_; }
     const std::vector<shared::RcQuery>& copies() const { return copies_; }
@@ -65,6 +73,7 @@ class GlossyPlacement {
     Kernel served_kernel_;
     Kernel select_kernel_;
     Kernel uncovered_kernel_;
+    Kernel used_kernel_;
     std::vector<uint32_t> served_;
     std::vector<shared::RcQuery> copies_;
 };

@@ -27,14 +27,15 @@ __kernel void sdrc_queries(uint begin, uint end, IcParams params, CameraParams c
     glossy[i] = cleared;
 }
 
-// Item b: record b of a batch (stream params.first_record + b) at sites[b], from its N samples
-// in samples[b N ...]: rc_sdrc_record_radius into radii[b].
+// Item b: record b of a batch (random stream streams[b]) at sites[b], from its N samples in
+// samples[b N ...]: rc_sdrc_record_radius into radii[b].
 __kernel void sdrc_record_radius(uint begin, uint end, SdrcParams params,
                                  __global const Material* materials, __global const RcQuery* sites,
-                                 __global const float4* samples, __global float4* radii) {
+                                 __global const uint* streams, __global const float4* samples,
+                                 __global float4* radii) {
     RC_RANGE_ITEM(b);
     const RcQuery site = sites[b];
-    radii[b] = rc_sdrc_record_radius(&params, materials, &site, (uint)params.first_record + b,
+    radii[b] = rc_sdrc_record_radius(&params, materials, &site, streams[b],
                                      samples + (size_t)b * (uint)params.samples);
 }
 

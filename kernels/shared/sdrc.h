@@ -32,6 +32,8 @@ using std::sqrt;
 // every other stream.
 #define RC_SDRC_RECORD_DOMAIN 0x53445231u
 #define RC_SDRC_QUERY_DOMAIN 0x53445251u
+// And of the uniform hemisphere cells temporal caching reprojects (sdrc_record_cells).
+#define RC_SDRC_CELL_DOMAIN 0x53445243u
 
 RC_SHARED_BEGIN
 
@@ -81,7 +83,7 @@ typedef struct SdrcParams {
     int max_depth;       // bounces of a path
     int rr_depth;        // the depth where Russian roulette starts
     int count_emission;  // 1 to count emission the rays see (tests)
-    int first_record;    // stream index of the launch's first record
+    int pad0;
 } SdrcParams;
 
 RC_SHARED_END
@@ -113,8 +115,7 @@ RC_SHARED_END
     FIELD(SdrcParams, max_weight)       \
     FIELD(SdrcParams, max_depth)        \
     FIELD(SdrcParams, rr_depth)         \
-    FIELD(SdrcParams, count_emission)   \
-    FIELD(SdrcParams, first_record)
+    FIELD(SdrcParams, count_emission)
 // clang-format on
 
 RC_SHARED_BEGIN

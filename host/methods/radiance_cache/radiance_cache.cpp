@@ -109,7 +109,6 @@ RadianceCache::RadianceCache(const FrameScene& frame, const RadianceCacheOptions
       queries_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_queries")),
       project_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_record_project")),
       splat_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_glossy_splat")),
-      used_kernel_(frame.context.kernel("records/glossy_placement.cl", "rc_records_used")),
       placement_(frame.context) {
     radiance_strata(options.rays, &strata_m_, &strata_n_);
     stats_.materials = tables_->summaries();
@@ -199,17 +198,7 @@ void RadianceCache::add_records(const std::vector<shared::RcQuery>& sites,
 
 std::vector<uint8_t> RadianceCache::records_used(const Buffer<shared::RcQuery>& queries,
                                                  const RecordStore& store) {
-    if (store.size() == 0) {
-        return {};
-    }
-    const DeviceRadianceRecords records(context_, store, std::max(order_, 1));
-    Buffer<unsigned> used(context_, store.size(), "rc_records_used");
-    used.fill_zero();
-    context_.launch(used_kernel_, queries.size(), store.accuracy(), kIrradianceCacheMaxWeight,
-                    records.grid, records.cell_start, records.cell_records, records.records,
-                    queries, used);
-    const std::vector<unsigned> flags = used.download();
-    return std::vector<uint8_t>(flags.begin(), flags.end());
+    return placement_.records_used(queries, store);
 }
 
 Buffer<shared::RcQuery> RadianceCache::queries(const shared::IcParams& params,
@@ -231,11 +220,7 @@ void RadianceCache::place(const Buffer<shared::RcQuery>& queries, const shared::
         queries, store_, static_cast<uint32_t>(params.width),
         static_cast<uint32_t>(params.camera_spp), options_.min_spacing,
         [&](const std::vector<shared::RcQuery>& sites) {
-            std::vector<unsigned> streams(sites.size());
-            for (unsigned& stream : streams) {
-                stream = next_stream_++;
-            }
-            add_records(sites, streams, diffuse);
+            add_records(sites, next_streams(sites.size(), &next_stream_), diffuse);
         },
         &stats_.placement);
     stats_.records = store_.size();

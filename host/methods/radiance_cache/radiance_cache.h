@@ -147,7 +147,6 @@ class RadianceCache final : public GlossyCache, private FrameBound {
     Kernel queries_kernel_;
     Kernel project_kernel_;
     Kernel splat_kernel_;
-    Kernel used_kernel_;
     GlossyPlacement placement_;
     std::map<std::string, Kernel> cells_kernels_;  // source_kernel's
 };

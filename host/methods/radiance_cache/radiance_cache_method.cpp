@@ -2,7 +2,6 @@
 // indirect light comes from radiance records (RadianceCache) where the BRDF tables represent the
 // lobe, by Monte Carlo where they do not; the diffuse lobes keep irradiance caching's records,
 // with its options, whose first level the radiance records' hemisphere rays read at their hits.
-#include <algorithm>
 #include <memory>
 
 #include "methods/glossy_method.h"
@@ -11,7 +10,7 @@
 #include "methods/radiance_cache/temporal_radiance_cache.h"
 #include "methods/records/ic_memory.h"
 #include "methods/records/ic_options.h"
-#include "methods/temporal/temporal_cache.h"
+#include "methods/temporal/temporal_glossy_method.h"
 #include "methods/temporal/temporal_options.h"
 #include "shared/radiance_cache.h"
 #include "shared/sh_rotation_zxz.h"
@@ -63,21 +62,12 @@ void finish_radiance_caching(RadianceCachingOptions& options, const ParsedArgume
         check_writable_parent(options.radiance.cache_out, "--rc-cache-out");
     }
     check_radiance_cache_options(options.radiance);
-    check_temporal_options(options.temporal, arguments);
-    if (!options.temporal.enabled) {
-        return;
-    }
-    if (options.temporal.lifespan == TemporalLifespan::kDeparture) {
-        throw Error(
-            "--temporal-lifespan departure: --method ic only (rc's radiance records' lifespans "
-            "are by change)",
-            kExitUsage);
-    }
     const IrradianceCacheOptions& ic = options.records;
     const RadianceCacheOptions& rc = options.radiance;
-    refuse_cache_files_with_temporal(!ic.cache_in.empty() || !ic.cache_out.empty() ||
-                                         !rc.cache_in.empty() || !rc.cache_out.empty(),
-                                     "--cache-in/--cache-out, --rc-cache-in/--rc-cache-out");
+    check_glossy_temporal_options(options.temporal, arguments,
+                                  !ic.cache_in.empty() || !ic.cache_out.empty() ||
+                                      !rc.cache_in.empty() || !rc.cache_out.empty(),
+                                  "--cache-in/--cache-out, --rc-cache-in/--rc-cache-out");
 }
 
 // The radiance records' options with the irradiance records' they share (a, the spacing) and
@@ -97,31 +87,13 @@ class RadianceCaching final : public Method {
     RadianceCaching(const RadianceCachingOptions& options, const MethodSettings& settings)
         : ic_(irradiance_record_options(options.records, settings)),
           rc_(radiance_record_options(options.radiance, ic_, settings)),
-          time_(settings.time) {
-        const TemporalOptions& temporal = options.temporal;
-        if (!temporal.enabled) {
-            return;
-        }
-        const long long last =
-            static_cast<long long>(settings.first_frame) + std::max(settings.frame_count, 1) - 1;
-        temporal_glossy_ = std::make_unique<TemporalRadianceCache>(
-            rc_, temporal, settings.first_frame, static_cast<int>(last));
-        temporal_ = std::make_unique<TemporalIrradianceCache>(ic_, temporal, settings.first_frame,
-                                                              settings.frame_count);
-        temporal_->set_glossy(temporal_glossy_.get());
-    }
+          time_(settings.time),
+          temporal_(temporal_glossy_render<TemporalRadianceCache>(rc_, ic_, options.temporal,
+                                                                  settings)) {}
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
         if (temporal_) {
-            refuse_temporal_on_several_devices(frame_devices(frame));
-            FrameResult result = temporal_->render_frame(frame, hooks);
-            const nlohmann::json& t = result.stats["temporal"];
-            const nlohmann::json& r = t["radiance"];
-            log_note(t["records"].dump() + " irradiance records, " + r["records"].dump() +
-                     " radiance records (" + r["created"].dump() + " new, " +
-                     r["recomputed"].dump() + " recomputed, " + r["reused"].dump() + " reused, " +
-                     r["dropped"].dump() + " dropped)");
-            return result;
+            return temporal_->render_frame(frame, hooks, "radiance");
         }
         // The materials are the same at every frame: their BRDF tables are built once.
         RadianceCache glossy(frame, rc_, tables_);
@@ -171,10 +143,9 @@ class RadianceCaching final : public Method {
    private:
     IrradianceCacheOptions ic_;
     RadianceCacheOptions rc_;
-    double time_;                                             // --time (0: --spp)
-    std::shared_ptr<const BrdfTables> tables_;                // built at the first frame
-    std::unique_ptr<TemporalRadianceCache> temporal_glossy_;  // with --temporal
-    std::unique_ptr<TemporalIrradianceCache> temporal_;
+    double time_;                                     // --time (0: --spp)
+    std::shared_ptr<const BrdfTables> tables_;        // built at the first frame
+    std::unique_ptr<TemporalGlossyRender> temporal_;  // with --temporal
 };
 
 }  // namespace

@@ -14,24 +14,13 @@ TcRadianceReprojection::TcRadianceReprojection(const FrameScene& frame, const Tc
       project_kernel_(frame.context.kernel("radiance_cache/rc_cache.cl", "rc_record_project")) {}
 
 void TcRadianceReprojection::observe(const RadianceBatch& batch) {
-    // The records' frames, and their surfaces' own normals: a uniform cell below the surface
-    // traced no ray (rc_record_cells).
-    std::vector<shared::float4> origins(batch.count), normals(batch.count), surfaces(batch.count);
-    for (size_t b = 0; b < batch.count; ++b) {
-        const shared::RcQuery& site = batch.site_values[b];
-        origins[b] = site.origin;
-        normals[b] = site.normal;
-        surfaces[b] = site.geometric_normal;
-        surfaces[b].w = 1.0f;
-    }
-    const Buffer<shared::float4> origin_buffer(context_, origins, "tc_radiance_origins");
-    const Buffer<shared::float4> normal_buffer(context_, normals, "tc_radiance_normals");
-    const Buffer<shared::float4> surface_buffer(context_, surfaces, "tc_radiance_surfaces");
-    // The key of the records' streams (rc_record_key).
-    const Buffer<shared::float4> next_cells = cells_.next_cells(
-        motion_, {RC_TC_CELLS_UNIFORM, batch.params.strata_m, batch.params.strata_n,
-                  batch.params.seed_lo ^ RC_RC_RNG_DOMAIN, batch.params.seed_hi, origin_buffer,
-                  normal_buffer, surface_buffer, batch.streams, batch.cells, batch.count});
+    // The records' uniform cells carried to the next frame (their frames: the sites' shading
+    // normals; a cell below the surface traced no ray, rc_record_cells), with the key of the
+    // records' streams (rc_record_key).
+    const Buffer<shared::float4> next_cells =
+        cells_.next_glossy_cells(motion_, batch.params.strata_m, batch.params.strata_n,
+                                 batch.params.seed_lo ^ RC_RC_RNG_DOMAIN, batch.params.seed_hi,
+                                 batch.site_values, batch.streams, batch.cells, batch.count);
     const size_t floats = radiance_payload_floats(order_);
     Buffer<float> payloads(context_, batch.count * floats, "tc_radiance_next_payloads");
     Buffer<shared::float4> distances(context_, batch.count, "tc_radiance_next_distances");

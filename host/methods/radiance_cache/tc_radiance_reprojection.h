@@ -13,16 +13,12 @@
 #include "methods/radiance_cache/radiance_cache.h"
 #include "methods/temporal/tc_cells.h"
 #include "methods/temporal/tc_motion.h"
+#include "methods/temporal/temporal_glossy_record.h"
 
 namespace rc {
 
-// A radiance record's estimate at the next frame.
-struct CarriedRadianceRecord {
-    shared::RcQuery site{};   // where it was computed
-    unsigned stream = 0;      // its random stream
-    std::vector<float> next;  // its payload (radiance_records.h) estimated one frame later
-    bool site_moves = false;  // the triangle the record lies on moves by then
-};
+// A radiance record's estimate at the next frame (its payload: radiance_records.h).
+using CarriedRadianceRecord = CarriedGlossyRecord;
 
 class TcRadianceReprojection final : public RadianceBatchObserver, private FrameBound {
    public:

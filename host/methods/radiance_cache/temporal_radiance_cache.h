@@ -20,23 +20,12 @@
 #include "methods/radiance_cache/temporal_radiance_record.h"
 #include "methods/temporal/tc_motion.h"
 #include "methods/temporal/temporal_glossy.h"
+#include "methods/temporal/temporal_glossy_set.h"
 #include "methods/temporal/temporal_options.h"
 
 namespace rc {
 
-// What pass 1 did with the radiance records at one frame.
-struct TemporalRadianceFrameStats {
-    size_t reused = 0;      // records of earlier frames still serving
-    size_t recomputed = 0;  // expired records computed again in their place
-    size_t dropped = 0;     // expired records that no longer served the image
-    size_t created = 0;     // new records where the image was not covered
-    size_t records = 0;     // serving this frame
-    double mean_new_lifespan = 0.0;
-    uint64_t record_rays = 0;
-    double placement_seconds = 0.0;
-};
-
-class TemporalRadianceCache final : public TemporalGlossyRecords {
+class TemporalRadianceCache final : public TemporalGlossySetRecords {
    public:
     TemporalRadianceCache(RadianceCacheOptions options, TemporalOptions temporal, int first_frame,
                           int last_frame);
@@ -49,40 +38,16 @@ class TemporalRadianceCache final : public TemporalGlossyRecords {
     // Pass 2: the glossy cache that shades `frame` (placed before): the records serving it, their
     // payloads at that frame.
     std::unique_ptr<GlossyCache> shading(const FrameScene& frame) const override;
-    // The statistics of `frame`'s placement.
-    nlohmann::json frame_stats(int frame) const override;
-
-    // Every record computed so far, in creation order (tests).
-    const std::vector<TemporalRadianceRecord>& records() const { return records_; }
 
    private:
-    struct Serving {
-        size_t record = 0;  // index into records_
-        shared::Record shared{};
-        RecordHostData host{};
-    };
     // The records serving `frame` (indices appended to *serving) in a store of order `order`,
     // and those whose lifespan ends at `frame` (appended to *expired).
     RecordStore serving_store(int frame, int order, std::vector<size_t>* serving,
                               std::vector<size_t>* expired) const;
-    // After placement at `frame`: the serving records as neighbor clamping left them in `placed`
-    // (its first serving.size() records), the new ones (the rest, observed as `carried`) with
-    // their lifespans, the first replaced.size() of them replacing those. Returns the mean
-    // lifespan of the new records.
-    double adopt(int frame, int order, const RecordStore& placed,
-                 const std::vector<size_t>& serving, std::vector<CarriedRadianceRecord> carried,
-                 const std::vector<size_t>& replaced);
 
     RadianceCacheOptions options_;
-    TemporalOptions temporal_;
-    int first_frame_;
-    int last_frame_;
-    unsigned next_stream_ = 0;
     int order_ = 1;  // of the records (the BRDF tables', the same every frame)
     std::shared_ptr<const BrdfTables> tables_;  // built at the first frame, shared by the rest
-    std::vector<TemporalRadianceRecord> records_;
-    std::vector<std::vector<Serving>> serving_;            // per frame from first_frame_
-    std::vector<TemporalRadianceFrameStats> frame_stats_;  // per frame from first_frame_
 };
 
 }  // namespace rc

@@ -121,7 +121,28 @@ void SdrcCache::check_memory() {
 }
 
 void SdrcCache::add_records(const std::vector<shared::RcQuery>& sites,
-                            const shared::SdrcParams& base, const RadianceSource& diffuse) {
+                            const std::vector<unsigned>& streams, const shared::IcParams& params,
+                            const RadianceSource& diffuse) {
+    add_batches(sites, streams, kernel_params(params), diffuse);
+}
+
+void SdrcCache::set_records(RecordStore store, std::vector<shared::RcQuery> sites,
+                            std::vector<LTree> trees, unsigned next_stream) {
+    if (sites.size() != store.size() || trees.size() != store.size()) {
+        throw Error("sdrc: " + std::to_string(store.size()) + " records with " +
+                    std::to_string(sites.size()) + " sites and " + std::to_string(trees.size()) +
+                    " L-trees");
+    }
+    store_ = std::move(store);
+    sites_ = std::move(sites);
+    trees_ = std::move(trees);
+    next_stream_ = next_stream;
+    check_memory();
+}
+
+void SdrcCache::add_batches(const std::vector<shared::RcQuery>& sites,
+                            const std::vector<unsigned>& streams, const shared::SdrcParams& base,
+                            const RadianceSource& diffuse) {
     const size_t n = static_cast<size_t>(base.samples);
     const size_t batch_limit = options_.record_batch > 0
                                    ? options_.record_batch
@@ -132,17 +153,28 @@ void SdrcCache::add_records(const std::vector<shared::RcQuery>& sites,
         const size_t count = std::min(batch_limit, sites.size() - begin);
         const std::vector<shared::RcQuery> batch(sites.begin() + begin,
                                                  sites.begin() + begin + count);
+        const std::vector<unsigned> batch_streams(streams.begin() + begin,
+                                                  streams.begin() + begin + count);
         const Buffer<shared::RcQuery> site_buffer(context_, batch, "sdrc_batch_sites");
+        const Buffer<unsigned> stream_buffer(context_, batch_streams, "sdrc_batch_streams");
         Buffer<shared::float4> samples(context_, count * n, "sdrc_record_samples");
         Buffer<shared::LTreeNode> nodes(context_, count * n, "sdrc_record_nodes");
         Buffer<shared::float4> radii(context_, count, "sdrc_record_radii");
-        shared::SdrcParams params = base;
-        params.first_record = static_cast<int>(store_.size());  // streams: record indices
+        // With an observer, each record's uniform cells too (temporal caching's reprojection).
+        const int cell_m = observer_ != nullptr ? observer_->cell_rows() : 0;
+        const int cell_n = observer_ != nullptr ? observer_->cell_columns() : 0;
+        const size_t cell_items = count * static_cast<size_t>(cell_m) * cell_n;
+        Buffer<shared::float4> cells(context_, std::max<size_t>(1, cell_items), "sdrc_cells");
         counters.fill_zero();
-        context_.launch(trace_kernel(diffuse, "sdrc_record_samples"), count * n, params, scene,
-                        site_buffer, diffuse, samples, nodes, counters);
-        context_.launch(radius_kernel_, count, params, device_scene_.materials, site_buffer,
-                        samples, radii);
+        context_.launch(trace_kernel(diffuse, "sdrc_record_samples"), count * n + cell_items, base,
+                        static_cast<unsigned>(count * n), cell_m, cell_n, scene, site_buffer,
+                        stream_buffer, diffuse, samples, nodes, cells, counters);
+        context_.launch(radius_kernel_, count, base, device_scene_.materials, site_buffer,
+                        stream_buffer, samples, radii);
+        if (observer_ != nullptr) {
+            observer_->observe({base, site_buffer, stream_buffer, samples, nodes, cells,
+                                batch.data(), batch_streams.data(), diffuse, count});
+        }
         const std::vector<shared::LTreeNode> all_nodes = nodes.download();
         const std::vector<shared::float4> radius = radii.download();
         stats_.record_rays += counters.download()[0];
@@ -236,31 +268,39 @@ void SdrcCache::interpolate_round(const std::vector<uint32_t>& samples,
     check_memory();
 }
 
-Buffer<shared::RcGlossySample> SdrcCache::glossy_samples(const shared::IcParams& params,
-                                                         const shared::CameraParams& camera,
-                                                         const RadianceSource& diffuse) {
+SdrcQueries SdrcCache::queries(const shared::IcParams& params, const shared::CameraParams& camera) {
     const size_t samples =
         static_cast<size_t>(params.width) * params.height * static_cast<size_t>(params.camera_spp);
-    const shared::SdrcParams base = kernel_params(params);
-    stats_.samples = base.samples;
-    // 1. The camera samples as SDRC sees them; every glossy-buffer entry cleared.
-    auto start = SteadyClock::now();
-    Buffer<shared::RcQuery> queries(context_, samples, "sdrc_queries");
-    Buffer<shared::RcGlossySample> glossy(context_, samples, "sdrc_glossy");
+    stats_.samples = sdrc_record_samples(options_, params.camera_spp);
+    const auto start = SteadyClock::now();
+    SdrcQueries q{Buffer<shared::RcQuery>(context_, samples, "sdrc_queries"),
+                  Buffer<shared::RcGlossySample>(context_, samples, "sdrc_glossy")};
     context_.launch(queries_kernel_, samples, params, camera, SceneArguments(bvh_, device_scene_),
-                    queries, glossy);
-    restrict_glossy_queries(context_, options_.materials, queries);
+                    q.queries, q.glossy);
+    restrict_glossy_queries(context_, options_.materials, q.queries);
     stats_.query_seconds = seconds_since(start);
-    // 2. Placement, coarse to fine (GlossyPlacement; SDRC §4.2: a new record where S(p) is empty).
-    const uint32_t width = static_cast<uint32_t>(params.width);
-    const uint32_t spp = static_cast<uint32_t>(params.camera_spp);
+    return q;
+}
+
+void SdrcCache::place(const Buffer<shared::RcQuery>& queries, const shared::IcParams& params,
+                      const RadianceSource& diffuse) {
+    const shared::SdrcParams base = kernel_params(params);
     placement_.place(
-        queries, store_, width, spp, options_.min_spacing,
-        [&](const std::vector<shared::RcQuery>& sites) { add_records(sites, base, diffuse); },
+        queries, store_, static_cast<uint32_t>(params.width),
+        static_cast<uint32_t>(params.camera_spp), options_.min_spacing,
+        [&](const std::vector<shared::RcQuery>& sites) {
+            add_batches(sites, next_streams(sites.size(), &next_stream_), base, diffuse);
+        },
         &stats_.placement);
     stats_.records = store_.size();
-    // 3. The interpolation, round by round (SDRC §4.4, Algorithm 1).
-    start = SteadyClock::now();
+}
+
+void SdrcCache::interpolate(SdrcQueries& queries, const shared::IcParams& params,
+                            const RadianceSource& diffuse) {
+    const shared::SdrcParams base = kernel_params(params);
+    const uint32_t width = static_cast<uint32_t>(params.width);
+    const uint32_t spp = static_cast<uint32_t>(params.camera_spp);
+    const auto start = SteadyClock::now();
     for (int stride : {16, 8, 4, 2, 1}) {
         std::vector<uint32_t> round;
         for (uint32_t i : placement_.served()) {
@@ -269,11 +309,22 @@ Buffer<shared::RcGlossySample> SdrcCache::glossy_samples(const shared::IcParams&
             }
         }
         if (!round.empty()) {
-            interpolate_round(round, base, queries, glossy, diffuse);
+            interpolate_round(round, base, queries.queries, queries.glossy, diffuse);
         }
     }
     stats_.interpolation_seconds = seconds_since(start);
-    return glossy;
+}
+
+Buffer<shared::RcGlossySample> SdrcCache::glossy_samples(const shared::IcParams& params,
+                                                         const shared::CameraParams& camera,
+                                                         const RadianceSource& diffuse) {
+    // 1. The camera samples as SDRC sees them; every glossy-buffer entry cleared.
+    SdrcQueries q = queries(params, camera);
+    // 2. Placement, coarse to fine (GlossyPlacement; SDRC §4.2: a new record where S(p) is empty).
+    place(q.queries, params, diffuse);
+    // 3. The interpolation, round by round (SDRC §4.4, Algorithm 1).
+    interpolate(q, params, diffuse);
+    return std::move(q.glossy);
 }
 
 }  // namespace rc

@@ -74,13 +74,72 @@ struct SdrcStats {
     double interpolation_seconds = 0.0;  // range queries, miss rays and insertions
 };
 
+// A batch of SDRC records as the record kernel computed them, still on the device, before their
+// L-trees are built.
+struct SdrcBatch {
+    const shared::SdrcParams& params;
+    const Buffer<shared::RcQuery>& sites;    // count sites
+    const Buffer<unsigned>& streams;         // their random streams
+    const Buffer<shared::float4>& samples;   // count x N: (L.rgb, hit distance)
+    const Buffer<shared::LTreeNode>& nodes;  // count x N: the samples' nodes, in sample order
+    const Buffer<shared::float4>& cells;     // count x M N uniform cells (the observer's M x N)
+    const shared::RcQuery* site_values;      // the same sites and streams on the host
+    const unsigned* stream_values;
+    const RadianceSource& diffuse;  // what the samples' rays read beyond their hits
+    size_t count;
+};
+
+// Shown every batch of records before their L-trees are built (temporal caching reprojects
+// them: host/methods/sdrc/tc_sdrc_reprojection.h).
+class SdrcBatchObserver {
+   public:
+    virtual ~SdrcBatchObserver() = default;
+    // The M x N uniform cells of each record's hemisphere the record kernel also traces for the
+    // observer (SdrcBatch::cells; sdrc_record_samples).
+    virtual int cell_rows() const = 0;
+    virtual int cell_columns() const = 0;
+    virtual void observe(const SdrcBatch& batch) = 0;
+};
+
+// The camera samples as SDRC sees them, and their glossy-buffer entries.
+struct SdrcQueries {
+    Buffer<shared::RcQuery> queries;
+    Buffer<shared::RcGlossySample> glossy;
+};
+
 class SdrcCache final : public GlossyCache, private FrameBound {
    public:
     SdrcCache(const FrameScene& frame, const SdrcOptions& options);
 
+    // queries(), place() and interpolate() in turn: the glossy buffer.
     Buffer<shared::RcGlossySample> glossy_samples(const shared::IcParams& params,
                                                   const shared::CameraParams& camera,
                                                   const RadianceSource& diffuse) override;
+
+    // The camera samples of `camera`'s image (entry pixel * spp + s), every glossy-buffer entry
+    // cleared.
+    SdrcQueries queries(const shared::IcParams& params, const shared::CameraParams& camera);
+    // Records placed, coarse to fine, where the served queries are not covered (GlossyPlacement).
+    void place(const Buffer<shared::RcQuery>& queries, const shared::IcParams& params,
+               const RadianceSource& diffuse);
+    // After place(): the interpolation, round by round, into queries.glossy.
+    void interpolate(SdrcQueries& queries, const shared::IcParams& params,
+                     const RadianceSource& diffuse);
+    // Records at `sites` with the given random streams (one each), inserted in order.
+    void add_records(const std::vector<shared::RcQuery>& sites,
+                     const std::vector<unsigned>& streams, const shared::IcParams& params,
+                     const RadianceSource& diffuse);
+    // Replaces the records: `store`, the sites they were made at and their L-trees (one each);
+    // new records take streams from `next_stream` on.
+    void set_records(RecordStore store, std::vector<shared::RcQuery> sites,
+                     std::vector<LTree> trees, unsigned next_stream);
+    // Per record of `store`: 1 where a served query weighs it positively.
+    std::vector<uint8_t> records_used(const Buffer<shared::RcQuery>& queries,
+                                      const RecordStore& store) {
+        return placement_.records_used(queries, store);
+    }
+    void set_observer(SdrcBatchObserver* observer) { observer_ = observer; }
+    unsigned next_stream() const { return next_stream_; }
     uint64_t rays() const override { return stats_.record_rays + stats_.miss_rays; }
     double record_seconds() const override {
         return stats_.placement.placement_seconds + stats_.placement.record_seconds;
@@ -98,8 +157,9 @@ class SdrcCache final : public GlossyCache, private FrameBound {
    private:
     shared::SdrcParams kernel_params(const shared::IcParams& params) const;
     Kernel& trace_kernel(const RadianceSource& source, const char* name);
-    // Records at `sites`, numbered from the store's size: their L-trees built, inserted.
-    void add_records(const std::vector<shared::RcQuery>& sites, const shared::SdrcParams& params,
+    // Records at `sites` with random streams `streams`: their L-trees built, inserted.
+    void add_batches(const std::vector<shared::RcQuery>& sites,
+                     const std::vector<unsigned>& streams, const shared::SdrcParams& params,
                      const RadianceSource& diffuse);
     // One interpolation round over `samples` (ascending camera-sample indices).
     void interpolate_round(const std::vector<uint32_t>& samples, const shared::SdrcParams& params,
@@ -113,6 +173,8 @@ class SdrcCache final : public GlossyCache, private FrameBound {
     RecordStore store_;
     std::vector<LTree> trees_;            // one per record
     std::vector<shared::RcQuery> sites_;  // where each record was made
+    unsigned next_stream_ = 0;            // the random stream of the next new record
+    SdrcBatchObserver* observer_ = nullptr;
     Kernel queries_kernel_;
     Kernel radius_kernel_;
     Kernel interpolate_kernel_;

@@ -1,7 +1,8 @@
 // `--method sdrc`: spatial directional radiance caching (DESIGN.md §6.5) as a registered method.
 // The glossy lobes' indirect light comes from SDRC's records and their L-trees (SdrcCache); the
 // diffuse lobes keep irradiance caching's records, with its options, whose first level SDRC's
-// rays read at their hits.
+// rays read at their hits. With --temporal, SDRC's records and the irradiance records live
+// across frames (TemporalSdrcCache driven by TemporalIrradianceCache, as `rc --temporal`).
 #include <memory>
 
 #include "methods/glossy_method.h"
@@ -9,6 +10,9 @@
 #include "methods/records/ic_memory.h"
 #include "methods/records/ic_options.h"
 #include "methods/sdrc/sdrc_cache.h"
+#include "methods/sdrc/temporal_sdrc_cache.h"
+#include "methods/temporal/temporal_glossy_method.h"
+#include "methods/temporal/temporal_options.h"
 #include "shared/radiance_cache.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -16,10 +20,11 @@
 namespace rc {
 namespace {
 
-// sdrc's options: its own and the irradiance records' for the diffuse lobes.
+// sdrc's options: its own, the irradiance records' for the diffuse lobes and temporal caching's.
 struct SdrcMethodOptions {
     SdrcOptions sdrc;
     IrradianceCacheOptions records = irradiance_record_defaults();
+    TemporalOptions temporal;
 };
 
 OptionTable<SdrcMethodOptions> sdrc_option_table() {
@@ -41,8 +46,18 @@ OptionTable<SdrcMethodOptions> sdrc_option_table() {
         .unit("MiB");
     OptionTable<SdrcMethodOptions> table;
     table.include(own, &SdrcMethodOptions::sdrc)
-        .include(irradiance_record_option_table(), &SdrcMethodOptions::records);
+        .include(irradiance_record_option_table(), &SdrcMethodOptions::records)
+        .include(temporal_option_table(), &SdrcMethodOptions::temporal);
     return table;
+}
+
+// The rules between sdrc's options: with --temporal, no cache files and lifespans by change.
+void finish_sdrc(SdrcMethodOptions& options, const ParsedArguments& arguments) {
+    finish_irradiance_record_options(options.records);
+    const IrradianceCacheOptions& ic = options.records;
+    check_glossy_temporal_options(options.temporal, arguments,
+                                  !ic.cache_in.empty() || !ic.cache_out.empty(),
+                                  "--cache-in/--cache-out");
 }
 
 // SDRC's options with the irradiance records' they share (a, the spacing) and the shared
@@ -58,9 +73,14 @@ class SpatialDirectionalRadianceCaching final : public Method {
                                       const MethodSettings& settings)
         : ic_(irradiance_record_options(options.records, settings)),
           sdrc_(sdrc_options(options.sdrc, ic_)),
-          time_(settings.time) {}
+          time_(settings.time),
+          temporal_(
+              temporal_glossy_render<TemporalSdrcCache>(sdrc_, ic_, options.temporal, settings)) {}
 
     FrameResult render_frame(const FrameScene& frame, const FrameHooks& hooks) override {
+        if (temporal_) {
+            return temporal_->render_frame(frame, hooks, "SDRC");
+        }
         SdrcCache glossy(frame, sdrc_);
         IrradianceCacheStats stats;
         FrameResult result = render_with_glossy_cache(
@@ -89,6 +109,9 @@ class SpatialDirectionalRadianceCaching final : public Method {
         programs.push_back({"sdrc/sdrc.cl", ""});
         programs.push_back({"sdrc/sdrc_trace.cl", radiance_source_define(RC_RADIANCE_RECORDS)});
         programs.push_back({"records/glossy_placement.cl", ""});
+        if (temporal_) {
+            programs.push_back({"temporal/temporal.cl", ""});
+        }
         return programs;
     }
 
@@ -104,7 +127,8 @@ class SpatialDirectionalRadianceCaching final : public Method {
    private:
     IrradianceCacheOptions ic_;
     SdrcOptions sdrc_;
-    double time_;  // --time (0: --spp)
+    double time_;                                     // --time (0: --spp)
+    std::unique_ptr<TemporalGlossyRender> temporal_;  // with --temporal
 };
 
 }  // namespace
@@ -117,13 +141,11 @@ MethodEntry sdrc_method_entry() {
                     "range-queried; diffuse lobes from irradiance records",
          .aovs = glossy_method_aovs("sdrc-hits"),
          .table = sdrc_option_table(),
-         .finish =
-             [](SdrcMethodOptions& options, const ParsedArguments&) {
-                 finish_irradiance_record_options(options.records);
-             },
+         .finish = finish_sdrc,
          .check =
              [](const SdrcMethodOptions& options, const MethodSettings& settings) {
                  irradiance_record_options(options.records, settings);
+                 refuse_time_with_temporal(options.temporal, settings.time);
              },
          .create =
              [](const SdrcMethodOptions& options, const MethodSettings& settings) {

@@ -1,5 +1,7 @@
 #include "methods/temporal/tc_cells.h"
 
+#include <vector>
+
 #include "methods/scene_arguments.h"
 
 namespace rc {
@@ -28,6 +30,25 @@ Buffer<shared::float4> TcCellCarrier::next_cells(const TcMotion& motion, const T
     context_.launch(assemble_kernel_, batch.count, params, batch.streams, carried, batch.cells,
                     next, marks);
     return next;
+}
+
+Buffer<shared::float4> TcCellCarrier::next_glossy_cells(
+    const TcMotion& motion, int strata_m, int strata_n, unsigned key_lo, unsigned key_hi,
+    const shared::RcQuery* sites, const Buffer<unsigned>& streams,
+    const Buffer<shared::float4>& cells, size_t count) {
+    std::vector<shared::float4> origins(count), normals(count), surfaces(count);
+    for (size_t b = 0; b < count; ++b) {
+        origins[b] = sites[b].origin;
+        normals[b] = sites[b].normal;
+        surfaces[b] = sites[b].geometric_normal;
+        surfaces[b].w = 1.0f;
+    }
+    const Buffer<shared::float4> origin_buffer(context_, origins, "tc_glossy_origins");
+    const Buffer<shared::float4> normal_buffer(context_, normals, "tc_glossy_normals");
+    const Buffer<shared::float4> surface_buffer(context_, surfaces, "tc_glossy_surfaces");
+    return next_cells(motion,
+                      {RC_TC_CELLS_UNIFORM, strata_m, strata_n, key_lo, key_hi, origin_buffer,
+                       normal_buffer, surface_buffer, streams, cells, count});
 }
 
 }  // namespace rc

@@ -12,6 +12,7 @@
 #include "device/kernel.h"
 #include "methods/frame_scene.h"
 #include "methods/temporal/tc_motion.h"
+#include "shared/radiance_cache.h"
 
 namespace rc {
 
@@ -36,6 +37,15 @@ class TcCellCarrier : private FrameBound {
 
     // The batch's cells as the next frame is estimated to show them (`motion`: the changes to it).
     Buffer<shared::float4> next_cells(const TcMotion& motion, const TcCellBatch& batch);
+    // The same for a glossy cache's records at `sites` (`count` host copies) on M x N uniform
+    // cells (RC_TC_CELLS_UNIFORM) jittered by streams of key (key_lo, key_hi): each record's
+    // frame is its site's shading normal, and its cells below the site's own surface traced no
+    // ray.
+    Buffer<shared::float4> next_glossy_cells(const TcMotion& motion, int strata_m, int strata_n,
+                                             unsigned key_lo, unsigned key_hi,
+                                             const shared::RcQuery* sites,
+                                             const Buffer<unsigned>& streams,
+                                             const Buffer<shared::float4>& cells, size_t count);
 
    private:
     Kernel carry_kernel_;

@@ -6,8 +6,11 @@
 // read); pass 2 shades the frame from the records serving it.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <utility>
+#include <vector>
 
 #include "methods/frame_scene.h"
 #include "methods/glossy_cache.h"
@@ -30,6 +33,24 @@ class TemporalGlossyRecords {
     virtual std::unique_ptr<GlossyCache> shading(const FrameScene& frame) const = 0;
     // The statistics of `frame`'s placement.
     virtual nlohmann::json frame_stats(int frame) const = 0;
+};
+
+// The glossy cache of one frame's shading in temporal caching: a `Cache` over the records serving
+// the frame, which it owns; its layers, rays and record seconds are the cache's, its glossy
+// samples the deriving class's.
+template <class Cache>
+class TemporalShadingCache : public GlossyCache {
+   public:
+    std::vector<FilmLayer> layers() const override { return cache_.layers(); }
+    uint64_t rays() const override { return cache_.rays(); }
+    double record_seconds() const override { return cache_.record_seconds(); }
+
+   protected:
+    template <class... Arguments>
+    explicit TemporalShadingCache(Arguments&&... arguments)
+        : cache_(std::forward<Arguments>(arguments)...) {}
+
+    Cache cache_;
 };
 
 }  // namespace rc

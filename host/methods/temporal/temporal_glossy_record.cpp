@@ -1,4 +1,4 @@
-#include "methods/radiance_cache/temporal_radiance_record.h"
+#include "methods/temporal/temporal_glossy_record.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,13 +6,12 @@
 
 namespace rc {
 
-float radiance_temporal_change(const std::vector<float>& now, const std::vector<float>& next,
-                               int order) {
-    const size_t count = static_cast<size_t>(order) * static_cast<size_t>(order);
+float glossy_temporal_change(const std::vector<float>& now, const std::vector<float>& next,
+                             size_t per_channel) {
     double norm[3] = {0.0, 0.0, 0.0};
     double difference[3] = {0.0, 0.0, 0.0};
     for (size_t c = 0; c < 3; ++c) {
-        for (size_t k = c * count; k < (c + 1) * count; ++k) {
+        for (size_t k = c * per_channel; k < (c + 1) * per_channel; ++k) {
             const double d = static_cast<double>(next[k]) - now[k];
             norm[c] += static_cast<double>(now[k]) * now[k];
             difference[c] += d * d;
@@ -34,9 +33,9 @@ float radiance_temporal_change(const std::vector<float>& now, const std::vector<
                                  : std::numeric_limits<float>::infinity();
 }
 
-std::vector<float> radiance_temporal_payload(const TemporalRadianceRecord& r,
-                                             const TemporalRadianceRecord* successor, int frame,
-                                             TemporalGradients gradients) {
+std::vector<float> glossy_temporal_payload(const TemporalGlossyRecord& r,
+                                           const TemporalGlossyRecord* successor, int frame,
+                                           TemporalGradients gradients) {
     const float elapsed = static_cast<float>(frame - r.created);
     if (gradients == TemporalGradients::kNone || elapsed == 0.0f) {
         return r.payload;
