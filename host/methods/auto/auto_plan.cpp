@@ -156,7 +156,8 @@ std::optional<AutoPlan> best_cache_plan(const PlanInputs& in, double available,
 }
 
 void add_temporal(const PlanInputs& in, AutoPlan* plan) {
-    const bool wraps = plan->run.method == "ic" || plan->run.method == "rc";
+    const bool wraps =
+        plan->run.method == "ic" || plan->run.method == "rc" || plan->run.method == "sdrc";
     const bool glossy_list = std::any_of(plan->run.options.begin(), plan->run.options.end(),
                                          [](const auto& o) { return o.first == "--glossy"; });
     if (in.frames > 1 && wraps && !glossy_list && in.motion <= in.model->temporal_max_motion) {
