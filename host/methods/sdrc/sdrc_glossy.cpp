@@ -14,13 +14,7 @@ GlossyCacheEntry sdrc_glossy_entry() {
     entry.name = "sdrc";
     entry.layer = "sdrc-hits";
     entry.stats_key = "sdrc";
-    entry.create = [](const FrameScene& frame, const IrradianceCacheOptions& ic,
-                      const ServedMaterials& served) -> std::unique_ptr<GlossyCache> {
-        SdrcOptions options;
-        share_record_settings(ic, &options);
-        options.materials = served;
-        return std::make_unique<SdrcCache>(frame, options);
-    };
+    entry.create = make_glossy_cache<SdrcCache, SdrcOptions>;
     entry.programs = {{"sdrc/sdrc.cl", ""},
                       {"sdrc/sdrc_trace.cl", radiance_source_define(RC_RADIANCE_RECORDS)},
                       {"records/glossy_placement.cl", ""}};
