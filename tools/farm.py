@@ -63,6 +63,12 @@ def arguments(argv):
                         help="split each frame into C columns and R rows of --crop windows")
     parser.add_argument("--sample-ranges", type=int, default=1, metavar="K",
                         help="split each pixel's --spp samples into K ranges (pt)")
+    parser.add_argument("--pre-roll", type=int, default=0, metavar="K",
+                        help="with --temporal after --: each task first renders the K frames "
+                             "before its own (from the clip's first at most) without writing "
+                             "them (radcache render --write-from), so its records are warm; K at "
+                             "least the clip's length gives every frame as one process renders "
+                             "it (default 0)")
     parser.add_argument("--spp", type=int, default=16, help="samples per pixel (default 16)")
     parser.add_argument("--width", type=int, required=True)
     parser.add_argument("--height", type=int, required=True)
@@ -83,10 +89,12 @@ def arguments(argv):
     options.render = argv[cut + 1:]
     if options.frames_per_task < 1 or options.sample_ranges < 1 or options.spp < 1:
         fail("--frames-per-task, --sample-ranges and --spp must be at least 1", 2)
+    if options.pre_roll < 0:
+        fail(f"--pre-roll {options.pre_roll}: must be at least 0", 2)
     if options.sample_ranges > options.spp:
         fail(f"--sample-ranges {options.sample_ranges}: more ranges than --spp {options.spp}", 2)
     for refused in ("-o", "--output", "--frames", "--crop", "--sample-range", "--spp",
-                    "--width", "--height", "--write-sums"):
+                    "--width", "--height", "--write-sums", "--write-from"):
         if refused in options.render:
             fail(f"{refused} after --: the farm sets it", 2)
     if options.cache_prepass:
@@ -129,9 +137,13 @@ def plan(options):
         for t, crop in enumerate(windows(options.width, options.height, columns, rows)):
             for s0, s1 in ranges:
                 name = f"f{a}-{b}.t{t}.s{s0}-{s1}"
+                start = max(first, a - options.pre_roll)  # the pre-roll: rendered, not written
                 command = [radcache, "render", str(options.scene.resolve()), "--quiet",
-                           "--frames", f"{a}:{b}", "-o", str(out / "parts" / f"{name}.####.exr"),
+                           "--frames", f"{start}:{b}", "-o",
+                           str(out / "parts" / f"{name}.####.exr"),
                            "--width", str(options.width), "--height", str(options.height)]
+                if start < a:
+                    command += ["--write-from", str(a)]
                 # Sums (pt's) only where ranges are added: windows and frames need none.
                 command += (["--sample-range", f"{s0}:{s1}", "--write-sums"] if k > 1
                             else ["--spp", str(spp)])

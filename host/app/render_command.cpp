@@ -128,6 +128,12 @@ void render_frame(const RenderJob& job, int frame,
     progress.finish();
     totals.phase("render") += seconds_since(start);
 
+    if (frame < job.write_from) {  // --write-from: a warm-up frame, not written
+        log_note("frame " + std::to_string(frame) + " rendered, not written (--write-from " +
+                 std::to_string(job.write_from) + ")");
+        totals.add_frame(frame, {}, result, context);
+        return;
+    }
     start = SteadyClock::now();
     if (job.samples.end == 0) {
         identity.samples = {0, result.spp};

@@ -54,6 +54,9 @@ std::vector<OptionSpec> render_option_specs() {
                    "sobol)"}
             .one_of({"sobol", "independent"}),
         {"--frames", "", "A:B", "render frames A to B of an animated scene, one image each"},
+        {"--write-from", "", "F",
+         "with --frames A:B: frames A to F-1 are rendered (a temporal cache's warm-up, a farm "
+         "task's pre-roll) but not written; F in A..B"},
         {"-D", "", "KEY=VALUE",
          "override a render default: method, spp, time, max_depth, rr_depth, seed, exposure", true},
         OptionSpec{"--exposure", "", "STOPS", "exposure applied before 8-bit encoding (default 0)"}
@@ -181,6 +184,30 @@ void read_part_options(const ParsedArguments& arguments, RenderJob* job) {
     }
 }
 
+// --write-from F: the first frame written (without the option, --frames' first). Error (exit
+// status 2) naming the option unless F is a whole number within --frames.
+int read_write_from(const ParsedArguments& arguments, const FrameRange& frames) {
+    if (!arguments.has("--write-from")) {
+        return frames.first;
+    }
+    const std::string text = arguments.value("--write-from");
+    if (!frames.given) {
+        throw Error("--write-from " + text + " needs --frames", kExitUsage);
+    }
+    static const std::regex whole(R"(^-?\d{1,9}$)");
+    if (!std::regex_match(text, whole)) {
+        throw Error("--write-from: expected a frame number, got '" + excerpt(text) + "'",
+                    kExitUsage);
+    }
+    const int first = std::stoi(text);
+    if (first < frames.first || first > frames.last) {
+        throw Error("--write-from " + text + ": not within --frames " +
+                        std::to_string(frames.first) + ":" + std::to_string(frames.last),
+                    kExitUsage);
+    }
+    return first;
+}
+
 }  // namespace
 
 void check_part_options(const RenderJob& job, const MethodEntry& entry, int width, int height) {
@@ -217,6 +244,7 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
             "--output " + job.output_pattern + ": several frames need a #### pattern in the name",
             kExitUsage);
     }
+    job.write_from = read_write_from(arguments, job.frames);
     check_output_path(frame_path(job.output_pattern, job.frames.first));
     read_part_options(arguments, &job);
     if (job.frames.given) {

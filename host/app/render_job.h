@@ -34,6 +34,7 @@ struct RenderJob {
     std::filesystem::path scene;
     std::string output_pattern;  // #### becomes the frame number
     FrameRange frames;
+    int write_from = 0;           // frames before it are rendered, not written (--write-from)
     std::filesystem::path stats;  // empty: no stats file
     std::vector<std::string> layers;
     ImageWriteOptions write_options;

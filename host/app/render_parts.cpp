@@ -26,7 +26,7 @@ const std::set<std::string>& part_options() {
         "--output",     "--crop",      "--sample-range",  "--spp",          "--write-sums",
         "--stats",      "--quiet",     "--frames",        "--half",         "--aovs",
         "--strict",     "--device",    "--kernel-dir",    "--dump-kernels", "--no-kernel-cache",
-        "--local-size", "--max-chunk", "--device-memory", "--bvh"};
+        "--local-size", "--max-chunk", "--device-memory", "--bvh",          "--write-from"};
     return names;
 }
 

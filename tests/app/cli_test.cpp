@@ -249,6 +249,17 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
         {{"frobnicate"}, 2, "unknown command"},
         {{"bench", "nothing"}, 2, "unknown benchmark"},
         {{"devices", "extra"}, 2, "no arguments"},
+        {{"render", cornell_box(), "-o", out, "--write-from", "2"},
+         2,
+         "--write-from 2 needs --frames"},
+        {{"render", cornell_box(), "-o", (dir / "f####.exr").string(), "--frames", "0:3",
+          "--write-from", "4"},
+         2,
+         "--write-from 4: not within --frames 0:3"},
+        {{"render", cornell_box(), "-o", (dir / "f####.exr").string(), "--frames", "0:3",
+          "--write-from", "two"},
+         2,
+         "--write-from: expected a frame number, got 'two'"},
     };
     for (const BadCommand& bad : cases) {
         const test::CommandResult result = test::run_radcache(bad.args);
