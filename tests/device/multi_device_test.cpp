@@ -7,9 +7,12 @@
 // temporal caching (which renders on one device), a device named twice, an empty entry, --time
 // and intermediate images are refused with exit status 2 and no output; a device that fails
 // mid-render (pt, ic) stops the render with one line naming that device and the call, and no
-// output file. Skipped where PoCL does not give two devices.
+// output file. Skipped where PoCL does not give two devices. Over two platforms (PoCL and Mesa's
+// rusticl, where installed): the path tracer's image within noise of PoCL's alone, both devices
+// given pixels, and a failing device named.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -20,6 +23,7 @@
 #include "app/commands.h"
 #include "app/render_devices.h"
 #include "device/fault_injection.h"
+#include "image/image.h"
 #include "image/image_io.h"
 #include "test_support.h"
 #include "util/error.h"
@@ -343,12 +347,12 @@ TEST(MultiDevice, OtherCommandsRefuseSeveralDevices) {
 // (CL_OUT_OF_RESOURCES), on whichever device made it: exit status 1, one line naming that device
 // and the call, nothing left in the output's directory.
 void expect_failing_device_named(const std::string& name, const std::vector<std::string>& options,
-                                 uint64_t nth) {
+                                 uint64_t nth, const std::string& devices = "0:0,0:1") {
     const auto dir = test::scratch_dir(name);
     const auto out = dir / "x.exr";
     std::vector<std::string> args = {cornell(), "--width", "40",         "--height",
                                      "36",      "--spp",   "8",          "--device",
-                                     "0:0,0:1", "-o",      out.string(), "--quiet"};
+                                     devices,   "-o",      out.string(), "--quiet"};
     args.insert(args.end(), options.begin(), options.end());
     arm_device_fault("clEnqueueNDRangeKernel", nth, -5);
     int exit_code = 0;
@@ -363,8 +367,14 @@ void expect_failing_device_named(const std::string& name, const std::vector<std:
     disarm_device_fault();
     ASSERT_TRUE(fired) << name;
     EXPECT_EQ(exit_code, 1) << name;
-    EXPECT_TRUE(message.rfind("device 0:0 (", 0) == 0 || message.rfind("device 0:1 (", 0) == 0)
-        << message;
+    bool named = false;
+    for (size_t start = 0; start <= devices.size();) {
+        const size_t comma = std::min(devices.find(',', start), devices.size());
+        named =
+            named || message.rfind("device " + devices.substr(start, comma - start) + " (", 0) == 0;
+        start = comma + 1;
+    }
+    EXPECT_TRUE(named) << message;
     EXPECT_NE(message.find("clEnqueueNDRangeKernel"), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     EXPECT_FALSE(std::filesystem::exists(out)) << name;
@@ -424,6 +434,66 @@ TEST(MultiDevice, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {
     ASSERT_GT(decomposition_launches, 2u);
     expect_failing_device_named("multi_device_fault_decomposition", decomposition,
                                 decomposition_launches);
+}
+
+// Mesa's rusticl beside PoCL (RUSTICL_ENABLE=llvmpipe): two platforms, as a CPU and a GPU would
+// be. Whether its device is listed as 1:0.
+bool rusticl_beside_pocl() {
+    const test::CommandResult result = test::run_radcache({"devices"}, {"RUSTICL_ENABLE=llvmpipe"});
+    return result.exit_code == 0 && result.output.find("\n1:0    rusticl") != std::string::npos;
+}
+
+// The path tracer over PoCL and rusticl (--device all): both devices get pixels, and the image's
+// mean per channel is within 5 standard errors (from its stddev layer) of PoCL's alone: the two
+// compilers may round differently, so bitwise equality is asked of each implementation alone.
+TEST(TwoPlatforms, PathTracerOverPoclAndRusticlAgreesWithOneDevice) {
+    if (!rusticl_beside_pocl()) {
+        GTEST_SKIP() << "rusticl is not installed (mesa-opencl-icd)";
+    }
+    const auto dir = test::scratch_dir("two_platforms_pt");
+    std::vector<nlohmann::json> stats;
+    for (const std::string devices : {"0:0", "all"}) {
+        const test::CommandResult result = test::run_radcache(
+            {"render", cornell(), "--width", "40", "--height", "36", "--spp", "16", "--device",
+             devices, "-o", (dir / (devices + ".exr")).string(), "--stats",
+             (dir / (devices + ".json")).string(), "--quiet"},
+            {"RUSTICL_ENABLE=llvmpipe"});
+        ASSERT_EQ(result.exit_code, 0) << result.output;
+        stats.push_back(nlohmann::json::parse(read_file(dir / (devices + ".json"))));
+    }
+    const nlohmann::json& devices = stats[1].at("frames").at(0).at("devices");
+    ASSERT_EQ(devices.size(), 2u);
+    for (const nlohmann::json& d : devices) {
+        EXPECT_GT(d.at("pixels").get<size_t>(), 0u) << d.dump();
+    }
+    const Image one = read_image(dir / "0:0.exr");
+    const Image both = read_image(dir / "all.exr");
+    const Image beauty_one = select_layers(one, {"beauty"});
+    const Image beauty_both = select_layers(both, {"beauty"});
+    const Image stddev = select_layers(one, {"stddev"});
+    const double pixels = static_cast<double>(one.width) * one.height;
+    for (int c = 0; c < 3; ++c) {
+        double mean_one = 0.0, mean_both = 0.0, variance = 0.0;
+        for (int y = 0; y < one.height; ++y) {
+            for (int x = 0; x < one.width; ++x) {
+                mean_one += beauty_one.at(x, y, c) / pixels;
+                mean_both += beauty_both.at(x, y, c) / pixels;
+                variance += std::pow(stddev.at(x, y, c), 2) / 16.0 / (pixels * pixels);
+            }
+        }
+        EXPECT_LE(std::abs(mean_both - mean_one), 5.0 * std::sqrt(2.0 * variance))
+            << "channel " << c << ": " << mean_both << " against " << mean_one;
+    }
+}
+
+// A fault on either platform's device mid-render stops the render naming that device, with no
+// output (in this process: the 20th kernel launch, on whichever device made it).
+TEST(TwoPlatforms, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {
+    setenv("RUSTICL_ENABLE", "llvmpipe", 1);  // before this process's first OpenCL call
+    if (!rusticl_beside_pocl()) {
+        GTEST_SKIP() << "rusticl is not installed (mesa-opencl-icd)";
+    }
+    expect_failing_device_named("two_platforms_fault", {}, 20, "0:0,1:0");
 }
 
 // A method that does not declare that its work splits (every registered one does today) is
