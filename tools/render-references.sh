@@ -5,7 +5,7 @@
 # relief, the detail scene of irradiance decomposition, 256 x 256 at 4096 samples, on a CPU;
 # moving-light, the moving light of the temporal radiance caching report, every frame 0-15 at
 # 128 x 96 and 4096 samples, rendered on a CPU; walkthrough, the camera walking through the two
-# rooms, every 4th frame 0, 4, ..., 44 at 256 x 256 and 512 samples, rendered on a CPU;
+# rooms, every 4th frame 0, 4, ..., 44 at 256 x 256 and 256 samples, rendered on a CPU;
 # half floats: beauty, direct, indirect and the per-sample standard deviation of the beauty) and
 # writes beside each EXR the record of how it was made (tools/references.py). Layout:
 # scenes/NAME/reference.exr + reference.json for a still scene, scenes/NAME/reference/frameFFFF.exr
@@ -33,7 +33,7 @@ fail() { echo "render-references: $*" >&2; exit 2; }
 # animated scene (every one).
 seed=20261123
 declare -A spp=([cornell-box]=65536 [glossy-box]=65536 [two-rooms]=65536 [moving-sphere]=16384
-                [kettle]=4096 [relief]=4096 [moving-light]=4096 [walkthrough]=512)
+                [kettle]=4096 [relief]=4096 [moving-light]=4096 [walkthrough]=256)
 declare -A size=([cornell-box]=512x512 [glossy-box]=512x512 [two-rooms]=512x384
                  [moving-sphere]=256x256 [kettle]=256x256 [relief]=256x256
                  [moving-light]=128x96 [walkthrough]=256x256)
