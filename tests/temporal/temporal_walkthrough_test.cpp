@@ -225,5 +225,67 @@ TEST(TemporalWalkthrough, SlowerMotionGivesSmallerEstimatedChanges) {
     }
 }
 
+// A clip still for frames 0-4, a cube moving from frame 4 to 6, still again after: every record
+// made while still (frames 0-3) expires at frame 5, the first after the motion begins, and is
+// replaced or dropped there; those made at frames 6 and 7 (still to the next frame) serve to the
+// clip's end (8).
+TEST(TemporalWalkthrough, StillRecordsExpireWhenSomethingStartsMoving) {
+    const auto path =
+        test::temporal_box_scene("temporal_starts_moving", 16, false,
+                                 R"(,
+            {"type": "cube", "name": "cube", "material": "red", "transform": [{"scale": 0.25}]})",
+                                 R"({"type": "point", "position": [0, 0.6, 0], "intensity": 2})",
+                                 R"({"frame_start": 0, "frame_end": 7, "tracks": [
+            {"target": "shape:cube", "keyframes": [
+                {"frame": 4, "translate": [-0.2, -0.75, 0]},
+                {"frame": 6, "translate": [0.2, -0.75, 0]}]}]})");
+    const Scene scene = load_scene(path);
+    std::map<int, std::unique_ptr<test::DeviceFrame>> posed;
+    auto at = [&](int frame) {
+        auto& slot = posed[frame];
+        if (!slot) {
+            Scene s = scene;
+            s.set_frame(frame);
+            slot = std::make_unique<test::DeviceFrame>(std::move(s));
+        }
+        FrameScene f = slot->frame();
+        f.frame = frame;
+        return f;
+    };
+    auto ic = test::image_options<IrradianceCacheOptions>(16, 16, 1);
+    ic.rays = 128;
+    ic.records_overlay = false;
+    TemporalOptions temporal;
+    temporal.enabled = true;
+    TemporalIrradianceCache cache(ic, temporal, 0, 8);
+    FrameHooks hooks;
+    hooks.visit_frame = [&](int other, const std::function<void(const FrameScene&)>& use) {
+        use(at(other));
+    };
+    std::vector<nlohmann::json> stats;
+    for (int f = 0; f <= 7; ++f) {
+        stats.push_back(cache.render_frame(at(f), hooks).stats["temporal"]);
+    }
+    size_t still = 0;
+    for (int level = 0; level < 2; ++level) {
+        for (const TemporalRecord& r : cache.records(level)) {
+            if (r.created < 4) {
+                ++still;
+                EXPECT_EQ(r.created + r.lifespan, 5)
+                    << "level " << level << ", frame " << r.created;
+            } else if (r.created >= 6) {
+                EXPECT_EQ(r.created + r.lifespan, 8)
+                    << "level " << level << ", frame " << r.created;
+            }
+        }
+    }
+    EXPECT_GT(still, 0u);
+    EXPECT_GT(stats[5]["recomputed"].get<size_t>() + stats[5]["dropped"].get<size_t>(), 0u);
+    for (int f = 1; f <= 4; ++f) {
+        EXPECT_EQ(stats[static_cast<size_t>(f)]["recomputed"].get<size_t>(), 0u) << f;
+        EXPECT_EQ(stats[static_cast<size_t>(f)]["dropped"].get<size_t>(), 0u) << f;
+    }
+}
+
 }  // namespace
 }  // namespace rc
