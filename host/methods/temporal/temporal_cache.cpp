@@ -134,7 +134,7 @@ void TemporalIrradianceCache::end_still_records(int frame) {
         for (TemporalRecord& r : level.records) {
             const long long end = static_cast<long long>(r.created) + r.lifespan;
             if (r.until_motion && r.created <= frame && end > frame + 1LL) {
-                r.lifespan = frame + 1 - r.created;
+                r.lifespan = static_cast<int>(static_cast<long long>(frame) + 1 - r.created);
             }
         }
     }
