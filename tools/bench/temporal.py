@@ -38,8 +38,8 @@ A + K, ... (K found from the reference folder) are compared with them (OUT/kth/)
 error is then between frames K apart, not flicker: reported as such.
 
 Per clip it also reports the temporal run's first-level records computed per frame (created and
-recomputed, frame 0 apart from the others) and where its time goes (--stats: placement, of
-which reprojection and the test of expired records' use, and shading).
+recomputed, frame 0 apart from the others) and every run's seconds by phase (--stats: G-buffer,
+records, shading, ...; the temporal run's reprojection and test of expired records' use too).
 
 --suite runs the clips of docs/lab/temporal-caching.md one after the other (the options above
 but --scene, --frames, --slow, --width and --height ignored): the walkthrough (frames 0–47 at
@@ -159,14 +159,15 @@ def link_frames(pattern, numbers, folder):
 
 
 def time_split(stats):
-    """Where a temporal run's time went, summed over its frames (--stats seconds)."""
-    split = {"frames": 0.0, "placement": 0.0, "reprojection": 0.0, "usage": 0.0}
+    """Where a run's time went, summed over its frames (--stats: each frame's seconds by phase,
+    and with --temporal the reprojection and the test of expired records' use)."""
+    split = {}
     for frame in stats.get("frames", []):
-        split["frames"] += frame.get("seconds", 0.0)
+        for key, value in frame.get("seconds", {}).items():
+            split[key] = split.get(key, 0.0) + value
         seconds = frame.get("temporal", {}).get("seconds", {})
-        for key in ("placement", "reprojection", "usage"):
-            split[key] += seconds.get(key, 0.0)
-    split["shading_and_rest"] = split["frames"] - split["placement"]
+        for key in ("reprojection", "usage"):
+            split[key] = split.get(key, 0.0) + seconds.get(key, 0.0)
     return split
 
 
@@ -204,19 +205,18 @@ def measure(label, scene, pattern, options, args, slow=1):
         row["records_per_frame"] = [t["created"] + t["recomputed"] for t in temporal]
         row["records_serving"] = [t["records"] for t in temporal]
         row["mean_new_lifespan"] = [t["mean_new_lifespan"] for t in temporal]
-        row["time_split"] = time_split(stats)
         later = row["records_per_frame"][1:]
         print("  %-28s first-level records computed: frame 0 %d, later frames %.1f a frame "
-              "(serving %d at the end); seconds: placement %.1f (reprojection %.1f, usage %.1f), "
-              "shading and the rest %.1f"
+              "(serving %d at the end)"
               % ("", row["records_per_frame"][0], sum(later) / max(1, len(later)),
-                 row["records_serving"][-1], row["time_split"]["placement"],
-                 row["time_split"]["reprojection"], row["time_split"]["usage"],
-                 row["time_split"]["shading_and_rest"]), flush=True)
+                 row["records_serving"][-1]), flush=True)
         radiance = [t["radiance"] for t in temporal if "radiance" in t]
         if radiance:
             row["radiance_records_computed"] = sum(r["created"] + r["recomputed"]
                                                    for r in radiance)
+    row["time_split"] = time_split(stats)
+    print("  %-28s seconds by phase: %s" % ("", ", ".join(
+        "%s %.1f" % (key, value) for key, value in sorted(row["time_split"].items()))), flush=True)
     print("  %-28s %8.1f s  indirect relMSE %.3g  temporal %.3g  beauty relMSE %.3g"
           % (label, seconds, row["indirect_relmse"], row["indirect_temporal"],
              row["beauty_relmse"]), flush=True)
