@@ -17,6 +17,7 @@
 #include "box_walls.h"
 #include "image_options.h"
 #include "methods/temporal/temporal_cache.h"
+#include "posed_frames.h"
 #include "scene/scene_loader.h"
 #include "temporal_records.h"
 #include "test_support.h"
@@ -25,26 +26,10 @@ namespace rc {
 namespace {
 
 // The shipped walkthrough (scenes/walkthrough) posed at each frame, on the device.
-class WalkthroughFrames {
+class WalkthroughFrames : public test::PosedFrames {
    public:
     WalkthroughFrames()
-        : scene_(load_scene(test::source_dir() / "scenes" / "walkthrough" / "scene.json")) {}
-    FrameScene at(int frame) {
-        auto& slot = posed_[frame];
-        if (!slot) {
-            Scene s = scene_;
-            s.set_frame(frame);
-            slot = std::make_unique<test::DeviceFrame>(std::move(s));
-        }
-        FrameScene f = slot->frame();
-        f.frame = frame;
-        return f;
-    }
-    const Scene& scene() const { return scene_; }
-
-   private:
-    Scene scene_;
-    std::map<int, std::unique_ptr<test::DeviceFrame>> posed_;
+        : PosedFrames(load_scene(test::source_dir() / "scenes" / "walkthrough" / "scene.json")) {}
 };
 
 glm::vec3 xyz(const shared::float4& v) { return {v.x, v.y, v.z}; }
@@ -239,19 +224,8 @@ TEST(TemporalWalkthrough, StillRecordsExpireWhenSomethingStartsMoving) {
             {"target": "shape:cube", "keyframes": [
                 {"frame": 4, "translate": [-0.2, -0.75, 0]},
                 {"frame": 6, "translate": [0.2, -0.75, 0]}]}]})");
-    const Scene scene = load_scene(path);
-    std::map<int, std::unique_ptr<test::DeviceFrame>> posed;
-    auto at = [&](int frame) {
-        auto& slot = posed[frame];
-        if (!slot) {
-            Scene s = scene;
-            s.set_frame(frame);
-            slot = std::make_unique<test::DeviceFrame>(std::move(s));
-        }
-        FrameScene f = slot->frame();
-        f.frame = frame;
-        return f;
-    };
+    test::PosedFrames frames(load_scene(path));
+    auto at = [&](int frame) { return frames.at(frame); };
     auto ic = test::image_options<IrradianceCacheOptions>(16, 16, 1);
     ic.rays = 128;
     ic.records_overlay = false;
