@@ -24,6 +24,7 @@
 #include "methods/temporal/tc_reprojection.h"
 #include "methods/temporal/temporal_cache.h"
 #include "methods/temporal/temporal_record.h"
+#include "posed_frames.h"
 #include "scene/scene_loader.h"
 #include "temporal_records.h"
 #include "test_support.h"
@@ -56,18 +57,9 @@ class MovingSphereFrames {
    public:
     MovingSphereFrames()
         : path_(test::source_dir() / "scenes" / "moving-sphere" / "scene.json"),
-          scene_(load_scene(path_)) {}
-    FrameScene at(int frame) {
-        auto& slot = posed_[frame];
-        if (!slot) {
-            Scene s = scene_;
-            s.set_frame(frame);
-            slot = std::make_unique<test::DeviceFrame>(std::move(s));
-        }
-        FrameScene f = slot->frame();
-        f.frame = frame;
-        return f;
-    }
+          scene_(load_scene(path_)),
+          posed_(scene_) {}
+    FrameScene at(int frame) { return posed_.at(frame); }
     Scene posed(int frame) const {
         Scene s = scene_;
         s.set_frame(frame);
@@ -98,7 +90,7 @@ class MovingSphereFrames {
    private:
     std::filesystem::path path_;
     Scene scene_;
-    std::map<int, std::unique_ptr<test::DeviceFrame>> posed_;
+    test::PosedFrames posed_;
 };
 
 constexpr float kBallRadius = 70.0f;

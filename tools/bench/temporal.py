@@ -33,6 +33,18 @@ frames. The temporal error (flicker) is then between frames K apart: neither rep
 charted. Slow motion sampled densely is how the report's clips move (7.6× on a 400-frame "Cube
 in a Box", Gautron et al. 2006 §6).
 
+References every K-th frame only (scenes/walkthrough: 0, 4, ..., 44): the renders' frames A,
+A + K, ... (K found from the reference folder) are compared with them (OUT/kth/), and the temporal
+error is then between frames K apart, not flicker: reported as such.
+
+Per clip it also reports the temporal run's first-level records computed per frame (created and
+recomputed, frame 0 apart from the others) and every run's seconds by phase (--stats: G-buffer,
+records, shading, ...; the temporal run's reprojection and test of expired records' use too).
+
+--suite runs the clips of docs/lab/temporal-caching.md one after the other (the options above
+but --scene, --frames, --slow, --width and --height ignored): the walkthrough (frames 0–47 at
+--suite-size), moving-sphere (0–23), moving-sphere 8× slower, moving-light (0–15 at 128 × 96).
+
 The clock (--clock): `cpu` (default), the CPU seconds (user + system) of the radcache processes,
 which other processes on a shared machine barely change; or `wall`, the render phase of --stats.
 Per-frame caching in one `--frames` run draws the same random streams every frame (records land
@@ -43,7 +55,7 @@ Usage: tools/bench/temporal.py [--scene scenes/moving-sphere] [--method ic|rc]
            [--reference DIR/frame####.exr] [--frames 0:11] [--width 128]
            [--height 128] [--spp 16] [--ladder "1024 512 256"] [--options "--ic-bounces 1"]
            [--temporal-options "--temporal-accuracy 0.05"] [--slow K] [--clock cpu]
-           [--chart FILE.png]
+           [--chart FILE.png] [--suite] [--suite-size 128]
            [--out build/bench/temporal] [-- extra radcache render options, e.g. --device 0:0]
 Writes OUT/temporal.json and prints a table. Python 3 standard library (matplotlib for --chart).
 """
@@ -125,6 +137,40 @@ def every_kth_frame(pattern, frames, factor):
     return linked
 
 
+def reference_step(reference, frames):
+    """K where the references are every K-th frame from the clip's first (1: every frame)."""
+    first, last = (int(x) for x in frames.split(":"))
+    for k in range(1, last - first + 1):
+        if os.path.exists(reference.replace("####", "%04d" % (first + k))):
+            return k
+    return 1
+
+
+def link_frames(pattern, numbers, folder):
+    """Links folder/f####.exr, #### = 0, 1, ..., to frames `numbers` of `pattern`; its pattern."""
+    linked = os.path.join(folder, "f####.exr")
+    os.makedirs(folder, exist_ok=True)
+    for j, number in enumerate(numbers):
+        link = linked.replace("####", "%04d" % j)
+        if os.path.lexists(link):
+            os.remove(link)
+        os.symlink(os.path.abspath(pattern.replace("####", "%04d" % number)), link)
+    return linked
+
+
+def time_split(stats):
+    """Where a run's time went, summed over its frames (--stats: each frame's seconds by phase,
+    and with --temporal the reprojection and the test of expired records' use)."""
+    split = {}
+    for frame in stats.get("frames", []):
+        for key, value in frame.get("seconds", {}).items():
+            split[key] = split.get(key, 0.0) + value
+        seconds = frame.get("temporal", {}).get("seconds", {})
+        for key in ("reprojection", "usage"):
+            split[key] = split.get(key, 0.0) + seconds.get(key, 0.0)
+    return split
+
+
 def sequence_errors(pattern, reference, frames, layer):
     """Means over the clip of `compare --frames` on `layer`, and its per-frame rows."""
     json_path = pattern.replace("####", "") + "." + layer + ".json"
@@ -138,8 +184,16 @@ def measure(label, scene, pattern, options, args, slow=1):
     """Renders and compares one run; with slow > 1, the slowed clip (--slow) every slow-th frame."""
     seconds, stats = render(scene, pattern, options, args.clock)
     compared = every_kth_frame(pattern, args.frames, slow) if slow > 1 else pattern
-    indirect, indirect_json = sequence_errors(compared, args.reference, args.frames, "indirect")
-    beauty, _ = sequence_errors(compared, args.reference, args.frames, "beauty")
+    reference, frames = args.reference, args.frames
+    if args.step > 1:
+        first, last = (int(x) for x in args.frames.split(":"))
+        numbers = list(range(first, last + 1, args.step))
+        base = os.path.join(os.path.dirname(pattern), "kth", os.path.basename(pattern)[:-8])
+        compared = link_frames(compared, numbers, base)
+        reference = link_frames(args.reference, numbers, os.path.join(args.out, "kth", "ref"))
+        frames = "0:%d" % (len(numbers) - 1)
+    indirect, indirect_json = sequence_errors(compared, reference, frames, "indirect")
+    beauty, _ = sequence_errors(compared, reference, frames, "beauty")
     row = {"label": label, "options": options, "seconds": seconds,
            "indirect_relmse": indirect["relmse"], "indirect_temporal": indirect["temporal_error"],
            "beauty_relmse": beauty["relmse"], "beauty_relmse_net": beauty["relmse_net"],
@@ -148,10 +202,21 @@ def measure(label, scene, pattern, options, args, slow=1):
     temporal = [f.get("temporal") for f in stats.get("frames", []) if f.get("temporal")]
     if temporal:
         row["records_computed"] = sum(t["created"] + t["recomputed"] for t in temporal)
+        row["records_per_frame"] = [t["created"] + t["recomputed"] for t in temporal]
+        row["records_serving"] = [t["records"] for t in temporal]
+        row["mean_new_lifespan"] = [t["mean_new_lifespan"] for t in temporal]
+        later = row["records_per_frame"][1:]
+        print("  %-28s first-level records computed: frame 0 %d, later frames %.1f a frame "
+              "(serving %d at the end)"
+              % ("", row["records_per_frame"][0], sum(later) / max(1, len(later)),
+                 row["records_serving"][-1]), flush=True)
         radiance = [t["radiance"] for t in temporal if "radiance" in t]
         if radiance:
             row["radiance_records_computed"] = sum(r["created"] + r["recomputed"]
                                                    for r in radiance)
+    row["time_split"] = time_split(stats)
+    print("  %-28s seconds by phase: %s" % ("", ", ".join(
+        "%s %.1f" % (key, value) for key, value in sorted(row["time_split"].items()))), flush=True)
     print("  %-28s %8.1f s  indirect relMSE %.3g  temporal %.3g  beauty relMSE %.3g"
           % (label, seconds, row["indirect_relmse"], row["indirect_temporal"],
              row["beauty_relmse"]), flush=True)
@@ -223,12 +288,21 @@ def main(argv):
     parser.add_argument("--clock", choices=["cpu", "wall"], default="cpu")
     parser.add_argument("--chart", default="", help="write the flicker chart here (.png)")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "temporal"))
+    parser.add_argument("--suite", action="store_true",
+                        help="the walkthrough, moving-sphere, its 8x slow clip and moving-light")
+    parser.add_argument("--suite-size", type=int, default=128,
+                        help="--suite: the walkthrough's and moving-sphere's width and height")
     args, extra = parse_with_extra(parser, argv)
+    if args.suite:
+        return suite(args, argv)
     args.scene_dir = args.scene if os.path.isdir(args.scene) else os.path.dirname(args.scene)
     scene = os.path.join(args.scene_dir, "scene.json")
     args.reference = args.reference or os.path.join(args.scene_dir, "reference", "frame####.exr")
     if args.slow < 1:
         sys.exit("--slow: %d is not a positive integer" % args.slow)
+    args.step = reference_step(args.reference, args.frames)
+    if args.step > 1 and args.slow > 1:
+        sys.exit("--slow: the references of %s are every %d-th frame" % (scene, args.step))
     ladder_rays = [int(n) for n in args.ladder.split()]
     rays_option = "--ic-rays" if args.method == "ic" else "--rc-rays"
     common = ["--method", args.method, "--frames", args.frames, "--width", str(args.width), "--height",
@@ -278,6 +352,7 @@ def main(argv):
               "temporal": temporal, "ladder": ladder,
               "speedup_at_equal_indirect_relmse": {"value": speedup, "bound": bound,
                                                    "per_frame_seconds": per_frame_time},
+              "reference_step": args.step,
               "flicker_at_equal_time": {"per_frame": flicker, "bracketed": bracketed,
                                         "ratio": flicker_ratio} if args.slow == 1 else None,
               "same_settings": {"speedup": same["seconds"] / temporal["seconds"],
@@ -296,12 +371,46 @@ def main(argv):
     print("speed-up at equal indirect relMSE: %s %.2f× (per-frame %.1f s against %.1f s)"
           % ("" if bound == "=" else bound, speedup, per_frame_time, temporal["seconds"]))
     if args.slow == 1:
-        print("temporal error at equal time: per-frame %.3g against %.3g: %.2f× lower%s"
-              % (flicker, temporal["indirect_temporal"], flicker_ratio,
+        print("temporal error%s at equal time: per-frame %.3g against %.3g: %.2f× lower%s"
+              % ("" if args.step == 1 else " between frames %d apart (not flicker)" % args.step,
+                 flicker, temporal["indirect_temporal"], flicker_ratio,
                  "" if bracketed else " (nearest per-frame run, not interpolated)"))
-    if args.chart and args.slow == 1:
+    if args.chart and args.slow == 1 and args.step == 1:
         chart(args.chart, [temporal] + ladder, args)
     return 0
+
+
+def suite(args, argv):
+    """--suite: main() once per clip, each into OUT/NAME."""
+    size = str(args.suite_size)
+    clips = [("walkthrough", ["--scene", os.path.join(ROOT, "scenes", "walkthrough"),
+                              "--frames", "0:47", "--width", size, "--height", size]),
+             ("moving-sphere", ["--scene", os.path.join(ROOT, "scenes", "moving-sphere"),
+                                "--frames", "0:23", "--width", size, "--height", size]),
+             ("moving-sphere-slow8", ["--scene", os.path.join(ROOT, "scenes", "moving-sphere"),
+                                      "--frames", "0:23", "--width", size, "--height", size,
+                                      "--slow", "8"]),
+             ("moving-light", ["--scene", os.path.join(ROOT, "scenes", "moving-light"),
+                               "--frames", "0:15", "--width", "128", "--height", "96"])]
+    # The options given, less --suite's own and those each clip sets.
+    own = {"--suite": 0, "--suite-size": 1, "--scene": 1, "--frames": 1, "--slow": 1,
+           "--width": 1, "--height": 1, "--out": 1, "--reference": 1}
+    kept = []
+    i = 0
+    while i < len(argv):
+        name = argv[i].split("=")[0]
+        if name == "--":
+            kept += argv[i:]
+            break
+        if name in own:
+            i += 1 + (own[name] if "=" not in argv[i] else 0)
+            continue
+        kept.append(argv[i])
+        i += 1
+    status = 0
+    for name, options in clips:
+        status |= main(options + ["--out", os.path.join(args.out, name)] + kept)
+    return status
 
 
 if __name__ == "__main__":

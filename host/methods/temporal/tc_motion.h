@@ -26,6 +26,8 @@ class TcMotion {
     // Per primitive: 1 where it moves between the two frames.
     const std::vector<uint8_t>& moves() const { return moves_; }
     size_t moving_primitives() const { return moving_; }
+    // Whether any emitter differs between the two frames.
+    bool emitters_change() const { return params_.emitters_change != 0; }
     bool primitive_moves(int primitive) const {
         return primitive >= 0 && static_cast<size_t>(primitive) < moves_.size() &&
                moves_[static_cast<size_t>(primitive)] != 0;

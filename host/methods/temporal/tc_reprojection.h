@@ -45,6 +45,8 @@ class TemporalReprojection final : public RecordBatchObserver, private FrameBoun
     size_t moving_primitives() const { return motion_.moving_primitives(); }
     // Per primitive: 1 where it moves between the two frames.
     const std::vector<uint8_t>& moves() const { return motion_.moves(); }
+    // Nothing moves and no emitter changes between the two frames (the camera may move).
+    bool still() const { return moving_primitives() == 0 && !motion_.emitters_change(); }
 
    private:
     TcMotion motion_;

@@ -111,22 +111,40 @@ std::vector<size_t> TemporalIrradianceCache::still_used(IrradianceCache& cache,
     return kept;
 }
 
-int TemporalIrradianceCache::new_lifespan(const TemporalRecord& r, const CarriedRecord* ahead,
-                                          int frame) const {
-    const float change = temporal_change(r.computed.payload, r.next);
+int TemporalIrradianceCache::new_lifespan(TemporalRecord* r, const CarriedRecord* ahead, int frame,
+                                          bool still) const {
+    // Nothing moves and no light changes: the reprojection gives E_1 = E_0 bit for bit and the
+    // temporal weight (eq. 9) stays infinite while that lasts; delta t_max (eq. 12) bounds such
+    // a record only when the user sets it.
+    if (still && !r->site_moves && !temporal_.max_frames_given) {
+        r->until_motion = true;
+        return last_frame_ - frame + 1;
+    }
+    const float change = temporal_change(r->computed.payload, r->next);
     const int lifespan =
         ahead != nullptr
-            ? departure_lifespan(temporal_curvature(r.computed.payload, r.next, ahead->next),
-                                 temporal_, r.site_moves)
-            : temporal_lifespan(change, temporal_, r.site_moves);
+            ? departure_lifespan(temporal_curvature(r->computed.payload, r->next, ahead->next),
+                                 temporal_, r->site_moves)
+            : temporal_lifespan(change, temporal_, r->site_moves);
     return lifespan_in_clip(lifespan, change, temporal_, frame, last_frame_);
+}
+
+void TemporalIrradianceCache::end_still_records(int frame) {
+    for (Level& level : levels_) {
+        for (TemporalRecord& r : level.records) {
+            const long long end = static_cast<long long>(r.created) + r.lifespan;
+            if (r.until_motion && r.created <= frame && end > frame + 1LL) {
+                r.lifespan = static_cast<int>(static_cast<long long>(frame) + 1 - r.created);
+            }
+        }
+    }
 }
 
 double TemporalIrradianceCache::adopt(int level, int frame, const RecordStore& placed,
                                       const std::vector<size_t>& serving,
                                       const std::vector<CarriedRecord>& carried,
                                       const std::vector<CarriedRecord>& ahead,
-                                      const std::vector<size_t>& replaced) {
+                                      const std::vector<size_t>& replaced, bool still) {
     std::vector<TemporalRecord>& records = levels_[static_cast<size_t>(level)].records;
     if (placed.size() != serving.size() + carried.size()) {
         throw Error("temporal caching: level " + std::to_string(level) + " holds " +
@@ -154,9 +172,11 @@ double TemporalIrradianceCache::adopt(int level, int frame, const RecordStore& p
         r.created = frame;
         r.next = carried[k].next;
         r.site_moves = carried[k].site_moves;
-        r.lifespan = new_lifespan(r, ahead.empty() ? nullptr : &ahead[k], frame);
+        r.lifespan = new_lifespan(&r, ahead.empty() ? nullptr : &ahead[k], frame, still);
         lifespans += r.lifespan;
-        if (k < replaced.size()) {
+        // A record that served until motion held its value until then: it does not blend towards
+        // a replacement that sees the motion.
+        if (k < replaced.size() && !records[replaced[k]].until_motion) {
             records[replaced[k]].successor = static_cast<int>(records.size());
         }
         records.push_back(r);
@@ -204,6 +224,10 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
     ReprojectionPair observers(reprojection, two_frames.get());
     options.observer = &observers;
     std::vector<uint8_t> moving = moving_into_or_out(reprojection);
+    const bool still = reprojection.still();
+    if (!still) {
+        end_still_records(t);
+    }
     if (!temporal_.cache_moving_hits) {
         options.uncached_primitives = std::move(moving);
     }
@@ -247,7 +271,7 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
         const std::vector<CarriedRecord> ahead =
             two_frames && level == 0 ? two_frames->take(0) : std::vector<CarriedRecord>{};
         const double lifespan = adopt(level, t, cache.store(level), serving[l], carried, ahead,
-                                      level == 0 ? replaced : std::vector<size_t>{});
+                                      level == 0 ? replaced : std::vector<size_t>{}, still);
         if (level == 0) {
             stats.reused = serving[0].size();
             stats.recomputed = replaced.size();

@@ -103,10 +103,16 @@ class TemporalIrradianceCache {
     // lifespan of the new records.
     double adopt(int level, int frame, const RecordStore& placed,
                  const std::vector<size_t>& serving, const std::vector<CarriedRecord>& carried,
-                 const std::vector<CarriedRecord>& ahead, const std::vector<size_t>& replaced);
+                 const std::vector<CarriedRecord>& ahead, const std::vector<size_t>& replaced,
+                 bool still);
     // A new record's lifespan by the chosen rule (`ahead`: its estimate two frames ahead, with
-    // --temporal-lifespan departure at the first level; else null).
-    int new_lifespan(const TemporalRecord& r, const CarriedRecord* ahead, int frame) const;
+    // --temporal-lifespan departure at the first level; else null); `still`: nothing moves or
+    // changes light from `frame` to the next, so that without --temporal-max-frames the record
+    // serves to the clip's end or until something moves (sets r->until_motion).
+    int new_lifespan(TemporalRecord* r, const CarriedRecord* ahead, int frame, bool still) const;
+    // Something moves or changes light from `frame` to the next: every record serving until
+    // motion expires at the next frame (replaced or dropped there as any other).
+    void end_still_records(int frame);
     // Pass 2 at one frame: the image from the records serving it, their values at that frame.
     FrameResult shade_frame(const FrameScene& frame);
 

@@ -31,7 +31,9 @@ OptionTable<TemporalOptions> temporal_option_table() {
                 "its radiance's SH coefficients) over its lifespan, estimated by reprojection")
         .knob(KnobDirection::kDecrease)
         .integer("--temporal-max-frames", "N", &O::max_frames, 1, 1 << 20,
-                 "--temporal: the longest lifespan of a record, in frames")
+                 "--temporal: the longest lifespan of a record that sees change, in frames; "
+                 "given, of every record (not given, records made while only the camera moves "
+                 "serve until something else moves)")
         .unit("frames")
         .choice<bool>("--temporal-moving-hits", &O::cache_moving_hits,
                       {{"trace", false}, {"cache", true}},
@@ -41,7 +43,8 @@ OptionTable<TemporalOptions> temporal_option_table() {
     return table;
 }
 
-void check_temporal_options(const TemporalOptions& t, const ParsedArguments& arguments) {
+void check_temporal_options(TemporalOptions& t, const ParsedArguments& arguments) {
+    t.max_frames_given = arguments.has("--temporal-max-frames");
     if (!t.enabled) {
         for (const OptionInfo& info : temporal_option_table().infos()) {
             if (info.spec.name != "--temporal" && arguments.has(info.spec.name)) {

@@ -27,7 +27,11 @@ struct TemporalOptions {
     TemporalLifespan lifespan = TemporalLifespan::kChange;
     float accuracy = 0.02f;  // a^t of eq. 10 (the report's §6 uses 0.05; docs/temporal-caching.md)
     int max_frames = 20;     // delta t_max of eq. 12 (the report's §6: 20 frames)
-    int hole_passes = 4;     // 3 x 3 hole-filling passes of the reprojection (§4.3)
+    // --temporal-max-frames given: it bounds every record. Not given, a record created while
+    // nothing in the scene moves or changes light (only the camera may move: a walkthrough) sees
+    // no change (E_1 = E_0) and serves until something does (docs/temporal-caching.md).
+    bool max_frames_given = false;
+    int hole_passes = 4;  // 3 x 3 hole-filling passes of the reprojection (§4.3)
     // Hemisphere hits on triangles that move before the next frame get deeper-level records
     // (which serve that frame only) when true; path-trace the diffuse lobe beyond when false.
     bool cache_moving_hits = false;
@@ -37,8 +41,8 @@ struct TemporalOptions {
 OptionTable<TemporalOptions> temporal_option_table();
 
 // Error (exit status 2) naming the option: the --temporal-* options need --temporal, and
-// lifespans by departure need interpolated gradients.
-void check_temporal_options(const TemporalOptions& options, const ParsedArguments& arguments);
+// lifespans by departure need interpolated gradients. Sets max_frames_given.
+void check_temporal_options(TemporalOptions& options, const ParsedArguments& arguments);
 
 std::string temporal_gradients_name(TemporalGradients gradients);
 std::string temporal_lifespan_name(TemporalLifespan lifespan);

@@ -19,6 +19,9 @@ struct TemporalRecord {
     shared::IrradiancePayload next{};  // estimated at created + 1 (TemporalReprojection)
     bool site_moves = false;           // its own surface moves away by the next frame
     int successor = -1;  // the record computed in its place at created + lifespan, or -1
+    // Created while nothing in the scene moved or changed light to the next frame (without
+    // --temporal-max-frames): it serves until a frame from which something does.
+    bool until_motion = false;
 };
 
 // The largest relative change over the RGB channels from E_0 (the record's irradiance) to E_1
