@@ -2,6 +2,8 @@
 // extensions radcache's kernels use its OpenCL C compiler defines, and a launch long enough for
 // its profiling events to measure.
 
+#include "common/kernel_range.h"
+
 // Bit 0: cl_khr_fp64 (ray_triangle.h's exact edge functions); bit 1: cl_khr_int64_base_atomics
 // (compat.h's 64-bit atomic addition of the irradiance vector grid's sums).
 __kernel void device_features(uint begin, uint end, __global int* out) {
@@ -20,10 +22,7 @@ __kernel void device_features(uint begin, uint end, __global int* out) {
 
 // A few milliseconds of arithmetic per launch of 2^16 items.
 __kernel void device_busy(uint begin, uint end, __global float* out) {
-    const uint i = begin + get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     float x = (float)i * 1e-6f;
     for (int k = 0; k < 2048; ++k) {
         x = x * 0.999f + 0.001f;

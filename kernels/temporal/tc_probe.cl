@@ -1,5 +1,6 @@
 // Test kernels of temporal caching (tests/temporal/temporal_kernels_test.cpp). Item index: begin +
 // get_global_id(0).
+#include "common/kernel_range.h"
 #include "shared/temporal.h"
 #include "temporal/tc_reprojection.h"
 
@@ -7,10 +8,7 @@
 // queries[2q + 1], into out[q].
 __kernel void tc_unshadowed_probe(uint begin, uint end, __global const TcEmitter* emitters,
                                   int count, __global const float4* queries, __global float4* out) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(q);
     out[q] = (float4)(rc_tc_unshadowed_irradiance(emitters, count, queries[2 * q].xyz,
                                                   queries[2 * q + 1].xyz),
                       0.0f);
@@ -20,9 +18,6 @@ __kernel void tc_unshadowed_probe(uint begin, uint end, __global const TcEmitter
 // directions[q] passes through.
 __kernel void tc_cell_probe(uint begin, uint end, int m, int n, int layout,
                             __global const float4* directions, __global int* out) {
-    const uint q = begin + (uint)get_global_id(0);
-    if (q >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(q);
     out[q] = rc_tc_cell_of(directions[q].xyz, m, n, layout);
 }

@@ -4,6 +4,7 @@
 // samples carried to the next frame and assembled into the hemisphere the next frame is estimated
 // to show them (temporal/tc_reprojection.h). The record's own reduction (ic_record_reduce,
 // rc_record_project) then turns the assembled cells into its payload one frame later.
+#include "common/kernel_range.h"
 #include "scene_arguments.h"
 #include "temporal/tc_reprojection.h"
 
@@ -27,10 +28,7 @@ __kernel void tc_carry_cells(uint begin, uint end, TcParams tc, RC_SCENE_PARAMET
                              __global const TcEmitter* emitters_now,
                              __global const TcEmitter* emitters_next,
                              __global TcCarriedSample* carried) {
-    const uint i = begin + (uint)get_global_id(0);
-    if (i >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint per_record = (uint)(tc.strata_m * tc.strata_n);
     const uint b = i / per_record;
@@ -63,10 +61,7 @@ __kernel void tc_assemble_cells(uint begin, uint end, TcParams tc, __global cons
                                 __global const TcCarriedSample* carried,
                                 __global const float4* cells, __global float4* next_cells,
                                 __global uint* marks) {
-    const uint b = begin + (uint)get_global_id(0);
-    if (b >= end) {
-        return;
-    }
+    RC_RANGE_ITEM(b);
     const size_t first = (size_t)b * (size_t)(tc.strata_m * tc.strata_n);
     const TcCellJitter jitter = tc_record_jitter(&tc, streams[b]);
     rc_tc_assemble(&jitter, tc.hole_passes, carried + first, cells + first, next_cells + first,
