@@ -8,7 +8,7 @@
 
 namespace rc {
 
-void check_glossy_temporal_options(const TemporalOptions& options, const ParsedArguments& arguments,
+void check_glossy_temporal_options(TemporalOptions& options, const ParsedArguments& arguments,
                                    bool cache_files, const std::string& cache_options) {
     check_temporal_options(options, arguments);
     if (!options.enabled) {

@@ -17,8 +17,9 @@ namespace rc {
 
 // Error (exit status 2) naming the option: the --temporal-* options without --temporal; with
 // it, lifespans by departure (a glossy record's lifespan is by change) and the method's cache
-// files (`cache_files`: any given; `cache_options`: their names).
-void check_glossy_temporal_options(const TemporalOptions& options, const ParsedArguments& arguments,
+// files (`cache_files`: any given; `cache_options`: their names). Records in `options` whether
+// --temporal-max-frames was given (check_temporal_options).
+void check_glossy_temporal_options(TemporalOptions& options, const ParsedArguments& arguments,
                                    bool cache_files, const std::string& cache_options);
 
 // The last frame of the run `settings` describe.
