@@ -2,7 +2,7 @@
 // Pattanaik 2006, §4.2: the temporal weighting function, eqs. 9-12; §4.4 for interpolated
 // gradients): from its relative change to the next frame (or its curvature), the user's temporal
 // accuracy a^t and the longest lifespan delta t_max. The change itself is the payload's
-// (temporal_record.h for irradiance, temporal_glossy_record.h for the glossy records of rc and sdrc).
+// (temporal_record.h for irradiance, temporal_glossy_record.h for rc's and sdrc's records).
 #pragma once
 
 #include "methods/temporal/temporal_options.h"
