@@ -143,8 +143,8 @@ __kernel void sdrc_record_next(uint begin, uint end, SdrcParams params, int m, i
     next[i] = seen;
     float3 w;
     float weight;
-    if (!rc_sdrc_record_direction(&params, materials, &site, streams[b],
-                                  i % (uint)params.samples, &w, &weight)) {
+    if (!rc_sdrc_record_direction(&params, materials, &site, streams[b], i % (uint)params.samples,
+                                  &w, &weight)) {
         return;
     }
     const Frame frame = rc_sdrc_record_frame(site.normal.xyz);

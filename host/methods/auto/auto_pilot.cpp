@@ -99,6 +99,14 @@ NoisePilot noise_pilot(const FrameScene& frame, const MethodSettings& settings,
     return pilot;
 }
 
+size_t glossy_table_count(const nlohmann::json& materials) {
+    size_t count = 0;
+    for (const nlohmann::json& material : materials) {
+        count += material.value("kind", std::string()) != "diffuse";
+    }
+    return count;
+}
+
 TablePilot brdf_table_pilot(const FrameScene& frame, const MethodSettings& settings,
                             const FrameHooks& hooks) {
     const PilotSize size{std::min(8, render_width(settings, frame)),
@@ -112,9 +120,7 @@ TablePilot brdf_table_pilot(const FrameScene& frame, const MethodSettings& setti
     if (result.stats.contains("radiance_cache")) {
         pilot.materials = result.stats.at("radiance_cache").value("materials", pilot.materials);
     }
-    for (const nlohmann::json& material : pilot.materials) {
-        pilot.glossy_materials += material.value("kind", std::string()) != "diffuse";
-    }
+    pilot.glossy_materials = glossy_table_count(pilot.materials);
     return pilot;
 }
 

@@ -70,6 +70,10 @@ struct TablePilot {
     size_t glossy_materials = 0;  // the tables built (kind glossy or fallback)
 };
 
+// The materials with a table (kind glossy or fallback) in radiance caching's statistics'
+// "materials".
+size_t glossy_table_count(const nlohmann::json& materials);
+
 TablePilot brdf_table_pilot(const FrameScene& frame, const MethodSettings& settings,
                             const FrameHooks& hooks);
 

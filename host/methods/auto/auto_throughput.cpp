@@ -158,10 +158,7 @@ double table_seconds_per_material(const FrameScene& frame, const FrameHooks& hoo
     const TimedFrame tables = timed_frame(
         frame, {"rc", {{"--ic-rays", "16"}, {"--rc-max-error", "0.0999"}}}, 8, 1, hooks);
     const nlohmann::json& rc = tables.result.stats.at("radiance_cache");
-    size_t glossy = 0;
-    for (const nlohmann::json& material : rc.at("materials")) {
-        glossy += material.value("kind", std::string()) != "diffuse";
-    }
+    const size_t glossy = glossy_table_count(rc.at("materials"));
     return rc.at("seconds").value("tables", 0.0) / static_cast<double>(std::max<size_t>(glossy, 1));
 }
 
