@@ -4,6 +4,7 @@
   tools/auto_model.py measure [--scenes cornell-box two-rooms glossy-box] [--sizes 64 128]
                               [--spps S ...] [--knobs A:R ...] [--methods ic rc sdrc]
                               [--out build/auto_model]
+  tools/auto_model.py repilot [--data build/auto_model/dataset.json]
   tools/auto_model.py fit [--data build/auto_model/dataset.json]
                           [--write host/methods/auto/auto_model.json]
 
@@ -12,6 +13,10 @@ v_pt, v_dir and the indirect share f), each caching method's cache pilot (the pi
 the rays, one sample) and the same method at the full size over a small grid of accuracies, rays
 per record and samples per pixel: its cache rays W and its relMSE against the scene's reference
 (net of the reference's noise). Every run lands in OUT/dataset.json.
+
+`repilot` runs auto's pilot again (this build's) for every scene and size of a dataset and
+replaces the runs' noise figures (v_pt, v_dir, f) with its own, so that a changed pilot is
+refitted without rendering the runs again.
 
 `fit` fits, per caching method, the cost law W = scale W_p (P/P_p)^gamma (R/R_p)^rho
 (a_p/a)^alpha s^sigma (least squares in logarithms) and the error law relMSE =
@@ -88,16 +93,23 @@ def knob(text):
     return pair
 
 
+NOISE = ("v_pt", "v_direct", "indirect_fraction")
+
+
+def auto_pilot(scene, w, h, stats):
+    """auto's pilot (a dry run) of SCENE at w x h, unless STATS holds it: its "pilot" figures."""
+    run_unless_done(stats, ["render", scene_json(scene), "--method", "auto", "--dry-run",
+                            "--time", "1000", "--stats", stats, "--quiet", "--width", str(w),
+                            "--height", str(h)])
+    return frame_stats(stats)["plan"]["pilot"]
+
+
 def measure_scene(scene, width, out, rows, args):
     w, h = references.camera_size(scene_json(scene), width)
     size = ["--width", str(w), "--height", str(h)]
     name = "%s-%d" % (scene, w)
-    pilot_stats = os.path.join(out, name + ".pilot.json")
-    run_unless_done(pilot_stats, ["render", scene_json(scene), "--method", "auto", "--dry-run",
-                                  "--time", "1000", "--stats", pilot_stats, "--quiet"] + size)
-    plan = frame_stats(pilot_stats)["plan"]
-    pilot = plan["pilot"]
-    noise = {k: pilot[k] for k in ("v_pt", "v_direct", "indirect_fraction")}
+    pilot = auto_pilot(scene, w, h, os.path.join(out, name + ".pilot.json"))
+    noise = {k: pilot[k] for k in NOISE}
     methods = [m for m in args.methods if m == "ic" or has_glossy(scene)]
     for method in methods:
         cache_pilot = os.path.join(out, "%s-%s.cache-pilot.json" % (name, method))
@@ -152,6 +164,28 @@ def measure(args):
                 json.dump({"date": datetime.date.today().isoformat(), "git": git, "rows": rows},
                           f, indent=1)
     print("wrote %s (%d runs)" % (path, len(rows)))
+
+
+def repilot(args):
+    """The dataset's noise figures replaced by this build's pilot, in place."""
+    with open(args.data) as f:
+        data = json.load(f)
+    scratch = os.path.join(os.path.dirname(os.path.abspath(args.data)), "repilot")
+    os.makedirs(scratch, exist_ok=True)
+    pilots = {}
+    for r in data["rows"]:
+        key = (r["scene"], r["width"], r["height"])
+        if key not in pilots:
+            stats = os.path.join(scratch, "%s-%dx%d.pilot.json" % key)
+            if os.path.exists(stats):
+                os.remove(stats)  # this build's pilot, not an earlier one's
+            pilots[key] = auto_pilot(r["scene"], r["width"], r["height"], stats)
+            print("%s %dx%d: " % key + ", ".join("%s %.4g" % (k, pilots[key][k]) for k in NOISE))
+        r.update({k: pilots[key][k] for k in NOISE})
+    data["repiloted"] = datetime.date.today().isoformat()
+    with open(args.data, "w") as f:
+        json.dump(data, f, indent=1)
+    print("wrote %s (%d runs, %d pilots)" % (args.data, len(data["rows"]), len(pilots)))
 
 
 def fit_cost(rows, np):
@@ -294,6 +328,9 @@ def main():
                    help="caching methods to measure (ic on every scene, rc and sdrc on scenes "
                         "with glossy materials)")
     m.add_argument("--out", default=os.path.join(ROOT, "build", "auto_model"))
+    p = sub.add_parser("repilot", help="replace the dataset's noise figures with this build's "
+                                       "pilot")
+    p.add_argument("--data", default=os.path.join(ROOT, "build", "auto_model", "dataset.json"))
     f = sub.add_parser("fit", help="fit the constants and write the model file")
     f.add_argument("--data", default=os.path.join(ROOT, "build", "auto_model", "dataset.json"))
     f.add_argument("--write", default=MODEL)
@@ -302,10 +339,7 @@ def main():
                         "at fewer pixels the light's edges at a few samples dominate the error, "
                         "which the law does not model); the cost law is fitted to every run")
     args = parser.parse_args()
-    if args.command == "measure":
-        measure(args)
-    else:
-        fit(args)
+    {"measure": measure, "repilot": repilot, "fit": fit}[args.command](args)
 
 
 if __name__ == "__main__":

@@ -2,7 +2,8 @@
 // given here instead of measured: it never plans beyond the budget, more time never raises its
 // predicted error, a budget the cheapest cache does not fit goes to the path tracer with the
 // reason, fixed samples stay fixed; the materials' servers follow radiance caching's tables and
-// the Phong exponent; the embedded model parses and a broken one is refused by key.
+// the Phong exponent; the embedded model parses and a broken one is refused by key; a record ray's
+// seconds follow the law through the throughput's two measurements.
 #include "methods/auto/auto_plan.h"
 
 #include <gtest/gtest.h>
@@ -25,7 +26,7 @@ struct Figures {
     Figures() {
         throughput.pt_seconds_per_ray = 1e-7;
         for (const char* method : {"ic", "rc", "sdrc"}) {
-            throughput.cache_seconds_per_ray[method] = 1e-7;
+            throughput.cache_seconds_per_ray[method] = {{128, 1024}, {1e-7, 1e-7}};
             throughput.camera_seconds_per_ray[method] = 1e-7;
         }
         in.model = &model;
@@ -135,6 +136,24 @@ TEST(AutoPlan, APilotBeyondItsShareOfTheBudgetIsAnError) {
                   std::string::npos)
             << e.what();
     }
+}
+
+// A record ray's seconds follow s(R) = a + b / R through the two measurements: with s(128) = 8e-7
+// and s(1024) = 4.5e-7, b = 3.5e-7 / (1/128 - 1/1024) = 5.12e-5 and a = 4e-7, so s(512) = 5e-7;
+// more rays per record never cost more per ray, and measurements that say they do (noise) give
+// one figure for every R.
+TEST(AutoThroughput, ARecordRayCostsWhatTheTwoMeasurementsSayAndNoMoreWithMoreRays) {
+    const CacheRayCost cost{{128, 1024}, {8e-7, 4.5e-7}};
+    EXPECT_NEAR(cost.at(128), 8e-7, 1e-18);
+    EXPECT_NEAR(cost.at(1024), 4.5e-7, 1e-18);
+    EXPECT_NEAR(cost.at(512), 5e-7, 1e-18);
+    EXPECT_NEAR(cost.at(1 << 16), 4e-7 + 5.12e-5 / 65536, 1e-18);
+    for (int rays = 4; rays < (1 << 16); rays *= 2) {
+        EXPECT_GE(cost.at(rays), cost.at(2 * rays)) << rays;
+    }
+    const CacheRayCost noisy{{128, 1024}, {4e-7, 4.4e-7}};
+    EXPECT_NEAR(noisy.at(16), 4.4e-7, 1e-18);
+    EXPECT_NEAR(noisy.at(4096), 4.4e-7, 1e-18);
 }
 
 TEST(AutoMaterials, RadianceCachingWhereItsTablesHoldTheLobeElseSdrcElsePathTracing) {

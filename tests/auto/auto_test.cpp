@@ -244,6 +244,46 @@ TEST(AutoDeterminism, TheSameSeedAndOptionsGiveTheSamePlanAndImage) {
               (std::vector<std::string>{"albedo", "beauty", "direct", "indirect", "normal"}));
 }
 
+// The pilot reads the path tracer's noise (v_pt, the relMSE of one sample) as two renders of 64
+// samples per pixel at the pilot's size read it, on a scene whose glossy lobes and small light
+// give samples far above their pixel's mean (the pixel's own noisy mean as the denominator read it
+// 4 to 5 times low there).
+TEST(AutoPilot, ThePathTracersNoiseIsReadAsManySamplesReadIt) {
+    const std::string scene = (test::source_dir() / "scenes/glossy-box/scene.json").string();
+    const nlohmann::json pilot =
+        dry_run(scene, "auto_noise", {"--time", "1000", "--width", "256", "--height", "256"})
+            .at("pilot");
+    const auto dir = test::scratch_dir("auto_noise_check");
+    Image images[2];
+    const int spp = 64;
+    for (int i = 0; i < 2; ++i) {
+        const std::string out = (dir / ("pt" + std::to_string(i) + ".exr")).string();
+        const test::CommandResult result = test::run_radcache(
+            {"render", scene, "--method", "pt", "--spp", std::to_string(spp), "--seed",
+             std::to_string(11 + i), "--width", std::to_string(pilot.at("width").get<int>()),
+             "--height", std::to_string(pilot.at("height").get<int>()), "--aovs", "beauty", "-o",
+             out, "--quiet"});
+        ASSERT_EQ(result.exit_code, 0) << result.output;
+        images[i] = read_image(out);
+    }
+    // Var of one sample: spp (a - b)^2 / 2; the denominator the mean of 2 x 64 samples.
+    double sum = 0.0;
+    for (int y = 0; y < images[0].height; ++y) {
+        for (int x = 0; x < images[0].width; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const double a = images[0].at(x, y, c);
+                const double b = images[1].at(x, y, c);
+                const double mean = 0.5 * (a + b);
+                sum += spp * 0.5 * (a - b) * (a - b) / (mean * mean + 0.01);
+            }
+        }
+    }
+    const double v = sum / (3.0 * images[0].width * images[0].height);
+    const double v_pt = pilot.at("v_pt").get<double>();
+    EXPECT_GT(v_pt, v / 1.6) << "64-sample renders read " << v;
+    EXPECT_LT(v_pt, v * 1.6) << "64-sample renders read " << v;
+}
+
 // The device's throughput file of an older radcache (without the BRDF tables' figure) is measured
 // again and replaced once, not measured again on every render. The kernel binaries are the
 // suite's (hard links), the throughput file a copy of its own.

@@ -136,7 +136,8 @@ class AutoMethod final : public Method {
         if (glossy) {
             const TablePilot pilot = brdf_table_pilot(frame, settings_, hooks);
             tables = pilot.materials;
-            in->pilot_seconds += static_cast<double>(pilot.rays) * throughput.cache_of("rc");
+            in->pilot_seconds +=
+                static_cast<double>(pilot.rays) * throughput.cache_of("rc", kTableRays);
             in->tables_seconds =
                 static_cast<double>(pilot.glossy_materials) * throughput.table_seconds_per_material;
         }
@@ -149,7 +150,7 @@ class AutoMethod final : public Method {
     static void add_pilot_seconds(const CachePilot& pilot, const std::string& key,
                                   const DeviceThroughput& throughput, PlanInputs* in) {
         in->pilot_seconds +=
-            static_cast<double>(pilot.cache_rays) * throughput.cache_of(key) +
+            static_cast<double>(pilot.cache_rays) * throughput.cache_of(key, pilot.ic_rays) +
             static_cast<double>(pilot.rays - pilot.cache_rays) * throughput.camera_of(key);
     }
 

@@ -74,6 +74,9 @@ struct TablePilot {
 // "materials".
 size_t glossy_table_count(const nlohmann::json& materials);
 
+// The tables pilot's rays per record.
+constexpr int kTableRays = 16;
+
 TablePilot brdf_table_pilot(const FrameScene& frame, const MethodSettings& settings,
                             const FrameHooks& hooks);
 

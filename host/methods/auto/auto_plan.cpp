@@ -35,7 +35,7 @@ CacheCost cache_cost(const PlanInputs& in, const std::string& key, double accura
                         std::pow(pilot.accuracy / accuracy, c.alpha) *
                         std::pow(static_cast<double>(spp), c.sigma);
     CacheCost cost;
-    cost.cache_seconds = work * in.throughput->cache_of(key);
+    cost.cache_seconds = work * in.throughput->cache_of(key, rays);
     cost.sample_seconds = in.pixels * pilot.camera_rays_per_sample * in.throughput->camera_of(key);
     return cost;
 }

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -54,6 +55,8 @@ constexpr const char* kThroughputScene = R"({
 // samples' seconds per ray against a 256 x 256 render's).
 constexpr int kSide = 128;
 constexpr int kCameraSpp = 8;
+// The fewer --ic-rays a caching method is measured at (the more: its default).
+constexpr int kFewRays = 128;
 constexpr int kPathTracerSpp = 16;
 const char* const kCachingMethods[] = {"ic", "rc", "sdrc"};
 
@@ -71,11 +74,34 @@ std::filesystem::path throughput_file(const Context& context) {
     return dir / name;
 }
 
+nlohmann::json ray_cost_json(const CacheRayCost& cost) {
+    return {{"ic_rays", {cost.rays[0], cost.rays[1]}},
+            {"seconds_per_ray", {cost.seconds_per_ray[0], cost.seconds_per_ray[1]}}};
+}
+
+CacheRayCost ray_cost_of(const nlohmann::json& json) {
+    CacheRayCost cost;
+    for (int i = 0; i < 2; ++i) {
+        cost.rays[i] = json.at("ic_rays").at(i).get<int>();
+        cost.seconds_per_ray[i] = json.at("seconds_per_ray").at(i).get<double>();
+    }
+    return cost;
+}
+
+bool valid(const CacheRayCost& cost) {
+    return cost.rays[0] > 0 && cost.rays[1] > cost.rays[0] && cost.seconds_per_ray[0] > 0.0 &&
+           cost.seconds_per_ray[1] > 0.0;
+}
+
 nlohmann::json throughput_json(const DeviceThroughput& t, const Context& context) {
+    nlohmann::json cache = nlohmann::json::object();
+    for (const auto& [method, cost] : t.cache_seconds_per_ray) {
+        cache[method] = ray_cost_json(cost);
+    }
     return {{"device", context.device().name},
             {"driver", context.device().driver_version},
             {"pt_seconds_per_ray", t.pt_seconds_per_ray},
-            {"cache_seconds_per_ray", t.cache_seconds_per_ray},
+            {"cache_seconds_per_ray", cache},
             {"camera_seconds_per_ray", t.camera_seconds_per_ray},
             {"table_seconds_per_material", t.table_seconds_per_material}};
 }
@@ -88,8 +114,9 @@ bool read_throughput(const std::filesystem::path& file, DeviceThroughput* t) {
     try {
         const nlohmann::json json = nlohmann::json::parse(in);
         t->pt_seconds_per_ray = json.at("pt_seconds_per_ray").get<double>();
-        t->cache_seconds_per_ray =
-            json.at("cache_seconds_per_ray").get<std::map<std::string, double>>();
+        for (const auto& [method, cost] : json.at("cache_seconds_per_ray").items()) {
+            t->cache_seconds_per_ray[method] = ray_cost_of(cost);
+        }
         t->camera_seconds_per_ray =
             json.at("camera_seconds_per_ray").get<std::map<std::string, double>>();
         t->table_seconds_per_material = json.at("table_seconds_per_material").get<double>();
@@ -97,7 +124,8 @@ bool read_throughput(const std::filesystem::path& file, DeviceThroughput* t) {
         return false;  // unreadable: measured again and replaced
     }
     for (const char* method : kCachingMethods) {
-        if (t->cache_seconds_per_ray.count(method) == 0 ||
+        const auto cost = t->cache_seconds_per_ray.find(method);
+        if (cost == t->cache_seconds_per_ray.end() || !valid(cost->second) ||
             t->camera_seconds_per_ray.count(method) == 0) {
             return false;
         }
@@ -168,29 +196,51 @@ DeviceThroughput measure_throughput(const FrameScene& frame, const FrameHooks& h
     const TimedFrame pt = timed_frame(frame, {"pt", {}}, kSide, kPathTracerSpp, hooks);
     t.pt_seconds_per_ray = pt.seconds / static_cast<double>(std::max<uint64_t>(pt.result.rays, 1));
     for (const char* method : kCachingMethods) {
-        const MethodRun run{method, {{"--ic-rays", "128"}}};
-        timed_frame(frame, run, 8, 1, hooks);  // its programs built (or loaded) before the timing
+        const int rays[2] = {kFewRays, static_cast<int>(declared_default(method, "--ic-rays"))};
+        timed_frame(frame, {method, {{"--ic-rays", std::to_string(rays[0])}}}, 8, 1,
+                    hooks);  // its programs built (or loaded) before the timing
         if (std::string(method) == "rc") {
             t.table_seconds_per_material = table_seconds_per_material(frame, hooks);
         }
-        const TimedFrame cached = timed_frame(frame, run, kSide, kCameraSpp, hooks);
-        const uint64_t cache_rays =
-            std::min(cache_rays_of(cached.result.stats), cached.result.rays);
-        const double cache_seconds = std::min(cached.result.cache_seconds, cached.seconds);
-        t.cache_seconds_per_ray[method] =
-            cache_seconds / static_cast<double>(std::max<uint64_t>(cache_rays, 1));
-        t.camera_seconds_per_ray[method] =
-            (cached.seconds - cache_seconds) /
-            static_cast<double>(std::max<uint64_t>(cached.result.rays - cache_rays, 1));
+        CacheRayCost& cost = t.cache_seconds_per_ray[method];
+        for (int i = 0; i < 2; ++i) {
+            // The camera samples' figure from the first (its cache is the smaller share).
+            const int spp = i == 0 ? kCameraSpp : 1;
+            const TimedFrame cached = timed_frame(
+                frame, {method, {{"--ic-rays", std::to_string(rays[i])}}}, kSide, spp, hooks);
+            const uint64_t cache_rays =
+                std::min(cache_rays_of(cached.result.stats), cached.result.rays);
+            const double cache_seconds = std::min(cached.result.cache_seconds, cached.seconds);
+            cost.rays[i] = rays[i];
+            cost.seconds_per_ray[i] =
+                cache_seconds / static_cast<double>(std::max<uint64_t>(cache_rays, 1));
+            if (i == 0) {
+                t.camera_seconds_per_ray[method] =
+                    (cached.seconds - cache_seconds) /
+                    static_cast<double>(std::max<uint64_t>(cached.result.rays - cache_rays, 1));
+            }
+        }
     }
     return t;
 }
 
 }  // namespace
 
-double DeviceThroughput::cache_of(const std::string& method) const {
+double CacheRayCost::at(int rays_per_record) const {
+    // s(R) = a + b / R through (R0, s0) and (R1, s1); b >= 0 (more rays never cost more per
+    // ray than fewer), a >= 0.
+    const double inverse[2] = {1.0 / rays[0], 1.0 / rays[1]};
+    const double b =
+        std::max(0.0, (seconds_per_ray[0] - seconds_per_ray[1]) / (inverse[0] - inverse[1]));
+    const double a = std::max(0.0, seconds_per_ray[1] - b * inverse[1]);
+    const double s = a + b / std::max(rays_per_record, 1);
+    return s > 0.0 ? s : std::max(seconds_per_ray[0], seconds_per_ray[1]);
+}
+
+double DeviceThroughput::cache_of(const std::string& method, int rays_per_record) const {
     const auto found = cache_seconds_per_ray.find(method);
-    return found != cache_seconds_per_ray.end() ? found->second : cache_seconds_per_ray.at("ic");
+    return (found != cache_seconds_per_ray.end() ? found->second : cache_seconds_per_ray.at("ic"))
+        .at(rays_per_record);
 }
 
 double DeviceThroughput::camera_of(const std::string& method) const {
