@@ -44,11 +44,12 @@ Part read_part(const std::filesystem::path& path) {
 
 // Error unless `part` belongs to the render of `first`.
 void check_same_render(const Part& part, const Part& first) {
-    for (const auto& [key, what] : {std::pair{"radcache:scene", "scene file"},
-                                    {"radcache:method", "method"},
-                                    {"radcache:options", "options"},
-                                    {"radcache:size", "image size"},
-                                    {"radcache:frame", "frame"}}) {
+    for (const auto& [key, what] :
+         {std::pair{"radcache:scene", "scene (its file or a file it reads)"},
+          {"radcache:method", "method"},
+          {"radcache:options", "options"},
+          {"radcache:size", "image size"},
+          {"radcache:frame", "frame"}}) {
         const std::string mine = attribute(part, key);
         const std::string theirs = attribute(first, key);
         if (mine != theirs) {

@@ -2,6 +2,7 @@
 // buffers, pbrt includes), recorded so that no output of the run is one of them.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <mutex>
 #include <string>
@@ -25,8 +26,16 @@ class RecordedFiles : public SceneFiles {
             const std::lock_guard<std::mutex> lock(mutex_);
             read_.emplace_back(what, path);
         }
-        return files_.read(path, max_bytes, what);
+        std::string bytes = files_.read(path, max_bytes, what);
+        const uint64_t fingerprint = bytes_fingerprint(bytes);
+        const std::lock_guard<std::mutex> lock(mutex_);
+        fingerprints_.push_back(fingerprint);
+        return bytes;
     }
+
+    // A fingerprint of the bytes of every file read (whatever their paths and the order they were
+    // read in): the same scene, meshes and textures give the same 16 hex digits on any machine.
+    std::string content_digest() const;
 
     // Every file read, each an input of `run` named by what it is ("mesh file").
     void add_inputs_to(RunFiles& run) const {
@@ -40,6 +49,9 @@ class RecordedFiles : public SceneFiles {
     const SceneFiles& files_;
     mutable std::mutex mutex_;
     mutable std::vector<std::pair<std::string, std::filesystem::path>> read_;
+    mutable std::vector<uint64_t> fingerprints_;
+
+    static uint64_t bytes_fingerprint(const std::string& bytes);
 };
 
 }  // namespace rc

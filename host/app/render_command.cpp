@@ -241,8 +241,8 @@ int render(const ParsedArguments& arguments) {
     const int width = static_cast<int>(arguments.integer("--width", scene.camera.width));
     const int height = static_cast<int>(arguments.integer("--height", scene.camera.height));
     check_part_options(job, entry, width, height);
-    const PartIdentity identity = part_identity(arguments, job.scene.string(), entry.name, width,
-                                                height, job.crop, job.samples);
+    const PartIdentity identity = part_identity(arguments, scene_files.content_digest(), entry.name,
+                                                width, height, job.crop, job.samples);
     warn_unless_frames_in_range(job.frames, scene.animation);
     const std::unique_ptr<Method> method =
         entry.create(job.method_options, method_settings(arguments, settings, job, first, last));

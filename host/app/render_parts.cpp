@@ -30,17 +30,6 @@ const std::set<std::string>& part_options() {
     return names;
 }
 
-// FNV-1a, 64 bits, as 16 hex digits.
-std::string content_hash(const std::string& bytes) {
-    uint64_t hash = 0xcbf29ce484222325ull;
-    for (const char c : bytes) {
-        hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ull;
-    }
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
-    return text;
-}
-
 }  // namespace
 
 PixelWindow parse_crop(const std::string& text) {
@@ -89,11 +78,11 @@ std::string range_text(const SampleRange& range) {
     return std::to_string(range.first) + ":" + std::to_string(range.end);
 }
 
-PartIdentity part_identity(const ParsedArguments& arguments, const std::string& scene,
+PartIdentity part_identity(const ParsedArguments& arguments, const std::string& scene_digest,
                            const std::string& method, int width, int height,
                            const PixelWindow& crop, const SampleRange& samples) {
     PartIdentity identity;
-    identity.scene = content_hash(read_file(scene));
+    identity.scene = scene_digest;
     identity.method = method;
     for (const std::string& name : arguments.names()) {
         if (part_options().count(name) != 0) {

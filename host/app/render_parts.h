@@ -30,10 +30,11 @@ SampleRange parse_sample_range(const std::string& text);
 std::string window_text(const PixelWindow& window);
 std::string range_text(const SampleRange& range);
 
-// What a part's image says of the render it belongs to: the attributes "radcache:scene" (a hash
-// of the scene file's bytes), "radcache:method", "radcache:options" (every option given but
-// those that choose the part, its output and the device), "radcache:size" (WxH of the whole
-// image), "radcache:crop", "radcache:samples" and "radcache:frame".
+// What a part's image says of the render it belongs to: the attributes "radcache:scene" (a
+// fingerprint of the bytes of the scene file and of every file it reads: meshes, textures,
+// includes; RecordedFiles::content_digest), "radcache:method", "radcache:options" (every option
+// given but those that choose the part, its output and the device), "radcache:size" (WxH of the
+// whole image), "radcache:crop", "radcache:samples" and "radcache:frame".
 struct PartIdentity {
     std::string scene;
     std::string method;
@@ -44,9 +45,9 @@ struct PartIdentity {
     SampleRange samples;
 };
 
-// The identity of the render of `arguments` (its scene file `scene`, its method, the whole image's
-// size, the window and the samples each pixel draws).
-PartIdentity part_identity(const ParsedArguments& arguments, const std::string& scene,
+// The identity of the render of `arguments` (its scene's files' fingerprint `scene_digest`, its
+// method, the whole image's size, the window and the samples each pixel draws).
+PartIdentity part_identity(const ParsedArguments& arguments, const std::string& scene_digest,
                            const std::string& method, int width, int height,
                            const PixelWindow& crop, const SampleRange& samples);
 

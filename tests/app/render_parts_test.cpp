@@ -1,15 +1,18 @@
 // A render in parts (docs/farm.md): --crop windows hold the whole render's pixels, --sample-range
 // parts with --write-sums add up to the whole render in `radcache merge`, and merge refuses parts
-// of another render, naming the part and writing nothing.
+// of another render (another scene file, or a mesh it reads changed), naming the part and writing
+// nothing.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "image/image.h"
 #include "image/image_io.h"
 #include "scratch_files.h"
 #include "test_support.h"
+#include "util/file_io.h"
 
 namespace rc {
 namespace {
@@ -170,7 +173,9 @@ TEST(RenderParts, MergeRefusesPartsOfAnotherRenderWithoutOutput) {
     const auto dir = test::scratch_dir("parts_refused");
     render(dir / "a.exr", {"--sample-range", "0:4", "--write-sums"});
     const std::vector<Refused> cases = {
-        {{"--sample-range", "4:8", "--write-sums"}, "furnace", "another scene file"},
+        {{"--sample-range", "4:8", "--write-sums"},
+         "furnace",
+         "another scene (its file or a file it reads)"},
         {{"--sample-range", "4:8", "--write-sums", "--seed", "3"},
          "cornell-box",
          "another options"},
@@ -200,6 +205,43 @@ TEST(RenderParts, MergeRefusesPartsOfAnotherRenderWithoutOutput) {
     EXPECT_NE(png.exit_code, 0);
     EXPECT_NE(png.output.find("plain.png: not a part"), std::string::npos) << png.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "merged.exr"));
+}
+
+// A part is of another scene when a file the scene reads differs, though the scene file is the
+// same: here one vertex of the tall block's mesh moved. The same files under another directory
+// are the same scene.
+TEST(RenderParts, MergeRefusesPartsWhoseMeshDiffers) {
+    const auto dir = test::scratch_dir("parts_mesh");
+    const auto source = test::source_dir() / "scenes" / "cornell-box";
+    for (const char* copy : {"a", "b", "c"}) {
+        std::filesystem::remove_all(dir / copy);
+        std::filesystem::copy(source, dir / copy, std::filesystem::copy_options::recursive);
+    }
+    const auto mesh = dir / "b" / "meshes" / "tall_block.obj";
+    std::string obj = read_file(mesh);
+    const size_t vertex = obj.find("\nv ");
+    ASSERT_NE(vertex, std::string::npos);
+    obj.insert(vertex + 3, "1");  // the first vertex's x gains a leading digit
+    std::ofstream(mesh, std::ios::binary) << obj;
+    const auto part = [&](const char* copy, const char* range) {
+        const auto out = dir / (std::string(copy) + ".exr");
+        const test::CommandResult result = test::run_radcache(
+            {"render", (dir / copy / "scene.json").string(), "-o", out.string(), "--width", "24",
+             "--height", "16", "--quiet", "--sample-range", range, "--write-sums"});
+        EXPECT_EQ(result.exit_code, 0) << result.output;
+        return out;
+    };
+    const auto a = part("a", "0:2");
+    const auto b = part("b", "2:4");
+    const auto c = part("c", "2:4");
+    const test::CommandResult refused = merge(dir / "merged.exr", {a, b});
+    EXPECT_NE(refused.exit_code, 0);
+    EXPECT_NE(refused.output.find("b.exr: another scene (its file or a file it reads)"),
+              std::string::npos)
+        << refused.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "merged.exr"));
+    const test::CommandResult merged = merge(dir / "merged.exr", {a, c});
+    EXPECT_EQ(merged.exit_code, 0) << merged.output;
 }
 
 TEST(RenderParts, BadPartOptionsFailClearlyWithoutOutput) {
