@@ -1,7 +1,7 @@
 // `--method auto` through the command line (docs/auto.md): the per-material choice on scenes whose
 // lobes say what serves them (a diffuse box; a Phong 10 000 near-mirror; a Phong 16 and a Phong
-// 200 sphere; a static clip and one whose every object moves fast), the rules for --spp without
-// --time and for a budget too small for the pilot, a scene without emitters, --dry-run, --time
+// 200 sphere; a static clip, a walkthrough and a clip whose every object moves fast), the rules for
+// --spp without --time and for a budget too small for the pilot, a scene without emitters, --dry-run, --time
 // kept, the same plan and image from the same seed and options, and a stale throughput file
 // replaced once.
 #include <gtest/gtest.h>
@@ -158,6 +158,17 @@ TEST(AutoChoice, AStaticClipIsCachedOverTimeAFastOneIsNot) {
         dry_run(fast, "auto_fast_clip_plan", {"--spp", "2", "--frames", "0:3", "-o", "f####.exr"});
     EXPECT_FALSE(moving.at("temporal").get<bool>()) << moving.dump();
     EXPECT_GT(moving.at("motion").get<double>(), still.at("motion").get<double>());
+}
+
+// The shipped walkthrough: nothing but the camera moves (from one room into the other), so the
+// records' light does not change and the clip is cached over time.
+TEST(AutoChoice, AWalkthroughOfAStillSceneIsCachedOverTime) {
+    const std::string scene = (test::source_dir() / "scenes/walkthrough/scene.json").string();
+    const nlohmann::json plan = dry_run(
+        scene, "auto_walkthrough",
+        {"--spp", "2", "--width", "16", "--height", "12", "--frames", "0:47", "-o", "f####.exr"});
+    EXPECT_TRUE(plan.at("temporal").get<bool>()) << plan.dump();
+    EXPECT_EQ(plan.at("motion").get<double>(), 0.0);
 }
 
 TEST(AutoRules, SppWithoutTimeFixesTheSamplesAndKeepsTheDefaultKnobs) {

@@ -8,9 +8,9 @@
 namespace rc {
 namespace {
 
-// The farthest any vertex, light or the eye moves between the two poses.
+// The farthest any vertex or light moves between the two poses.
 double largest_move(const Scene& a, const Scene& b) {
-    double move = glm::distance(a.camera.position, b.camera.position);
+    double move = 0.0;
     const size_t vertices = std::min(a.mesh.positions.size(), b.mesh.positions.size());
     for (size_t i = 0; i < vertices; ++i) {
         move = std::max<double>(move, glm::distance(a.mesh.positions[i], b.mesh.positions[i]));
