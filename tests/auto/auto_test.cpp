@@ -1,9 +1,9 @@
 // `--method auto` through the command line (docs/auto.md): the per-material choice on scenes whose
 // lobes say what serves them (a diffuse box; a Phong 10 000 near-mirror; a Phong 16 and a Phong
 // 200 sphere; a static clip, a walkthrough and a clip whose every object moves fast), the rules for
-// --spp without --time and for a budget too small for the pilot, a scene without emitters, --dry-run, --time
-// kept, the same plan and image from the same seed and options, and a stale throughput file
-// replaced once.
+// --spp without --time and for a budget too small for the pilot, a scene without emitters,
+// --dry-run, --time kept, the same plan and image from the same seed and options, and a stale
+// throughput file replaced once.
 #include <gtest/gtest.h>
 
 #include <algorithm>
