@@ -13,35 +13,76 @@
 namespace rc {
 namespace {
 
-// What the device threads share: the next item, how many are done, and the first failure.
+// What the device threads share: the next item, how many are done, the first failure, and each
+// device's speed (items per second: the given one, then its own once it finished an item) and
+// whether it still takes items. `next`, `speed` and `taking` change under `mutex`.
 struct SplitQueue {
     size_t count = 0;
-    std::atomic<size_t> next{0};
+    size_t next = 0;
     std::atomic<size_t> done{0};
     std::atomic<bool> failed{false};
     std::mutex mutex;
     std::condition_variable changed;  // an item done or failed
     std::string error;
     int exit_code = kExitFailure;
+    std::vector<double> speed;   // 0: not known
+    std::vector<bool> measured;  // speed is this split's
+    std::vector<bool> taking;
+
+    // The next item for `device`, or count when it takes no more: none left, or a faster device
+    // that still takes items would finish every item left (this one included) before `device`
+    // finished one.
+    size_t take(size_t device) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        const size_t left = next < count ? count - next : 0;
+        bool yield = left == 0;
+        for (size_t other = 0; other < speed.size() && !yield; ++other) {
+            yield = other != device && taking[other] && speed[device] > 0.0 &&
+                    speed[other] > static_cast<double>(left) * speed[device];
+        }
+        if (yield) {
+            taking[device] = false;
+            return count;
+        }
+        return next++;
+    }
+
+    // `device`'s speed measured on this split's items. A given speed is of an earlier split's
+    // items (of another size): the first measurement scales the speeds not yet measured alike,
+    // so that their ratios hold in this split's units.
+    void finished_item(size_t device, double items_per_second) {
+        {
+            // Through the mutex, so that the waiting thread cannot miss the notification.
+            const std::lock_guard<std::mutex> lock(mutex);
+            if (!measured[device] && speed[device] > 0.0) {
+                const double scale = items_per_second / speed[device];
+                for (size_t other = 0; other < speed.size(); ++other) {
+                    speed[other] *= measured[other] ? 1.0 : scale;
+                }
+            }
+            speed[device] = items_per_second;
+            measured[device] = true;
+            ++done;
+        }
+        changed.notify_one();
+    }
 };
 
-void run_device(size_t index, const Context& context, SplitQueue& queue,
+void run_device(size_t index, const Context& context, SplitQueue& queue, bool reserved_first,
                 const std::function<void(size_t, size_t, const std::atomic<bool>&)>& work,
                 std::vector<size_t>& items, double& seconds) {
     const auto start = SteadyClock::now();
     try {
-        for (size_t item = index; item < queue.count && !queue.failed; item = queue.next++) {
+        size_t item = reserved_first ? index : queue.take(index);
+        while (item < queue.count && !queue.failed) {
             work(index, item, queue.failed);
             if (queue.failed) {
                 break;
             }
             items.push_back(item);
-            {
-                // Through the mutex, so that the waiting thread cannot miss the notification.
-                const std::lock_guard<std::mutex> lock(queue.mutex);
-                ++queue.done;
-            }
-            queue.changed.notify_one();
+            queue.finished_item(
+                index, static_cast<double>(items.size()) / std::max(seconds_since(start), 1e-9));
+            item = queue.take(index);
         }
     } catch (const std::exception& e) {
         const std::lock_guard<std::mutex> lock(queue.mutex);
@@ -83,16 +124,22 @@ std::pair<size_t, size_t> ItemRanges::range(size_t range) const {
 DeviceSplit run_device_split(
     const std::vector<Context*>& devices, size_t count,
     const std::function<void(size_t device, size_t item, const std::atomic<bool>& stop)>& work,
-    const std::function<void(double fraction)>& progress) {
+    const std::function<void(double fraction)>& progress, const std::vector<double>& speeds) {
     SplitQueue queue;
     queue.count = count;
-    queue.next = devices.size();  // items 0 .. devices - 1 are the devices' first
+    const bool known = speeds.size() == devices.size() &&
+                       std::all_of(speeds.begin(), speeds.end(), [](double s) { return s > 0.0; });
+    // Without speeds, items 0 .. devices - 1 are the devices' first.
+    queue.next = known ? 0 : std::min(count, devices.size());
+    queue.speed = known ? speeds : std::vector<double>(devices.size(), 0.0);
+    queue.measured.assign(devices.size(), false);
+    queue.taking.assign(devices.size(), true);
     DeviceSplit split;
     split.items.resize(devices.size());
     split.seconds.resize(devices.size());
     std::vector<std::thread> threads;
     for (size_t i = 0; i < devices.size(); ++i) {
-        threads.emplace_back(run_device, i, std::cref(*devices[i]), std::ref(queue),
+        threads.emplace_back(run_device, i, std::cref(*devices[i]), std::ref(queue), !known,
                              std::cref(work), std::ref(split.items[i]), std::ref(split.seconds[i]));
     }
     // Progress every 50 ms until the last item is done (woken at once then: short splits

@@ -1,8 +1,13 @@
 // Work shared among several devices (FrameScene::peers): items 0 .. count - 1 (pixel
 // chunks, photon batches) taken in turn by one thread per device as it finishes its last, so
 // faster devices take more; device i takes item i first, so each does at least one when there
-// are enough. What an item computes must not depend on the device that takes it; the caller
-// merges the devices' results by item (or, for sums exact in any order, as they come).
+// are enough. Given the devices' relative speeds (from an earlier split), or once both have
+// finished an item of this one, a device does not take an item that a faster device still taking
+// items would finish, with every item left, before it finished that one: the split never waits on
+// a slow device's last item longer than the faster devices take for what is left (a CPU beside a
+// GPU, rusticl beside PoCL). What an item computes must not depend on the device that takes it;
+// the caller merges the devices' results by item (or, for sums exact in any order, as they
+// come).
 #pragma once
 
 #include <algorithm>
@@ -66,9 +71,11 @@ size_t copy_chunks(const PixelChunks& pixels, const std::vector<size_t>& chunks,
 // (may be empty) is called on this thread with the fraction done while they run. `stop` turns
 // true once any item failed: a long item may end early. The first failure is rethrown as an
 // Error (its exit status kept) prefixed "device P:D (NAME): ", after every thread has ended.
+// `speeds` (empty, or one per device, > 0): the devices' items per second in an earlier split
+// (relative figures suffice); with them no item is reserved for a device at the start.
 DeviceSplit run_device_split(
     const std::vector<Context*>& devices, size_t count,
     const std::function<void(size_t device, size_t item, const std::atomic<bool>& stop)>& work,
-    const std::function<void(double fraction)>& progress);
+    const std::function<void(double fraction)>& progress, const std::vector<double>& speeds = {});
 
 }  // namespace rc

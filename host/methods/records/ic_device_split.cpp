@@ -112,6 +112,7 @@ IcDeviceSplit::IcDeviceSplit(const FrameScene& frame) {
     for (const auto& device : devices_) {
         shares_.push_back({device_name(device->frame.context)});
     }
+    record_speeds_.assign(devices_.size(), 0.0);
 }
 
 IcDeviceSplit::~IcDeviceSplit() = default;
@@ -171,18 +172,24 @@ RecordBatchOutput IcDeviceSplit::compute_batch(const RecordBatchInput& batch,
             std::copy(h.begin(), h.end(), out.distances.begin() + static_cast<long>(begin));
             device.rays += counters.download()[0];
         },
-        {});
+        {}, record_speeds_);
     for (size_t d = 0; d < devices_.size(); ++d) {
         Device& device = *devices_[d];
         device.source.reset();
         out.rays += device.rays;
         IcDeviceShare& share = shares_[d];
         share.record_ranges += split.items[d].size();
+        size_t records = 0;
         for (size_t item : split.items[d]) {
             const auto [begin, end] = ranges.range(item);
-            share.records += end - begin;
+            records += end - begin;
         }
+        share.records += records;
         share.record_seconds += split.seconds[d];
+        // Its speed for the next batches' split, where it computed records in this one.
+        if (records > 0 && split.seconds[d] > 0.0) {
+            record_speeds_[d] = static_cast<double>(records) / split.seconds[d];
+        }
     }
     return out;
 }

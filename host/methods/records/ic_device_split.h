@@ -91,6 +91,9 @@ class IcDeviceSplit {
     struct Device;
     std::vector<std::unique_ptr<Device>> devices_;
     std::vector<IcDeviceShare> shares_;
+    // Each device's records per second in the last batch it computed records of (0: none yet):
+    // the next batch's split does not wait on a slow device (run_device_split).
+    std::vector<double> record_speeds_;
 };
 
 }  // namespace rc
