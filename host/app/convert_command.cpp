@@ -8,9 +8,23 @@
 #include "util/error.h"
 #include "util/file_io.h"
 #include "util/log.h"
+#include "util/new_folders.h"
 
 namespace rc {
 namespace {
+
+// Error (exit status 2) before any work when a mesh or texture folder's path is taken by what is
+// not a folder.
+void check_folders(const std::vector<std::filesystem::path>& folders) {
+    for (const std::filesystem::path& folder : folders) {
+        std::error_code error;
+        const std::filesystem::file_status status = std::filesystem::status(folder, error);
+        if (std::filesystem::exists(status) && !std::filesystem::is_directory(status)) {
+            throw Error("convert: OUT's folder " + folder.string() + " exists and is not a folder",
+                        kExitUsage);
+        }
+    }
+}
 
 int convert(const ParsedArguments& arguments) {
     if (arguments.positionals().size() != 2) {
@@ -28,6 +42,10 @@ int convert(const ParsedArguments& arguments) {
         throw Error("convert: OUT " + out.string() + ": expected a .json file name", kExitUsage);
     }
     check_writable_parent(out, "OUT");
+    const std::vector<std::filesystem::path> folders = {
+        out.parent_path() / (out.stem().string() + "_meshes"),
+        out.parent_path() / (out.stem().string() + "_textures")};
+    check_folders(folders);
     const RecordedFiles read;  // OUT may be none of the files IN read
     const Scene scene = load_scene(in, read, arguments.value("--camera"));
     RunFiles run;
@@ -35,7 +53,13 @@ int convert(const ParsedArguments& arguments) {
     read.add_inputs_to(run);
     run.output("OUT", out);
     run.check();
+    // All or nothing: every file staged and renamed at the commit; on failure (a full disk, a
+    // limit of the format) the staged files go, and so do the folders this run made.
+    NewFolders new_folders(folders);
+    OutputBatch batch;
     write_scene(scene, out);
+    batch.commit();
+    new_folders.keep();
     log_note("wrote " + out.string() + " (" + std::to_string(scene.shapes.size()) + " shapes, " +
              std::to_string(scene.materials.size()) + " materials)");
     return 0;

@@ -4,6 +4,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "util/scale_free.h"
+
 namespace rc {
 
 namespace {
@@ -71,8 +73,8 @@ float default_filter_radius(int type) {
 }
 
 shared::CameraParams camera_params(const Camera& camera, int width, int height) {
-    const glm::vec3 forward = glm::normalize(camera.look_at - camera.position);
-    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::vec3 forward = scale_free_normalize(camera.look_at - camera.position);
+    const glm::vec3 right = scale_free_normalize(glm::cross(forward, camera.up));
     const glm::vec3 up = glm::cross(right, forward);
     const float w = static_cast<float>(width);
     const float h = static_cast<float>(height);

@@ -18,6 +18,7 @@
 #include "scene/json_parse.h"
 #include "util/error.h"
 #include "util/log.h"
+#include "util/scale_free.h"
 #include "util/text.h"
 
 namespace rc {
@@ -239,8 +240,7 @@ class GltfSceneBuilder {
         if (static_cast<size_t>(node.mesh) >= model_.meshes.size()) {
             throw Error(what + ": mesh " + std::to_string(node.mesh) + " does not exist");
         }
-        const float determinant = glm::determinant(glm::mat3(world));
-        if (!std::isfinite(determinant) || determinant == 0.0f) {
+        if (linear_determinant(world) == 0.0) {
             throw Error(what + ": its transform is not invertible");
         }
         const tinygltf::Mesh& mesh = model_.meshes[node.mesh];
@@ -471,7 +471,13 @@ class GltfSceneBuilder {
             return camera;
         }
         const glm::vec3 centre = 0.5f * (lo + hi);
-        const float size = std::max(glm::length(hi - lo), 1e-3f);
+        // Relative to the scene at any scale (double where float's squares underflow), 1 for a
+        // single point.
+        float size = glm::length(hi - lo);
+        if (!(size > 0.0f)) {
+            size = static_cast<float>(glm::length(glm::dvec3(hi) - glm::dvec3(lo)));
+        }
+        size = size > 0.0f ? size : 1.0f;
         camera.position = centre + glm::vec3(0.0f, 0.0f, 1.5f * size);
         camera.look_at = centre;
         camera.fov_degrees = 45.0f;

@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/scene_files.h"
 #include "util/error.h"
 #include "util/text.h"
 
 namespace rc {
 namespace {
 
-// The longest string a scene's key may hold (names, types, file paths).
-constexpr size_t kMaxStringBytes = 4096;
+constexpr size_t kMaxStringBytes = kMaxSceneStringBytes;
 
 std::string describe(const nlohmann::json& value) { return describe_json(value); }
 

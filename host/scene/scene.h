@@ -25,6 +25,11 @@ namespace rc {
 // [-kMaxWorldCoordinate, kMaxWorldCoordinate] on each axis (docs/scene-format.md): beyond it,
 // squared distances in the kernels and bounds in Embree's BVH build overflow single precision.
 inline constexpr float kMaxWorldCoordinate = 1e12f;
+// The least extent (bounding box diagonal) of a scene's triangles in world space, 2^-42, about
+// 2.3e-13: the device's single-precision ray/triangle test multiplies three coordinates, whose
+// product underflows float's normal range (2^-126) below it. A scene without extent (no
+// triangles, or one point) is not bound by it.
+inline constexpr float kMinSceneExtent = 0x1p-42f;
 
 struct Shape {
     std::string name;

@@ -15,6 +15,8 @@ inline constexpr uint64_t kMaxSceneFileBytes = uint64_t{64} << 20;
 inline constexpr uint64_t kMaxMeshFileBytes = uint64_t{2} << 30;
 inline constexpr uint64_t kMaxMaterialFileBytes = uint64_t{64} << 20;
 inline constexpr uint64_t kMaxTextureFileBytes = uint64_t{1} << 30;
+// The longest string a scene file's value may hold (names, types, file paths).
+inline constexpr size_t kMaxSceneStringBytes = 4096;
 
 class SceneFiles {
    public:

@@ -16,6 +16,7 @@
 #include "util/error.h"
 #include "util/glm_helpers.h"
 #include "util/log.h"
+#include "util/scale_free.h"
 #include "util/text.h"
 
 namespace rc {
@@ -97,6 +98,28 @@ glm::vec3 world_point(const glm::mat4& to_world, glm::vec3 object, const std::st
     return p;
 }
 
+// Error when world triangle `w` (triangle t of `what`) is smaller than single precision can
+// intersect and shade: the device's products of edge components (the edges' cross product, its
+// normal, the ray/triangle determinant) underflow float's normal range (2^-126, about 1.2e-38)
+// when twice its area does: a scene scaled by about 1e-21 or less. Exactly 0 stays allowed (a
+// triangle that collapses under rounding is never hit, as before).
+void check_triangle_span(const TriangleMesh& mesh, const glm::uvec3& w, const std::string& what,
+                         size_t t, double frame) {
+    const glm::dvec3 a(mesh.positions[w.x]);
+    const double span = glm::length(
+        glm::cross(glm::dvec3(mesh.positions[w.y]) - a, glm::dvec3(mesh.positions[w.z]) - a));
+    if (span > 0.0 && span < static_cast<double>(FLT_MIN)) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      ": triangle %zu at frame %s has twice its area %.3g in world space, below "
+                      "single precision's normal range (%.3g)",
+                      t, frame_text(frame).c_str(), span, static_cast<double>(FLT_MIN));
+        throw Error(what + text +
+                    ": the device cannot intersect or shade it (the scene is too small for float: "
+                    "scale it up)");
+    }
+}
+
 // The material slot of a shape's triangle t (slot 0 for a bad or missing index).
 size_t material_slot(const Shape& shape, size_t t) {
     const int slot = shape.mesh.materials.empty() ? 0 : shape.mesh.materials[t];
@@ -147,7 +170,7 @@ void add_shape_triangles(Scene& scene, size_t s, ShapeLights& shape_lights) {
         scene.animation.motion(TrackTarget::kShape, shape.name, scene.frame) * shape.transform;
     // A mirroring transform reverses the winding; undo that so the winding normal stays on
     // the side the object-space winding named (and flip_normals flips it on purpose).
-    const bool mirrored = glm::determinant(glm::mat3(to_world)) < 0.0f;
+    const bool mirrored = linear_determinant(to_world) < 0.0;
     const bool flip = mirrored != shape.flip_normals;
     const auto base = static_cast<unsigned>(mesh.positions.size());
     const int normal_base =
@@ -180,6 +203,7 @@ void add_shape_triangles(Scene& scene, size_t s, ShapeLights& shape_lights) {
         }
         const auto primitive = static_cast<unsigned>(mesh.triangles.size());
         mesh.triangles.push_back(local + glm::uvec3(base));
+        check_triangle_span(mesh, mesh.triangles.back(), shape_name, t, scene.frame);
         const size_t slot = material_slot(shape, t);
         const int light = shape_lights.light_of_slot[slot];
         shared::TriangleShading sh{};
@@ -201,9 +225,12 @@ void add_shape_triangles(Scene& scene, size_t s, ShapeLights& shape_lights) {
         scene.triangle_shape.push_back(static_cast<unsigned>(s));
         if (light >= 0) {
             const glm::uvec3& w = mesh.triangles.back();
-            const float area =
-                0.5f * glm::length(glm::cross(mesh.positions[w.y] - mesh.positions[w.x],
-                                              mesh.positions[w.z] - mesh.positions[w.x]));
+            // In double: the squared length of the edges' cross product leaves float's range
+            // for edges below about 1e-9.5 or above 4e9 (a scene scaled by 1e-15 or 1e8).
+            const glm::dvec3 a(mesh.positions[w.x]);
+            const float area = static_cast<float>(
+                0.5 * glm::length(glm::cross(glm::dvec3(mesh.positions[w.y]) - a,
+                                             glm::dvec3(mesh.positions[w.z]) - a)));
             shape_lights.triangles[slot].push_back(primitive);
             shape_lights.areas[slot].push_back(area);
         }
@@ -243,9 +270,27 @@ void close_area_lights(const Shape& shape, const ShapeLights& shape_lights, Ligh
     }
 }
 
-// Half the diagonal of the frame's bounding box (1 for an empty scene).
+// Error when the frame's triangles span less than kMinSceneExtent (but more than a point).
+void check_scene_extent(const TriangleMesh& mesh, double frame) {
+    const float diagonal = mesh_diagonal(mesh);
+    if (diagonal > 0.0f && diagonal < kMinSceneExtent) {
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "the scene's extent (its bounding box's diagonal) at frame %s is %.3g "
+                      "scene units, below the least single precision can render, 2^-42 (%.3g): "
+                      "the device's ray/triangle test underflows float (scale the scene up)",
+                      frame_text(frame).c_str(), static_cast<double>(diagonal),
+                      static_cast<double>(kMinSceneExtent));
+        throw Error(text);
+    }
+}
+
+// Half the diagonal of the frame's bounding box (1 for an empty scene or a single point): no
+// absolute floor, so that an environment's share of the light power is that of the scene at any
+// scale.
 float scene_radius(const TriangleMesh& mesh) {
-    return mesh.positions.empty() ? 1.0f : std::max(0.5f * mesh_diagonal(mesh), 1e-6f);
+    const float diagonal = mesh_diagonal(mesh);
+    return diagonal > 0.0f ? 0.5f * diagonal : 1.0f;
 }
 
 // The device light of a point, spot or environment emitter at the frame, and its power.
@@ -306,7 +351,7 @@ void warn_unless_camera_view_finite(const Camera& camera, double frame) {
     const glm::vec3 right = glm::cross(forward, camera.up);
     const bool finite = within_world(camera.position) && within_world(camera.look_at) &&
                         within_world(forward) && std::isfinite(glm::length(right)) &&
-                        glm::length(right) > 0.0f;
+                        !is_zero_vector(right);
     if (!finite) {
         log_warning("camera at frame " + frame_text(frame) + ": position " +
                     format_point(camera.position) + " looking at " + format_point(camera.look_at) +
@@ -339,6 +384,7 @@ void Scene::set_frame(double new_frame) {
         add_shape_triangles(*this, s, shape_lights);
         close_area_lights(shapes[s], shape_lights, lights, power);
     }
+    check_scene_extent(mesh, frame);
     const float radius = scene_radius(mesh);
     for (size_t e = 0; e < emitters.size(); ++e) {
         const Emitter& emitter = emitters[e];

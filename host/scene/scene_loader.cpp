@@ -16,6 +16,7 @@
 #include "util/error.h"
 #include "util/file_io.h"
 #include "util/log.h"
+#include "util/scale_free.h"
 #include "util/text.h"
 
 namespace rc {
@@ -139,10 +140,10 @@ class SceneParser {
                                    std::to_string(camera.fov_degrees));
         }
         const glm::vec3 forward = camera.look_at - camera.position;
-        if (glm::length(forward) == 0.0f) {
+        if (is_zero_vector(forward)) {
             reader.fail("look_at", "coincides with position");
         }
-        if (glm::length(glm::cross(forward, camera.up)) == 0.0f) {
+        if (is_zero_vector(glm::vec3(glm::cross(glm::dvec3(forward), glm::dvec3(camera.up))))) {
             reader.fail("up", "is parallel to the viewing direction");
         }
         return camera;
@@ -382,7 +383,7 @@ class SceneParser {
             emitter.kind = EmitterKind::kSpot;
             emitter.position = reader.vec3("position");
             emitter.look_at = reader.vec3("look_at");
-            if (glm::length(emitter.look_at - emitter.position) == 0.0f) {
+            if (is_zero_vector(emitter.look_at - emitter.position)) {
                 reader.fail("look_at", "coincides with position");
             }
             emitter.intensity = parse_colour(reader, "intensity", glm::vec3(1.0f), 0.0f, 1e12f);

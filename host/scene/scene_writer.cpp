@@ -4,13 +4,46 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "scene/mesh_instances.h"
+#include "scene/scene_files.h"
 #include "util/error.h"
 #include "util/file_io.h"
+#include "util/text.h"
 
 namespace rc {
 namespace {
 
 nlohmann::json vec3_json(glm::vec3 v) { return {v.x, v.y, v.z}; }
+
+// `text` when the scene format can hold it (render refuses longer strings); Error naming `what`.
+const std::string& limited(const std::string& text, const std::string& what) {
+    if (text.size() > kMaxSceneStringBytes) {
+        throw Error("convert: " + what + " is a string of " + std::to_string(text.size()) +
+                    " bytes, more than the scene format's limit of " +
+                    std::to_string(kMaxSceneStringBytes) + ": '" + excerpt(text) + "'");
+    }
+    return text;
+}
+
+// Error naming `file` when `bytes` is more than a scene may read from it (`limit`).
+void check_size(const std::string& bytes, uint64_t limit, const std::filesystem::path& file,
+                const std::string& what) {
+    if (bytes.size() > limit) {
+        throw Error("convert: " + file.string() + " would be " + std::to_string(bytes.size()) +
+                    " bytes, more than the " + std::to_string(limit >> 20) + " MiB a " + what +
+                    " may hold: render would refuse it");
+    }
+}
+
+// Makes the folder `dir`; Error naming it (not the library's text) when it cannot be made.
+void make_folder(const std::filesystem::path& dir) {
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    if (error) {
+        throw Error("convert: " + dir.string() + ": cannot make the folder (" + error.message() +
+                    ")");
+    }
+}
 
 // "%.9g": nine significant digits read back to the same float.
 std::string number(float value) {
@@ -80,14 +113,19 @@ nlohmann::json render_json(const RenderSettings& render) {
 class SceneWriter {
    public:
     SceneWriter(const Scene& scene, const std::filesystem::path& json)
-        : scene_(scene), json_(json), stem_(json.stem().string()) {}
+        : scene_(scene),
+          json_(json),
+          stem_(json.stem().string()),
+          first_with_mesh_(first_shape_with_mesh(scene.shapes)) {}
 
     void write() {
         nlohmann::json root;
         root["camera"] = camera_json(scene_.base_camera);
         root["materials"] = nlohmann::json::object();
-        for (const Material& material : scene_.materials) {
-            root["materials"][material.name] = material_json(material);
+        for (size_t m = 0; m < scene_.materials.size(); ++m) {
+            const Material& material = scene_.materials[m];
+            root["materials"][limited(material.name, "material " + std::to_string(m) + "'s name")] =
+                material_json(material);
         }
         root["shapes"] = nlohmann::json::array();
         for (size_t i = 0; i < scene_.shapes.size(); ++i) {
@@ -101,7 +139,9 @@ class SceneWriter {
         if (!render.empty()) {
             root["render"] = render;
         }
-        write_file_atomically(json_, root.dump(1) + "\n");
+        const std::string text = root.dump(1) + "\n";
+        check_size(text, kMaxSceneFileBytes, json_, "scene file");
+        write_file_atomically(json_, text);
     }
 
    private:
@@ -112,13 +152,16 @@ class SceneWriter {
         const Texture& texture = scene_.textures[material.diffuse_texture];
         if (texture.encoded.empty()) {
             return {{"type", "bitmap"},
-                    {"filename", std::filesystem::absolute(texture.file).string()},
+                    {"filename",
+                     limited(std::filesystem::absolute(texture.file).string(),
+                             "texture " + std::to_string(material.diffuse_texture) + "'s path")},
                     {"scale", vec3_json(material.diffuse)}};
         }
         const std::string relative = stem_ + "_textures/" +
                                      std::to_string(material.diffuse_texture) + "_" +
                                      texture.file.filename().string();
-        std::filesystem::create_directories(json_.parent_path() / (stem_ + "_textures"));
+        limited(relative, "texture " + std::to_string(material.diffuse_texture) + "'s file name");
+        make_folder(json_.parent_path() / (stem_ + "_textures"));
         write_file_atomically(json_.parent_path() / relative, texture.encoded);
         return {{"type", "bitmap"}, {"filename", relative}, {"scale", vec3_json(material.diffuse)}};
     }
@@ -146,21 +189,29 @@ class SceneWriter {
             throw Error("convert: shape '" + shape.name +
                         "' has several material slots, which the writer cannot hold");
         }
-        const std::string relative = stem_ + "_meshes/" + std::to_string(index) + ".obj";
-        std::filesystem::create_directories(json_.parent_path() / (stem_ + "_meshes"));
-        write_file_atomically(json_.parent_path() / relative, obj_text(shape.mesh));
+        // Instancing kept: a mesh that an earlier shape has is that shape's file.
+        const size_t first = first_with_mesh_[index];
+        const std::string relative = stem_ + "_meshes/" + std::to_string(first) + ".obj";
+        limited(relative, "shape " + std::to_string(index) + "'s mesh file");
+        if (first == index) {
+            make_folder(json_.parent_path() / (stem_ + "_meshes"));
+            const std::string obj = obj_text(shape.mesh);
+            check_size(obj, kMaxMeshFileBytes, json_.parent_path() / relative, "mesh file");
+            write_file_atomically(json_.parent_path() / relative, obj);
+        }
         nlohmann::json matrix = nlohmann::json::array();
         for (int row = 0; row < 4; ++row) {
             for (int column = 0; column < 4; ++column) {
                 matrix.push_back(shape.transform[column][row]);
             }
         }
-        nlohmann::json json = {{"type", "obj"},
-                               {"name", shape.name},
-                               {"file", relative},
-                               {"material", scene_.materials[shape.materials[0]].name},
-                               {"transform", {{{"matrix", matrix}}}},
-                               {"flip_normals", shape.flip_normals}};
+        nlohmann::json json = {
+            {"type", "obj"},
+            {"name", limited(shape.name, "shape " + std::to_string(index) + "'s name")},
+            {"file", relative},
+            {"material", scene_.materials[shape.materials[0]].name},
+            {"transform", {{{"matrix", matrix}}}},
+            {"flip_normals", shape.flip_normals}};
         if (!shape.emission.empty()) {
             json["emitter"] = {{"type", "area"}, {"radiance", vec3_json(shape.emission[0])}};
         }
@@ -171,12 +222,12 @@ class SceneWriter {
         switch (emitter.kind) {
             case EmitterKind::kPoint:
                 return {{"type", "point"},
-                        {"name", emitter.name},
+                        {"name", limited(emitter.name, "an emitter's name")},
                         {"position", vec3_json(emitter.position)},
                         {"intensity", vec3_json(emitter.intensity)}};
             case EmitterKind::kSpot:
                 return {{"type", "spot"},
-                        {"name", emitter.name},
+                        {"name", limited(emitter.name, "an emitter's name")},
                         {"position", vec3_json(emitter.position)},
                         {"look_at", vec3_json(emitter.look_at)},
                         {"intensity", vec3_json(emitter.intensity)},
@@ -184,7 +235,7 @@ class SceneWriter {
                         {"beam_width", emitter.beam_width}};
             default:
                 return {{"type", "constant"},
-                        {"name", emitter.name},
+                        {"name", limited(emitter.name, "an emitter's name")},
                         {"radiance", vec3_json(emitter.radiance)}};
         }
     }
@@ -192,6 +243,7 @@ class SceneWriter {
     const Scene& scene_;
     std::filesystem::path json_;
     std::string stem_;
+    std::vector<size_t> first_with_mesh_;  // per shape, the first shape with its mesh
 };
 
 }  // namespace

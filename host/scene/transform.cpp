@@ -7,6 +7,7 @@
 #include <glm/matrix.hpp>
 
 #include "scene/json_reader.h"
+#include "util/scale_free.h"
 
 namespace rc {
 
@@ -63,9 +64,11 @@ glm::mat4 parse_transform(const JsonReader& reader, const std::string& key) {
         }
         result = m * result;
     }
-    const float determinant = glm::determinant(glm::mat3(result));
-    if (!std::isfinite(determinant) || determinant == 0.0f) {
-        reader.fail(key, "is not invertible (determinant " + std::to_string(determinant) + ")");
+    // The determinant in double: a uniform scale of 1e-17 has 1e-51, 0 in float, and is
+    // invertible; one of 1e15 has 1e45, which overflows float though every entry is a float.
+    const double determinant = linear_determinant(result);
+    if (determinant == 0.0) {
+        reader.fail(key, "is not invertible (determinant 0)");
     }
     return result;
 }
@@ -78,7 +81,13 @@ glm::vec3 transform_point(const glm::mat4& m, glm::vec3 p) {
 glm::vec3 transform_direction(const glm::mat4& m, glm::vec3 d) { return glm::mat3(m) * d; }
 
 glm::vec3 transform_normal(const glm::mat4& m, glm::vec3 n) {
-    return glm::normalize(glm::transpose(glm::inverse(glm::mat3(m))) * n);
+    const glm::vec3 world = glm::transpose(glm::inverse(glm::mat3(m))) * n;
+    if (std::isfinite(world.x) && std::isfinite(world.y) && std::isfinite(world.z)) {
+        return scale_free_normalize(world);
+    }
+    // A scale whose determinant leaves float (1e-17: the inverse divides by 0): in double.
+    const glm::dmat3 inverse = glm::inverse(glm::dmat3(glm::mat3(m)));
+    return glm::vec3(glm::normalize(glm::transpose(inverse) * glm::dvec3(n)));
 }
 
 }  // namespace rc

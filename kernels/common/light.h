@@ -110,7 +110,7 @@ RC_FUNC void rc_sample_area_light(const SceneData* scene, const Light* light, fl
         const float3 q = p + (dot(triangle->v0.xyz - p, -nl) / cos_light) * s->direction;
         s->pdf = rc_solid_angle_light_pdf(light, selection, triangle, solid_angle);
         s->radiance = light->radiance.xyz;
-        s->target = rc_offset_ray_origin(q, nl);
+        s->target = rc_offset_ray_origin(q, nl, triangle);
         return;
     }
     // Uniform point on the triangle (pbrt-v3 §13.6.5), its area density converted to solid angle.
@@ -130,7 +130,7 @@ RC_FUNC void rc_sample_area_light(const SceneData* scene, const Light* light, fl
     }
     s->pdf = selection * distance2 / (light->area * cos_light);
     s->radiance = light->radiance.xyz;
-    s->target = rc_offset_ray_origin(q, nl);
+    s->target = rc_offset_ray_origin(q, nl, triangle);
 }
 
 // Samples light l (chosen with probability `selection`) from point p.

@@ -56,7 +56,7 @@ RC_FUNC Photon rc_ivg_emit(const SceneData* scene, const IvgParams* p, RngStream
         const float b0 = 1.0f - su;
         const float b1 = u3 * su;
         const float3 nl = rc_triangle_normal(triangle);
-        origin = rc_offset_ray_origin(rc_hit_point(triangle, b1, 1.0f - b0 - b1), nl);
+        origin = rc_offset_ray_origin(rc_hit_point(triangle, b1, 1.0f - b0 - b1), nl, triangle);
         direction = rc_to_world(rc_cosine_hemisphere(u4, rc_rng_next_float(rng)), nl);
         photon.power = light.radiance.xyz * (RC_PI * light.area);
     } else if (kind == RC_LIGHT_POINT) {

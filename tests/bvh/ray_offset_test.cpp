@@ -97,7 +97,11 @@ TEST(RayOffset, BouncesNeverHitTheSurfaceTheyLeaveAtAnyScale) {
           Case{glm::vec3(278.0f, 0.0f, 280.0f), 550.0f, 0.3f},
           // Hit points near the origin on a huge quad: the intersection error
           // follows the vertices' magnitude, not the hit point's.
-          Case{glm::vec3(0.0f), 2000.0f, 0.001f}}) {
+          Case{glm::vec3(0.0f), 2000.0f, 0.001f},
+          // Scenes scaled far down: the near-origin step is a fraction of the triangle's unit
+          // (kernels/common/ray_offset.h), small enough to stay on the surface's side, large
+          // enough to leave it.
+          Case{glm::vec3(0.0f), 1e-6f, 0.3f}, Case{glm::vec3(3e-9f, -1e-9f, 2e-9f), 4e-9f, 0.3f}}) {
         const SelfHits hits = count_self_hits(tilted_quad(c.centre, c.size, c.spread));
         EXPECT_GT(hits.rays, 10000u);
         EXPECT_EQ(hits.offset, 0u) << "centre " << c.centre.x << " size " << c.size;
