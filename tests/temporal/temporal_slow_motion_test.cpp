@@ -48,7 +48,8 @@ std::filesystem::path rolling_ball_scene(int slowdown) {
 }
 
 // The first-level records temporal caching places at frame 0 of a long clip (16 x 16 pixels,
-// 1 sample, 256 rays, one cache level path-traced beyond its hits), with their lifespans.
+// 1 sample, 256 rays, one cache level path-traced beyond its hits), with their lifespans; the
+// frame's statistics count those on the ball.
 std::vector<TemporalRecord> records_at_frame_0(int slowdown) {
     test::PosedFrames frames(load_scene(rolling_ball_scene(slowdown)));
     auto ic = test::image_options<IrradianceCacheOptions>(16, 16, 1, 5);
@@ -66,7 +67,12 @@ std::vector<TemporalRecord> records_at_frame_0(int slowdown) {
     hooks.visit_frame = [&](int other, const std::function<void(const FrameScene&)>& use) {
         use(frames.at(other));
     };
-    cache.render_frame(frames.at(0), hooks);
+    const nlohmann::json stats = cache.render_frame(frames.at(0), hooks).stats["temporal"];
+    size_t on_moving = 0;
+    for (const TemporalRecord& r : cache.records(0)) {
+        on_moving += r.site_moves ? 1 : 0;
+    }
+    EXPECT_EQ(stats["on_moving_surfaces"].get<size_t>(), on_moving);
     return cache.records(0);
 }
 
