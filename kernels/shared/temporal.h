@@ -46,8 +46,8 @@ typedef struct TcCarriedSample {
     float depth;      // its distance from the record's ray origin then (INFINITY: no hit)
     int cell;         // the hemisphere cell it arrives through then (-1: none, it left the
                       // record's hemisphere or turned its back)
-    float row;        // where in the cells it arrives, continuous: M sin^2 theta
-    float column;     // N phi / (2 pi)
+    float row;        // the centre of the square it covers then, in continuous cell units
+    float column;     // (rc_tc_carried_cell: its own cell carried by its motion)
     float size;       // the side of the square of cells it covers (0: it did not move and
                       // stands for its own cell alone)
     int pad0;

@@ -109,13 +109,35 @@ RC_FUNC bool rc_tc_segment_meets_box(Ray ray, float t_max, float3 lower, float3 
 // cell it lands in).
 #define RC_TC_MAX_SQUARE 2.0f
 
+// The centre of the square a moved sample covers at the next frame, in continuous cell units
+// (rc_tc_cell_position's): its own cell's centre (row j + 1/2, column k + 1/2 of cell `cell`),
+// shifted by how far its hit point's direction moved through the cells, from `before` (its ray's
+// local direction at this frame) to `after` (the local direction of the hit point's next
+// position); the column's shift wrapped into [-N/2, N/2], the centre's column into [0, N). The
+// report rasterises each reprojected point as a pixel-sized point on the next frame's grid (§5
+// "Reprojection of Incoming Radiance", Figure 7(b), (c)): a point that did not move lands on its
+// own pixel. The cells' rays here are jittered, and a square centred on the jittered ray takes a
+// neighbour cell's ray whenever the two jitters lie within half a cell, whatever the motion; the
+// carried cell takes its own cell's ray alone at zero motion and a neighbour's in proportion to
+// the motion, so the change estimated through it (eqs. 7-8) has no floor from the jitter and
+// shrinks with the motion.
+RC_FUNC float2 rc_tc_carried_cell(float3 before, float3 after, int cell, int m, int n, int layout) {
+    const float2 from = rc_tc_cell_position(before, m, n, layout);
+    const float2 to = rc_tc_cell_position(after, m, n, layout);
+    float shift = to.y - from.y;
+    shift -= (float)n * round(shift / (float)n);
+    float column = (float)(cell % n) + 0.5f + shift;
+    column -= (float)n * floor(column / (float)n);
+    return (float2)((float)(cell / n) + 0.5f + to.x - from.x, column);
+}
+
 // Sample `cell` of a record at `origin` (frame `frame`), whose ray `ray` saw (radiance, distance)
 // at this frame, carried to the next frame. A miss stays in its cell with the environment's
 // change; a hit on a still triangle keeps its cell and depth; a hit on a moving triangle moves
-// with it (the same barycentric coordinates on the triangle's next position) and arrives through
-// the cell of its new direction, unless it leaves the hemisphere or turns its back to the record;
-// it covers a square of one cell, grown as its distance shrinks (the solid angle of the surface
-// it stands for grows as the inverse square of the distance), up to RC_TC_MAX_SQUARE.
+// with it (the same barycentric coordinates on the triangle's next position), unless it leaves the
+// hemisphere or turns its back to the record; it covers its own cell carried by its motion
+// (rc_tc_carried_cell), grown as its distance shrinks (the solid angle of the surface it stands
+// for grows as the inverse square of the distance), up to RC_TC_MAX_SQUARE.
 RC_FUNC TcCarriedSample rc_tc_carry_sample(const SceneData* scene, MovedTriangles moved,
                                            RC_GLOBAL const TcEmitter* now,
                                            RC_GLOBAL const TcEmitter* next, const TcParams* tc,
@@ -157,12 +179,14 @@ RC_FUNC TcCarriedSample rc_tc_carry_sample(const SceneData* scene, MovedTriangle
         const float3 offset = position - origin;
         s.depth = length(offset);
         const float3 direction = rc_to_local(&frame, offset / s.depth);
-        s.cell = dot(normal, offset) < 0.0f && s.depth > 0.0f
-                     ? rc_tc_cell_of(direction, m, n, tc->cell_layout)
-                     : -1;
-        const float2 position_in_cells = rc_tc_cell_position(direction, m, n, tc->cell_layout);
-        s.row = position_in_cells.x;
-        s.column = position_in_cells.y;
+        const bool faces = dot(normal, offset) < 0.0f && s.depth > 0.0f && direction.z > 0.0f;
+        const float2 centre = rc_tc_carried_cell(rc_to_local(&frame, ray.direction.xyz), direction,
+                                                 cell, m, n, tc->cell_layout);
+        s.row = centre.x;
+        s.column = centre.y;
+        s.cell = faces ? min(m - 1, max(0, (int)floor(centre.x))) * n +
+                             min(n - 1, max(0, (int)floor(centre.y)))
+                       : -1;
         s.size = clamp(seen.w / s.depth, 1.0f, RC_TC_MAX_SQUARE);
     }
     const float3 e1 = rc_tc_unshadowed_irradiance(next, emitter_count, position, normal);

@@ -272,17 +272,18 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
             two_frames && level == 0 ? two_frames->take(0) : std::vector<CarriedRecord>{};
         const double lifespan = adopt(level, t, cache.store(level), serving[l], carried, ahead,
                                       level == 0 ? replaced : std::vector<size_t>{}, still);
+        size_t on_moving = 0;
+        for (const CarriedRecord& c : carried) {
+            on_moving += c.site_moves ? 1 : 0;
+        }
         if (level == 0) {
+            stats.on_moving_surfaces = on_moving;
             stats.reused = serving[0].size();
             stats.recomputed = replaced.size();
             stats.dropped = expired[0].size() - replaced.size();
             stats.created = carried.size() - replaced.size();
             stats.mean_new_lifespan = lifespan;
         } else {
-            size_t on_moving = 0;
-            for (const CarriedRecord& c : carried) {
-                on_moving += c.site_moves ? 1 : 0;
-            }
             stats.deeper.push_back(
                 {serving[l].size(), carried.size(), expired[l].size(), on_moving, lifespan});
         }
@@ -386,6 +387,7 @@ FrameResult TemporalIrradianceCache::shade_frame(const FrameScene& frame) {
                                 {"recomputed", placed.recomputed},
                                 {"dropped", placed.dropped},
                                 {"created", placed.created},
+                                {"on_moving_surfaces", placed.on_moving_surfaces},
                                 {"mean_new_lifespan", placed.mean_new_lifespan},
                                 {"moving_primitives", placed.moving_primitives},
                                 {"record_rays", placed.record_rays},

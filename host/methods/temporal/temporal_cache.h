@@ -39,6 +39,7 @@ struct TemporalFrameStats {
     size_t recomputed = 0;           // expired records computed again in their place
     size_t dropped = 0;              // expired records that no longer served the image
     size_t created = 0;              // new records where the image was not covered
+    size_t on_moving_surfaces = 0;   // of the created and recomputed: on triangles that move
     size_t records = 0;              // serving this frame
     size_t moving_primitives = 0;    // triangles that move before the next frame
     double mean_new_lifespan = 0.0;  // of the records computed at this frame
