@@ -13,6 +13,7 @@
 
 #include "image/image_io.h"
 #include "scene/scene_loader.h"
+#include "test_device.h"
 #include "util/error.h"
 
 namespace rc::test {
@@ -20,6 +21,7 @@ namespace rc::test {
 ContextOptions default_context_options() {
     ContextOptions options;
     options.cache_dir = RADCACHE_TEST_CACHE_DIR;
+    options.device_spec = test_device_spec();
     return options;
 }
 
@@ -219,6 +221,10 @@ std::string shell_quote(const std::string& word) {
 CommandResult run_radcache(const std::vector<std::string>& args,
                            const std::vector<std::string>& environment) {
     std::string command = "env RADCACHE_CACHE_DIR=" + shell_quote(RADCACHE_TEST_CACHE_DIR);
+    // The tests' device, unless `environment` names another.
+    if (const std::string device = test_device_spec(); !device.empty()) {
+        command += " " + shell_quote("RADCACHE_DEVICE=" + device);
+    }
     for (const std::string& assignment : environment) {
         command += " " + shell_quote(assignment);
     }

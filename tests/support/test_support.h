@@ -16,8 +16,8 @@
 
 namespace rc::test {
 
-// The context every device test of this program shares (first device by the default rule,
-// kernel binary cache in the build tree).
+// The context every device test of this program shares (the device of test_device.h, kernel
+// binary cache in the build tree).
 Context& shared_context();
 
 // A fresh context with the given options on the same device.
@@ -87,7 +87,8 @@ struct CommandResult {
     int exit_code = -1;
     std::string output;  // stdout and stderr together
 };
-// Runs `radcache <args>` with optional environment assignments ("NAME=value").
+// Runs `radcache <args>` with optional environment assignments ("NAME=value"), on the tests'
+// device (RADCACHE_DEVICE, test_device.h) unless they name another.
 CommandResult run_radcache(const std::vector<std::string>& args,
                            const std::vector<std::string>& environment = {});
 
