@@ -163,8 +163,8 @@ TEST(TemporalWalkthrough, MaxFramesGivenBoundsEveryRecord) {
 // 1 (s = 1, 2, 4, 8). Records of 1024 rays at 24 floor sites around it (path-traced beyond their
 // hits) at frame 0 and their reprojection to frame 1: their mean estimated change falls at least
 // as s / 2, so that a^t / change, the frames a record serves beyond its first (eqs. 9-10), grows
-// at least as s / 2. (Measured: 4.8x at s = 8, not 8x: the depth test gives a moved sample's
-// square to a neighbour cell's ray whatever the motion, docs/lab/temporal-caching.md.)
+// at least as s / 2. (Measured: 5.5x at s = 8 with a moved sample covering its own cell carried
+// by its motion; 4.8x with the earlier square on its jittered ray, docs/lab/temporal-caching.md.)
 TEST(TemporalWalkthrough, SlowerMotionGivesSmallerEstimatedChanges) {
     std::vector<RecordSite> sites;
     for (int i = 0; i < 24; ++i) {
