@@ -3,7 +3,7 @@
 // scale whose extent single precision cannot intersect (1e-17) or whose coordinates leave the
 // world range (1e10) is refused in one line naming the reason, with no image. Before, a scale of
 // 1e-15 was refused ("emitter has zero area": the area's squared lengths underflowed), one of
-// 1e-9 rendered a third darker (a secondary ray's absolute offset near the origin, 1.5e-5, moved
+// 1e-9 rendered 30% darker (a secondary ray's absolute offset near the origin, 1.5e-5, moved
 // it across the room), one of 1e8 lost its direct light (the light's area overflowed float).
 #include <gtest/gtest.h>
 
