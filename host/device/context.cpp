@@ -199,9 +199,9 @@ void Context::run_chunked(Kernel& kernel, size_t first, size_t end) {
         time.items += items;
         begin += items;
         // Aim the next chunk at the target duration, within [local, max_chunk]. The host's time
-        // holds the launch's own cost, which no chunk size removes (rusticl 22.3 pays about 0.1 s
-        // a launch for its larger kernels): there chunks stay at least the first one's size, or
-        // they would shrink to a work group each and spend the render on launches.
+        // holds the launch's own cost, which no chunk size removes (rusticl 22.3: about 0.06 s a
+        // launch of ic_record_cells): there chunks stay at least the first one's size, or they
+        // would shrink to a work group each and spend the render on launches.
         if (items == chunk && seconds > 0.0) {
             const double scale = std::clamp(options_.chunk_seconds / seconds, 0.25, 4.0);
             const size_t least = host_timed ? first_chunk : local;
