@@ -156,7 +156,8 @@ void Context::run_chunked(Kernel& kernel, size_t first, size_t end) {
     const size_t local = local_size_for(kernel);
     const size_t max_chunk = round_up(
         options_.max_chunk_items != 0 ? options_.max_chunk_items : kDefaultMaxChunkItems, local);
-    size_t chunk = std::min(max_chunk, round_up(kFirstChunkItems, local));
+    const size_t first_chunk = std::min(max_chunk, round_up(kFirstChunkItems, local));
+    size_t chunk = first_chunk;
     KernelTime& time = kernel_times_[kernel.name()];
     for (size_t begin = first; begin < end;) {
         const size_t items = std::min(chunk, end - begin);
@@ -187,20 +188,26 @@ void Context::run_chunked(Kernel& kernel, size_t first, size_t end) {
         // A device whose events do not measure (rusticl 22.3 gives every launch 1 ns): the
         // host's time from enqueue to completion instead, for the timings and the chunk sizes.
         double seconds = static_cast<double>(ended - started) * 1e-9;
+        bool host_timed = false;
         if (seconds * kImplausibleProfileRatio < waited_seconds) {
             seconds = waited_seconds;
             time.host_timed += 1;
+            host_timed = true;
         }
         time.seconds += seconds;
         time.launches += 1;
         time.items += items;
         begin += items;
-        // Aim the next chunk at the target duration, within [local, max_chunk].
+        // Aim the next chunk at the target duration, within [local, max_chunk]. The host's time
+        // holds the launch's own cost, which no chunk size removes (rusticl 22.3: about 0.06 s a
+        // launch of ic_record_cells): there chunks stay at least the first one's size, or they
+        // would shrink to a work group each and spend the render on launches.
         if (items == chunk && seconds > 0.0) {
             const double scale = std::clamp(options_.chunk_seconds / seconds, 0.25, 4.0);
+            const size_t least = host_timed ? first_chunk : local;
             chunk =
                 std::clamp(round_up(static_cast<size_t>(static_cast<double>(chunk) * scale), local),
-                           local, max_chunk);
+                           least, max_chunk);
         }
     }
 }
