@@ -178,7 +178,7 @@ class FarmOnLocalSlurm(unittest.TestCase):
         mixed = subprocess.run([RADCACHE, "merge", target] + parts[:3] + [other],
                                capture_output=True, text=True)
         self.assertNotEqual(mixed.returncode, 0)
-        self.assertIn("furnace-part.exr: another scene file", mixed.stderr)
+        self.assertIn("furnace-part.exr: another scene (its file or a file it reads)", mixed.stderr)
         self.assertEqual(mixed.stderr.count("\n"), 1, mixed.stderr)
         self.assertFalse(os.path.exists(target))
 
