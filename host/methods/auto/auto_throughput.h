@@ -40,7 +40,7 @@ struct DeviceThroughput {
 
 // The cached figures of `context`'s device, or measured now (and cached, unless another process
 // cached its own first: then those). Measuring renders pt, ic, rc and sdrc on the built-in scene
-// (about 20 s on 2 CPU cores; each caching method at two --ic-rays), after a first tiny render of
+// (about 30 s on 2 CPU cores; each caching method at two --ic-rays), after a first tiny render of
 // each so compilation is not counted.
 DeviceThroughput device_throughput(Context& context, const FrameHooks& hooks);
 
