@@ -2,6 +2,7 @@
 # Runs the libFuzzer targets of tests/fuzz/ (docs/reliability.md):
 #
 #   tools/fuzz.sh TARGET SECONDS [libFuzzer options...]
+#   tools/fuzz.sh TARGET|all --build-only
 #
 # TARGET is scene, obj, gltf, pbrt, cache_file, grid_file, kernel_cache, or all (each for SECONDS). The fuzz
 # build (clang, -DRADCACHE_FUZZ=ON: coverage, ASan, UBSan) is made in build-fuzz/ first
@@ -10,6 +11,7 @@
 # build-fuzz/corpus/TARGET. A crash, a sanitizer report, an input slower than 10 s or one that
 # takes more than 2 GiB stops the run with a non-zero status and leaves the input in
 # build-fuzz/artifacts/TARGET/: fix the bug and copy the input to tests/fuzz/regressions/TARGET/.
+# --build-only makes the fuzz build of the targets and runs nothing (CI makes it beside other work).
 set -euo pipefail
 
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -18,6 +20,7 @@ all_targets=(scene obj gltf pbrt cache_file grid_file kernel_cache)
 
 if [ $# -lt 2 ]; then
     echo "usage: tools/fuzz.sh TARGET|all SECONDS [libFuzzer options...]" >&2
+    echo "       tools/fuzz.sh TARGET|all --build-only" >&2
     echo "targets: ${all_targets[*]}" >&2
     exit 2
 fi
@@ -33,11 +36,19 @@ else
     exit 2
 fi
 
+if [ "$seconds" != --build-only ] && ! [[ "$seconds" =~ ^[0-9]+$ ]]; then
+    echo "tools/fuzz.sh: SECONDS must be a whole number or --build-only, not '$seconds'" >&2
+    exit 2
+fi
+
 if [ ! -f "$build/CMakeCache.txt" ]; then
     cmake -S "$root" -B "$build" -DRADCACHE_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
         -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ >/dev/null
 fi
 cmake --build "$build" -j"$(nproc)" --target "${targets[@]/#/fuzz_}" >/dev/null
+if [ "$seconds" = --build-only ]; then
+    exit 0
+fi
 
 # The seeds tools/fuzz.sh adds from the shipped scenes: each scene file with its small meshes
 # (as "#@file" sections), and every mesh.
