@@ -6,10 +6,10 @@
 // values: direction d (0: +x, 1: -x, 2: +y, 3: -y, 4: +z, 5: -z), channel c (r, g, b), component
 // (x, y, z) at ((v 6 + d) 3 + c) 3 + component. The "+x" vector holds the light that arrives from
 // the +x side (photons travelling towards -x), which a surface facing +x receives. Accumulation is
-// in 64-bit fixed point (params.fixed_point_scale units per unit of flux), so sums do not depend
-// on the order of the atomic additions; the normalised grid is float. The compressed layout keeps,
-// per vertex and direction, RC_IVG_PACKED_PER_VERTEX / 6 half floats: |I_r|, |I_g|, |I_b| and the
-// unit direction of I_r + I_g + I_b (§4.2).
+// in 64-bit fixed point (fixed_point_scale * 2^fixed_point_exponent units per unit of flux), so
+// sums do not depend on the order of the atomic additions; the normalised grid is float. The
+// compressed layout keeps, per vertex and direction, RC_IVG_PACKED_PER_VERTEX / 6 half floats:
+// |I_r|, |I_g|, |I_b| and the unit direction of I_r + I_g + I_b (§4.2).
 #pragma once
 
 #include "common/math.h"

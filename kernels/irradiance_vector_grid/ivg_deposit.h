@@ -14,9 +14,10 @@
 // division, which makes a parallel beam's vector E cos(theta) w instead of E w. With the segment
 // d and its length, incident / cosine = -d_k / max(|d_A|, min_cosine |d|): no normalisation, so the
 // amounts are exact functions of the segment. Saturates at +-2^52.
-RC_FUNC long rc_ivg_fixed(float flux, float minus_d_k, float denominator, float units) {
+RC_FUNC long rc_ivg_fixed(float flux, float minus_d_k, float denominator, float units,
+                          int units_exponent) {
     RC_NO_FP_CONTRACT
-    const float value = flux * minus_d_k / denominator * units;
+    const float value = ldexp(flux * minus_d_k / denominator * units, units_exponent);
     const float limit = 4503599627370496.0f;
     if (!isfinite(value)) {
         return 0;
@@ -93,7 +94,8 @@ RC_FUNC uint rc_ivg_deposit_segment(const IvgParams* p, float3 a, float3 b, floa
             for (int c = 0; c < 3; ++c) {
                 for (int k = 0; k < 3; ++k) {
                     const long amount =
-                        rc_ivg_fixed(channel[c], minus_d[k], denominator, p->fixed_point_scale);
+                        rc_ivg_fixed(channel[c], minus_d[k], denominator,
+                                     p->fixed_point_scale, p->fixed_point_exponent);
                     if (amount != 0) {
                         rc_atomic_add_long(slot + 3 * c + k, amount);
                     }

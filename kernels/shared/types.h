@@ -252,7 +252,8 @@ typedef struct IvgParams {
     float4 sphere_centre;     // xyz: centre of a sphere around the scene (environment photons)
     int4 cells;               // xyz: voxels along each axis
     float sphere_radius;      // radius of that sphere
-    float fixed_point_scale;  // fixed-point units per unit of flux (deposition)
+    // Fixed-point units per unit of flux (deposition): fixed_point_scale * 2^fixed_point_exponent
+    float fixed_point_scale;
     float min_cosine;  // the smallest |cosine| to a face's normal a crossing's weight is divided by
     int vertex_count;  // vertices in all
     uint photon_count;   // photons of the whole grid
@@ -277,10 +278,10 @@ typedef struct IvgParams {
     // cell_margin.
     float cell_margin;
     float origin_margin;
-    // Explicit trailing padding to the float4 alignment: rusticl (Mesa 22.3) takes a by-value
-    // struct argument's size without its trailing padding (140 bytes here, sizeof 144) and
-    // refuses the host's with CL_INVALID_ARG_SIZE. Not read.
-    int padding;
+    // The power of two of the fixed-point units. Last, and filling the struct to the float4
+    // alignment: rusticl (Mesa 22.3) takes a by-value struct argument's size without its
+    // trailing padding and refuses the host's with CL_INVALID_ARG_SIZE.
+    int fixed_point_exponent;
 } IvgParams;
 
 // A plane of the triangles overlapping a grid cell (grown by twice IvgParams::cell_margin) that
@@ -442,6 +443,7 @@ RC_SHARED_END
     FIELD(IvgParams, light_samples)        \
     FIELD(IvgParams, cell_margin)          \
     FIELD(IvgParams, origin_margin)        \
+    FIELD(IvgParams, fixed_point_exponent) \
     STRUCT(IvgPlane)                       \
     FIELD(IvgPlane, equation)              \
     STRUCT(IvgCellPlanes)                  \

@@ -89,9 +89,19 @@ std::array<int, 3> parse_grid_resolution(const std::string& text) {
     return cells;
 }
 
+// The longest side of a bounding box's extent, 1 for a point (no absolute floor: the grid is
+// the scene's at any scale).
+float longest_side(glm::vec3 extent) {
+    const float longest = std::max({extent.x, extent.y, extent.z});
+    return longest > 0.0f ? longest : 1.0f;
+}
+
 std::array<int, 3> auto_grid_cells(glm::vec3 extent) {
-    const float longest = std::max({extent.x, extent.y, extent.z, 1e-6f});
-    const glm::vec3 e = glm::max(extent, glm::vec3(1e-3f * longest));
+    const float longest = longest_side(extent);
+    // A small scene's extent scaled by a power of two (exact) so that the volume below does not
+    // underflow float; scenes longer than 1/1024 are taken as they are.
+    const int shift = longest < 0x1p-10f ? -std::ilogb(longest) : 0;
+    const glm::vec3 e = glm::max(extent, glm::vec3(1e-3f * longest)) * std::ldexp(1.0f, shift);
     // Cubic cells of the size that gives about kAutoGridVertices vertices, grown until it does.
     float cell = std::cbrt(e.x * e.y * e.z / static_cast<float>(kAutoGridVertices));
     std::array<int, 3> cells{};
@@ -196,7 +206,7 @@ shared::IvgParams IrradianceVectorGrid::layout(const IvgOptions& options) const 
     shared::IvgParams p{};
     // The grid's faces lie on the scene's bounding box, so walls there lie on grid planes and
     // their vertices get the photons that reach them (rc_ivg_deposit_segment).
-    const float longest = std::max({extent.x, extent.y, extent.z, 1e-6f});
+    const float longest = longest_side(extent);
     glm::vec3 cell;
     for (int axis = 0; axis < 3; ++axis) {
         cell[axis] = std::max(extent[axis], 1e-3f * longest) / static_cast<float>(cells[axis]);
@@ -207,12 +217,14 @@ shared::IvgParams IrradianceVectorGrid::layout(const IvgOptions& options) const 
     p.cell = {cell.x, cell.y, cell.z, 0.0f};
     p.min_cosine = kSmallestCosine;
     p.sphere_centre = {centre.x, centre.y, centre.z, 0.0f};
-    p.sphere_radius = std::max(radius, 1e-6f);
+    p.sphere_radius = radius;
     p.cells = {cells[0], cells[1], cells[2], 0};
     p.vertex_count = static_cast<int>(vertex_count(cells));
+    // The deposit's fixed-point units per unit of flux, as a float times a power of two: at a
+    // small scale (a 1e-15 Cornell box's light carries 3e-31) the units leave float's range.
     const float flux = largest_photon_flux(scene_, p.sphere_radius);
-    p.fixed_point_scale =
-        flux > 0.0f ? static_cast<float>(kLargestAmount * kSmallestCosine / flux) : 1.0f;
+    const double units = flux > 0.0f ? kLargestAmount * kSmallestCosine / flux : 1.0;
+    p.fixed_point_scale = static_cast<float>(std::frexp(units, &p.fixed_point_exponent));
     p.include_direct = options.include_direct ? 1 : 0;
     set_kernel_path_settings(options, &p);
     p.camera_spp = 1;
