@@ -685,7 +685,7 @@ def parse_arguments(argv):
                                  sweep_knobs.DECREASE_STEP))
     parser.add_argument("--ladder-spp", type=int,
                         help="--ladder curves' camera samples per pixel (default: the scene's)")
-    parser.add_argument("--auto-time", nargs="+", type=float, default=[3, 10, 30, 100],
+    parser.add_argument("--auto-time", nargs="+", type=float, default=[10, 30, 100],
                         help="auto's budgets (--time), one point each (default: %(default)s)")
     parser.add_argument("--pt-spp", nargs="+", type=int,
                         default=[1, 2, 4, 8, 16, 32, 64, 128, 256, 512],
