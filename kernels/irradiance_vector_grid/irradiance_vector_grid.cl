@@ -40,10 +40,9 @@ __kernel void ivg_normalize(uint begin, uint end, IvgParams params, __global con
     const int k = (int)v / (columns * rows);
     const float photons = (float)max(params.photon_count, 1u);
     for (int direction = 0; direction < 6; ++direction) {
-        const float scale =
-            ldexp(1.0f / (params.fixed_point_scale * photons *
-                          rc_ivg_face_area(&params, direction / 2, i, j, k)),
-                  -params.fixed_point_exponent);
+        const float scale = ldexp(1.0f / (params.fixed_point_scale * photons *
+                                          rc_ivg_face_area(&params, direction / 2, i, j, k)),
+                                  -params.fixed_point_exponent);
         for (int n = 0; n < 9; ++n) {
             const size_t slot = ((size_t)v * 6 + (size_t)direction) * 9 + (size_t)n;
             values[slot] = (float)accum[slot] * scale;

@@ -93,9 +93,8 @@ RC_FUNC uint rc_ivg_deposit_segment(const IvgParams* p, float3 a, float3 b, floa
             const float channel[3] = {flux.x, flux.y, flux.z};
             for (int c = 0; c < 3; ++c) {
                 for (int k = 0; k < 3; ++k) {
-                    const long amount =
-                        rc_ivg_fixed(channel[c], minus_d[k], denominator,
-                                     p->fixed_point_scale, p->fixed_point_exponent);
+                    const long amount = rc_ivg_fixed(channel[c], minus_d[k], denominator,
+                                                     p->fixed_point_scale, p->fixed_point_exponent);
                     if (amount != 0) {
                         rc_atomic_add_long(slot + 3 * c + k, amount);
                     }
