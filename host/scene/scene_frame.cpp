@@ -272,17 +272,9 @@ void close_area_lights(const Shape& shape, const ShapeLights& shape_lights, Ligh
 
 // Error when the frame's triangles span less than kMinSceneExtent (but more than a point).
 void check_scene_extent(const TriangleMesh& mesh, double frame) {
-    const float diagonal = mesh_diagonal(mesh);
-    if (diagonal > 0.0f && diagonal < kMinSceneExtent) {
-        char text[256];
-        std::snprintf(text, sizeof text,
-                      "the scene's extent (its bounding box's diagonal) at frame %s is %.3g "
-                      "scene units, below the least single precision can render, 2^-42 (%.3g): "
-                      "the device's ray/triangle test underflows float (scale the scene up)",
-                      frame_text(frame).c_str(), static_cast<double>(diagonal),
-                      static_cast<double>(kMinSceneExtent));
-        throw Error(text);
-    }
+    check_least_extent(mesh, kMinSceneExtent, "", " at frame " + frame_text(frame),
+                       "the least single precision can render, 2^-42",
+                       "the device's ray/triangle test underflows float (scale the scene up)");
 }
 
 // Half the diagonal of the frame's bounding box (1 for an empty scene or a single point): no

@@ -3,7 +3,6 @@
 // solution, and its statistics per frame (docs/decomposition.md).
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -58,7 +57,6 @@ SceneLength parse_length(const std::string& option, const std::string& text) {
     return length;
 }
 
-// The length in scene units for the frame's world geometry.
 // The least scene extent (bounding box diagonal) the decomposition renders: the Cornell box
 // (diagonal 960) scaled by 1e-10 or 5e-11 renders the unscaled picture (RMSE 5.7e-5, 9e-6), but
 // scaled by 3e-11 (a diagonal of 2.9e-8) down to 1e-12 its radiosity gather
@@ -68,18 +66,11 @@ SceneLength parse_length(const std::string& option, const std::string& text) {
 constexpr float kMinDecompositionExtent = 0x1p-24f;
 
 void check_decomposition_extent(const Scene& scene) {
-    const float diagonal = mesh_diagonal(scene.mesh);
-    if (diagonal > 0.0f && diagonal < kMinDecompositionExtent) {
-        char text[256];
-        std::snprintf(text, sizeof text,
-                      "--method decomposition: the scene's extent (its bounding box's diagonal) "
-                      "is %.3g scene units, below the least it renders, 2^-24 (%.3g): scale the "
-                      "scene up or use another method",
-                      static_cast<double>(diagonal), static_cast<double>(kMinDecompositionExtent));
-        throw Error(text);
-    }
+    check_least_extent(scene.mesh, kMinDecompositionExtent, "--method decomposition: ", "",
+                       "the least it renders, 2^-24", "scale the scene up or use another method");
 }
 
+// The length in scene units for the frame's world geometry.
 float resolve_length(const SceneLength& length, const Scene& scene) {
     if (!length.relative) {
         return length.value;
