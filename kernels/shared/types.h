@@ -247,11 +247,11 @@ typedef struct IcParams {
 // has cells.x x cells.y x cells.z voxels and (cells + 1) vertices along each axis; a vertex holds
 // six irradiance vectors (+x, -x, +y, -y, +z, -z), one 3-vector per colour channel.
 typedef struct IvgParams {
-    float4 origin;            // xyz: the grid's lower corner
-    float4 cell;              // xyz: the cell size along each axis
-    float4 sphere_centre;     // xyz: centre of a sphere around the scene (environment photons)
-    int4 cells;               // xyz: voxels along each axis
-    float sphere_radius;      // radius of that sphere
+    float4 origin;         // xyz: the grid's lower corner
+    float4 cell;           // xyz: the cell size along each axis
+    float4 sphere_centre;  // xyz: centre of a sphere around the scene (environment photons)
+    int4 cells;            // xyz: voxels along each axis
+    float sphere_radius;   // radius of that sphere
     // Fixed-point units per unit of flux (deposition): fixed_point_scale * 2^fixed_point_exponent
     float fixed_point_scale;
     float min_cosine;  // the smallest |cosine| to a face's normal a crossing's weight is divided by
