@@ -29,3 +29,19 @@ __kernel void device_busy(uint begin, uint end, __global float* out) {
     }
     out[i] = x;
 }
+
+// Whether the device ends a work item's loops early (Mesa's llvmpipe stops every loop of an
+// invocation once their iterations together reach 65535): `iterations` steps of the LCG
+// x <- 1664525 x + 1013904223 (mod 2^32) from `seed`, which no compiler reduces to a closed form,
+// into out[0]; the host compares it with its own steps (host/device/device_features.cpp).
+__kernel void device_loop_cap(uint begin, uint end, uint iterations, uint seed,
+                              __global uint* out) {
+    if (begin + get_global_id(0) != 0u || end == 0u) {
+        return;
+    }
+    uint x = seed;
+    for (uint q = 0; q < iterations; ++q) {
+        x = x * 1664525u + 1013904223u;
+    }
+    out[0] = x;
+}

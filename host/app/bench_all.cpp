@@ -14,6 +14,7 @@
 #include "app/ray_bench.h"
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
+#include "device/device_features.h"
 #include "device/device_list.h"
 #include "methods/grid/irradiance_vector_grid.h"
 #include "methods/radiance_cache/radiance_cache.h"
@@ -136,6 +137,7 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
     result.device = device;
     context_options.device_spec = device.spec();
     Context context(context_options);
+    refuse_loop_capped_device(context);
     const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
     result.embree_threads = std::min(hardware, std::max(1u, device.compute_units));
 

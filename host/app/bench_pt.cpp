@@ -8,6 +8,7 @@
 #include "app/device_options.h"
 #include "app/path_tracing_bench.h"
 #include "app/ray_bench.h"
+#include "device/device_features.h"
 #include "scene/camera.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
@@ -36,6 +37,7 @@ int bench_pt(const ParsedArguments& arguments) {
     const int spp = static_cast<int>(arguments.integer("--spp", 16));
 
     Context context(context_options(arguments));
+    refuse_loop_capped_device(context);
     const Scene scene = load_scene(scene_path);
     const unsigned threads = std::min(std::max(1u, std::thread::hardware_concurrency()),
                                       std::max(1u, context.device().compute_units));

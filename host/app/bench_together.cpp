@@ -7,6 +7,7 @@
 
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
+#include "device/device_features.h"
 #include "methods/frame_scene.h"
 #include "methods/grid/irradiance_vector_grid.h"
 #include "methods/path_tracer/path_tracer.h"
@@ -110,6 +111,7 @@ std::vector<TogetherFigure> bench_devices_together(const std::vector<DeviceInfo>
         options.device_spec = device.spec();
         DeviceFrame copy;
         copy.context = std::make_unique<Context>(options);
+        refuse_loop_capped_device(*copy.context);
         const Bvh bvh = build_bvh(scene.mesh, copy.context->bvh_layout());
         copy.bvh = std::make_unique<DeviceBvh>(*copy.context, bvh);
         copy.device_scene = std::make_unique<DeviceScene>(*copy.context, scene);

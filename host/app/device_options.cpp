@@ -1,5 +1,6 @@
 #include "app/device_options.h"
 
+#include <cstdlib>
 #include <filesystem>
 #include <system_error>
 
@@ -26,6 +27,10 @@ std::vector<OptionSpec> device_option_specs() {
                    "the most device memory a run may hold in buffers (default: the device's "
                    "global memory); a run that needs more is refused with the figure"}
             .integers(1, 1LL << 40),
+        {"--allow-loop-cap", "", "",
+         "render on a device that ends a work item's loops early (Mesa's llvmpipe, after 65535 "
+         "iterations; refused otherwise): kernels that loop longer give wrong images "
+         "($RADCACHE_ALLOW_LOOP_CAP=1 does the same)"},
         {"--bvh", "", "LAYOUT",
          "BVH layout the traversal uses: wide (8-wide, compressed; the default) or bvh4 (4-wide, "
          "float boxes); docs/bvh.md"},
@@ -61,6 +66,9 @@ ContextOptions context_options(const ParsedArguments& arguments) {
     options.local_size = static_cast<size_t>(arguments.integer("--local-size", 0));
     options.max_chunk_items = static_cast<size_t>(arguments.integer("--max-chunk", 0));
     options.memory_limit = static_cast<uint64_t>(arguments.integer("--device-memory", 0)) << 20;
+    const char* allow_loop_cap = std::getenv("RADCACHE_ALLOW_LOOP_CAP");
+    options.allow_loop_cap = arguments.has("--allow-loop-cap") ||
+                             (allow_loop_cap != nullptr && std::string(allow_loop_cap) == "1");
     if (arguments.has("--bvh")) {
         const std::string name = arguments.value("--bvh");
         options.bvh_layout = parse_bvh_layout(name);

@@ -1,5 +1,6 @@
 #include "app/render_devices.h"
 
+#include "device/device_features.h"
 #include "device/device_list.h"
 #include "util/error.h"
 
@@ -20,6 +21,7 @@ std::vector<std::unique_ptr<Context>> open_render_devices(const ContextOptions& 
         ContextOptions one = options;
         one.device_spec = devices.size() > 1 ? device.spec() : options.device_spec;
         contexts.push_back(std::make_unique<Context>(one));
+        refuse_loop_capped_device(*contexts.back());
         contexts.back()->prebuild(method.programs());  // all at once, in the background
     }
     return contexts;

@@ -34,6 +34,8 @@ struct ContextOptions {
     double chunk_seconds = 0.1;              // launches aim at this duration
     uint64_t memory_limit = 0;  // most bytes held in buffers at once; 0: the global memory
     std::optional<BvhLayout> bvh_layout;  // --bvh; none: default_bvh_layout()
+    bool allow_loop_cap =
+        false;  // --allow-loop-cap: render where loops end early (device_features.h)
 };
 
 // Device memory held in this context's buffers (DeviceBuffer), in bytes: now, and the most since

@@ -1,8 +1,45 @@
 #include "device/device_features.h"
 
 #include "device/context.h"
+#include "util/error.h"
 
 namespace rc {
+
+std::optional<uint32_t> probe_loop_cap(Context& context) {
+    constexpr uint32_t kSeed = 12345u;
+    Kernel probe = context.kernel("device_features.cl", "device_loop_cap");
+    Buffer<uint32_t> out(context, 1, "device_loop_cap");
+    context.launch(probe, 1, kLoopProbeIterations, kSeed, out);
+    const uint32_t found = out.download().at(0);
+    // The host's own steps of the LCG: the first that gives the device's value is how many the
+    // device's loop ran (the LCG's period is 2^32, so the step is unique).
+    uint32_t x = kSeed;
+    for (uint32_t step = 0; step < kLoopProbeIterations; ++step) {
+        if (x == found) {
+            return step;
+        }
+        x = x * 1664525u + 1013904223u;
+    }
+    if (x != found) {
+        throw Error("the loop probe on " + context.device().name +
+                    " returned a value no run of its loop gives: the device miscomputes");
+    }
+    return std::nullopt;
+}
+
+void refuse_loop_capped_device(Context& context) {
+    if (context.options().allow_loop_cap) {
+        return;
+    }
+    if (const std::optional<uint32_t> cap = probe_loop_cap(context)) {
+        throw Error("device " + context.device().spec() + " (" + context.device().name +
+                        ") ends a work item's loops after " + std::to_string(*cap) +
+                        " iterations in all, and radcache's kernels loop longer: its images " +
+                        "would be wrong (--allow-loop-cap renders there anyway; docs/devices.md)",
+                    kExitUsage);
+    }
+    context.reset_kernel_times();  // the probe's launch is not the work's
+}
 
 DeviceFeatures probe_device_features(Context& context) {
     DeviceFeatures features;
@@ -21,6 +58,7 @@ DeviceFeatures probe_device_features(Context& context) {
     context.finish();
     const auto found = context.kernel_times().find("device_busy");
     features.profiling = found != context.kernel_times().end() && found->second.host_timed == 0;
+    features.loop_cap = probe_loop_cap(context);
     return features;
 }
 
@@ -37,6 +75,11 @@ std::vector<std::string> lacking(const DeviceFeatures& features) {
     }
     if (!features.profiling) {
         lacks.push_back("event profiling (kernel times in --stats are the host's, per launch)");
+    }
+    if (features.loop_cap) {
+        lacks.push_back("loops past " + std::to_string(*features.loop_cap) +
+                        " iterations per work item (it ends them early: radcache renders there "
+                        "only with --allow-loop-cap)");
     }
     return lacks;
 }

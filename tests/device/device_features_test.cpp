@@ -2,7 +2,7 @@
 // implementations are known to do: PoCL's CPU device defines cl_khr_fp64 and
 // cl_khr_int64_base_atomics in its compiler and its profiling events measure; Mesa's rusticl
 // (llvmpipe, where installed) lists cl_khr_int64_base_atomics but its compiler does not define
-// it, and gives every launch 1 ns.
+// it, gives every launch 1 ns, and ends a work item's loops after 65535 iterations in all.
 #include "device/device_features.h"
 
 #include <gtest/gtest.h>
@@ -24,7 +24,24 @@ TEST(DeviceFeatures, PoclDefinesWhatTheKernelsUseAndItsEventsMeasure) {
     EXPECT_TRUE(features.fp64);
     EXPECT_TRUE(features.int64_atomics);
     EXPECT_TRUE(features.profiling);
+    EXPECT_FALSE(features.loop_cap.has_value());
     EXPECT_TRUE(lacking(features).empty());
+}
+
+// The loop probe against the host's own steps of its LCG: PoCL runs all kLoopProbeIterations (no
+// cap); a cap the probe reports is named with its figure and what radcache does about it.
+TEST(DeviceFeatures, TheLoopProbeFindsNoCapOnPoclAndACapIsNamed) {
+    Context& context = test::shared_context();
+    if (context.device().platform_name == "Portable Computing Language") {
+        EXPECT_EQ(probe_loop_cap(context), std::nullopt);
+    }
+    DeviceFeatures capped;
+    capped.fp64 = capped.int64_atomics = capped.profiling = true;
+    capped.loop_cap = 65535;
+    const std::vector<std::string> lacks = lacking(capped);
+    ASSERT_EQ(lacks.size(), 1u);
+    EXPECT_NE(lacks[0].find("65535 iterations"), std::string::npos) << lacks[0];
+    EXPECT_NE(lacks[0].find("--allow-loop-cap"), std::string::npos) << lacks[0];
 }
 
 TEST(DeviceFeatures, EachLackNamesTheExtensionAndWhatRadcacheDoesWithoutIt) {
@@ -56,6 +73,8 @@ TEST(DeviceFeatures, RusticlsLacksAreListed) {
         result.output.substr(line + 1, result.output.find('\n', line + 1) - line - 1);
     EXPECT_NE(lacks.find("cl_khr_int64_base_atomics"), std::string::npos) << lacks;
     EXPECT_NE(lacks.find("event profiling"), std::string::npos) << lacks;
+    // gallivm's loop limiter (LP_MAX_TGSI_LOOP_ITERATIONS in Mesa), found by the probe.
+    EXPECT_NE(lacks.find("loops past 65535 iterations"), std::string::npos) << lacks;
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 // given pixels, and a failing device named.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -411,9 +412,10 @@ uint64_t kernel_launches(const std::vector<std::string>& options) {
 }
 
 // In this process (the fault injection is in-process): the path tracer's 20th kernel launch; the
-// irradiance cache's 5th with one cache level (after the G-buffer, its tile depths, the first
-// placement pass's coverage query and selection on the first device: the first record range's
-// hemisphere cells, in the split) and its last (the final pass's, shared by the devices); the
+// irradiance cache's 7th with one cache level (after the loop probe on each device,
+// host/device/device_features.h, then the G-buffer, its tile depths, the first placement pass's
+// coverage query and selection on the first device: the first record range's hemisphere cells,
+// in the split) and its last (the final pass's, shared by the devices); the
 // decomposition's last with the path source (its pass 2, shared by the devices).
 TEST(MultiDevice, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {
     setenv("POCL_DEVICES", "pthread pthread", 1);  // before this process's first OpenCL call
@@ -427,7 +429,7 @@ TEST(MultiDevice, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {
     expect_failing_device_named("multi_device_fault_ic_final", ic, launches);
     std::vector<std::string> one_level = ic;
     one_level.insert(one_level.end(), {"--ic-bounces", "1"});
-    expect_failing_device_named("multi_device_fault_ic_records", one_level, 5);
+    expect_failing_device_named("multi_device_fault_ic_records", one_level, 7);
     const std::vector<std::string> decomposition = {"--method", "decomposition", "--decomp-source",
                                                     "path",     "--alpha",       "3%"};
     const uint64_t decomposition_launches = kernel_launches(decomposition);
@@ -456,7 +458,7 @@ TEST(TwoPlatforms, PathTracerOverPoclAndRusticlAgreesWithOneDevice) {
         const test::CommandResult result = test::run_radcache(
             {"render", cornell(), "--width", "40", "--height", "36", "--spp", "16", "--device",
              devices, "-o", (dir / (devices + ".exr")).string(), "--stats",
-             (dir / (devices + ".json")).string(), "--quiet"},
+             (dir / (devices + ".json")).string(), "--quiet", "--allow-loop-cap"},
             {"RUSTICL_ENABLE=llvmpipe"});
         ASSERT_EQ(result.exit_code, 0) << result.output;
         stats.push_back(nlohmann::json::parse(read_file(dir / (devices + ".json"))));
@@ -493,7 +495,29 @@ TEST(TwoPlatforms, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {
     if (!rusticl_beside_pocl()) {
         GTEST_SKIP() << "rusticl is not installed (mesa-opencl-icd)";
     }
-    expect_failing_device_named("two_platforms_fault", {}, 20, "0:0,1:0");
+    expect_failing_device_named("two_platforms_fault", {"--allow-loop-cap"}, 20, "0:0,1:0");
+}
+
+// rusticl's llvmpipe ends a work item's loops after 65535 iterations in all (the loop probe,
+// host/device/device_features.h): a render there, alone or beside PoCL, is refused before any
+// work with one line naming the device and the cap, and writes nothing.
+TEST(TwoPlatforms, ADeviceThatEndsLoopsEarlyIsRefusedByName) {
+    if (!rusticl_beside_pocl()) {
+        GTEST_SKIP() << "rusticl is not installed (mesa-opencl-icd)";
+    }
+    const auto dir = test::scratch_dir("two_platforms_loop_cap");
+    for (const std::string devices : {"1:0", "all"}) {
+        const auto out = dir / "x.exr";
+        const test::CommandResult result =
+            test::run_radcache({"render", cornell(), "--width", "8", "--height", "8", "--spp", "1",
+                                "--device", devices, "-o", out.string(), "--quiet"},
+                               {"RUSTICL_ENABLE=llvmpipe", "RADCACHE_ALLOW_LOOP_CAP="});
+        EXPECT_EQ(result.exit_code, 2) << devices << ": " << result.output;
+        EXPECT_NE(result.output.find("1:0 (llvmpipe"), std::string::npos) << result.output;
+        EXPECT_NE(result.output.find("after 65535 iterations"), std::string::npos) << result.output;
+        EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+        EXPECT_FALSE(std::filesystem::exists(out)) << devices;
+    }
 }
 
 // A method that does not declare that its work splits (every registered one does today) is

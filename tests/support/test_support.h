@@ -88,7 +88,8 @@ struct CommandResult {
     std::string output;  // stdout and stderr together
 };
 // Runs `radcache <args>` with optional environment assignments ("NAME=value"), on the tests'
-// device (RADCACHE_DEVICE, test_device.h) unless they name another.
+// device (RADCACHE_DEVICE, test_device.h) unless they name another; with a test device named,
+// $RADCACHE_ALLOW_LOOP_CAP=1 (host/device/device_features.h).
 CommandResult run_radcache(const std::vector<std::string>& args,
                            const std::vector<std::string>& environment = {});
 
