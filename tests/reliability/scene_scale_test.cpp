@@ -137,11 +137,26 @@ TEST_P(GridSceneScale, IvgRendersTheUnscaledPicture) {
 
 INSTANTIATE_TEST_SUITE_P(CornellBox, GridSceneScale, testing::Values(1e-15, 1e-12, 1e-6));
 
-// Below the least extent the decomposition renders (2^-24: its radiosity gather did not finish
-// on the Cornell box scaled by 3e-11 to 1e-12) it refuses the scene in one line, with no image,
-// instead of hanging.
+// The decomposition where its near-field gather did not finish: the grid of its near triangles
+// (a record grid) had an absolute thickness of 1e-6, far more than the box scaled by 3e-11, so its
+// few cells listed thousands of the 115 k split triangles each (the gather took 11.7 s at 5e-11
+// against 0.73 s unscaled, and did not finish at 3e-11). With the same seed the picture differs by
+// rounding (measured RMSE 1e-5 at 3e-11, 1.6e-4 at 1e-11).
+TEST(DecompositionSceneScale, RendersTheUnscaledPictureDownToItsLeastExtent) {
+    const Image reference =
+        render(scaled_cornell_box(1.0, "decomposition_1"), "decomposition", 4, 7);
+    for (const double scale : {3e-11, 1e-11}) {
+        std::ostringstream name;
+        name << "decomposition_" << scale;
+        const Image scaled = render(scaled_cornell_box(scale, name.str()), "decomposition", 4, 7);
+        EXPECT_LT(rmse(scaled, reference), 2e-3) << "scale " << scale;
+    }
+}
+
+// Below the least extent the decomposition renders (2^-27: by 1e-12 its image is off by RMSE
+// 2.5e-3, by 1e-13 it drops non-finite samples) it refuses the scene in one line, with no image.
 TEST(SceneScaleRefusal, TheDecompositionRefusesAnExtentBelowItsLeast) {
-    const std::filesystem::path scene = scaled_cornell_box(1e-11, "decomposition_1e-11");
+    const std::filesystem::path scene = scaled_cornell_box(1e-12, "decomposition_1e-12");
     const std::filesystem::path out = scene.parent_path() / "out.exr";
     const test::CommandResult result =
         test::run_radcache({"render", scene.string(), "--method", "decomposition", "--width", "8",

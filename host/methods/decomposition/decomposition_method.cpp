@@ -58,16 +58,14 @@ SceneLength parse_length(const std::string& option, const std::string& text) {
 }
 
 // The least scene extent (bounding box diagonal) the decomposition renders: the Cornell box
-// (diagonal 960) scaled by 1e-10 or 5e-11 renders the unscaled picture (RMSE 5.7e-5, 9e-6), but
-// scaled by 3e-11 (a diagonal of 2.9e-8) down to 1e-12 its radiosity gather
-// (decomp_radiosity_gather) did not finish, and by 1e-15 it dropped non-finite samples
-// (docs/lab/reliability.md, "Scene scale"; the cause is not found). Below it the scene is
-// refused, not rendered wrong or without end.
-constexpr float kMinDecompositionExtent = 0x1p-24f;
+// (diagonal 960) scaled by 1e-11 (a diagonal of 9.6e-9) renders the unscaled picture (RMSE 1.6e-4
+// with the same seed), by 1e-12 it is off by RMSE 2.5e-3 and by 1e-13 it drops non-finite samples
+// (docs/lab/reliability.md, "Scene scale"). Below it the scene is refused, not rendered wrong.
+constexpr float kMinDecompositionExtent = 0x1p-27f;
 
 void check_decomposition_extent(const Scene& scene) {
     check_least_extent(scene.mesh, kMinDecompositionExtent, "--method decomposition: ", "",
-                       "the least it renders, 2^-24", "scale the scene up or use another method");
+                       "the least it renders, 2^-27", "scale the scene up or use another method");
 }
 
 // The length in scene units for the frame's world geometry.
