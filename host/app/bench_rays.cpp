@@ -16,6 +16,7 @@
 #include "bvh/device_bvh.h"
 #include "bvh/device_tracer.h"
 #include "bvh/embree_scene.h"
+#include "device/device_features.h"
 #include "scene/camera.h"
 #include "scene/generated_meshes.h"
 #include "scene/scene_loader.h"
@@ -101,6 +102,7 @@ int bench_rays(const ParsedArguments& arguments) {
         ContextOptions options = context_options(arguments);
         options.bvh_layout = layout;
         contexts.push_back(std::make_unique<Context>(options));
+        refuse_loop_capped_device(*contexts.back());
     }
     const DeviceInfo& device = contexts.front()->device();
     const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());

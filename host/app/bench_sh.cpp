@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "app/device_options.h"
+#include "device/device_features.h"
 #include "methods/radiance_cache/brdf_tables.h"
 #include "scene/scene_loader.h"
 #include "shared/sh_rotation_zxz.h"
@@ -109,6 +110,7 @@ int bench_sh(const ParsedArguments& arguments) {
         static_cast<int>(arguments.integer("--resolution", table_options.resolution));
 
     Context context(context_options(arguments));
+    refuse_loop_capped_device(context);
     const Scene scene = load_scene(scene_path);
     const ShFigures figures = measure(context, records, m, 4 * m);
     std::printf("device %s, order %d, %d records of %d x %d samples\n",

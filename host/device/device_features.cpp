@@ -34,7 +34,7 @@ void refuse_loop_capped_device(Context& context) {
     if (const std::optional<uint32_t> cap = probe_loop_cap(context)) {
         throw Error("device " + context.device().spec() + " (" + context.device().name +
                         ") ends a work item's loops after " + std::to_string(*cap) +
-                        " iterations in all, and radcache's kernels loop longer: its images " +
+                        " iterations in all, and radcache's kernels loop longer: its results " +
                         "would be wrong (--allow-loop-cap renders there anyway; docs/devices.md)",
                     kExitUsage);
     }
