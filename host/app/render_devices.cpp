@@ -21,7 +21,12 @@ std::vector<std::unique_ptr<Context>> open_render_devices(const ContextOptions& 
         ContextOptions one = options;
         one.device_spec = devices.size() > 1 ? device.spec() : options.device_spec;
         contexts.push_back(std::make_unique<Context>(one));
-        refuse_loop_capped_device(*contexts.back());
+        if (!one.allow_loop_cap) {
+            // The loop probe's program first, one of the render's: a refused device waits for no
+            // other build.
+            contexts.back()->prebuild({{kDeviceFeaturesProgram, ""}});
+            refuse_loop_capped_device(*contexts.back());
+        }
         contexts.back()->prebuild(method.programs());  // all at once, in the background
     }
     return contexts;

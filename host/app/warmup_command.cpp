@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "app/device_options.h"
+#include "device/device_features.h"
 #include "methods/registry.h"
 #include "util/error.h"
 
@@ -48,6 +49,7 @@ int warmup(const ParsedArguments& arguments) {
             add_programs(entry, arguments, &programs);
         }
     }
+    programs.push_back({kDeviceFeaturesProgram, ""});  // the loop probe's, before every render
     const auto start = std::chrono::steady_clock::now();
     Context context(context_options(arguments));
     context.prebuild(programs);

@@ -7,7 +7,7 @@ namespace rc {
 
 std::optional<uint32_t> probe_loop_cap(Context& context) {
     constexpr uint32_t kSeed = 12345u;
-    Kernel probe = context.kernel("device_features.cl", "device_loop_cap");
+    Kernel probe = context.kernel(kDeviceFeaturesProgram, "device_loop_cap");
     Buffer<uint32_t> out(context, 1, "device_loop_cap");
     context.launch(probe, 1, kLoopProbeIterations, kSeed, out);
     const uint32_t found = out.download().at(0);

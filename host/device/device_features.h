@@ -26,6 +26,9 @@ struct DeviceFeatures {
 inline constexpr uint32_t kLoopProbeIterations = uint32_t{1} << 22;
 std::optional<uint32_t> probe_loop_cap(Context& context);
 
+// The program the loop probe builds: a render's and warmup's programs include it.
+inline constexpr const char* kDeviceFeaturesProgram = "device_features.cl";
+
 // Error (exit status 2) naming the device and its cap where `context`'s device ends loops early
 // (probe_loop_cap): radcache's kernels loop longer than that, and their images would be wrong.
 // `--allow-loop-cap` (ContextOptions::allow_loop_cap) renders there anyway, unprobed. Clears

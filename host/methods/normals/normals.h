@@ -45,7 +45,7 @@ class NormalsMethod : private FrameBound {
     std::vector<shared::float4> render_split(const NormalsOptions& options, int width, int height,
                                              std::vector<NormalsDeviceShare>* devices);
 
-    const FrameScene& frame_;
+    FrameScene frame_;  // a copy: the caller's may be a temporary (its peers a pointer)
     Kernel kernel_;
 };
 
