@@ -5,26 +5,49 @@
 
 namespace rc {
 
+namespace {
+
+constexpr uint32_t kLcgMultiplier = 1664525u;  // kernels/device_features.cl's LCG
+constexpr uint32_t kLcgIncrement = 1013904223u;
+
+// x after `steps` steps of the LCG from `seed`, in O(log steps): the map x -> a x + c composed
+// with itself (a^2 x + a c + c) for each bit of `steps`.
+uint32_t lcg_after(uint32_t seed, uint32_t steps) {
+    uint32_t a = kLcgMultiplier;
+    uint32_t c = kLcgIncrement;
+    uint32_t x = seed;
+    for (; steps != 0; steps >>= 1) {
+        if ((steps & 1u) != 0) {
+            x = a * x + c;
+        }
+        c = a * c + c;
+        a = a * a;
+    }
+    return x;
+}
+
+}  // namespace
+
 std::optional<uint32_t> probe_loop_cap(Context& context) {
     constexpr uint32_t kSeed = 12345u;
     Kernel probe = context.kernel(kDeviceFeaturesProgram, "device_loop_cap");
     Buffer<uint32_t> out(context, 1, "device_loop_cap");
     context.launch(probe, 1, kLoopProbeIterations, kSeed, out);
     const uint32_t found = out.download().at(0);
-    // The host's own steps of the LCG: the first that gives the device's value is how many the
-    // device's loop ran (the LCG's period is 2^32, so the step is unique).
+    if (found == lcg_after(kSeed, kLoopProbeIterations)) {
+        return std::nullopt;
+    }
+    // The host's own steps: the first that gives the device's value is how many the device's loop
+    // ran (the LCG's period is 2^32, so the step is unique).
     uint32_t x = kSeed;
     for (uint32_t step = 0; step < kLoopProbeIterations; ++step) {
         if (x == found) {
             return step;
         }
-        x = x * 1664525u + 1013904223u;
+        x = x * kLcgMultiplier + kLcgIncrement;
     }
-    if (x != found) {
-        throw Error("the loop probe on " + context.device().name +
-                    " returned a value no run of its loop gives: the device miscomputes");
-    }
-    return std::nullopt;
+    throw Error("the loop probe on " + context.device().name +
+                " returned a value no run of its loop gives: the device miscomputes");
 }
 
 void refuse_loop_capped_device(Context& context) {
@@ -43,7 +66,7 @@ void refuse_loop_capped_device(Context& context) {
 
 DeviceFeatures probe_device_features(Context& context) {
     DeviceFeatures features;
-    Kernel probe = context.kernel("device_features.cl", "device_features");
+    Kernel probe = context.kernel(kDeviceFeaturesProgram, "device_features");
     Buffer<int> out(context, 1, "device_features");
     context.launch(probe, 1, out);
     const int bits = out.download().at(0);
@@ -52,7 +75,7 @@ DeviceFeatures probe_device_features(Context& context) {
     // Enough launches for the timer to show: Context::launch takes the host's time for any launch
     // whose events measure under a thousandth of it.
     constexpr size_t kItems = size_t{1} << 16;
-    Kernel busy = context.kernel("device_features.cl", "device_busy");
+    Kernel busy = context.kernel(kDeviceFeaturesProgram, "device_busy");
     Buffer<float> sink(context, kItems, "device_busy");
     context.launch(busy, kItems, sink);
     context.finish();
