@@ -12,8 +12,8 @@ namespace rc {
 std::vector<OptionSpec> device_option_specs() {
     return {
         {"--device", "", "SPEC",
-         "OpenCL device: P:D or part of its name (default: $RADCACHE_DEVICE, else the first GPU, "
-         "else the first CPU)"},
+         "OpenCL device: P:D or part of its platform and device name (default: $RADCACHE_DEVICE, "
+         "else the first GPU, else the first CPU)"},
         {"--kernel-dir", "", "DIR",
          "read kernel sources from DIR instead of the embedded copies ($RADCACHE_KERNEL_DIR)"},
         {"--dump-kernels", "", "DIR", "write the expanded kernel sources to DIR"},

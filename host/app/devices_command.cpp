@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "device/compiler_workarounds.h"
 #include "device/context.h"
 #include "device/device_features.h"
 #include "device/device_list.h"
@@ -33,6 +34,21 @@ void print_lacks(const std::vector<DeviceInfo>& devices) {
     }
 }
 
+// The compiler workarounds a device's programs are built with (device/compiler_workarounds.h),
+// one line each; nothing where no device needs one.
+void print_workarounds(const std::vector<DeviceInfo>& devices) {
+    bool header = false;
+    for (const DeviceInfo& device : devices) {
+        for (const CompilerWorkaround& workaround : compiler_workarounds(device)) {
+            if (!header) {
+                std::cout << "\ncompiler workarounds (docs/devices.md):\n";
+                header = true;
+            }
+            std::cout << device.spec() << "    " << workaround.reason << "\n";
+        }
+    }
+}
+
 int devices(const ParsedArguments& arguments) {
     if (!arguments.positionals().empty()) {
         throw Error("radcache devices takes no arguments", kExitUsage);
@@ -40,6 +56,7 @@ int devices(const ParsedArguments& arguments) {
     const std::vector<DeviceInfo> devices = list_devices();
     std::cout << format_device_table(devices);
     print_lacks(devices);
+    print_workarounds(devices);
     return 0;
 }
 
@@ -52,7 +69,8 @@ CommandSpec devices_command() {
                 "Lists every OpenCL platform and device; the index P:D selects one "
                 "with --device. Then, per device, what it lacks that radcache's kernels "
                 "would use (an extension its compiler does not define, profiling events "
-                "that do not measure) and what radcache does without it.",
+                "that do not measure) and what radcache does without it; last, the compiler "
+                "workarounds a device's programs are built with.",
             .run = devices};
 }
 

@@ -8,6 +8,7 @@
 
 #include "device/cl_calls.h"
 #include "device/cl_error.h"
+#include "device/compiler_workarounds.h"
 #include "util/error.h"
 
 namespace rc {
@@ -86,8 +87,13 @@ Context::~Context() {
 
 std::unique_ptr<Program> Context::build(const std::string& entry,
                                         const std::string& options) const {
-    const std::string layout = "-DRC_BVH_LAYOUT=" + std::to_string(static_cast<int>(bvh_layout_));
-    return std::make_unique<Program>(context_, device_, sources_, cache_, entry, layout, options,
+    // The BVH layout, and the device's compiler workarounds (device/compiler_workarounds.h).
+    std::string defines = "-DRC_BVH_LAYOUT=" + std::to_string(static_cast<int>(bvh_layout_));
+    if (const std::string workarounds = compiler_workaround_options(device_);
+        !workarounds.empty()) {
+        defines += " " + workarounds;
+    }
+    return std::make_unique<Program>(context_, device_, sources_, cache_, entry, defines, options,
                                      options_.dump_kernels_dir);
 }
 

@@ -187,9 +187,11 @@ DeviceInfo select_device(const std::vector<DeviceInfo>& devices, const std::stri
             }
         }
     } else {
+        // Part of the platform's name or the device's: "Intel(R) OpenCL" names Intel's CPU
+        // runtime where PoCL's device bears the same processor name.
         const std::string needle = lower(spec);
         for (const DeviceInfo& info : devices) {
-            if (lower(info.name).find(needle) != std::string::npos) {
+            if (lower(info.platform_name + " " + info.name).find(needle) != std::string::npos) {
                 return info;
             }
         }

@@ -16,7 +16,13 @@
 
 #define RC_SHARED_BEGIN
 #define RC_SHARED_END
+// Every device function inlined where the host asks for it (host/device/compiler_workarounds.h:
+// Intel's CPU compiler returns a float3 from a function it keeps out of line one component late).
+#ifdef RC_INLINE_EVERY_FUNCTION
+#define RC_FUNC static inline __attribute__((always_inline))
+#else
 #define RC_FUNC static inline
+#endif
 #define RC_GLOBAL __global
 #define RC_CONSTANT __constant
 #define rc_mul_hi(a, b) mul_hi((a), (b))

@@ -48,6 +48,19 @@ TEST(DeviceSelection, SelectsByIndexAndByCaseInsensitiveSubstring) {
     EXPECT_NE(lower_name.find(lower_middle), std::string::npos);
 }
 
+// A platform's name chooses among devices of one processor name (PoCL's and Intel's runtime's
+// CPU device both carry it): every platform's name picks a device of that platform.
+TEST(DeviceSelection, SelectsByPlatformName) {
+    const auto devices = list_devices();
+    for (const DeviceInfo& device : devices) {
+        const DeviceInfo chosen =
+            select_device(devices, toggled_case(device.platform_name + " " + device.name));
+        EXPECT_EQ(chosen.platform_name + " " + chosen.name,
+                  device.platform_name + " " + device.name);
+        EXPECT_EQ(select_device(devices, device.platform_name).platform_name, device.platform_name);
+    }
+}
+
 TEST(DeviceSelection, DefaultPrefersAGpuThenACpu) {
     const auto devices = list_devices();
     const DeviceInfo chosen = select_device(devices, "");
