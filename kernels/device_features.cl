@@ -6,7 +6,7 @@
 
 // Bit 0: cl_khr_fp64 (ray_triangle.h's exact edge functions); bit 1: cl_khr_int64_base_atomics
 // (compat.h's 64-bit atomic addition of the irradiance vector grid's sums).
-__kernel void device_features(uint begin, uint end, __global int* out) {
+RC_KERNEL void device_features(uint begin, uint end, __global int* out) {
     if (begin + get_global_id(0) != 0u || end == 0u) {
         return;
     }
@@ -21,7 +21,7 @@ __kernel void device_features(uint begin, uint end, __global int* out) {
 }
 
 // A few milliseconds of arithmetic per launch of 2^16 items.
-__kernel void device_busy(uint begin, uint end, __global float* out) {
+RC_KERNEL void device_busy(uint begin, uint end, __global float* out) {
     RC_RANGE_ITEM(i);
     float x = (float)i * 1e-6f;
     for (int k = 0; k < 2048; ++k) {
@@ -34,8 +34,8 @@ __kernel void device_busy(uint begin, uint end, __global float* out) {
 // invocation once their iterations together reach 65535): `iterations` steps of the LCG
 // x <- 1664525 x + 1013904223 (mod 2^32) from `seed`, which no compiler reduces to a closed form,
 // into out[0]; the host compares it with its own steps (host/device/device_features.cpp).
-__kernel void device_loop_cap(uint begin, uint end, uint iterations, uint seed,
-                              __global uint* out) {
+RC_KERNEL void device_loop_cap(uint begin, uint end, uint iterations, uint seed,
+                               __global uint* out) {
     if (begin + get_global_id(0) != 0u || end == 0u) {
         return;
     }

@@ -8,11 +8,11 @@
 
 // Item i: at the first hit of rays[i], out[i] = (corners seen by rc_ivg_visible_corners, corners
 // seen by eight shadow rays, the rays rc_ivg_visible_corners traced, 1); all 0 without a hit.
-__kernel void ivg_visibility_probe(uint begin, uint end, IvgParams params,
-                                   __global const float* values, __global const half* packed,
-                                   __global const IvgCellPlanes* cell_planes,
-                                   __global const IvgPlane* planes, RC_SCENE_PARAMETERS,
-                                   __global const Ray* rays, __global uint4* out) {
+RC_KERNEL void ivg_visibility_probe(uint begin, uint end, IvgParams params,
+                                    __global const float* values, __global const half* packed,
+                                    __global const IvgCellPlanes* cell_planes,
+                                    __global const IvgPlane* planes, RC_SCENE_PARAMETERS,
+                                    __global const Ray* rays, __global uint4* out) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const Ray ray = rays[i];

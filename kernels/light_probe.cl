@@ -10,9 +10,9 @@
 // Sample i from point p: light index and pdf into choice[i] (x: light, y: pdf, z: delta, w:
 // infinite), the direction and the target point into geometry[2i], geometry[2i + 1], the
 // radiance into radiance[i].
-__kernel void light_sample_probe(uint begin, uint end, float4 p, uint seed, RC_SCENE_PARAMETERS,
-                                 __global float4* choice, __global float4* geometry,
-                                 __global float4* radiance) {
+RC_KERNEL void light_sample_probe(uint begin, uint end, float4 p, uint seed, RC_SCENE_PARAMETERS,
+                                  __global float4* choice, __global float4* geometry,
+                                  __global float4* radiance) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     RngStream rng = rc_rng_stream(seed, 0u, i, 0u);
@@ -31,8 +31,8 @@ __kernel void light_sample_probe(uint begin, uint end, float4 p, uint seed, RC_S
 
 // Item i: the density light sampling gives direction directions[i] from p (the area light the
 // ray from p meets first, seen from its emitting side; 0 otherwise), into pdfs[i].
-__kernel void light_pdf_probe(uint begin, uint end, float4 p, RC_SCENE_PARAMETERS,
-                              __global const float4* directions, __global float* pdfs) {
+RC_KERNEL void light_pdf_probe(uint begin, uint end, float4 p, RC_SCENE_PARAMETERS,
+                               __global const float4* directions, __global float* pdfs) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     Ray ray;
@@ -52,8 +52,8 @@ __kernel void light_pdf_probe(uint begin, uint end, float4 p, RC_SCENE_PARAMETER
 
 // Item i: a direction from (0, 0, 0) uniform in the spherical triangle of unit vertices a, b, c
 // (u1, u2 from stream i of `seed`), into directions[i] (w: the solid angle).
-__kernel void spherical_triangle_probe(uint begin, uint end, float4 a, float4 b, float4 c,
-                                       uint seed, __global float4* directions) {
+RC_KERNEL void spherical_triangle_probe(uint begin, uint end, float4 a, float4 b, float4 c,
+                                        uint seed, __global float4* directions) {
     RC_RANGE_ITEM(i);
     RngStream rng = rc_rng_stream(seed, 0u, i, 0u);
     const float u1 = rc_rng_next_float(&rng);
@@ -67,9 +67,9 @@ __kernel void spherical_triangle_probe(uint begin, uint end, float4 a, float4 b,
 // surface of the scene) with `light_samples` light samples and one BRDF sample (stream i of
 // `seed`): the light samples' mean into light_part[i] (w: shadow and BRDF rays traced), the BRDF
 // sample's part into brdf_part[i]. Their sum estimates E / pi, E the irradiance at p.
-__kernel void direct_light_probe(uint begin, uint end, float4 p, float4 n, int light_samples,
-                                 uint seed, RC_SCENE_PARAMETERS, __global float4* light_part,
-                                 __global float4* brdf_part) {
+RC_KERNEL void direct_light_probe(uint begin, uint end, float4 p, float4 n, int light_samples,
+                                  uint seed, RC_SCENE_PARAMETERS, __global float4* light_part,
+                                  __global float4* brdf_part) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     SurfacePoint sp;

@@ -6,8 +6,8 @@
 
 // Sample i: (wi, pdf) into samples[i] and the BRDF value into values[i]; pdf = -1 when the
 // sampler fails (a direction below the surface).
-__kernel void material_sample_probe(uint begin, uint end, Material material, float4 wo, uint seed,
-                                    __global float4* samples, __global float4* values) {
+RC_KERNEL void material_sample_probe(uint begin, uint end, Material material, float4 wo, uint seed,
+                                     __global float4* samples, __global float4* values) {
     RC_RANGE_ITEM(i);
     const SurfaceMaterial m = rc_surface_material_of(&material);
     RngStream rng = rc_rng_stream(seed, 0u, i, 0u);
@@ -27,8 +27,8 @@ __kernel void material_sample_probe(uint begin, uint end, Material material, flo
 }
 
 // For direction i: (f, pdf) of the material.
-__kernel void material_eval_probe(uint begin, uint end, Material material, float4 wo,
-                                  __global const float4* directions, __global float4* out) {
+RC_KERNEL void material_eval_probe(uint begin, uint end, Material material, float4 wo,
+                                   __global const float4* directions, __global float4* out) {
     RC_RANGE_ITEM(i);
     const SurfaceMaterial m = rc_surface_material_of(&material);
     const float3 wi = directions[i].xyz;

@@ -4,8 +4,8 @@
 #include "shared/rng.h"
 
 // Philox4x32-10 of the counter and key in inputs[6i .. 6i+5] into outputs[4i .. 4i+3].
-__kernel void philox_blocks(uint begin, uint end, __global const uint* inputs,
-                            __global uint* outputs) {
+RC_KERNEL void philox_blocks(uint begin, uint end, __global const uint* inputs,
+                             __global uint* outputs) {
     RC_RANGE_ITEM(i);
     uint block[4];
     __global const uint* in = inputs + 6 * i;
@@ -16,8 +16,8 @@ __kernel void philox_blocks(uint begin, uint end, __global const uint* inputs,
 }
 
 // The first `dimensions` words of stream i (sample `sample`) into out[i * dimensions + d].
-__kernel void rng_stream_words(uint begin, uint end, uint seed_lo, uint seed_hi, uint sample,
-                               uint dimensions, __global uint* out) {
+RC_KERNEL void rng_stream_words(uint begin, uint end, uint seed_lo, uint seed_hi, uint sample,
+                                uint dimensions, __global uint* out) {
     RC_RANGE_ITEM(i);
     RngStream rng = rc_rng_stream(seed_lo, seed_hi, i, sample);
     for (uint d = 0; d < dimensions; ++d) {

@@ -8,7 +8,7 @@
 #include "shared/temporal.h"
 #include "shared/types.h"
 
-__kernel void report_layouts(uint begin, uint end, __global uint* out) {
+RC_KERNEL void report_layouts(uint begin, uint end, __global uint* out) {
     if (begin + (uint)get_global_id(0) != 0u || end == 0u) {
         return;
     }

@@ -4,7 +4,7 @@
 #include "common/kernel_range.h"
 
 // One centred camera ray per pixel, row by row from the top-left pixel.
-__kernel void spawn_camera_rays(uint begin, uint end, CameraParams camera, __global Ray* rays) {
+RC_KERNEL void spawn_camera_rays(uint begin, uint end, CameraParams camera, __global Ray* rays) {
     RC_RANGE_ITEM(i);
     const uint x = i % (uint)camera.resolution.x;
     const uint y = i / (uint)camera.resolution.x;
@@ -12,10 +12,10 @@ __kernel void spawn_camera_rays(uint begin, uint end, CameraParams camera, __glo
 }
 
 // A cosine-distributed bounce ray from the hit of every ray (zero direction where it missed).
-__kernel void spawn_diffuse_rays(uint begin, uint end, __global const Ray* rays,
-                                 __global const Hit* hits, __global const Triangle* triangles,
-                                 __global const uint* triangle_of_primitive, uint seed_lo,
-                                 uint seed_hi, __global Ray* bounces) {
+RC_KERNEL void spawn_diffuse_rays(uint begin, uint end, __global const Ray* rays,
+                                  __global const Hit* hits, __global const Triangle* triangles,
+                                  __global const uint* triangle_of_primitive, uint seed_lo,
+                                  uint seed_hi, __global Ray* bounces) {
     RC_RANGE_ITEM(i);
     RngStream rng = rc_rng_stream(seed_lo, seed_hi, i, 0u);
     bounces[i] = rc_diffuse_bounce_ray(rays[i], hits[i], triangles, triangle_of_primitive, &rng);

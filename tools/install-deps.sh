@@ -3,7 +3,8 @@
 # packages of its measurement tools (tools/requirements.txt). clang and its runtime libraries
 # (libFuzzer, the sanitizers) build the fuzz targets (tools/fuzz.sh), which CI runs.
 # mesa-opencl-icd is a second OpenCL implementation (rusticl; its CPU device appears with
-# RUSTICL_ENABLE=llvmpipe: docs/devices.md).
+# RUSTICL_ENABLE=llvmpipe: docs/devices.md); Intel's OpenCL CPU runtime, through pip, a third
+# (tools/intel-opencl.sh).
 # slurmctld, slurmd, slurm-client and munge run the one-node cluster of the farm tests
 # (tools/farm/local-slurm.sh, docs/farm.md).
 # Idempotent: runs `apt-get update` at most once, and only when something is missing.
@@ -60,7 +61,7 @@ fi
 # tools/sweep.py --mitsuba --denoise). Never fails the install: without them the sweeps skip
 # those curves with one warning.
 peers="$(dirname "$0")/requirements-peers.txt"
-if python3 -c "import mitsuba, pyoidn, OpenEXR" 2>/dev/null; then
+if python3 -c "import mitsuba, pyoidn, OpenEXR, pyopencl" 2>/dev/null; then
     echo "install-deps: the optional peers' Python packages present"
 elif python3 -m pip install --quiet --disable-pip-version-check -r "$peers" 2>/dev/null ||
         python3 -m pip install --quiet --disable-pip-version-check --user \
@@ -69,4 +70,12 @@ elif python3 -m pip install --quiet --disable-pip-version-check -r "$peers" 2>/d
 else
     echo "install-deps: warning: pip could not install $peers: tools/sweep.py will skip the" \
          "Mitsuba and +oidn curves"
+fi
+
+# Intel's OpenCL CPU runtime, the tests' third implementation (tools/intel-opencl.sh lists it
+# beside the system's platforms; docs/devices.md, "Intel's CPU runtime"). Never fails the
+# install: without it `tools/intel-opencl.sh run` says so, and CI, which needs it, stops there.
+if ! "$(dirname "$0")/intel-opencl.sh" install; then
+    echo "install-deps: warning: pip could not install Intel's OpenCL runtime" \
+         "(intel-opencl-rt, intel-cmplr-lib-rt)"
 fi

@@ -52,7 +52,14 @@ install_runtime() {
     }
 }
 
-# Makes the two folders; prints the exports.
+# A link in folder $2 to file $1, made only where it is missing or points elsewhere.
+link_once() {
+    [ -e "$1" ] || return 0
+    [ "$(readlink "$2/$(basename "$1")")" = "$1" ] || ln -sfn "$1" "$2/"
+}
+
+# Makes the two folders, or brings them up to date in place (never removed: another process
+# may be reading them); prints the exports.
 make_env() {
     local runtime file
     runtime="$(find_runtime)"
@@ -60,14 +67,16 @@ make_env() {
         echo "intel-opencl: Intel's OpenCL runtime is not installed (tools/intel-opencl.sh install)" >&2
         exit 1
     fi
-    rm -rf "$work/vendors" "$work/lib"
     mkdir -p "$work/vendors" "$work/lib"
     for file in /etc/OpenCL/vendors/*.icd; do
-        [ -e "$file" ] && ln -s "$file" "$work/vendors/"
+        link_once "$file" "$work/vendors"
     done
-    echo "$runtime" >"$work/vendors/zz-intel-cpu.icd"
+    if [ "$(cat "$work/vendors/zz-intel-cpu.icd" 2>/dev/null)" != "$runtime" ]; then
+        echo "$runtime" >"$work/vendors/.zz-intel-cpu.icd.$$"
+        mv -f "$work/vendors/.zz-intel-cpu.icd.$$" "$work/vendors/zz-intel-cpu.icd"
+    fi
     installed_libraries | grep -vE '/libOpenCL\.so' | while read -r file; do
-        [ -e "$file" ] && ln -sf "$file" "$work/lib/"
+        link_once "$file" "$work/lib"
     done
     echo "export OCL_ICD_VENDORS='$work/vendors'"
     echo "export LD_LIBRARY_PATH='$work/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}'"

@@ -16,8 +16,9 @@ struct CompilerWorkaround {
 };
 
 // The workarounds `device` needs: on Intel's CPU runtime (platform "Intel(R) OpenCL"), every
-// device function inlined (RC_INLINE_EVERY_FUNCTION, kernels/shared/compat.h): its optimiser
-// returns a float3 from an out-of-line, vectorised function shifted by one component. None with
+// kernel compiled one work item at a time (RC_SCALAR_WORK_ITEMS, kernels/shared/compat.h): its
+// vectoriser returns a float3 from an out-of-line function shifted by one component, and its
+// scalar code for small work groups rounds differently from its vector code. None with
 // $RADCACHE_NO_COMPILER_WORKAROUNDS=1 (to check whether a newer driver still needs them).
 std::vector<CompilerWorkaround> compiler_workarounds(const DeviceInfo& device);
 

@@ -3,6 +3,8 @@
 // the items at or past `end` do nothing.
 #pragma once
 
+#include "shared/compat.h"  // RC_KERNEL
+
 // Declares `const uint item` (the entry this work item computes) and returns from the kernel when
 // it lies at or past `end`.
 #define RC_RANGE_ITEM(item)                           \

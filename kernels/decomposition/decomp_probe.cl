@@ -11,9 +11,9 @@
 #include "shared/decomposition.h"
 
 // Item i: FF of triangles[i] to the differential area at points[i] with unit normal normals[i].
-__kernel void decomp_form_factors(uint begin, uint end, __global const float4* points,
-                                  __global const float4* normals,
-                                  __global const NearTriangle* triangles, __global float* out) {
+RC_KERNEL void decomp_form_factors(uint begin, uint end, __global const float4* points,
+                                   __global const float4* normals,
+                                   __global const NearTriangle* triangles, __global float* out) {
     RC_RANGE_ITEM(i);
     out[i] = rc_decomp_form_factor(points[i].xyz, normals[i].xyz, triangles[i].v0.xyz,
                                    triangles[i].v1.xyz, triangles[i].v2.xyz);
@@ -21,9 +21,9 @@ __kernel void decomp_form_factors(uint begin, uint end, __global const float4* p
 
 // Item i: the distant power triangles[i] hides from points[i] with unit normal normals[i]
 // (rc_decomp_hidden, L_D* of sample[0]) into hidden[i] (xyz; w: the triangle's FF).
-__kernel void decomp_hidden_at(uint begin, uint end, __global const ShSample* sample,
-                               __global const float4* points, __global const float4* normals,
-                               __global const NearTriangle* triangles, __global float4* hidden) {
+RC_KERNEL void decomp_hidden_at(uint begin, uint end, __global const ShSample* sample,
+                                __global const float4* points, __global const float4* normals,
+                                __global const NearTriangle* triangles, __global float4* hidden) {
     RC_RANGE_ITEM(i);
     const ShSample far = sample[0];
     const float3 p = points[i].xyz;
@@ -35,9 +35,9 @@ __kernel void decomp_hidden_at(uint begin, uint end, __global const ShSample* sa
 
 // Item q: I_D of sample samples[q] about the unit normal normals[q] into irradiance[q], and its
 // L_D* in direction normals[q] into radiance[q].
-__kernel void decomp_sh_terms(uint begin, uint end, __global const ShSample* samples,
-                              __global const float4* normals, __global float4* irradiance,
-                              __global float4* radiance) {
+RC_KERNEL void decomp_sh_terms(uint begin, uint end, __global const ShSample* samples,
+                               __global const float4* normals, __global float4* irradiance,
+                               __global float4* radiance) {
     RC_RANGE_ITEM(q);
     const ShSample s = samples[q];
     irradiance[q] = (float4)(rc_decomp_sh_irradiance(&s, normals[q].xyz), 0.0f);
@@ -47,10 +47,11 @@ __kernel void decomp_sh_terms(uint begin, uint end, __global const ShSample* sam
 // Item q: I_D about the unit normal normals[q] at points[q] of the single far-field sample (its
 // coefficients, its gradients and its position centre[0]) as the interpolation reads it there
 // (rc_decomp_interpolate's rc_decomp_add_sample) into irradiance[q].
-__kernel void decomp_sh_irradiance_at(uint begin, uint end, __global const ShSample* coefficients,
-                                      __global const ShGradient* gradients,
-                                      __global const Record* centre, __global const float4* points,
-                                      __global const float4* normals, __global float4* irradiance) {
+RC_KERNEL void decomp_sh_irradiance_at(uint begin, uint end, __global const ShSample* coefficients,
+                                       __global const ShGradient* gradients,
+                                       __global const Record* centre, __global const float4* points,
+                                       __global const float4* normals,
+                                       __global float4* irradiance) {
     RC_RANGE_ITEM(q);
     const FarCoefficients far = {coefficients, gradients};
     ShSample s;
@@ -65,7 +66,7 @@ __kernel void decomp_sh_irradiance_at(uint begin, uint end, __global const ShSam
 // visibility heuristic) over the near triangles of the grid (near_grid.h) under params.near_set
 // and params.alpha, with B(t) / pi = radiance[t] and no distant light (L_D* = 0), into
 // correction[q] (xyz; w: the triangles summed).
-__kernel void decomp_near_correction_at(
+RC_KERNEL void decomp_near_correction_at(
     uint begin, uint end, DecompParams params, RecordGrid near_grid, __global const int* near_start,
     __global const int* near_list, __global const NearTriangle* near_triangles,
     __global const float4* radiance, __global const float4* points, __global const float4* normals,
@@ -89,10 +90,11 @@ __kernel void decomp_near_correction_at(
 // ways: rc_decomp_triangle_hit's primitive and position into placed_primitives[i], placed[i];
 // and the closest hit of the point's ray traced through the scene into traced_primitives[i],
 // traced[i] (RC_NO_HIT and 0 for a miss).
-__kernel void decomp_triangle_points(uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
-                                     __global const NearTriangle* split, int count,
-                                     __global uint* placed_primitives, __global float4* placed,
-                                     __global uint* traced_primitives, __global float4* traced) {
+RC_KERNEL void decomp_triangle_points(uint begin, uint end, DecompParams params,
+                                      RC_SCENE_PARAMETERS, __global const NearTriangle* split,
+                                      int count, __global uint* placed_primitives,
+                                      __global float4* placed, __global uint* traced_primitives,
+                                      __global float4* traced) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint t = i / (uint)count;

@@ -11,8 +11,8 @@
 #include "decomposition/decomp_source_rays.h"
 
 // Entry i = pixel * spp + s: the first hit of that camera sample.
-__kernel void decomp_gbuffer(uint begin, uint end, DecompParams params, CameraParams camera,
-                             RC_SCENE_PARAMETERS, __global GBufferSample* gbuffer) {
+RC_KERNEL void decomp_gbuffer(uint begin, uint end, DecompParams params, CameraParams camera,
+                              RC_SCENE_PARAMETERS, __global GBufferSample* gbuffer) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint spp = (uint)params.camera_spp;
@@ -22,7 +22,7 @@ __kernel void decomp_gbuffer(uint begin, uint end, DecompParams params, CameraPa
 // Item i: B(t) / pi of split triangle t = listed[i] from the coarse solution into radiance[t]
 // (every triangle with --decomp-radiosity coarse; those no far-field sample covers when
 // gathered). counters[0] counts the rays.
-__kernel void decomp_radiosity(
+RC_KERNEL void decomp_radiosity(
     uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
     RC_RADIANCE_SOURCE_PARAMETERS __global const NearTriangle* near_triangles,
     __global const uint* listed, __global float4* radiance, __global uint* counters) {
@@ -39,11 +39,11 @@ __kernel void decomp_radiosity(
 
 // Item t: what split triangle t sends back besides its diffuse lobe's indirect light, into
 // direct[t], and its diffuse reflectance, into reflectance[t]. counters[0] counts the rays.
-__kernel void decomp_radiosity_direct(uint begin, uint end, DecompParams params,
-                                      RC_SCENE_PARAMETERS,
-                                      __global const NearTriangle* near_triangles,
-                                      __global float4* direct, __global float4* reflectance,
-                                      __global uint* counters) {
+RC_KERNEL void decomp_radiosity_direct(uint begin, uint end, DecompParams params,
+                                       RC_SCENE_PARAMETERS,
+                                       __global const NearTriangle* near_triangles,
+                                       __global float4* direct, __global float4* reflectance,
+                                       __global uint* counters) {
     RC_RANGE_ITEM(t);
     const SceneData scene = RC_SCENE_DATA();
     uint rays = 0;
@@ -57,11 +57,11 @@ __kernel void decomp_radiosity_direct(uint begin, uint end, DecompParams params,
 
 // Item i: B(t) / pi of split triangle t = listed[i] path traced at `count` points
 // (rc_decomp_triangle_traced) into radiance[t]. counters[0] counts the rays.
-__kernel void decomp_radiosity_traced(uint begin, uint end, DecompParams params,
-                                      RC_SCENE_PARAMETERS,
-                                      __global const NearTriangle* near_triangles,
-                                      __global const uint* listed, int count,
-                                      __global float4* radiance, __global uint* counters) {
+RC_KERNEL void decomp_radiosity_traced(uint begin, uint end, DecompParams params,
+                                       RC_SCENE_PARAMETERS,
+                                       __global const NearTriangle* near_triangles,
+                                       __global const uint* listed, int count,
+                                       __global float4* radiance, __global uint* counters) {
     RC_RANGE_ITEM(i);
     const uint t = listed[i];
     const SceneData scene = RC_SCENE_DATA();
@@ -74,13 +74,13 @@ __kernel void decomp_radiosity_traced(uint begin, uint end, DecompParams params,
 
 // Item t: whether a far-field sample covers split triangle t (rc_decomp_triangle_covered; beyond
 // every sample's reach counts as covered unless reach_needed) into covered[t].
-__kernel void decomp_radiosity_coverage(uint begin, uint end, RecordGrid far_grid,
-                                        __global const int* far_start,
-                                        __global const int* far_samples,
-                                        __global const Record* samples,
-                                        __global const ShSample* coefficients,
-                                        __global const NearTriangle* near_triangles,
-                                        uint reach_needed, __global uint* covered) {
+RC_KERNEL void decomp_radiosity_coverage(uint begin, uint end, RecordGrid far_grid,
+                                         __global const int* far_start,
+                                         __global const int* far_samples,
+                                         __global const Record* samples,
+                                         __global const ShSample* coefficients,
+                                         __global const NearTriangle* near_triangles,
+                                         uint reach_needed, __global uint* covered) {
     RC_RANGE_ITEM(t);
     const FarField far = {far_grid, far_start, far_samples, samples, coefficients, 0};
     covered[t] = rc_decomp_triangle_covered(&far, near_triangles + t, reach_needed != 0);
@@ -91,7 +91,7 @@ __kernel void decomp_radiosity_coverage(uint begin, uint end, RecordGrid far_gri
 // radiosities read from `previous` (the last pass's) when with_near, I_N taken as 0 otherwise
 // (the first pass); where covered[t] is 0, traced[t] (path traced) instead. counters[0] counts
 // the rays.
-__kernel void decomp_radiosity_gather(
+RC_KERNEL void decomp_radiosity_gather(
     uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS, RecordGrid far_grid,
     __global const int* far_start, __global const int* far_samples, __global const Record* samples,
     __global const ShSample* coefficients, __global const ShGradient* gradients,
@@ -120,7 +120,7 @@ __kernel void decomp_radiosity_gather(
 
 // Item i: ray i % params.cluster_rays of batch cluster i / params.cluster_rays, into rays_out[i].
 // counters[0] counts the rays traced.
-__kernel void decomp_cluster_rays(
+RC_KERNEL void decomp_cluster_rays(
     uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
     RC_RADIANCE_SOURCE_PARAMETERS __global const DecompCluster* clusters,
     __global const uint* members, __global const GBufferSample* gbuffer,
@@ -139,13 +139,13 @@ __kernel void decomp_cluster_rays(
 // Item i: ray i % params.cluster_rays of batch cluster i / params.cluster_rays traced to its
 // closest hit and the split triangle there (--decomp-source radiosity), into rays_out[i].
 // counters[0] counts the rays traced.
-__kernel void decomp_cluster_hits(uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
-                                  __global const SplitNode* split_nodes,
-                                  __global const uint* split_roots,
-                                  __global const DecompCluster* clusters,
-                                  __global const uint* members,
-                                  __global const GBufferSample* gbuffer,
-                                  __global ClusterRay* rays_out, __global uint* counters) {
+RC_KERNEL void decomp_cluster_hits(uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
+                                   __global const SplitNode* split_nodes,
+                                   __global const uint* split_roots,
+                                   __global const DecompCluster* clusters,
+                                   __global const uint* members,
+                                   __global const GBufferSample* gbuffer,
+                                   __global ClusterRay* rays_out, __global uint* counters) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint per_cluster = (uint)params.cluster_rays;
@@ -158,33 +158,33 @@ __kernel void decomp_cluster_hits(uint begin, uint end, DecompParams params, RC_
 
 // Item i: ray i with the radiance B(t) / pi of the split triangle it hit (--decomp-source
 // radiosity) into rays_out[i].
-__kernel void decomp_radiosity_rays(uint begin, uint end, __global const ClusterRay* traced,
-                                    __global const float4* radiance,
-                                    __global ClusterRay* rays_out) {
+RC_KERNEL void decomp_radiosity_rays(uint begin, uint end, __global const ClusterRay* traced,
+                                     __global const float4* radiance,
+                                     __global ClusterRay* rays_out) {
     RC_RANGE_ITEM(i);
     rays_out[i] = rc_decomp_radiosity_ray(traced[i], radiance);
 }
 
 // Item c: batch cluster c's least-squares fit of L_D* to its kept rays (in ray order; with
 // params.gradients first order in the rays' origins) and its rays' counts.
-__kernel void decomp_fit(uint begin, uint end, DecompParams params, __global const ClusterRay* rays,
-                         __global ClusterFit* fits) {
+RC_KERNEL void decomp_fit(uint begin, uint end, DecompParams params,
+                          __global const ClusterRay* rays, __global ClusterFit* fits) {
     RC_RANGE_ITEM(c);
     fits[c] = rc_decomp_fit_cluster(&params, rays + (size_t)c * (uint)params.cluster_rays);
 }
 
 // Item i: I_D and I_N at G-buffer entry i (eq. 3, 4) into irradiance[i] (the far field's
 // gradients read with params.gradients).
-__kernel void decomp_irradiance(uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
-                                __global const GBufferSample* gbuffer, RecordGrid far_grid,
-                                __global const int* far_start, __global const int* far_samples,
-                                __global const Record* samples,
-                                __global const ShSample* coefficients,
-                                __global const ShGradient* gradients, RecordGrid near_grid,
-                                __global const int* near_start, __global const int* near_list,
-                                __global const NearTriangle* near_triangles,
-                                __global const float4* radiance,
-                                __global DecompIrradiance* irradiance) {
+RC_KERNEL void decomp_irradiance(uint begin, uint end, DecompParams params, RC_SCENE_PARAMETERS,
+                                 __global const GBufferSample* gbuffer, RecordGrid far_grid,
+                                 __global const int* far_start, __global const int* far_samples,
+                                 __global const Record* samples,
+                                 __global const ShSample* coefficients,
+                                 __global const ShGradient* gradients, RecordGrid near_grid,
+                                 __global const int* near_start, __global const int* near_list,
+                                 __global const NearTriangle* near_triangles,
+                                 __global const float4* radiance,
+                                 __global DecompIrradiance* irradiance) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const FarField far = {far_grid, far_start,    far_samples,
@@ -198,9 +198,9 @@ __kernel void decomp_irradiance(uint begin, uint end, DecompParams params, RC_SC
 // The render pass. Item = pixel: its camera samples shaded, the means written to film
 // (RC_DECOMP_FILM_SLOTS per pixel). counters: [0] rays, [1] non-finite samples (dropped), [2] the
 // first pixel that had one.
-__kernel void decomp_shade(uint begin, uint end, DecompParams params, CameraParams camera,
-                           RC_SCENE_PARAMETERS, __global const DecompIrradiance* irradiance,
-                           __global float4* film, __global uint* counters) {
+RC_KERNEL void decomp_shade(uint begin, uint end, DecompParams params, CameraParams camera,
+                            RC_SCENE_PARAMETERS, __global const DecompIrradiance* irradiance,
+                            __global float4* film, __global uint* counters) {
     RC_RANGE_ITEM(pixel);
     const SceneData scene = RC_SCENE_DATA();
     rc_decomp_shade_pixel(&params, &scene, &camera, irradiance, pixel, film, counters);

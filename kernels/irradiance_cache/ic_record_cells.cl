@@ -29,11 +29,11 @@ RC_FUNC void rc_ic_store_cell(__global float4* cells, __global uint* counters, u
 // distance to what it hits, as (L.rgb, distance) in cells[i]. The hemisphere ray is a bounce of
 // the record's level: its hit's own emission is direct light (left to next-event estimation at
 // the shading point) unless the tests ask for it. counters[0] counts the rays traced.
-__kernel void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
-                              __global const Record* records, __global const float4* origins,
-                              __global const uint* streams,
-                              RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
-                              __global uint* counters) {
+RC_KERNEL void ic_record_cells(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
+                               __global const Record* records, __global const float4* origins,
+                               __global const uint* streams,
+                               RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
+                               __global uint* counters) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const RadianceSource source = RC_RADIANCE_SOURCE_DATA();

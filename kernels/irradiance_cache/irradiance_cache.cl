@@ -8,8 +8,8 @@
 #include "scene_arguments.h"
 
 // Entry i = pixel * spp + s: the first hit of that camera sample.
-__kernel void ic_gbuffer(uint begin, uint end, IcParams params, CameraParams camera,
-                         RC_SCENE_PARAMETERS, __global GBufferSample* gbuffer) {
+RC_KERNEL void ic_gbuffer(uint begin, uint end, IcParams params, CameraParams camera,
+                          RC_SCENE_PARAMETERS, __global GBufferSample* gbuffer) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint spp = (uint)params.camera_spp;
@@ -25,9 +25,9 @@ __kernel void ic_gbuffer(uint begin, uint end, IcParams params, CameraParams cam
 // Item i: cell i % (M N) of batch record i / (M N) (random stream streams[i / (M N)]): the first
 // hit of its ray, where the next cache level must cover it (footprint: rc_ic_deeper_pixel_width
 // at the hit distance).
-__kernel void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
-                             __global const Record* records, __global const float4* origins,
-                             __global const uint* streams, __global GBufferSample* hits) {
+RC_KERNEL void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PARAMETERS,
+                              __global const Record* records, __global const float4* origins,
+                              __global const uint* streams, __global GBufferSample* hits) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint per_record = (uint)(params.strata_m * params.strata_n);
@@ -43,9 +43,9 @@ __kernel void ic_record_hits(uint begin, uint end, IcParams params, RC_SCENE_PAR
 
 // Item b: irradiance and gradients (into payloads[b]) and (harmonic mean, minimum) hit distance
 // (into distances[b]) of batch record b (random stream streams[b]).
-__kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global const float4* cells,
-                               __global const Record* records, __global const uint* streams,
-                               __global IrradiancePayload* payloads, __global float4* distances) {
+RC_KERNEL void ic_record_reduce(uint begin, uint end, IcParams params, __global const float4* cells,
+                                __global const Record* records, __global const uint* streams,
+                                __global IrradiancePayload* payloads, __global float4* distances) {
     RC_RANGE_ITEM(b);
     const uint per_record = (uint)(params.strata_m * params.strata_n);
     const RecordEstimate e =
@@ -66,9 +66,9 @@ __kernel void ic_record_reduce(uint begin, uint end, IcParams params, __global c
 // image: the nearest and farthest distance from the eye of the camera samples in it the cache
 // serves, (+inf, -inf) when there is none. A record's influence sphere reaches no sample of a
 // tile whose depths it does not overlap: the host leaves it out of that tile's list.
-__kernel void ic_tile_depths(uint begin, uint end, IcParams params, CameraParams camera,
-                             SplatTileGrid tiles, __global const GBufferSample* gbuffer,
-                             __global TileDepths* depths) {
+RC_KERNEL void ic_tile_depths(uint begin, uint end, IcParams params, CameraParams camera,
+                              SplatTileGrid tiles, __global const GBufferSample* gbuffer,
+                              __global TileDepths* depths) {
     RC_RANGE_ITEM(t);
     depths[t] = rc_ic_tile_depths(&params, &camera, &tiles, gbuffer, t);
 }
@@ -79,12 +79,12 @@ __kernel void ic_tile_depths(uint begin, uint end, IcParams params, CameraParams
 // the screen tiles records were splatted into (tiles.tile_size > 0: camera samples; their splat
 // buffer entry would have no weight, course "Radiance Cache Splatting", Algorithm 2 step 4) or
 // the world-space grid's cells (a deeper level's hemisphere hits, gathered).
-__kernel void ic_uncovered(uint begin, uint end, IcParams params, SplatTileGrid tiles,
-                           RecordGrid grid, __global const int* list_start,
-                           __global const int* list_records, __global const Record* records,
-                           __global const IrradiancePayload* payloads,
-                           __global const GBufferSample* gbuffer, __global uint* uncovered,
-                           __global uint* count) {
+RC_KERNEL void ic_uncovered(uint begin, uint end, IcParams params, SplatTileGrid tiles,
+                            RecordGrid grid, __global const int* list_start,
+                            __global const int* list_records, __global const Record* records,
+                            __global const IrradiancePayload* payloads,
+                            __global const GBufferSample* gbuffer, __global uint* uncovered,
+                            __global uint* count) {
     RC_RANGE_ITEM(q);
     const uint i = rc_ic_candidate(&params, q);
     const GBufferSample g = gbuffer[i];
@@ -101,8 +101,8 @@ __kernel void ic_uncovered(uint begin, uint end, IcParams params, SplatTileGrid 
 }
 
 // Item k: G-buffer entry indices[k], copied to out[k].
-__kernel void ic_gbuffer_select(uint begin, uint end, __global const GBufferSample* gbuffer,
-                                __global const uint* indices, __global GBufferSample* out) {
+RC_KERNEL void ic_gbuffer_select(uint begin, uint end, __global const GBufferSample* gbuffer,
+                                 __global const uint* indices, __global GBufferSample* out) {
     RC_RANGE_ITEM(k);
     out[k] = gbuffer[indices[k]];
 }
@@ -110,10 +110,10 @@ __kernel void ic_gbuffer_select(uint begin, uint end, __global const GBufferSamp
 // Item q: the gather at candidate q (rc_ic_candidate), G-buffer entry i: (sum w E', sum w) of
 // the records the world-space grid lists at its point, into sums[q]. For points that are not
 // camera samples (a deeper cache level's hemisphere hits); 0 where the cache does not serve i.
-__kernel void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
-                        __global const int* cell_start, __global const int* cell_records,
-                        __global const Record* records, __global const IrradiancePayload* payloads,
-                        __global const GBufferSample* gbuffer, __global float4* sums) {
+RC_KERNEL void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
+                         __global const int* cell_start, __global const int* cell_records,
+                         __global const Record* records, __global const IrradiancePayload* payloads,
+                         __global const GBufferSample* gbuffer, __global float4* sums) {
     RC_RANGE_ITEM(q);
     const GBufferSample g = gbuffer[rc_ic_candidate(&params, q)];
     sums[q] = g.served == 0
@@ -125,10 +125,10 @@ __kernel void ic_gather(uint begin, uint end, IcParams params, RecordGrid grid,
 // Item q: radiance cache splatting at candidate q (rc_ic_candidate), camera sample i: the
 // weighted sum over the records splatted into its tile, into the splat buffer sums[q]
 // (ic_splat.h); 0 where the cache does not serve i.
-__kernel void ic_splat(uint begin, uint end, IcParams params, SplatTileGrid tiles,
-                       __global const int* tile_start, __global const int* tile_records,
-                       __global const Record* records, __global const IrradiancePayload* payloads,
-                       __global const GBufferSample* gbuffer, __global float4* sums) {
+RC_KERNEL void ic_splat(uint begin, uint end, IcParams params, SplatTileGrid tiles,
+                        __global const int* tile_start, __global const int* tile_records,
+                        __global const Record* records, __global const IrradiancePayload* payloads,
+                        __global const GBufferSample* gbuffer, __global float4* sums) {
     RC_RANGE_ITEM(q);
     const uint i = rc_ic_candidate(&params, q);
     const GBufferSample g = gbuffer[i];
@@ -141,11 +141,11 @@ __kernel void ic_splat(uint begin, uint end, IcParams params, SplatTileGrid tile
 // it positively (the records that serve the image: temporal caching replaces only those when they
 // expire, the report's "Replacement/Deletion Method"). Only the value 1 is ever written, so the
 // result does not depend on the order.
-__kernel void ic_records_used(uint begin, uint end, IcParams params, SplatTileGrid tiles,
-                              __global const int* tile_start, __global const int* tile_records,
-                              __global const Record* records,
-                              __global const IrradiancePayload* payloads,
-                              __global const GBufferSample* gbuffer, __global uint* used) {
+RC_KERNEL void ic_records_used(uint begin, uint end, IcParams params, SplatTileGrid tiles,
+                               __global const int* tile_start, __global const int* tile_records,
+                               __global const Record* records,
+                               __global const IrradiancePayload* payloads,
+                               __global const GBufferSample* gbuffer, __global uint* used) {
     RC_RANGE_ITEM(i);
     const GBufferSample g = gbuffer[i];
     if (g.served == 0) {
@@ -167,12 +167,12 @@ __kernel void ic_records_used(uint begin, uint end, IcParams params, SplatTileGr
 // (RC_CACHED_FILM_SLOTS per pixel; rc_shade_pixel), the records overlay (from the world-space
 // grid) as its layer. counters: [0] rays traced, [1] non-finite samples (dropped), [2] first
 // pixel with one.
-__kernel void ic_shade(uint begin, uint end, IcParams params, CameraParams camera,
-                       RC_SCENE_PARAMETERS, RecordGrid grid, __global const int* cell_start,
-                       __global const int* cell_records, __global const Record* records,
-                       __global const IrradiancePayload* payloads, __global const float4* splat,
-                       __global const RcGlossySample* glossy, __global float4* film,
-                       __global uint* counters) {
+RC_KERNEL void ic_shade(uint begin, uint end, IcParams params, CameraParams camera,
+                        RC_SCENE_PARAMETERS, RecordGrid grid, __global const int* cell_start,
+                        __global const int* cell_records, __global const Record* records,
+                        __global const IrradiancePayload* payloads, __global const float4* splat,
+                        __global const RcGlossySample* glossy, __global float4* film,
+                        __global uint* counters) {
     RC_RANGE_ITEM(pixel);
     const SceneData scene = RC_SCENE_DATA();
     const RecordCache cache = {grid,     cell_start,      cell_records,     records,

@@ -8,8 +8,8 @@
 
 // Item i: photon params.first_photon + i, traced and deposited into accum (64-bit fixed point).
 // counters[0] counts crossings, counters[1] rays.
-__kernel void ivg_trace_photons(uint begin, uint end, IvgParams params, RC_SCENE_PARAMETERS,
-                                __global long* accum, __global uint* counters) {
+RC_KERNEL void ivg_trace_photons(uint begin, uint end, IvgParams params, RC_SCENE_PARAMETERS,
+                                 __global long* accum, __global uint* counters) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     uint rays = 0;
@@ -20,9 +20,9 @@ __kernel void ivg_trace_photons(uint begin, uint end, IvgParams params, RC_SCENE
 }
 
 // Item i: the segment from[i] -> to[i] carrying flux[i].xyz, deposited into accum.
-__kernel void ivg_deposit_segments(uint begin, uint end, IvgParams params,
-                                   __global const float4* from, __global const float4* to,
-                                   __global const float4* flux, __global long* accum) {
+RC_KERNEL void ivg_deposit_segments(uint begin, uint end, IvgParams params,
+                                    __global const float4* from, __global const float4* to,
+                                    __global const float4* flux, __global long* accum) {
     RC_RANGE_ITEM(i);
     rc_ivg_deposit_segment(&params, from[i].xyz, to[i].xyz, flux[i].xyz, accum);
 }
@@ -30,8 +30,8 @@ __kernel void ivg_deposit_segments(uint begin, uint end, IvgParams params,
 // Item v: vertex v's RC_IVG_VALUES_PER_VERTEX sums turned into irradiance vectors (§3.3): divided
 // by the fixed-point units, the photon count and the area of the vertex's face cell for each
 // direction.
-__kernel void ivg_normalize(uint begin, uint end, IvgParams params, __global const long* accum,
-                            __global float* values) {
+RC_KERNEL void ivg_normalize(uint begin, uint end, IvgParams params, __global const long* accum,
+                             __global float* values) {
     RC_RANGE_ITEM(v);
     const int columns = params.cells.x + 1;
     const int rows = params.cells.y + 1;
@@ -52,9 +52,9 @@ __kernel void ivg_normalize(uint begin, uint end, IvgParams params, __global con
 
 // Item q: the irradiance (rgb) the grid gives point positions[q] with unit normal normals[q]
 // (every corner taken as visible).
-__kernel void ivg_lookup(uint begin, uint end, IvgParams params, __global const float* values,
-                         __global const half* packed, __global const float4* positions,
-                         __global const float4* normals, __global float4* out) {
+RC_KERNEL void ivg_lookup(uint begin, uint end, IvgParams params, __global const float* values,
+                          __global const half* packed, __global const float4* positions,
+                          __global const float4* normals, __global float4* out) {
     RC_RANGE_ITEM(q);
     out[q] =
         (float4)(rc_ivg_irradiance(&params, values, packed, positions[q].xyz, normals[q].xyz, 0xff),
@@ -65,10 +65,10 @@ __kernel void ivg_lookup(uint begin, uint end, IvgParams params, __global const 
 // pixel's means to film (RC_CACHED_FILM_SLOTS per pixel; rc_shade_pixel), the grid's diffuse
 // light at the camera's hit as its layer. counters: [0] rays, [1] NaN or infinite samples
 // (dropped), [2] the first pixel that had one.
-__kernel void ivg_shade(uint begin, uint end, IvgParams params, __global const float* values,
-                        __global const half* packed, __global const IvgCellPlanes* cell_planes,
-                        __global const IvgPlane* planes, CameraParams camera, RC_SCENE_PARAMETERS,
-                        __global float4* film, __global uint* counters) {
+RC_KERNEL void ivg_shade(uint begin, uint end, IvgParams params, __global const float* values,
+                         __global const half* packed, __global const IvgCellPlanes* cell_planes,
+                         __global const IvgPlane* planes, CameraParams camera, RC_SCENE_PARAMETERS,
+                         __global float4* film, __global uint* counters) {
     RC_RANGE_ITEM(pixel);
     const SceneData scene = RC_SCENE_DATA();
     const VectorGrid grid = {params, values, packed, cell_planes, planes};

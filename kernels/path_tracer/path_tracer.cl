@@ -8,8 +8,9 @@
 
 // film: for each pixel RC_PT_FILM_SLOTS float4 sums (kernels/shared/film.h).
 // counters: [0] rays traced, [1] non-finite samples (dropped), [2] first pixel with one.
-__kernel void path_trace_pass(uint begin, uint end, PathTracerParams params, CameraParams camera,
-                              RC_SCENE_PARAMETERS, __global float4* film, __global uint* counters) {
+RC_KERNEL void path_trace_pass(uint begin, uint end, PathTracerParams params, CameraParams camera,
+                               RC_SCENE_PARAMETERS, __global float4* film,
+                               __global uint* counters) {
     RC_RANGE_ITEM(pixel);
     const SceneData scene = RC_SCENE_DATA();
     const PathSample s = rc_path_sample(&scene, &camera, &params, pixel);

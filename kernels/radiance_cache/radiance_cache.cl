@@ -5,9 +5,9 @@
 // One texel of one material's BRDF table (rc_brdf_table_texel): its coefficients into
 // coefficients[(first_texel + texel) * RC_SH_MAX_COEFFICIENTS ...] and its error at every order
 // into errors[(first_texel + texel) * RC_SH_MAX_ORDER ...].
-__kernel void rc_brdf_table_texels(uint begin, uint end, Material material, BrdfTableParams params,
-                                   __global const float* nodes, __global float* coefficients,
-                                   __global float* errors) {
+RC_KERNEL void rc_brdf_table_texels(uint begin, uint end, Material material, BrdfTableParams params,
+                                    __global const float* nodes, __global float* coefficients,
+                                    __global float* errors) {
     RC_RANGE_ITEM(texel);
     float c[RC_SH_MAX_COEFFICIENTS];
     float e[RC_SH_MAX_ORDER];

@@ -6,9 +6,9 @@
 
 // Item i: camera sample i % spp of pixel i / spp (params.camera_spp) as radiance caching sees it
 // (rc_camera_query).
-__kernel void rc_glossy_queries(uint begin, uint end, IcParams params, CameraParams camera,
-                                RC_SCENE_PARAMETERS, __global const BrdfTableInfo* infos,
-                                __global const int* orders, __global RcQuery* queries) {
+RC_KERNEL void rc_glossy_queries(uint begin, uint end, IcParams params, CameraParams camera,
+                                 RC_SCENE_PARAMETERS, __global const BrdfTableInfo* infos,
+                                 __global const int* orders, __global RcQuery* queries) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint spp = (uint)params.camera_spp;
@@ -19,9 +19,9 @@ __kernel void rc_glossy_queries(uint begin, uint end, IcParams params, CameraPar
 // coefficient vectors and their translational gradients (rc_project_cells_with_gradients, SH at
 // params.order) into payloads[b * 9 order^2 ...], and the harmonic mean (x) and minimum (y) of
 // its hit distances into distances[b].
-__kernel void rc_record_project(uint begin, uint end, RcParams params, __global const uint* streams,
-                                __global const float4* cells, __global float* payloads,
-                                __global float4* distances) {
+RC_KERNEL void rc_record_project(uint begin, uint end, RcParams params,
+                                 __global const uint* streams, __global const float4* cells,
+                                 __global float* payloads, __global float4* distances) {
     RC_RANGE_ITEM(b);
     const int per_record = params.strata_m * params.strata_n;
     __global const float4* own = cells + (size_t)b * (uint)per_record;
@@ -47,12 +47,12 @@ __kernel void rc_record_project(uint begin, uint end, RcParams params, __global 
 // records the world-space grid lists at it, in list order (TVCG §4.4 eq. 12, §4.5 eq. 13; the
 // radiance splat buffer's (L_o, w) pairs of "Radiance Cache Splatting", here gathered per
 // sample). counters[0] counts the record reflections evaluated (each a rotation).
-__kernel void rc_glossy_splat(uint begin, uint end, RcParams params, RecordGrid grid,
-                              __global const int* cell_start, __global const int* cell_records,
-                              __global const Record* records, __global const float* payloads,
-                              __global const RcQuery* queries, __global const BrdfTableInfo* infos,
-                              __global const float* table, __global const float* x90,
-                              __global RcGlossySample* glossy, __global uint* counters) {
+RC_KERNEL void rc_glossy_splat(uint begin, uint end, RcParams params, RecordGrid grid,
+                               __global const int* cell_start, __global const int* cell_records,
+                               __global const Record* records, __global const float* payloads,
+                               __global const RcQuery* queries, __global const BrdfTableInfo* infos,
+                               __global const float* table, __global const float* x90,
+                               __global RcGlossySample* glossy, __global uint* counters) {
     RC_RANGE_ITEM(i);
     const RcQuery q = queries[i];
     RcGlossySample out;

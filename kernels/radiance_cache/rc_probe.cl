@@ -10,8 +10,8 @@
 #include "shared/sh_rotation_zxz.h"
 
 // The basis functions of `basis` at directions[i] into out[i * order^2 ...].
-__kernel void rc_basis_probe(uint begin, uint end, int basis, int order,
-                             __global const float4* directions, __global float* out) {
+RC_KERNEL void rc_basis_probe(uint begin, uint end, int basis, int order,
+                              __global const float4* directions, __global float* out) {
     RC_RANGE_ITEM(i);
     float y[RC_SH_MAX_COEFFICIENTS];
     const float4 d = directions[i];
@@ -30,9 +30,9 @@ __kernel void rc_basis_probe(uint begin, uint end, int basis, int order,
 
 // Item i = record * m n + cell: the test radiance arriving from the direction of the cell, as a
 // hemisphere ray of record `record` would bring it.
-__kernel void rc_cells_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi, int mode,
-                             int basis, int function, float exponent, float4 colour,
-                             __global float4* cells) {
+RC_KERNEL void rc_cells_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi,
+                              int mode, int basis, int function, float exponent, float4 colour,
+                              __global float4* cells) {
     RC_RANGE_ITEM(i);
     const uint record = i / (uint)(m * n);
     const int cell = (int)(i % (uint)(m * n));
@@ -49,9 +49,9 @@ __kernel void rc_cells_probe(uint begin, uint end, int m, int n, uint key_lo, ui
 }
 
 // Item = record: rc_project_cells over the record's m n cells into out[record * 3 order^2 ...].
-__kernel void rc_projection_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi,
-                                  int basis, int order, __global const float4* cells,
-                                  __global float* out) {
+RC_KERNEL void rc_projection_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi,
+                                   int basis, int order, __global const float4* cells,
+                                   __global float* out) {
     RC_RANGE_ITEM(record);
     float c[3 * RC_SH_MAX_COEFFICIENTS];
     rc_project_cells(cells + record * (uint)(m * n), m, n, key_lo, key_hi, record, basis, order, c);
@@ -95,24 +95,24 @@ void rc_probe_rotate_item(uint i, int order, int vectors, __global const float4*
 }
 
 // Item i: rc_probe_rotate_item by rc_sh_rotate.
-__kernel void rc_rotation_probe(uint begin, uint end, int order, int vectors,
-                                __global const float4* rotations, __global float* coefficients) {
+RC_KERNEL void rc_rotation_probe(uint begin, uint end, int order, int vectors,
+                                 __global const float4* rotations, __global float* coefficients) {
     RC_RANGE_ITEM(i);
     rc_probe_rotate_item(i, order, vectors, rotations, 0, coefficients);
 }
 
 // Item i: rc_probe_rotate_item by the zxzxz factorization with the table x90.
-__kernel void rc_rotation_zxz_probe(uint begin, uint end, int order, int vectors,
-                                    __global const float4* rotations, __global const float* x90,
-                                    __global float* coefficients) {
+RC_KERNEL void rc_rotation_zxz_probe(uint begin, uint end, int order, int vectors,
+                                     __global const float4* rotations, __global const float* x90,
+                                     __global float* coefficients) {
     RC_RANGE_ITEM(i);
     rc_probe_rotate_item(i, order, vectors, rotations, x90, coefficients);
 }
 
 // Item i: the frame rotation from frame (rows from[3 i .. 3 i + 2]: t, b, n) to frame `to` into
 // out[3 i .. 3 i + 2] (rows of R).
-__kernel void rc_frame_rotation_probe(uint begin, uint end, __global const float4* from,
-                                      __global const float4* to, __global float4* out) {
+RC_KERNEL void rc_frame_rotation_probe(uint begin, uint end, __global const float4* from,
+                                       __global const float4* to, __global float4* out) {
     RC_RANGE_ITEM(i);
     Frame a;
     a.t = from[3 * i].xyz;
@@ -130,10 +130,10 @@ __kernel void rc_frame_rotation_probe(uint begin, uint end, __global const float
 }
 
 // Item i: the table's coefficients (order^2) and order for the outgoing direction wo[i].
-__kernel void rc_brdf_lookup_probe(uint begin, uint end, BrdfTableInfo info, int order,
-                                   __global const float* coefficients, __global const int* orders,
-                                   __global const float4* wo, __global float* out,
-                                   __global int* out_orders) {
+RC_KERNEL void rc_brdf_lookup_probe(uint begin, uint end, BrdfTableInfo info, int order,
+                                    __global const float* coefficients, __global const int* orders,
+                                    __global const float4* wo, __global float* out,
+                                    __global int* out_orders) {
     RC_RANGE_ITEM(i);
     float c[RC_SH_MAX_COEFFICIENTS];
     rc_brdf_table_coefficients(coefficients, &info, wo[i].xyz, order, c);
@@ -148,9 +148,9 @@ __kernel void rc_brdf_lookup_probe(uint begin, uint end, BrdfTableInfo info, int
 // record at positions[record].xyz (frame = world axes) from the ceiling z = positions[record].w
 // emitting spot(x, y) = exp(-(x^2 + y^2) / spot^2) * colour (the analytic scene of the gradient
 // test). Every record draws the directions of stream `stream` (common random numbers).
-__kernel void rc_ceiling_cells_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi,
-                                     uint stream, float spot, float4 colour,
-                                     __global const float4* positions, __global float4* cells) {
+RC_KERNEL void rc_ceiling_cells_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi,
+                                      uint stream, float spot, float4 colour,
+                                      __global const float4* positions, __global float4* cells) {
     RC_RANGE_ITEM(i);
     const uint record = i / (uint)(m * n);
     const int cell = (int)(i % (uint)(m * n));
@@ -166,9 +166,9 @@ __kernel void rc_ceiling_cells_probe(uint begin, uint end, int m, int n, uint ke
 // Item = record: rc_project_cells_with_gradients of the record's m n cells, directions of stream
 // `stream`, into out[record * 9 order^2 ...]: coefficients (r, g, b) then gradients (r x, r y,
 // g x, g y, b x, b y).
-__kernel void rc_gradient_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi,
-                                uint stream, int basis, int order, __global const float4* cells,
-                                __global float* out) {
+RC_KERNEL void rc_gradient_probe(uint begin, uint end, int m, int n, uint key_lo, uint key_hi,
+                                 uint stream, int basis, int order, __global const float4* cells,
+                                 __global float* out) {
     RC_RANGE_ITEM(record);
     float c[3 * RC_SH_MAX_COEFFICIENTS];
     float g[6 * RC_SH_MAX_COEFFICIENTS];
@@ -187,12 +187,12 @@ __kernel void rc_gradient_probe(uint begin, uint end, int m, int n, uint key_lo,
 // at the query displaced by displacements[i].xy in the record's frame, whose frame the rotation
 // rows rotations[3 i .. 3 i + 2] reach from the record's, for the outgoing direction wo[i] (query
 // frame) of the material with table `info`: out[i].xyz.
-__kernel void rc_reflection_probe(uint begin, uint end, int order, BrdfTableInfo info,
-                                  __global const float* table, __global const float* x90,
-                                  __global const float* records,
-                                  __global const float4* displacements,
-                                  __global const float4* rotations, __global const float4* wo,
-                                  __global float4* out) {
+RC_KERNEL void rc_reflection_probe(uint begin, uint end, int order, BrdfTableInfo info,
+                                   __global const float* table, __global const float* x90,
+                                   __global const float* records,
+                                   __global const float4* displacements,
+                                   __global const float4* rotations, __global const float4* wo,
+                                   __global float4* out) {
     RC_RANGE_ITEM(i);
     const int count = rc_sh_count(order);
     float c[3 * RC_SH_MAX_COEFFICIENTS];

@@ -15,10 +15,10 @@
 // (where interpolated normals bend away from the facets) would hit the surface itself: no ray,
 // no light, and no neighbour (infinitely far), so a record's radius is not cut to the offset
 // of its rays' origin. counters[0] counts the rays traced.
-__kernel void rc_record_cells(uint begin, uint end, RcParams params, RC_SCENE_PARAMETERS,
-                              __global const RcQuery* sites, __global const uint* streams,
-                              RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
-                              __global uint* counters) {
+RC_KERNEL void rc_record_cells(uint begin, uint end, RcParams params, RC_SCENE_PARAMETERS,
+                               __global const RcQuery* sites, __global const uint* streams,
+                               RC_RADIANCE_SOURCE_PARAMETERS __global float4* cells,
+                               __global uint* counters) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const RadianceSource source = RC_RADIANCE_SOURCE_DATA();

@@ -8,8 +8,8 @@
 
 // Item i: query i left to path tracing (order -1) unless served[its material] is nonzero (a
 // query without a hit keeps its order, -1).
-__kernel void rc_glossy_restrict(uint begin, uint end, __global const int* served,
-                                 __global RcQuery* queries) {
+RC_KERNEL void rc_glossy_restrict(uint begin, uint end, __global const int* served,
+                                  __global RcQuery* queries) {
     RC_RANGE_ITEM(i);
     const int material = queries[i].material;
     if (material >= 0 && served[material] == 0) {
@@ -19,8 +19,8 @@ __kernel void rc_glossy_restrict(uint begin, uint end, __global const int* serve
 
 // Item i: entry i of `from` into `into` where `from`'s cache serves it (order >= 0); the caches
 // serve disjoint sets of materials, so at most one buffer of a mix serves each entry.
-__kernel void rc_glossy_merge(uint begin, uint end, __global const RcGlossySample* from,
-                              __global RcGlossySample* into) {
+RC_KERNEL void rc_glossy_merge(uint begin, uint end, __global const RcGlossySample* from,
+                               __global RcGlossySample* into) {
     RC_RANGE_ITEM(i);
     if (from[i].order >= 0) {
         into[i] = from[i];

@@ -8,8 +8,8 @@
 // Item i: query i appended to `served` (counted in counts[0], in any order) when its order is
 // positive (the records serve it); counts[1] counts the queries with a specular lobe the cache
 // serves (order >= 0), counts[2] those left to Monte Carlo (order 0).
-__kernel void rc_served_queries(uint begin, uint end, __global const RcQuery* queries,
-                                __global uint* served, __global uint* counts) {
+RC_KERNEL void rc_served_queries(uint begin, uint end, __global const RcQuery* queries,
+                                 __global uint* served, __global uint* counts) {
     RC_RANGE_ITEM(i);
     const int order = queries[i].order;
     if (order >= 0) {
@@ -24,8 +24,8 @@ __kernel void rc_served_queries(uint begin, uint end, __global const RcQuery* qu
 }
 
 // Item k: queries[indices[k]] into selected[k].
-__kernel void rc_select_queries(uint begin, uint end, __global const RcQuery* queries,
-                                __global const uint* indices, __global RcQuery* selected) {
+RC_KERNEL void rc_select_queries(uint begin, uint end, __global const RcQuery* queries,
+                                 __global const uint* indices, __global RcQuery* selected) {
     RC_RANGE_ITEM(k);
     selected[k] = queries[indices[k]];
 }
@@ -33,11 +33,11 @@ __kernel void rc_select_queries(uint begin, uint end, __global const RcQuery* qu
 // Item q: query candidates[q]: appended to uncovered (counted in uncovered_count[0], in any order)
 // when no record the world-space grid lists at it weighs it positively (TVCG 2005 §4.4, SDRC §4.4:
 // S(p) is empty, a new record is needed).
-__kernel void rc_uncovered(uint begin, uint end, float accuracy, float max_weight, RecordGrid grid,
-                           __global const int* cell_start, __global const int* cell_records,
-                           __global const Record* records, __global const RcQuery* queries,
-                           __global const uint* candidates, __global uint* uncovered,
-                           __global uint* uncovered_count) {
+RC_KERNEL void rc_uncovered(uint begin, uint end, float accuracy, float max_weight, RecordGrid grid,
+                            __global const int* cell_start, __global const int* cell_records,
+                            __global const Record* records, __global const RcQuery* queries,
+                            __global const uint* candidates, __global uint* uncovered,
+                            __global uint* uncovered_count) {
     RC_RANGE_ITEM(q);
     const RcQuery query = queries[candidates[q]];
     const int cell = rc_ic_grid_cell(&grid, query.position.xyz);
@@ -56,10 +56,10 @@ __kernel void rc_uncovered(uint begin, uint end, float accuracy, float max_weigh
 // lists at it that weighs it positively: used[r] = 1 (temporal caching replaces an expired record
 // only while it still serves the image, the report's §5 "Replacement/Deletion Method"). Only the
 // value 1 is written, so the result does not depend on the order.
-__kernel void rc_records_used(uint begin, uint end, float accuracy, float max_weight,
-                              RecordGrid grid, __global const int* cell_start,
-                              __global const int* cell_records, __global const Record* records,
-                              __global const RcQuery* queries, __global uint* used) {
+RC_KERNEL void rc_records_used(uint begin, uint end, float accuracy, float max_weight,
+                               RecordGrid grid, __global const int* cell_start,
+                               __global const int* cell_records, __global const Record* records,
+                               __global const RcQuery* queries, __global uint* used) {
     RC_RANGE_ITEM(q);
     const RcQuery query = queries[q];
     const int cell = query.order > 0 ? rc_ic_grid_cell(&grid, query.position.xyz) : -1;

@@ -8,9 +8,9 @@
 // where its material has a specular lobe to cache (every glossy lobe: SDRC needs only the lobe's
 // sampling, no representation of it), else -1; its glossy-buffer entry cleared (order -1: the
 // render pass path traces the lobe until the interpolation fills the entry).
-__kernel void sdrc_queries(uint begin, uint end, IcParams params, CameraParams camera,
-                           RC_SCENE_PARAMETERS, __global RcQuery* queries,
-                           __global RcGlossySample* glossy) {
+RC_KERNEL void sdrc_queries(uint begin, uint end, IcParams params, CameraParams camera,
+                            RC_SCENE_PARAMETERS, __global RcQuery* queries,
+                            __global RcGlossySample* glossy) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint spp = (uint)params.camera_spp;
@@ -29,10 +29,10 @@ __kernel void sdrc_queries(uint begin, uint end, IcParams params, CameraParams c
 
 // Item b: record b of a batch (random stream streams[b]) at sites[b], from its N samples in
 // samples[b N ...]: rc_sdrc_record_radius into radii[b].
-__kernel void sdrc_record_radius(uint begin, uint end, SdrcParams params,
-                                 __global const Material* materials, __global const RcQuery* sites,
-                                 __global const uint* streams, __global const float4* samples,
-                                 __global float4* radii) {
+RC_KERNEL void sdrc_record_radius(uint begin, uint end, SdrcParams params,
+                                  __global const Material* materials, __global const RcQuery* sites,
+                                  __global const uint* streams, __global const float4* samples,
+                                  __global float4* radii) {
     RC_RANGE_ITEM(b);
     const RcQuery site = sites[b];
     radii[b] = rc_sdrc_record_radius(&params, materials, &site, streams[b],
@@ -44,14 +44,14 @@ __kernel void sdrc_record_radius(uint begin, uint end, SdrcParams params,
 // weight 1, order 1, hits the fraction of its M directions that need no ray; the misses' light is
 // added by sdrc_add_misses) and its M miss slots misses[k M ...]. counters[0] counts the
 // directions answered from the cache, counters[1] the L-trees range-queried.
-__kernel void sdrc_interpolate(uint begin, uint end, SdrcParams params,
-                               __global const Material* materials, RecordGrid grid,
-                               __global const int* cell_start, __global const int* cell_records,
-                               __global const Record* records, __global const RcQuery* sites,
-                               __global const SdrcTree* trees, __global const LTreeNode* nodes,
-                               __global const RcQuery* queries, __global const uint* samples,
-                               __global RcGlossySample* glossy, __global SdrcMiss* misses,
-                               __global uint* counters) {
+RC_KERNEL void sdrc_interpolate(uint begin, uint end, SdrcParams params,
+                                __global const Material* materials, RecordGrid grid,
+                                __global const int* cell_start, __global const int* cell_records,
+                                __global const Record* records, __global const RcQuery* sites,
+                                __global const SdrcTree* trees, __global const LTreeNode* nodes,
+                                __global const RcQuery* queries, __global const uint* samples,
+                                __global RcGlossySample* glossy, __global SdrcMiss* misses,
+                                __global uint* counters) {
     RC_RANGE_ITEM(k);
     SdrcCache cache;
     cache.grid = grid;
@@ -85,9 +85,9 @@ __kernel void sdrc_interpolate(uint begin, uint end, SdrcParams params,
 // Item k: camera sample samples[k]: the light its misses (misses[k M ...], traced into
 // radiance[k M ...]) bring, (1/M) sum L f_s cos / (rho_s p), added to its glossy-buffer entry in
 // direction order.
-__kernel void sdrc_add_misses(uint begin, uint end, SdrcParams params, __global const uint* samples,
-                              __global const SdrcMiss* misses, __global const float4* radiance,
-                              __global RcGlossySample* glossy) {
+RC_KERNEL void sdrc_add_misses(uint begin, uint end, SdrcParams params,
+                               __global const uint* samples, __global const SdrcMiss* misses,
+                               __global const float4* radiance, __global RcGlossySample* glossy) {
     RC_RANGE_ITEM(k);
     const size_t first = (size_t)k * (uint)params.interp;
     float3 sum = (float3)(0.0f);

@@ -8,10 +8,11 @@
 // queries[q] (x: u, y: v, z: radius). counts[q]: the samples found; sums[q]: xyz the weighted
 // radiance sum, w the weight sum; found[q * capacity ...]: the first `capacity` found indices
 // (relative to the record's first node), in the order the query found them.
-__kernel void sdrc_query_probe(uint begin, uint end, __global const LTreeNode* nodes,
-                               __global const SdrcTree* trees, __global const uint* records,
-                               __global const float4* queries, uint capacity, __global uint* counts,
-                               __global float4* sums, __global uint* found) {
+RC_KERNEL void sdrc_query_probe(uint begin, uint end, __global const LTreeNode* nodes,
+                                __global const SdrcTree* trees, __global const uint* records,
+                                __global const float4* queries, uint capacity,
+                                __global uint* counts, __global float4* sums,
+                                __global uint* found) {
     RC_RANGE_ITEM(q);
     const float4 query = queries[q];
     LTreeFound result;

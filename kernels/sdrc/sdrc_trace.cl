@@ -49,12 +49,12 @@ RC_FUNC float4 rc_sdrc_cell(const SceneData* scene, const RadianceSource* source
 // L-tree node into out_nodes[i]; a direction with no ray is infinitely far, black, and an empty
 // node. Item sample_items + j (with temporal caching, M x N = cell_m x cell_n > 0): cell j % (M N)
 // of record j / (M N) into cells[j] (rc_sdrc_cell). counters[0] counts the rays traced.
-__kernel void sdrc_record_samples(uint begin, uint end, SdrcParams params, uint sample_items,
-                                  int cell_m, int cell_n, RC_SCENE_PARAMETERS,
-                                  __global const RcQuery* sites, __global const uint* streams,
-                                  RC_RADIANCE_SOURCE_PARAMETERS __global float4* samples,
-                                  __global LTreeNode* out_nodes, __global float4* cells,
-                                  __global uint* counters) {
+RC_KERNEL void sdrc_record_samples(uint begin, uint end, SdrcParams params, uint sample_items,
+                                   int cell_m, int cell_n, RC_SCENE_PARAMETERS,
+                                   __global const RcQuery* sites, __global const uint* streams,
+                                   RC_RADIANCE_SOURCE_PARAMETERS __global float4* samples,
+                                   __global LTreeNode* out_nodes, __global float4* cells,
+                                   __global uint* counters) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const RadianceSource source = RC_RADIANCE_SOURCE_DATA();
@@ -98,11 +98,11 @@ __kernel void sdrc_record_samples(uint begin, uint end, SdrcParams params, uint 
 // could take it; the light into radiance[k], the node for the record's L-tree into out_nodes[k]
 // (empty for a miss traced from the camera sample). The random stream: the sample's, past the
 // interpolation's words. counters[0] counts the rays traced.
-__kernel void sdrc_trace_misses(uint begin, uint end, SdrcParams params, RC_SCENE_PARAMETERS,
-                                __global const RcQuery* sites, __global const RcQuery* queries,
-                                __global const SdrcMiss* misses,
-                                RC_RADIANCE_SOURCE_PARAMETERS __global float4* radiance,
-                                __global LTreeNode* out_nodes, __global uint* counters) {
+RC_KERNEL void sdrc_trace_misses(uint begin, uint end, SdrcParams params, RC_SCENE_PARAMETERS,
+                                 __global const RcQuery* sites, __global const RcQuery* queries,
+                                 __global const SdrcMiss* misses,
+                                 RC_RADIANCE_SOURCE_PARAMETERS __global float4* radiance,
+                                 __global LTreeNode* out_nodes, __global uint* counters) {
     RC_RANGE_ITEM(k);
     const SdrcMiss miss = misses[k];
     out_nodes[k].radiance = 0u;
@@ -131,11 +131,11 @@ __kernel void sdrc_trace_misses(uint begin, uint end, SdrcParams params, RC_SCEN
 // frame into next[i], L moved by the change of the uniform cell its direction passes through
 // (next_cells - cells: rc_sdrc_cell's cells carried by temporal caching; L itself where the cell
 // does not change), at least 0; a direction with no ray, or below the cells' hemisphere, keeps L.
-__kernel void sdrc_record_next(uint begin, uint end, SdrcParams params, int m, int n,
-                               __global const Material* materials, __global const RcQuery* sites,
-                               __global const uint* streams, __global const float4* samples,
-                               __global const float4* cells, __global const float4* next_cells,
-                               __global float4* next) {
+RC_KERNEL void sdrc_record_next(uint begin, uint end, SdrcParams params, int m, int n,
+                                __global const Material* materials, __global const RcQuery* sites,
+                                __global const uint* streams, __global const float4* samples,
+                                __global const float4* cells, __global const float4* next_cells,
+                                __global float4* next) {
     RC_RANGE_ITEM(i);
     const uint b = i / (uint)params.samples;
     const RcQuery site = sites[b];

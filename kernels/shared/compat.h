@@ -16,12 +16,16 @@
 
 #define RC_SHARED_BEGIN
 #define RC_SHARED_END
-// Every device function inlined where the host asks for it (host/device/compiler_workarounds.h:
-// Intel's CPU compiler returns a float3 from a function it keeps out of line one component late).
-#ifdef RC_INLINE_EVERY_FUNCTION
-#define RC_FUNC static inline __attribute__((always_inline))
-#else
 #define RC_FUNC static inline
+// An entry kernel. Where the host asks for it (RC_SCALAR_WORK_ITEMS, host/device/
+// compiler_workarounds.h), compiled for one work item at a time: Intel's CPU compiler, which
+// otherwise vectorises a kernel across work items, returns a float3 from an out-of-line function
+// of the vectorised kernel one component late, and rounds its vectorised and its scalar code (for
+// work groups smaller than its vector width) differently.
+#ifdef RC_SCALAR_WORK_ITEMS
+#define RC_KERNEL __attribute__((intel_vec_len_hint(1))) __kernel
+#else
+#define RC_KERNEL __kernel
 #endif
 #define RC_GLOBAL __global
 #define RC_CONSTANT __constant

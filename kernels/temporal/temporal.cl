@@ -20,14 +20,14 @@ RC_FUNC TcCellJitter tc_record_jitter(const TcParams* tc, uint stream) {
 // at this frame: carried[i], the sample carried to the next frame (rc_tc_carry_sample). Where
 // surfaces[b].w is 1, a cell whose direction lies below the plane of surfaces[b].xyz (the
 // surface's own normal) traced no ray and stays as it is.
-__kernel void tc_carry_cells(uint begin, uint end, TcParams tc, RC_SCENE_PARAMETERS,
-                             __global const float4* origins, __global const float4* frames,
-                             __global const float4* surfaces, __global const uint* streams,
-                             __global const float4* cells, __global const int* moved_slot,
-                             __global const Triangle* moved_triangles,
-                             __global const TcEmitter* emitters_now,
-                             __global const TcEmitter* emitters_next,
-                             __global TcCarriedSample* carried) {
+RC_KERNEL void tc_carry_cells(uint begin, uint end, TcParams tc, RC_SCENE_PARAMETERS,
+                              __global const float4* origins, __global const float4* frames,
+                              __global const float4* surfaces, __global const uint* streams,
+                              __global const float4* cells, __global const int* moved_slot,
+                              __global const Triangle* moved_triangles,
+                              __global const TcEmitter* emitters_now,
+                              __global const TcEmitter* emitters_next,
+                              __global TcCarriedSample* carried) {
     RC_RANGE_ITEM(i);
     const SceneData scene = RC_SCENE_DATA();
     const uint per_record = (uint)(tc.strata_m * tc.strata_n);
@@ -57,10 +57,10 @@ __kernel void tc_carry_cells(uint begin, uint end, TcParams tc, RC_SCENE_PARAMET
 
 // Item b: batch record b's hemisphere at the next frame into next_cells (rc_tc_assemble; random
 // stream streams[b]; marks: scratch, one per cell).
-__kernel void tc_assemble_cells(uint begin, uint end, TcParams tc, __global const uint* streams,
-                                __global const TcCarriedSample* carried,
-                                __global const float4* cells, __global float4* next_cells,
-                                __global uint* marks) {
+RC_KERNEL void tc_assemble_cells(uint begin, uint end, TcParams tc, __global const uint* streams,
+                                 __global const TcCarriedSample* carried,
+                                 __global const float4* cells, __global float4* next_cells,
+                                 __global uint* marks) {
     RC_RANGE_ITEM(b);
     const size_t first = (size_t)b * (size_t)(tc.strata_m * tc.strata_n);
     const TcCellJitter jitter = tc_record_jitter(&tc, streams[b]);

@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "device/device_list.h"
@@ -83,32 +84,42 @@ std::vector<std::tuple<std::string, std::string>> cases() {
     return all;
 }
 
-class Implementations : public testing::TestWithParam<std::tuple<std::string, std::string>> {};
-
-TEST_P(Implementations, EveryMethodRendersPoclsPicture) {
-    const auto& [name, scene] = GetParam();
+// The tests' device when it is not PoCL and PoCL is installed: (PoCL's spec, the tested device).
+std::optional<std::pair<std::string, DeviceInfo>> devices_to_compare() {
     const std::vector<DeviceInfo> devices = list_devices();
     const std::optional<std::string> pocl = pocl_spec(devices);
     if (!pocl) {
-        GTEST_SKIP() << "PoCL is not installed: nothing to compare with";
+        return std::nullopt;
     }
     const DeviceInfo tested = select_device(devices, test::test_device_spec());
     if (tested.spec() == *pocl) {
-        GTEST_SKIP() << "the tests' device is PoCL itself (RADCACHE_TEST_DEVICE names another)";
+        return std::nullopt;
     }
+    return std::make_pair(*pocl, tested);
+}
+
+constexpr const char* kSkipReason =
+    "PoCL is not installed, or the tests' device is PoCL itself (RADCACHE_TEST_DEVICE names "
+    "another): nothing to compare with";
+
+// `method`'s image of `scene` rendered on `spec` (one device or several) against PoCL's alone:
+// the same seed's relMSE and each channel's mean within kStandardErrors of PoCL's.
+void expect_pocls_picture(const std::string& name, const std::string& scene,
+                          const std::string& pocl, const std::string& spec,
+                          const std::string& label, const std::string& scratch_name) {
     const MethodEntry& method = find_method(name);
-    std::string scratch = "implementations_" + name + "_" + scene;
+    std::string scratch = scratch_name + "_" + name + "_" + scene;
     std::replace(scratch.begin(), scratch.end(), '-', '_');
-    const Image image = render(method, scene, tested.spec(), kSeeds[0], scratch + "_tested");
+    const Image image = render(method, scene, spec, kSeeds[0], scratch + "_tested");
     std::vector<Image> references;
     for (unsigned seed : kSeeds) {
         references.push_back(
-            render(method, scene, *pocl, seed, scratch + "_pocl" + std::to_string(seed)));
+            render(method, scene, pocl, seed, scratch + "_pocl" + std::to_string(seed)));
     }
-    ASSERT_FALSE(HasFailure());
-    const ImageError same_seed = image_error(image, references[0], tested.name);
+    ASSERT_FALSE(testing::Test::HasFailure());
+    const ImageError same_seed = image_error(image, references[0], label);
     std::printf("%s on %s: %s against PoCL at the same seed: relMSE %.3g\n", name.c_str(),
-                scene.c_str(), tested.name.c_str(), same_seed.relmse);
+                scene.c_str(), label.c_str(), same_seed.relmse);
     EXPECT_LE(same_seed.relmse, kSameSeedRelmse);
     for (size_t c = 0; c < same_seed.channels.size(); ++c) {
         double mean = 0.0;
@@ -131,6 +142,50 @@ TEST_P(Implementations, EveryMethodRendersPoclsPicture) {
             << "channel " << same_seed.channels[c];
     }
 }
+
+class Implementations : public testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(Implementations, EveryMethodRendersPoclsPicture) {
+    const auto compared = devices_to_compare();
+    if (!compared) {
+        GTEST_SKIP() << kSkipReason;
+    }
+    const auto& [name, scene] = GetParam();
+    const auto& [pocl, tested] = *compared;
+    expect_pocls_picture(name, scene, pocl, tested.spec(), tested.name, "implementations");
+}
+
+// One render over PoCL and the tests' device together (docs/devices.md, "Several devices in one
+// render"): each shares its work between the two implementations by their measured speed, and
+// its image is PoCL's alone within the same bounds.
+class SeveralImplementations : public testing::TestWithParam<std::string> {};
+
+TEST_P(SeveralImplementations, OneRenderOverPoclAndTheTestedDeviceIsPoclsPicture) {
+    const auto compared = devices_to_compare();
+    if (!compared) {
+        GTEST_SKIP() << kSkipReason;
+    }
+    const auto& [pocl, tested] = *compared;
+    expect_pocls_picture(GetParam(), "cornell-box", pocl, pocl + "," + tested.spec(),
+                         "PoCL and " + tested.name, "several_implementations");
+}
+
+std::vector<std::string> split_methods() {
+    std::vector<std::string> names;
+    for (const MethodEntry& method : method_registry()) {
+        if (method.name != "auto") {
+            names.push_back(method.name);
+        }
+    }
+    return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryMethod, SeveralImplementations, testing::ValuesIn(split_methods()),
+                         [](const testing::TestParamInfo<std::string>& info) {
+                             std::string name = info.param;
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
 
 INSTANTIATE_TEST_SUITE_P(EveryMethod, Implementations, testing::ValuesIn(cases()),
                          [](const testing::TestParamInfo<Implementations::ParamType>& info) {

@@ -7,9 +7,9 @@
 // temporal caching (which renders on one device), a device named twice, an empty entry, --time
 // and intermediate images are refused with exit status 2 and no output; a device that fails
 // mid-render (pt, ic) stops the render with one line naming that device and the call, and no
-// output file. Skipped where PoCL does not give two devices. Over two platforms (PoCL and Mesa's
-// rusticl, where installed): the path tracer's image within noise of PoCL's alone, both devices
-// given pixels, and a failing device named.
+// output file. Skipped where PoCL does not give two devices, or the tests run on another device.
+// Over two platforms (PoCL and Mesa's rusticl, where installed): the path tracer's image within
+// noise of PoCL's alone, both devices given pixels, and a failing device named.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,9 +23,11 @@
 
 #include "app/commands.h"
 #include "app/render_devices.h"
+#include "device/device_list.h"
 #include "device/fault_injection.h"
 #include "image/image.h"
 #include "image/image_io.h"
+#include "test_device.h"
 #include "test_support.h"
 #include "util/error.h"
 #include "util/file_io.h"
@@ -35,10 +37,23 @@ namespace {
 
 const std::string kTwoDevices = "POCL_DEVICES=pthread pthread";
 
+// Whether the tests run on PoCL (RADCACHE_TEST_DEVICE unset, or naming PoCL's device): the
+// MultiDevice tests split over PoCL's two devices whatever the tests' device, so they run in the
+// suite's PoCL pass; on another implementation they would compare PoCL's images with that one's.
+bool tests_run_on_pocl() {
+    const std::string spec = test::test_device_spec();
+    return spec.empty() ||
+           select_device(list_devices(), spec).platform_name == "Portable Computing Language";
+}
+
 bool two_devices() {
     const test::CommandResult result = test::run_radcache({"devices"}, {kTwoDevices});
     return result.exit_code == 0 && result.output.find("0:1") != std::string::npos;
 }
+
+constexpr const char* kNotOnPocl =
+    "the tests' device is not PoCL's: these split over PoCL's two devices (POCL_DEVICES) and run "
+    "in the suite's PoCL pass";
 
 std::string cornell() {
     return (test::source_dir() / "scenes" / "cornell-box" / "scene.json").string();
@@ -92,6 +107,9 @@ SplitRender render_one_and_split(const std::filesystem::path& dir, const std::st
 }
 
 TEST(MultiDevice, PathTracerImageIsTheOneDeviceImageWhateverTheSplit) {
+    if (!tests_run_on_pocl()) {
+        GTEST_SKIP() << kNotOnPocl;
+    }
     if (!two_devices()) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
     }
@@ -121,6 +139,9 @@ TEST(MultiDevice, PathTracerImageIsTheOneDeviceImageWhateverTheSplit) {
 // added exactly, so `ivg` and `ivg-gather` images are bitwise the one-device images, and both
 // devices traced photons that add up to the grid's.
 TEST(MultiDevice, GridMethodsImageIsTheOneDeviceImage) {
+    if (!tests_run_on_pocl()) {
+        GTEST_SKIP() << kNotOnPocl;
+    }
     if (!two_devices()) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
     }
@@ -145,6 +166,9 @@ TEST(MultiDevice, GridMethodsImageIsTheOneDeviceImage) {
 // grid read beyond the hemisphere hits (--ic-ivg: its records on the first device); both devices
 // computed records (adding up to the cache's) and rendered chunks (adding up to the image).
 TEST(MultiDevice, IrradianceCacheImageIsTheOneDeviceImageWhateverTheSplit) {
+    if (!tests_run_on_pocl()) {
+        GTEST_SKIP() << kNotOnPocl;
+    }
     if (!two_devices()) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
     }
@@ -195,6 +219,9 @@ TEST(MultiDevice, IrradianceCacheImageIsTheOneDeviceImageWhateverTheSplit) {
 // device, so every layer (the glossy caches' own included) is bitwise the one-device image; both
 // devices computed diffuse records and rendered chunks.
 TEST(MultiDevice, GlossyCachesImageIsTheOneDeviceImage) {
+    if (!tests_run_on_pocl()) {
+        GTEST_SKIP() << kNotOnPocl;
+    }
     if (!two_devices()) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
     }
@@ -216,6 +243,9 @@ TEST(MultiDevice, GlossyCachesImageIsTheOneDeviceImage) {
 
 // The geometry preview's rows shared by the two devices: bitwise the one-device image.
 TEST(MultiDevice, NormalsImageIsTheOneDeviceImage) {
+    if (!tests_run_on_pocl()) {
+        GTEST_SKIP() << kNotOnPocl;
+    }
     if (!two_devices()) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
     }
@@ -241,6 +271,9 @@ TEST(MultiDevice, NormalsImageIsTheOneDeviceImage) {
 // the same, both devices rendered chunks that add up to the image and (path) computed radiosities
 // and fitted clusters that add up to the frame's.
 TEST(MultiDevice, DecompositionImageIsTheOneDeviceImageWhateverTheSplit) {
+    if (!tests_run_on_pocl()) {
+        GTEST_SKIP() << kNotOnPocl;
+    }
     if (!two_devices()) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
     }
@@ -303,6 +336,9 @@ TEST(MultiDevice, DecompositionImageIsTheOneDeviceImageWhateverTheSplit) {
 }
 
 TEST(MultiDevice, WhatRendersOnOneDeviceIsRefusedByName) {
+    if (!tests_run_on_pocl()) {
+        GTEST_SKIP() << kNotOnPocl;
+    }
     if (!two_devices()) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
     }
@@ -419,6 +455,9 @@ uint64_t kernel_launches(const std::vector<std::string>& options) {
 // decomposition's last with the path source (its pass 2, shared by the devices).
 TEST(MultiDevice, ADeviceThatFailsMidRenderStopsTheRenderNamingIt) {
     setenv("POCL_DEVICES", "pthread pthread", 1);  // before this process's first OpenCL call
+    if (!tests_run_on_pocl()) {
+        GTEST_SKIP() << kNotOnPocl;
+    }
     if (!two_devices()) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
     }
@@ -525,6 +564,9 @@ TEST(TwoPlatforms, ADeviceThatEndsLoopsEarlyIsRefusedByName) {
 // opened for it as for any method.
 TEST(MultiDevice, AMethodThatDoesNotSplitIsRefusedSeveralDevices) {
     setenv("POCL_DEVICES", "pthread pthread", 1);  // before this process's first OpenCL call
+    if (!tests_run_on_pocl()) {
+        GTEST_SKIP() << kNotOnPocl;
+    }
     if (!two_devices()) {
         GTEST_SKIP() << "PoCL does not expose two devices here";
     }

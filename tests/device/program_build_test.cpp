@@ -7,6 +7,7 @@
 
 #include "device/binary_cache.h"
 #include "device/build_log.h"
+#include "device/compiler_workarounds.h"
 #include "device/context.h"
 #include "device/kernel_sources.h"
 #include "methods/radiance_source.h"
@@ -276,10 +277,14 @@ TEST(ProgramBuild, CorruptCacheEntryIsIgnoredAndRebuilt) {
     // An entry whose checksum is right but whose binary the driver refuses.
     {
         const DeviceInfo& device = test::shared_context().device();
-        // The options every program of a default Context is built with: the language and the
-        // BVH layout.
-        const std::string built_with = "-cl-std=CL1.2 -DRC_BVH_LAYOUT=" +
-                                       std::to_string(static_cast<int>(default_bvh_layout()));
+        // The options every program of a default Context is built with: the language, the
+        // BVH layout and the device's compiler workarounds.
+        std::string built_with = "-cl-std=CL1.2 -DRC_BVH_LAYOUT=" +
+                                 std::to_string(static_cast<int>(default_bvh_layout()));
+        if (const std::string workarounds = compiler_workaround_options(device);
+            !workarounds.empty()) {
+            built_with += " " + workarounds;
+        }
         const BinaryCacheKey key = BinaryCacheKey::of(
             KernelSources().expand("rng_probe.cl"), built_with, device.name, device.driver_version);
         const BinaryCache cache(options.cache_dir);
