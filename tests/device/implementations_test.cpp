@@ -66,7 +66,8 @@ Image render(const MethodEntry& method, const std::string& scene, const std::str
         "-q"};
     const std::vector<std::string> quick = test::quick_method_options(method);
     args.insert(args.end(), quick.begin(), quick.end());
-    const test::CommandResult result = test::run_radcache(args, {"RADCACHE_DEVICE=" + spec});
+    args.insert(args.end(), {"--device", spec});
+    const test::CommandResult result = test::run_radcache(args);
     EXPECT_EQ(result.exit_code, 0) << result.output;
     return result.exit_code == 0 ? select_layers(read_image(path), {"beauty"}) : Image{};
 }
