@@ -56,6 +56,10 @@ std::string no_platform_message() {
 
 }  // namespace
 
+bool is_pocl(const DeviceInfo& device) {
+    return device.platform_name.find("Portable Computing Language") != std::string::npos;
+}
+
 std::string DeviceInfo::spec() const {
     return std::to_string(platform_index) + ":" + std::to_string(device_index);
 }

@@ -36,6 +36,9 @@ struct DeviceInfo {
 
 // Every device of every platform. Throws Error (exit status 2) naming the package that provides
 // a platform (pocl-opencl-icd) when there is none.
+// Whether `device` is PoCL's (its platform "Portable Computing Language").
+bool is_pocl(const DeviceInfo& device);
+
 std::vector<DeviceInfo> list_devices();
 
 // The table `radcache devices` prints: index, platform, device, type, compute units, global

@@ -153,7 +153,7 @@ Program::Program(_cl_context* context, const DeviceInfo& device, const KernelSou
         // the error's build log, so that the error is all the user sees. (Only on PoCL: the
         // capture holds the process's stderr, so builds on several threads take turns there.)
         std::optional<StderrCapture> compiler_output;
-        if (device.platform_name.find("Portable Computing Language") != std::string::npos) {
+        if (is_pocl(device)) {
             compiler_output.emplace();
         }
         status = RC_CL(clBuildProgram, handle_, 1, &device.device, all_options.c_str(), nullptr,

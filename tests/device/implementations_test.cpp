@@ -44,7 +44,7 @@ const std::array<unsigned, 3> kSeeds = {3, 4, 5};  // the first is the compared 
 // PoCL's "P:D", if it is installed.
 std::optional<std::string> pocl_spec(const std::vector<DeviceInfo>& devices) {
     for (const DeviceInfo& device : devices) {
-        if (device.platform_name == "Portable Computing Language") {
+        if (is_pocl(device)) {
             return device.spec();
         }
     }

@@ -42,8 +42,7 @@ const std::string kTwoDevices = "POCL_DEVICES=pthread pthread";
 // suite's PoCL pass; on another implementation they would compare PoCL's images with that one's.
 bool tests_run_on_pocl() {
     const std::string spec = test::test_device_spec();
-    return spec.empty() ||
-           select_device(list_devices(), spec).platform_name == "Portable Computing Language";
+    return spec.empty() || is_pocl(select_device(list_devices(), spec));
 }
 
 bool two_devices() {
