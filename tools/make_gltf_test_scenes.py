@@ -148,11 +148,14 @@ def hierarchy():
     b.gltf["extensionsUsed"] = ["KHR_lights_punctual"]
     b.gltf["extensions"] = {"KHR_lights_punctual": {"lights": [
         {"type": "point", "color": [1, 0.8, 0.6], "intensity": 5.0},
-        {"type": "spot", "intensity": 20.0, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.5}}]}}
+        {"type": "spot", "intensity": 20.0, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.5}},
+        {"type": "directional", "color": [1, 1, 0.5], "intensity": 0.5}]}}
     b.node(name="bulb", translation=[0, 3, 2], extensions={"KHR_lights_punctual": {"light": 0}})
     # The spot at (0, 4, 0) pointing down (-z turned to -y: 90 degrees about x).
     b.node(name="spot", translation=[0, 4, 0], rotation=[-s, 0, 0, s],
            extensions={"KHR_lights_punctual": {"light": 1}})
+    # The sun travelling along -x (-z turned 90 degrees about y).
+    b.node(name="sun", rotation=[0, s, 0, s], extensions={"KHR_lights_punctual": {"light": 2}})
     b.gltf["cameras"] = [{"name": "front", "type": "perspective", "perspective": {"yfov": 0.8, "aspectRatio": 1.5, "znear": 0.1}},
                          {"name": "side", "type": "perspective", "perspective": {"yfov": 0.6, "znear": 0.1}}]
     b.node(name="front_node", camera=0, translation=[0, 1, 10])

@@ -119,7 +119,7 @@ def hierarchy_lights():
         '    LightSource "point" "rgb I" [ 5 4 3 ] "point3 from" [ 1 0 0 ]\n',
         "AttributeEnd\n",
         'LightSource "spot" "rgb I" [ 20 20 20 ] "float scale" 0.5 "point3 from" [ 0 4 5 ]\n'
-        '    "point3 to" [ 0 3 5 ] "float coneangle" 30 "float conedelta" 10\n',
+        '    "point3 to" [ 0 3 5 ] "float coneangle" 30 "float conedeltaangle" 10\n',
     ])
 
 

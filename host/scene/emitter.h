@@ -1,5 +1,5 @@
-// Emitters that are not shapes: point and spot lights and the constant environment. (Area lights
-// are shapes with an emitter; see Shape::emission.)
+// Emitters that are not shapes: point, spot and distant lights and the constant environment.
+// (Area lights are shapes with an emitter; see Shape::emission.)
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -7,17 +7,19 @@
 
 namespace rc {
 
-enum class EmitterKind { kPoint, kSpot, kConstant };
+enum class EmitterKind { kPoint, kSpot, kConstant, kDistant };
 
 struct Emitter {
     std::string name;
     EmitterKind kind = EmitterKind::kPoint;
-    glm::vec3 position{0.0f};             // point, spot
-    glm::vec3 look_at{0.0f, 0.0f, 1.0f};  // spot: the axis points at it
-    glm::vec3 intensity{0.0f};            // point, spot: W/sr per channel
-    glm::vec3 radiance{0.0f};             // constant: W/(m^2 sr)
-    float cutoff_angle = 20.0f;           // spot, degrees
-    float beam_width = 15.0f;             // spot, degrees
+    glm::vec3 position{0.0f};                // point, spot
+    glm::vec3 look_at{0.0f, 0.0f, 1.0f};     // spot: the axis points at it
+    glm::vec3 intensity{0.0f};               // point, spot: W/sr per channel
+    glm::vec3 radiance{0.0f};                // constant: W/(m^2 sr)
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // distant: the direction the light travels
+    glm::vec3 irradiance{0.0f};              // distant: W/m^2 on a surface facing the light
+    float cutoff_angle = 20.0f;              // spot, degrees
+    float beam_width = 15.0f;                // spot, degrees
 };
 
 }  // namespace rc

@@ -370,7 +370,21 @@ class GltfSceneBuilder {
             warn("light range", "ignored: lights fall off with the inverse square everywhere");
         }
         emitter.position = glm::vec3(world * glm::vec4(0, 0, 0, 1));
-        if (light.type == "point") {
+        if (light.type == "directional") {
+            // KHR_lights_punctual: light travelling along the node's -z, its intensity the
+            // illuminance (lux) on a surface facing it.
+            const glm::vec3 axis = glm::mat3(world) * glm::vec3(0, 0, -1);
+            if (!(glm::length(axis) > 0.0f) || !std::isfinite(glm::length(axis))) {
+                throw Error(what + ": the directional light's transform is degenerate");
+            }
+            emitter.kind = EmitterKind::kDistant;
+            emitter.direction = glm::normalize(axis);
+            emitter.irradiance = emitter.intensity;
+            emitter.intensity = glm::vec3(0.0f);
+            if (!glm::all(glm::lessThanEqual(emitter.irradiance, glm::vec3(1e9f)))) {
+                throw Error(what + ": directional light intensity outside [0, 1e9]");
+            }
+        } else if (light.type == "point") {
             emitter.kind = EmitterKind::kPoint;
         } else if (light.type == "spot") {
             emitter.kind = EmitterKind::kSpot;
@@ -392,7 +406,7 @@ class GltfSceneBuilder {
                  "innerConeAngle and outerConeAngle");
         } else {
             warn("light type '" + excerpt(light.type) + "'",
-                 "skipped (radcache has point, spot, area and constant lights)");
+                 "skipped (radcache has point, spot, directional, area and constant lights)");
             return;
         }
         scene_.emitters.push_back(emitter);

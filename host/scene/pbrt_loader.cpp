@@ -20,6 +20,8 @@
 namespace rc {
 namespace {
 
+constexpr float kPi = 3.14159265f;
+
 // The most triangles object instancing and tessellated spheres may add (a file of a few
 // kilobytes must not instance its way to exhausting memory).
 constexpr size_t kMaxCopiedTriangles = size_t{1} << 24;
@@ -463,7 +465,9 @@ class PbrtSceneBuilder {
         const std::string& type = d.strings[0];
         const std::string what = d.where() + ": Shape " + in_quotes(type);
         if (!is_pbrt_shape_supported(type)) {
-            throw Error(what + " is not supported (trianglemesh, plymesh, bilinearmesh, sphere)",
+            throw Error(what +
+                            " is not supported (trianglemesh, plymesh, bilinearmesh, sphere, "
+                            "disk, cylinder)",
                         kExitUnsupported);
         }
         PbrtParams params(d, what);
@@ -471,7 +475,7 @@ class PbrtSceneBuilder {
         shape.type = "pbrt";
         shape.mesh = pbrt_shape_mesh(type, params, dir_, files_);
         params.warn_unused();
-        if (type == "sphere") {
+        if (type == "sphere" || type == "disk" || type == "cylinder") {
             count_copied(shape.mesh.triangle_count(), d);
         }
         shape.flip_normals = attributes_.reverse_orientation;
@@ -547,68 +551,116 @@ class PbrtSceneBuilder {
         }
     }
 
+    // pbrt-v4's lights (Pharr et al., Physically Based Rendering, 4th ed., ch. 12; lights.cpp's
+    // Create functions): RGB spectra times "scale", and the photometric "power" (point, spot)
+    // and "illuminance" (distant, infinite) as pbrt-v4 normalises them for an RGB illuminant:
+    // the emission times power / k_e, k_e the light's power at unit intensity.
     void light_source(const PbrtDirective& d) {
         const std::string& type = d.strings[0];
         const std::string what = d.where() + ": LightSource " + in_quotes(type);
-        if (type != "point" && type != "spot" && type != "infinite") {
-            throw Error(what + " is not supported (point, spot, infinite)", kExitUnsupported);
+        if (type != "point" && type != "spot" && type != "infinite" && type != "distant") {
+            throw Error(what + " is not supported (point, spot, distant, infinite)",
+                        kExitUnsupported);
         }
         PbrtParams params(d, what);
-        if (params.has("power") || params.has("illuminance") || params.has("filename")) {
-            params.refuse(
-                "\"power\", \"illuminance\" and image maps (\"filename\") are not "
-                "supported: give the intensity (I or L) and scale");
+        if (params.has("filename")) {
+            params.refuse("image maps (\"filename\") are not supported: give \"rgb L\"");
         }
         const float scale = params.get_float("scale", 1.0f);
         const glm::mat4 to_world = object_to_world(d, attributes_.ctm);
         Emitter emitter;
         emitter.name = "light" + std::to_string(scene_.emitters.size());
         if (type == "infinite") {
-            params.ignore("portal");  // a sampling aid: the image is the same
-            emitter.kind = EmitterKind::kConstant;
-            emitter.radiance = params.get_rgb("L").value_or(glm::vec3(1.0f)) * scale;
-            check_range(emitter.radiance, 1e9f, params, "L times scale");
-            for (const Emitter& other : scene_.emitters) {
-                if (other.kind == EmitterKind::kConstant) {
-                    params.refuse("a scene has at most one constant infinite light");
-                }
-            }
+            infinite(params, scale, emitter);
+        } else if (type == "distant") {
+            distant(params, to_world, scale, emitter);
         } else {
-            emitter.intensity = params.get_rgb("I").value_or(glm::vec3(1.0f)) * scale;
-            check_range(emitter.intensity, 1e12f, params, "I times scale");
             const glm::vec3 from = params.get_point3("from").value_or(glm::vec3(0.0f));
             emitter.position = transform_point(to_world, from);
             emitter.kind = type == "point" ? EmitterKind::kPoint : EmitterKind::kSpot;
+            // k_e: 4 pi for a point light; a spot's set by spot().
+            float unit_power = 4.0f * kPi;
             if (type == "spot") {
-                spot(params, to_world, from, emitter);
+                unit_power = spot(params, to_world, from, emitter);
             }
+            emitter.intensity = params.get_rgb("I").value_or(glm::vec3(1.0f)) * scale *
+                                photometric_factor(params, "power", unit_power);
+            check_range(emitter.intensity, 1e12f, params, "I times scale");
         }
         params.warn_unused();
         scene_.emitters.push_back(emitter);
     }
 
-    void spot(PbrtParams& params, const glm::mat4& to_world, glm::vec3 from, Emitter& emitter) {
+    // The factor pbrt-v4 applies for a photometric parameter `name` (power or illuminance) given
+    // as v > 0: v / k_e; 1 without it (pbrt's default of -1: any value <= 0 means none).
+    static float photometric_factor(PbrtParams& params, const std::string& name, float k_e) {
+        const float value = params.get_float(name, -1.0f);
+        if (!std::isfinite(value)) {
+            params.fail("\"" + name + "\" must be finite");
+        }
+        return value > 0.0f ? value / k_e : 1.0f;
+    }
+
+    // "infinite" without a map: the constant environment; illuminance E_v on an upward patch
+    // under it is pi L (k_e = pi).
+    void infinite(PbrtParams& params, float scale, Emitter& emitter) {
+        params.ignore("portal");  // a sampling aid: the image is the same
+        emitter.kind = EmitterKind::kConstant;
+        emitter.radiance = params.get_rgb("L").value_or(glm::vec3(1.0f)) * scale *
+                           photometric_factor(params, "illuminance", kPi);
+        check_range(emitter.radiance, 1e9f, params, "L times scale");
+        for (const Emitter& other : scene_.emitters) {
+            if (other.kind == EmitterKind::kConstant) {
+                params.refuse("a scene has at most one constant infinite light");
+            }
+        }
+    }
+
+    // "distant": light travelling from "from" to "to" (default (0,0,0) to (0,0,1)), irradiance
+    // L x scale on a surface facing it; "illuminance" is that irradiance (k_e = 1).
+    void distant(PbrtParams& params, const glm::mat4& to_world, float scale, Emitter& emitter) {
+        const glm::vec3 from = params.get_point3("from").value_or(glm::vec3(0.0f));
+        const glm::vec3 to = params.get_point3("to").value_or(glm::vec3(0.0f, 0.0f, 1.0f));
+        const glm::vec3 direction = glm::mat3(to_world) * (to - from);
+        if (!(glm::length(direction) > 0.0f) || !std::isfinite(glm::length(direction))) {
+            params.fail(
+                "\"from\" and \"to\" give no direction (they coincide, or the "
+                "transform collapses it)");
+        }
+        emitter.kind = EmitterKind::kDistant;
+        emitter.direction = glm::normalize(direction);
+        emitter.irradiance = params.get_rgb("L").value_or(glm::vec3(1.0f)) * scale *
+                             photometric_factor(params, "illuminance", 1.0f);
+        check_range(emitter.irradiance, 1e9f, params, "L times scale");
+    }
+
+    // "spot": the cone and its axis; returns pbrt-v4's k_e for "power", the power of unit
+    // intensity under its smoothstep falloff: 2 pi ((1 - cos start) + (cos start - cos end) / 2).
+    float spot(PbrtParams& params, const glm::mat4& to_world, glm::vec3 from, Emitter& emitter) {
         const glm::vec3 to = params.get_point3("to").value_or(glm::vec3(0, 0, 1));
         if (!(glm::length(to - from) > 0.0f)) {
             params.fail("\"from\" and \"to\" coincide");
         }
         emitter.look_at = transform_point(to_world, to);
         const float cone = params.get_float("coneangle", 30.0f);
-        const float delta = params.get_float("conedelta", 5.0f);
+        const float delta = params.get_float("conedeltaangle", 5.0f);
         if (!(cone > 0.0f && cone < 90.0f)) {
             params.fail("coneangle must lie in (0, 90) degrees");
         }
-        if (!(delta >= 0.0f)) {
-            params.fail("conedelta must not be negative");
+        if (!(delta >= 0.0f && delta <= cone)) {
+            params.fail("conedeltaangle must lie in [0, coneangle]");
         }
         emitter.cutoff_angle = cone;
         emitter.beam_width = std::clamp(cone - delta, 1e-3f, 0.999f * cone);
         if (!warned_spot_) {
             log_warning(params.what() +
                         ": radcache's spot falls off linearly in angle between coneangle - "
-                        "conedelta and coneangle, pbrt's smoothly in cosine");
+                        "conedeltaangle and coneangle, pbrt's smoothly in cosine");
             warned_spot_ = true;
         }
+        const float cos_end = std::cos(glm::radians(cone));
+        const float cos_start = std::cos(glm::radians(cone - delta));
+        return 2.0f * kPi * ((1.0f - cos_start) + 0.5f * (cos_start - cos_end));
     }
 
     std::string file_;

@@ -1,15 +1,15 @@
 #include "scene/pbrt_shapes.h"
 
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-
-#include <assimp/Importer.hpp>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <utility>
 
 #include "scene/generated_meshes.h"
-#include "scene/ply_header.h"
+#include "scene/ply_mesh.h"
+#include "scene/shapes/cylinder.h"
+#include "scene/shapes/disk.h"
 #include "util/error.h"
+#include "util/gzip.h"
 #include "util/log.h"
 #include "util/text.h"
 
@@ -17,7 +17,7 @@ namespace rc {
 
 bool is_pbrt_shape_supported(const std::string& type) {
     return type == "trianglemesh" || type == "bilinearmesh" || type == "plymesh" ||
-           type == "sphere";
+           type == "sphere" || type == "disk" || type == "cylinder";
 }
 
 namespace {
@@ -141,66 +141,53 @@ TriangleMesh sphere_mesh(PbrtParams& params) {
     return make_uv_sphere(glm::vec3(0.0f), radius);
 }
 
-}  // namespace
-
-TriangleMesh load_ply_mesh(const std::string& bytes, const std::string& what) {
-    check_ply_header(bytes, what);
-    Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(),
-                                                       aiProcess_ValidateDataStructure, "ply");
-    if (scene == nullptr || scene->mNumMeshes == 0) {
-        const std::string reason = importer.GetErrorString();
-        throw Error(what + ": not a readable PLY mesh" +
-                    (reason.empty() ? std::string() : ": " + excerpt(reason, 200)));
+// pbrt's "phimax" in degrees, in (0, 360] (pbrt clamps it into [0, 360]; 0 is no surface).
+float phi_max_degrees(PbrtParams& params) {
+    const float phi_max = params.get_float("phimax", 360.0f);
+    if (!(phi_max > 0.0f && phi_max <= 360.0f)) {
+        params.fail("phimax must lie in (0, 360] degrees");
     }
-    TriangleMesh result;
-    bool warned = false;
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-        const aiMesh& mesh = *scene->mMeshes[m];
-        TriangleMesh part;
-        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
-            const aiVector3D& p = mesh.mVertices[v];
-            part.positions.emplace_back(p.x, p.y, p.z);
-            if (mesh.mNormals != nullptr) {
-                const glm::vec3 n(mesh.mNormals[v].x, mesh.mNormals[v].y, mesh.mNormals[v].z);
-                const float length = glm::length(n);
-                part.normals.push_back(length > 0.0f ? n / length : glm::vec3(0, 0, 1));
-            }
-            if (mesh.mTextureCoords[0] != nullptr) {
-                part.uvs.emplace_back(mesh.mTextureCoords[0][v].x, mesh.mTextureCoords[0][v].y);
-            }
-        }
-        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-            const aiFace& face = mesh.mFaces[f];
-            if (face.mNumIndices != 3 && face.mNumIndices != 4) {
-                throw Error(what + ": PLY face " + std::to_string(f) + " has " +
-                            std::to_string(face.mNumIndices) +
-                            " vertices (triangles and quads only)");
-            }
-            for (unsigned k = 0; k < face.mNumIndices; ++k) {
-                if (face.mIndices[k] >= mesh.mNumVertices) {
-                    throw Error(what + ": PLY face " + std::to_string(f) + ": index " +
-                                std::to_string(face.mIndices[k]) + " out of range");
-                }
-            }
-            const unsigned* i = face.mIndices;
-            part.triangles.emplace_back(i[0], i[1], i[2]);
-            if (face.mNumIndices == 4) {
-                part.triangles.emplace_back(i[0], i[2], i[3]);
-                const auto& p = part.positions;
-                if (!warned && !planar(p[i[0]], p[i[1]], p[i[2]], p[i[3]])) {
-                    log_warning(what + ": a non-planar quad is rendered as two triangles");
-                    warned = true;
-                }
-            }
-        }
-        result.append(part);
-    }
-    if (result.triangles.empty()) {
-        throw Error(what + ": the PLY file has no faces");
-    }
-    return result;
+    return phi_max;
 }
+
+TriangleMesh disk_mesh(PbrtParams& params) {
+    DiskShape disk;
+    disk.height = params.get_float("height", 0.0f);
+    disk.radius = params.get_float("radius", 1.0f);
+    disk.inner_radius = params.get_float("innerradius", 0.0f);
+    disk.phi_max_degrees = phi_max_degrees(params);
+    if (!std::isfinite(disk.height)) {
+        params.fail("height must be finite");
+    }
+    if (!(disk.radius > 0.0f) || !std::isfinite(disk.radius)) {
+        params.fail("radius must be positive and finite");
+    }
+    if (!(disk.inner_radius >= 0.0f && disk.inner_radius < disk.radius)) {
+        params.fail("innerradius must lie in [0, radius)");
+    }
+    return make_disk(disk);
+}
+
+TriangleMesh cylinder_mesh(PbrtParams& params) {
+    CylinderShape cylinder;
+    cylinder.radius = params.get_float("radius", 1.0f);
+    cylinder.z_min = params.get_float("zmin", -1.0f);
+    cylinder.z_max = params.get_float("zmax", 1.0f);
+    cylinder.phi_max_degrees = phi_max_degrees(params);
+    if (!(cylinder.radius > 0.0f) || !std::isfinite(cylinder.radius)) {
+        params.fail("radius must be positive and finite");
+    }
+    if (!std::isfinite(cylinder.z_min) || !std::isfinite(cylinder.z_max) ||
+        cylinder.z_min == cylinder.z_max) {
+        params.fail("zmin and zmax must be finite and differ");
+    }
+    if (cylinder.z_min > cylinder.z_max) {
+        std::swap(cylinder.z_min, cylinder.z_max);  // as pbrt-v4 orders them
+    }
+    return make_cylinder(cylinder);
+}
+
+}  // namespace
 
 TriangleMesh pbrt_shape_mesh(const std::string& type, PbrtParams& params,
                              const std::filesystem::path& dir, const SceneFiles& files) {
@@ -216,6 +203,12 @@ TriangleMesh pbrt_shape_mesh(const std::string& type, PbrtParams& params,
     if (type == "sphere") {
         return sphere_mesh(params);
     }
+    if (type == "disk") {
+        return disk_mesh(params);
+    }
+    if (type == "cylinder") {
+        return cylinder_mesh(params);
+    }
     if (params.has("displacement")) {
         params.refuse("displacement is not supported");
     }
@@ -230,7 +223,11 @@ TriangleMesh pbrt_shape_mesh(const std::string& type, PbrtParams& params,
     if (!files.exists(path)) {
         throw Error(what + ": PLY file not found");
     }
-    return load_ply_mesh(files.read(path, kMaxMeshFileBytes, "PLY file"), what);
+    std::string bytes = files.read(path, kMaxMeshFileBytes, "PLY file");
+    if (is_gzip(bytes)) {
+        bytes = gunzip(bytes, kMaxMeshFileBytes, what);  // pbrt-v4 reads .ply.gz
+    }
+    return load_ply_mesh(bytes, what);
 }
 
 }  // namespace rc

@@ -55,6 +55,7 @@ struct Element {
     size_t values = 0;       // scalars and lists
     std::vector<std::string> properties;
     std::vector<Property> layout;
+    std::vector<PlyProperty> declared;  // as the header names them
 };
 
 bool is_signed(const std::string& type) {
@@ -166,7 +167,7 @@ void walk_ascii_body(const std::string& bytes, size_t body, const std::vector<El
 
 }  // namespace
 
-void check_ply_header(const std::string& bytes, const std::string& what) {
+PlyHeader check_ply_header(const std::string& bytes, const std::string& what) {
     const auto fail = [&](const std::string& message) {
         throw Error(what + ": not a readable PLY file: " + message);
     };
@@ -221,6 +222,7 @@ void check_ply_header(const std::string& bytes, const std::string& what) {
             ++elements.back().values;
             elements.back().properties.push_back(rest[1]);
             elements.back().layout.push_back({type_size(rest[0]), 0, false});
+            elements.back().declared.push_back({rest[1], rest[0], ""});
         } else if (keyword == "property" && !elements.empty() && rest.size() == 4 &&
                    rest[0] == "list" && type_size(rest[1]) > 0 && rest[1] != "float" &&
                    rest[1] != "double" && rest[1] != "float32" && rest[1] != "float64" &&
@@ -230,6 +232,7 @@ void check_ply_header(const std::string& bytes, const std::string& what) {
             elements.back().properties.push_back(rest[3]);
             elements.back().layout.push_back(
                 {type_size(rest[2]), type_size(rest[1]), is_signed(rest[1])});
+            elements.back().declared.push_back({rest[3], rest[2], rest[1]});
         } else {
             fail("malformed header line \"" + excerpt(line) + "\"");
         }
@@ -280,6 +283,15 @@ void check_ply_header(const std::string& bytes, const std::string& what) {
     } else {
         walk_binary_body(bytes, body, elements, format == "binary_big_endian", fail);
     }
+    PlyHeader result;
+    result.format = format == "ascii"                  ? PlyFormat::kAscii
+                    : format == "binary_little_endian" ? PlyFormat::kBinaryLittleEndian
+                                                       : PlyFormat::kBinaryBigEndian;
+    result.body = body;
+    for (const Element& e : elements) {
+        result.elements.push_back({e.name, static_cast<size_t>(e.count), e.declared});
+    }
+    return result;
 }
 
 }  // namespace rc

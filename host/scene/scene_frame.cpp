@@ -98,6 +98,20 @@ glm::vec3 world_point(const glm::mat4& to_world, glm::vec3 object, const std::st
     return p;
 }
 
+// The unit world direction of object direction `object` (a distant light's): the transform's
+// linear part applied to it. Error when the transform collapses or overflows it.
+glm::vec3 world_direction(const glm::mat4& to_world, glm::vec3 object, const std::string& what,
+                          double frame) {
+    const glm::vec3 d = glm::mat3(to_world) * object;
+    const float length = glm::length(d);
+    if (!(length > 0.0f) || !std::isfinite(length)) {
+        throw Error(what + ": its transform takes its direction " + format_point(object) +
+                    " to no direction at frame " + frame_text(frame) +
+                    " (a transform must keep directions)");
+    }
+    return d / length;
+}
+
 // Error when world triangle `w` (triangle t of `what`) is smaller than single precision can
 // intersect and shade: the device's products of edge components (the edges' cross product, its
 // normal, the ray/triangle determinant) underflow float's normal range (2^-126, about 1.2e-38)
@@ -285,7 +299,7 @@ float scene_radius(const TriangleMesh& mesh) {
     return diagonal > 0.0f ? 0.5f * diagonal : 1.0f;
 }
 
-// The device light of a point, spot or environment emitter at the frame, and its power.
+// The device light of a point, spot, distant or environment emitter at the frame, and its power.
 shared::Light emitter_light(const Emitter& emitter, const std::string& emitter_name,
                             const glm::mat4& motion, float radius, double frame, float* power) {
     shared::Light light{};
@@ -296,6 +310,14 @@ shared::Light emitter_light(const Emitter& emitter, const std::string& emitter_n
         return light;
     }
     check_transform(motion, emitter_name, frame);
+    if (emitter.kind == EmitterKind::kDistant) {
+        // The light crossing the scene's bounding disk (pbrt-v4 §12.4: Phi = E pi r^2).
+        light.kind = RC_LIGHT_DISTANT;
+        light.axis = float4_of(world_direction(motion, emitter.direction, emitter_name, frame));
+        light.radiance = float4_of(emitter.irradiance);
+        *power = kPi * radius * radius * luminance(emitter.irradiance);
+        return light;
+    }
     const glm::vec3 position = world_point(motion, emitter.position, emitter_name, frame);
     light.position = float4_of(position);
     if (emitter.kind == EmitterKind::kPoint) {

@@ -395,6 +395,15 @@ class SceneParser {
             if (!(emitter.beam_width > 0.0f && emitter.beam_width < emitter.cutoff_angle)) {
                 reader.fail("beam_width", "must lie in (0, cutoff_angle) degrees");
             }
+        } else if (type == "distant") {
+            reader.allow_only({"type", "name", "direction", "irradiance"});
+            emitter.kind = EmitterKind::kDistant;
+            emitter.direction = reader.vec3("direction");
+            if (is_zero_vector(emitter.direction)) {
+                reader.fail("direction", "must not be the zero vector");
+            }
+            emitter.direction = glm::normalize(emitter.direction);
+            emitter.irradiance = parse_colour(reader, "irradiance", glm::vec3(1.0f), 0.0f, 1e9f);
         } else if (type == "constant") {
             reader.allow_only({"type", "name", "radiance"});
             emitter.kind = EmitterKind::kConstant;
@@ -405,8 +414,8 @@ class SceneParser {
                 }
             }
         } else {
-            reader.fail("type",
-                        "unknown emitter type '" + excerpt(type) + "' (point, spot, constant)");
+            reader.fail("type", "unknown emitter type '" + excerpt(type) +
+                                    "' (point, spot, distant, constant)");
         }
         emitter.name = reader.string("name", type + "_" + std::to_string(scene_.emitters.size()));
         if (!emitter_names_.insert(emitter.name).second) {

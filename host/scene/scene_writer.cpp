@@ -233,6 +233,11 @@ class SceneWriter {
                         {"intensity", vec3_json(emitter.intensity)},
                         {"cutoff_angle", emitter.cutoff_angle},
                         {"beam_width", emitter.beam_width}};
+            case EmitterKind::kDistant:
+                return {{"type", "distant"},
+                        {"name", limited(emitter.name, "an emitter's name")},
+                        {"direction", vec3_json(emitter.direction)},
+                        {"irradiance", vec3_json(emitter.irradiance)}};
             default:
                 return {{"type", "constant"},
                         {"name", limited(emitter.name, "an emitter's name")},

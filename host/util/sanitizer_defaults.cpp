@@ -2,10 +2,8 @@
 // the tests and the fuzz targets so that every run of them gets them whatever its environment
 // ($ASAN_OPTIONS and $UBSAN_OPTIONS still override). Unused outside the sanitizer build.
 //
-// One leak is suppressed, a third-party one: Assimp 5.2's PLY reader leaks the mesh it was
-// building when it fails on a malformed ASCII number (tests/fuzz/regressions/pbrt/; the fuzz runs
-// suppress it by tests/fuzz/lsan.supp too). Otherwise the whole test suite, PoCL's JIT-compiled
-// kernels included, runs clean under LeakSanitizer.
+// No leak is suppressed: the whole test suite, PoCL's JIT-compiled kernels included, runs clean
+// under LeakSanitizer.
 extern "C" {
 
 const char* __asan_default_options() {
@@ -13,8 +11,6 @@ const char* __asan_default_options() {
     // "out of host memory"), instead of aborting.
     return "detect_leaks=1:allocator_may_return_null=1";
 }
-
-const char* __lsan_default_suppressions() { return "leak:libassimp.so\n"; }
 
 const char* __ubsan_default_options() { return "print_stacktrace=1:halt_on_error=1"; }
 }

@@ -66,11 +66,12 @@ RC_FUNC float rc_cdf_probability(RC_GLOBAL const float* cdf, int i) {
 // A sampled light direction from a shading point.
 typedef struct LightSample {
     float3 direction;  // unit, from the shading point to the light
-    float3 radiance;   // arriving radiance (intensity / distance^2 for point and spot lights)
+    float3 radiance;   // arriving radiance (intensity / distance^2 for point and spot lights,
+                       // the irradiance facing the light for a distant light)
     float pdf;         // solid-angle density, light selection included; 1 for delta lights
     float3 target;     // the end of the shadow ray (offset off an area light's surface)
-    bool delta;        // a point or spot light (not reachable by BRDF sampling)
-    bool infinite;     // the environment: the shadow ray has no end
+    bool delta;        // a point, spot or distant light (not reachable by BRDF sampling)
+    bool infinite;     // the environment or a distant light: the shadow ray has no end
 } LightSample;
 
 // Spot light falloff: 1 inside the beam, 0 outside the cutoff, linear in angle between.
@@ -161,6 +162,14 @@ RC_FUNC LightSample rc_sample_light(const SceneData* scene, int l, float selecti
             s.radiance *= rc_spot_falloff(&light, -s.direction);
         }
         s.target = light.position.xyz;
+    } else if (kind == RC_LIGHT_DISTANT) {
+        // A delta direction (pbrt-v4 §12.4): irradiance E on a surface facing it, from outside
+        // the scene (the shadow ray has no end).
+        s.direction = -light.axis.xyz;
+        s.delta = true;
+        s.infinite = true;
+        s.pdf = selection;
+        s.radiance = light.radiance.xyz;
     } else {
         // Constant environment: uniform directions on the sphere.
         const float z = 1.0f - 2.0f * u1;

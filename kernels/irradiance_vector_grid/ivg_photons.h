@@ -69,6 +69,17 @@ RC_FUNC Photon rc_ivg_emit(const SceneData* scene, const IvgParams* p, RngStream
         direction = rc_direction_about(light.axis.xyz, 1.0f - u1 * (1.0f - cos_cutoff), u2);
         photon.power = light.radiance.xyz *
                        (2.0f * RC_PI * (1.0f - cos_cutoff) * rc_spot_falloff(&light, direction));
+    } else if (kind == RC_LIGHT_DISTANT) {
+        // Uniform on the disk of the scene's bounding sphere facing the light, upstream of the
+        // scene, along the light (pbrt-v4 §12.4, DistantLight::SampleLe): power E pi r^2.
+        const float radius = p->sphere_radius;
+        direction = light.axis.xyz;
+        const float2 disk = rc_concentric_disk(u3, u4);
+        float3 t;
+        float3 b;
+        rc_orthonormal_basis(direction, &t, &b);
+        origin = p->sphere_centre.xyz + radius * (disk.x * t + disk.y * b - direction);
+        photon.power = light.radiance.xyz * (RC_PI * radius * radius);
     } else {
         const float radius = p->sphere_radius;
         direction = rc_direction_about((float3)(0.0f, 0.0f, 1.0f), 1.0f - 2.0f * u1, u2);

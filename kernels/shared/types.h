@@ -163,11 +163,13 @@ typedef struct TriangleShading {
 #define RC_LIGHT_POINT 1
 #define RC_LIGHT_SPOT 2
 #define RC_LIGHT_CONSTANT 3
+#define RC_LIGHT_DISTANT 4  // parallel light from one direction (the sun): a delta direction
 
 typedef struct Light {
     float4 position;     // xyz (point, spot): position; w: padding
-    float4 axis;         // xyz (spot): unit axis; w: padding
-    float4 radiance;     // rgb: radiance (area, constant) or intensity (point, spot); w: padding
+    float4 axis;         // xyz (spot, distant): unit direction the light travels; w: padding
+    float4 radiance;     // rgb: radiance (area, constant), intensity (point, spot) or irradiance
+                         // on a surface facing the light (distant); w: padding
     float area;          // area: total area
     float cutoff;        // spot: cutoff angle (radians)
     float beam;          // spot: beam width (radians)

@@ -51,6 +51,9 @@ RC_FUNC float3 rc_tc_emitter_irradiance(RC_GLOBAL const TcEmitter* e, float3 p, 
     if (light.kind == RC_LIGHT_CONSTANT) {
         return RC_PI * light.radiance.xyz;  // the whole upper hemisphere
     }
+    if (light.kind == RC_LIGHT_DISTANT) {
+        return fmax(0.0f, -dot(n, light.axis.xyz)) * light.radiance.xyz;  // E cos(theta)
+    }
     const float3 to_light = light.position.xyz - p;
     const float distance2 = dot(to_light, to_light);
     if (distance2 <= 0.0f) {

@@ -1,7 +1,7 @@
 // Light sampling for next-event estimation (kernels/common/light.h): lights chosen in
 // proportion to power, points uniform by area on area lights (the strategy for triangles under a
 // small solid angle; tests/common/solid_angle_sampling_test.cpp tests the other), pdfs that are the
-// solid-angle densities, and the radiance of point and spot lights.
+// solid-angle densities, and the radiance of point, spot and distant lights.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -190,6 +190,56 @@ TEST(LightSampling, PointAndSpotLightRadiance) {
             }
         }
         EXPECT_TRUE(saw_point && saw_spot);
+    }
+}
+
+// A distant light (travelling along unit d, irradiance E facing it): every sample of it is the
+// direction -d whatever the point, delta (pdf = its selection probability) with a shadow ray
+// without end, its radiance E; it is chosen in proportion to its power pi r^2 lum(E), r the
+// scene's radius (half its bounding box's diagonal).
+TEST(LightSampling, DistantLightIsADeltaDirectionWithoutEnd) {
+    Scene scene = light_scene();
+    Emitter sun;
+    sun.name = "sun";
+    sun.kind = EmitterKind::kDistant;
+    sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+    sun.irradiance = {3.0f, 2.0f, 1.0f};
+    scene.emitters.push_back(sun);
+    scene.set_frame(0.0);
+    ASSERT_EQ(scene.lights.lights.size(), 5u);
+    const glm::vec3 low = scene.mesh.positions[0];
+    glm::vec3 lo = low;
+    glm::vec3 hi = low;
+    for (const glm::vec3& v : scene.mesh.positions) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
+    const double r = 0.5 * glm::length(hi - lo);
+    const double power[5] = {kPi * 2.0 * luminance({4, 2, 1}), kPi * 0.02 * 10.0, 4.0 * kPi * 2.0,
+                             2.0 * kPi * (1.0 - std::cos(25.0 * kPi / 180.0)) * 5.0,
+                             kPi * r * r * luminance({3, 2, 1})};
+    const double total = power[0] + power[1] + power[2] + power[3] + power[4];
+    const size_t n = 1 << 18;
+    for (const glm::vec3 p : {glm::vec3(0.1f, 0.2f, 0.0f), glm::vec3(-3.0f, 5.0f, 1.0f)}) {
+        const ProbeResult result = probe(scene, p, n, 11);
+        size_t chosen = 0;
+        for (size_t i = 0; i < n; ++i) {
+            if (static_cast<int>(result.choice[i].x) != 4) {
+                continue;
+            }
+            ++chosen;
+            const shared::float4 d = result.geometry[2 * i];
+            ASSERT_NEAR(d.x, -sun.direction.x, 1e-6f);
+            ASSERT_NEAR(d.y, -sun.direction.y, 1e-6f);
+            ASSERT_NEAR(d.z, -sun.direction.z, 1e-6f);
+            ASSERT_NEAR(result.choice[i].y, power[4] / total, 1e-5);
+            ASSERT_EQ(result.choice[i].z, 1.0f);  // delta
+            ASSERT_EQ(result.choice[i].w, 1.0f);  // no end
+            ASSERT_EQ(result.radiance[i].x, 3.0f);
+            ASSERT_EQ(result.radiance[i].z, 1.0f);
+        }
+        const double expected = n * power[4] / total;
+        EXPECT_NEAR(static_cast<double>(chosen), expected, 5.0 * std::sqrt(expected));
     }
 }
 

@@ -5,7 +5,9 @@
 //   diffuse with reflectance rho and emitting Le. A path of at most D bounces gathers
 //   Le (1 + rho + ... + rho^D) whatever the geometry, so every pixel shows that radiance;
 // - a diffuse plane of reflectance rho under a constant sky of radiance L, nothing else: its
-//   irradiance is pi L, so it reflects rho L towards the camera, channel by channel.
+//   irradiance is pi L, so it reflects rho L towards the camera, channel by channel;
+// - the plane under a distant light instead (rho / pi E cos theta), and an L of two planes under
+//   it, against the path tracer at many samples (the interreflection).
 // Every image has exactly the layers its method declares (MethodEntry::aovs). A method whose
 // beauty is radiance (MethodEntry::beauty) has the analytic mean in each channel; a declared
 // albedo layer shows rho; a declared normal layer shows the plane's normal. The normals preview
@@ -78,6 +80,43 @@ std::filesystem::path sky_plane_scene(const std::string& scratch) {
                     "transform": [{"scale": 5}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]}],
         "emitters": [{"type": "constant", "radiance": [)"
                                       << kSky[0] << ", " << kSky[1] << ", " << kSky[2] << R"(]}]
+    })";
+    return dir / "scene.json";
+}
+
+// The distant-light scenes: the sky scene's plane under a distant light 60 degrees from its
+// normal, of irradiance kSun on a surface facing it (the plane's irradiance kSun cos 60, its
+// radiance rho / pi of that); and an L of a floor and a wall, where 18 % of what the camera sees
+// is light the wall and floor reflect onto each other.
+constexpr std::array<float, 3> kSun = {2.0f, 1.0f, 0.5f};
+
+std::filesystem::path distant_plane_scene(const std::string& scratch) {
+    const auto dir = test::scratch_dir(scratch);
+    std::ofstream(dir / "scene.json") << R"({
+        "camera": {"position": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 30,
+                   "resolution": [16, 16]},
+        "materials": {"ground": {"type": "diffuse", "reflectance": )"
+                                      << kPlaneReflectance << R"(}},
+        "shapes": [{"type": "rectangle", "material": "ground",
+                    "transform": [{"scale": 5}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]}],
+        "emitters": [{"type": "distant", "direction": [0.8660254, -0.5, 0], "irradiance": [)"
+                                      << kSun[0] << ", " << kSun[1] << ", " << kSun[2] << R"(]}]
+    })";
+    return dir / "scene.json";
+}
+
+std::filesystem::path distant_corner_scene(const std::string& scratch) {
+    const auto dir = test::scratch_dir(scratch);
+    std::ofstream(dir / "scene.json") << R"({
+        "camera": {"position": [0, 4, 6], "look_at": [0, 0.5, 0], "up": [0, 1, 0], "fov": 40,
+                   "resolution": [16, 16]},
+        "materials": {"grey": {"type": "diffuse", "reflectance": 0.7}},
+        "shapes": [{"type": "rectangle", "material": "grey",
+                    "transform": [{"scale": 4}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]},
+                   {"type": "rectangle", "material": "grey",
+                    "transform": [{"scale": 4}, {"translate": [0, 4, -4]}]}],
+        "emitters": [{"type": "distant", "direction": [0.3, -0.6, -0.74],
+                      "irradiance": [3, 2, 1]}]
     })";
     return dir / "scene.json";
 }
@@ -282,6 +321,49 @@ TEST_P(EveryMethod, PlaneUnderConstantSkyReflectsAlbedoTimesSky) {
             }
             break;
         }
+    }
+}
+
+// The plane under the distant light: rho / pi E cos 60 in each channel, exactly but for
+// rounding (a delta light's one sample per point is its whole direct light, and nothing else
+// lights the plane); a light sampled in the wrong direction, or counted as the environment,
+// shows as a wrong or missing cosine.
+TEST_P(EveryMethod, PlaneUnderDistantLightReflectsAlbedoTimesIrradianceCosine) {
+    const MethodEntry& entry = method();
+    if (entry.beauty != Beauty::kRadiance) {
+        GTEST_SKIP() << entry.name << " shows no radiance";
+    }
+    const std::string scratch = "every_method_distant_" + test_name(entry.name);
+    const std::vector<Image> images = render(entry, distant_plane_scene(scratch), scratch + "_out");
+    ASSERT_EQ(images.size(), 1u);
+    const double pi = 3.14159265358979;
+    const double factor = kPlaneReflectance / pi * 0.5;
+    expect_radiance(entry, images[0], {factor * kSun[0], factor * kSun[1], factor * kSun[2]});
+}
+
+// The floor and wall under the distant light: each channel's mean within 2 % of the path
+// tracer's at 1 024 samples (its standard error there 0.1 %; the caching methods measured within
+// 0.5 %), so within 11 % on the 18 % that is interreflection: photons, records and the grid's
+// sources must carry the distant light's power (pi r^2 E over the scene's disk) into the bounce.
+TEST_P(EveryMethod, DistantLightInterreflectionMatchesThePathTracer) {
+    const MethodEntry& entry = method();
+    if (entry.beauty != Beauty::kRadiance) {
+        GTEST_SKIP() << entry.name << " shows no radiance";
+    }
+    const std::string scratch = "every_method_distant_corner_" + test_name(entry.name);
+    const std::filesystem::path scene = distant_corner_scene(scratch);
+    const auto ref_dir = test::scratch_dir(scratch + "_ref");
+    const test::CommandResult reference = test::run_radcache(
+        {"render", scene.string(), "-o", (ref_dir / "ref.exr").string(), "--method", "pt", "--spp",
+         "1024", "-D", "max_depth=" + std::to_string(kMaxDepth), "-q"});
+    ASSERT_EQ(reference.exit_code, 0) << reference.output;
+    const std::array<double, 3> expected =
+        channel_means(select_layers(read_image(ref_dir / "ref.exr"), {"beauty"}));
+    const std::vector<Image> images = render(entry, scene, scratch + "_out");
+    ASSERT_EQ(images.size(), 1u);
+    const std::array<double, 3> mean = channel_means(select_layers(images[0], {"beauty"}));
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(mean[c], expected[c], 0.02 * expected[c]) << "channel " << c;
     }
 }
 

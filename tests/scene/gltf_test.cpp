@@ -39,12 +39,13 @@ TEST(Gltf, CornellBoxRendersTheJsonScenesImageBitwise) {
     EXPECT_TRUE(test::bitwise_equal(json, gltf));
 }
 
-// The same model as a .glb (binary container; the fuzz target's seed) renders the same image.
+// The same model as a .glb (binary container; the fuzz target's seed, made from the seed
+// hierarchy.gltf beside it) renders the same image.
 TEST(Gltf, BinaryGlbRendersAsItsGltf) {
     const auto dir = test::scratch_dir("gltf_glb");
-    const Image glb =
-        render(test::source_dir() / "tests/fuzz/seeds/gltf/binary.glb", dir / "b.exr");
-    EXPECT_TRUE(test::bitwise_equal(glb, render(data("hierarchy.gltf"), dir / "h.exr")));
+    const auto seeds = test::source_dir() / "tests/fuzz/seeds/gltf";
+    const Image glb = render(seeds / "binary.glb", dir / "b.exr");
+    EXPECT_TRUE(test::bitwise_equal(glb, render(seeds / "hierarchy.gltf", dir / "h.exr")));
 }
 
 void expect_near(glm::vec3 a, glm::vec3 b, const std::string& what) {
@@ -106,8 +107,9 @@ TEST(Gltf, HierarchyTransformsCamerasMaterialsAndLights) {
     const Scene side = load_scene(data("hierarchy.gltf"), disk_files(), "side");
     expect_near(side.base_camera.look_at, glm::vec3(9, 1, 0), "side camera");
     EXPECT_THROW(load_scene(data("hierarchy.gltf"), disk_files(), "nowhere"), Error);
-    // Lights: a point light of colour (1, 0.8, 0.6) x 5, a spot at (0, 4, 0) pointing down.
-    ASSERT_EQ(scene.emitters.size(), 2u);
+    // Lights: a point light of colour (1, 0.8, 0.6) x 5, a spot at (0, 4, 0) pointing down, a
+    // directional light of colour (1, 1, 0.5) x 0.5 lux travelling along -x.
+    ASSERT_EQ(scene.emitters.size(), 3u);
     EXPECT_EQ(scene.emitters[0].kind, EmitterKind::kPoint);
     expect_near(scene.emitters[0].position, glm::vec3(0, 3, 2), "point light");
     expect_near(scene.emitters[0].intensity, glm::vec3(5, 4, 3), "point intensity");
@@ -115,6 +117,9 @@ TEST(Gltf, HierarchyTransformsCamerasMaterialsAndLights) {
     expect_near(scene.emitters[1].look_at, glm::vec3(0, 3, 0), "spot axis");
     EXPECT_NEAR(scene.emitters[1].cutoff_angle, 0.5 * 180.0 / M_PI, 1e-4);
     EXPECT_NEAR(scene.emitters[1].beam_width, 0.2 * 180.0 / M_PI, 1e-4);
+    EXPECT_EQ(scene.emitters[2].kind, EmitterKind::kDistant);
+    expect_near(scene.emitters[2].direction, glm::vec3(-1, 0, 0), "sun direction");
+    expect_near(scene.emitters[2].irradiance, glm::vec3(0.5f, 0.5f, 0.25f), "sun irradiance");
 }
 
 // The lamp (upper right of the image seen from the front camera: x in [0.75, 1.25], y in
@@ -206,7 +211,7 @@ TEST(Gltf, MalformedFilesAreRefusedCleanly) {
     // A light index that is no light: negative, past the end, not whole, beyond int, a string.
     const std::vector<std::pair<std::string, nlohmann::json>> light_indices = {
         {"light_negative", -1},
-        {"light_past_end", 2},
+        {"light_past_end", 3},
         {"light_fraction", 0.5},
         {"light_huge", 1e20},
         {"light_string", "0"}};
@@ -311,9 +316,11 @@ TEST(Gltf, UnsupportedFeaturesWarnOnce) {
     const auto dir = test::scratch_dir("gltf_unsupported");
     nlohmann::json m = nlohmann::json::parse(read_file(data("hierarchy.gltf")));
     m["extensions"]["KHR_lights_punctual"]["lights"].push_back(
-        {{"type", "directional"}, {"intensity", 3.0}});
-    m["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
-    m["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
+        {{"type", "sphere"}, {"intensity", 3.0}});  // a type KHR_lights_punctual does not define
+    const int sphere =
+        static_cast<int>(m["extensions"]["KHR_lights_punctual"]["lights"].size()) - 1;
+    m["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", sphere}}}}}});
+    m["nodes"].push_back({{"extensions", {{"KHR_lights_punctual", {{"light", sphere}}}}}});
     m["scenes"][0]["nodes"].push_back(m["nodes"].size() - 2);
     m["scenes"][0]["nodes"].push_back(m["nodes"].size() - 1);
     write_file_atomically(dir / "sun.gltf", m.dump());
@@ -321,7 +328,7 @@ TEST(Gltf, UnsupportedFeaturesWarnOnce) {
         test::run_radcache({"render", (dir / "sun.gltf").string(), "-o", (dir / "out.png").string(),
                             "--spp", "1", "--width", "8", "--height", "8"});
     EXPECT_EQ(result.exit_code, 0) << result.output;
-    const std::string line = "glTF light type 'directional' not supported";
+    const std::string line = "glTF light type 'sphere' not supported";
     const size_t first = result.output.find(line);
     EXPECT_NE(first, std::string::npos) << result.output;
     EXPECT_EQ(result.output.find(line, first + 1), std::string::npos) << result.output;

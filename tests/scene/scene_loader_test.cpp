@@ -203,6 +203,22 @@ TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
         {"unknown_emitter",
          scene_with(kCamera, shape).replace(1, 0, R"("emitters": [{"type": "laser"}],)"),
          {"emitters[0].type", "laser"}},
+        {"distant_zero_direction",
+         scene_with(kCamera, shape)
+             .replace(1, 0, R"("emitters": [{"type": "distant", "direction": [0, 0, 0]}],)"),
+         {"emitters[0].direction", "zero vector"}},
+        {"distant_negative_irradiance",
+         scene_with(kCamera, shape)
+             .replace(
+                 1, 0,
+                 R"("emitters": [{"type": "distant", "direction": [0, -1, 0], "irradiance": [1, -1, 1]}],)"),
+         {"emitters[0].irradiance", "-1"}},
+        {"distant_position",
+         scene_with(kCamera, shape)
+             .replace(
+                 1, 0,
+                 R"("emitters": [{"type": "distant", "direction": [0, -1, 0], "position": [0, 1, 0]}],)"),
+         {"emitters[0]", "position"}},
         {"missing_texture",
          scene_with(kCamera, shape)
              .replace(

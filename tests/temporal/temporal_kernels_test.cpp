@@ -171,6 +171,24 @@ TEST(TemporalKernels, PointSpotAndEnvironmentFollowTheirClosedForms) {
     EXPECT_NEAR(e[1].x, far + kPi * 0.5, 1e-4);
 }
 
+// A distant light by its closed form: E max(0, cos) between the normal and the direction to it;
+// nothing on a surface facing away.
+TEST(TemporalKernels, DistantLightGivesIrradianceTimesCosine) {
+    shared::TcEmitter sun{};
+    sun.light.kind = RC_LIGHT_DISTANT;
+    const dvec3 travel = glm::normalize(dvec3(0.6, -0.8, 0.0));
+    sun.light.axis = f4(travel);
+    sun.light.radiance = {3.0f, 2.0f, 1.0f, 0.0f};
+    const dvec3 n = glm::normalize(dvec3(0.2, 1.0, 0.3));
+    const std::vector<shared::float4> e =
+        unshadowed({sun}, {{5.0, 1.0, -2.0}, n, {0.0, 0.0, 0.0}, -n});
+    const double cosine = glm::dot(n, -travel);
+    EXPECT_NEAR(e[0].x, 3.0 * cosine, 1e-5);
+    EXPECT_NEAR(e[0].z, 1.0 * cosine, 1e-5);
+    EXPECT_EQ(e[1].x, 0.0f);
+    EXPECT_EQ(e[1].y, 0.0f);
+}
+
 // The cell a direction passes through holds it: column k with 2 pi k / N <= phi < 2 pi (k+1)/N
 // and, for irradiance records' cosine-weighted cells (ic_records.h), row j with
 // j/M <= sin^2 theta < (j+1)/M; for radiance records' uniform cells (rc_hemisphere.h)

@@ -3,7 +3,8 @@
 camera is radcache's (the first hit's shading normal, radcache's `normal` layer against
 Mitsuba's `aov` integrator, agrees on at least 99% of 64x48 pixels, where a one-pixel shift of
 the same image does not), a material without an exact counterpart is refused by name with one
-line, and the ladder writes its images and times. Skips (exit 0) only when the mitsuba package
+line, a distant light renders the same means in both, and the ladder writes its images and
+times. Skips (exit 0) only when the mitsuba package
 is not installed. Run by CTest with $RADCACHE set to the built executable."""
 
 import csv
@@ -96,6 +97,37 @@ class MitsubaPeerTest(unittest.TestCase):
         self.assertIn("'shiny'", lines[0])
         self.assertIn("phong", lines[0])
         self.assertFalse(os.path.exists(image))
+
+    def test_distant_light_matches_radcache(self):
+        """A floor and a wall under a distant light (radcache `distant`, Mitsuba `directional`),
+        interreflection included: per-channel means within 0.5% at 1 024 samples a pixel, where
+        each mean's standard error is under 0.05% (measured: within 0.03%)."""
+        scene = {
+            "camera": {"position": [0, 4, 6], "look_at": [0, 0.5, 0], "up": [0, 1, 0],
+                       "fov": 40, "resolution": [32, 32]},
+            "materials": {"grey": {"type": "diffuse", "reflectance": 0.7}},
+            "shapes": [{"type": "rectangle", "material": "grey",
+                        "transform": [{"scale": 4}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]},
+                       {"type": "rectangle", "material": "grey",
+                        "transform": [{"scale": 4}, {"translate": [0, 4, -4]}]}],
+            "emitters": [{"type": "distant", "direction": [0.3, -0.6, -0.74],
+                          "irradiance": [3, 2, 1]}],
+            "render": {"max_depth": 8}}
+        path = os.path.join(SCRATCH, "distant.json")
+        with open(path, "w") as f:
+            json.dump(scene, f)
+        ours_path = os.path.join(SCRATCH, "distant_radcache.exr")
+        result = run([RADCACHE, "render", path, "-o", ours_path, "--spp", "1024", "--quiet"])
+        self.assertEqual(result.returncode, 0, result.stderr)
+        theirs_path = os.path.join(SCRATCH, "distant_mitsuba.exr")
+        result = run([sys.executable, os.path.join(PEER, "render.py"), path, theirs_path,
+                      "--spp", "1024"])
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        ours = numpy().array(MI.Bitmap(ours_path))[..., :3].reshape(-1, 3).mean(axis=0)
+        theirs = numpy().array(MI.Bitmap(theirs_path))[..., :3].reshape(-1, 3).mean(axis=0)
+        for c in range(3):
+            self.assertAlmostEqual(ours[c] / theirs[c], 1.0, delta=0.005,
+                                   msg="channel %d: %s against %s" % (c, ours, theirs))
 
     def test_ladder_writes_images_and_times(self):
         out = os.path.join(SCRATCH, "ladder")

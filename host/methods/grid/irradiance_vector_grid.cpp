@@ -51,6 +51,9 @@ float largest_photon_flux(const Scene& scene, float sphere_radius) {
             case RC_LIGHT_SPOT:
                 scale = 2.0f * pi * (1.0f - light.cos_cutoff);
                 break;
+            case RC_LIGHT_DISTANT:
+                scale = pi * sphere_radius * sphere_radius;
+                break;
             default:
                 scale = 4.0f * pi * pi * sphere_radius * sphere_radius;
                 break;

@@ -1,7 +1,7 @@
 // A frame's emitters as temporal caching's unshadowed-light estimate reads them
-// (kernels/shared/temporal.h, TcEmitter): every point, spot and environment light, and every
-// triangle of every area light, in world space at the scene's current frame. The list of two
-// frames of one scene has the same entries in the same order.
+// (kernels/shared/temporal.h, TcEmitter): every point, spot, distant and environment light, and
+// every triangle of every area light, in world space at the scene's current frame. The list of
+// two frames of one scene has the same entries in the same order.
 #pragma once
 
 #include <vector>

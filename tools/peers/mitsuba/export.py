@@ -19,6 +19,7 @@ with one line naming it. The mapping (docs/peers.md):
   area light  `area` with the same radiance, emitting on the front side; a mirroring transform of
               an emitter is refused
   point, spot, constant   Mitsuba's `point`, `spot` (the same linear fall-off), `constant`
+  distant     Mitsuba's `directional` (the same direction of travel and irradiance)
   depth       path `max_depth` = radcache's max_depth + 1 (Mitsuba counts the camera segment),
               rr_depth likewise (Russian roulette changes the noise, not the mean)
   animation   refused (the peer renders still scenes)
@@ -141,7 +142,7 @@ def shape(spec, index, folder, bsdfs):
 
 
 def emitter(spec, index):
-    """A point, spot or constant radcache emitter as Mitsuba's."""
+    """A point, spot, distant or constant radcache emitter as Mitsuba's."""
     import mitsuba as mi
     kind = spec["type"]
     if kind == "point":
@@ -149,6 +150,9 @@ def emitter(spec, index):
                 "intensity": colour(spec.get("intensity"), 1)}
     if kind == "constant":
         return {"type": "constant", "radiance": colour(spec.get("radiance"), 1)}
+    if kind == "distant":
+        return {"type": "directional", "direction": list(map(float, spec["direction"])),
+                "irradiance": colour(spec.get("irradiance"), 1)}
     if kind == "spot":
         cutoff = float(spec.get("cutoff_angle", 20))
         direction = numpy.subtract(spec["look_at"], spec["position"])
