@@ -39,6 +39,10 @@ std::vector<OptionSpec> render_option_specs() {
             .integers(1, 1 << 16),
         {"--camera", "", "NAME",
          "glTF scenes: the camera of that name (or its node's name; default: the first)"},
+        {"--environment", "", "COLOUR",
+         "light the scene with a constant environment of this radiance, R,G,B or one value for "
+         "all three, each in [0, 1e9]: added when the scene has none, replacing the radiance of "
+         "the one it has (as a glTF viewer lights a model)"},
         OptionSpec{"--filter", "", "NAME",
                    "pixel reconstruction filter: box, tent or gaussian (default: the scene "
                    "camera's, else box)"}
@@ -272,6 +276,7 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
     }
     pixel_filter(arguments, PixelFilter{});
     pixel_sampler(arguments, RC_SAMPLER_SOBOL);
+    environment_radiance(arguments);
     job.write_options.half = arguments.has("--half");
     if (arguments.has("--aovs")) {
         job.layers = parse_layers(arguments.value("--aovs"));
@@ -340,6 +345,38 @@ PixelFilter pixel_filter(const ParsedArguments& arguments, PixelFilter filter) {
     }
     filter.radius = static_cast<float>(arguments.number("--filter-radius", filter.radius));
     return filter;
+}
+
+std::optional<glm::vec3> environment_radiance(const ParsedArguments& arguments) {
+    if (!arguments.has("--environment")) {
+        return std::nullopt;
+    }
+    const std::string text = arguments.value("--environment");
+    const auto fail = [&]() {
+        throw Error("--environment: expected a colour R,G,B or one value, each in [0, 1e9], got '" +
+                        excerpt(text) + "' (image maps are not supported)",
+                    kExitUsage);
+    };
+    std::vector<float> values;
+    size_t start = 0;
+    while (start <= text.size()) {
+        const size_t comma = std::min(text.find(',', start), text.size());
+        const std::string word = text.substr(start, comma - start);
+        char* end = nullptr;
+        const double value = std::strtod(word.c_str(), &end);
+        if (word.empty() || end != word.c_str() + word.size() || !(value >= 0.0 && value <= 1e9)) {
+            fail();
+        }
+        values.push_back(static_cast<float>(value));
+        start = comma + 1;
+    }
+    if (values.size() == 1) {
+        return glm::vec3(values[0]);
+    }
+    if (values.size() != 3) {
+        fail();
+    }
+    return glm::vec3(values[0], values[1], values[2]);
 }
 
 int pixel_sampler(const ParsedArguments& arguments, int scene_sampler) {

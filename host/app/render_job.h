@@ -3,6 +3,8 @@
 #pragma once
 
 #include <filesystem>
+#include <glm/vec3.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -84,6 +86,10 @@ PixelFilter pixel_filter(const ParsedArguments& arguments, PixelFilter scene_fil
 // The scene camera's pixel sampler (RC_SAMPLER_*) overridden by --sampler; Error (exit status 2)
 // naming the option for an unknown name.
 int pixel_sampler(const ParsedArguments& arguments, int scene_sampler);
+
+// The radiance of --environment (R,G,B or one value), or none without it; Error (exit status 2)
+// naming the option for anything else.
+std::optional<glm::vec3> environment_radiance(const ParsedArguments& arguments);
 
 // What every method reads, for frames first..last.
 MethodSettings method_settings(const ParsedArguments& arguments, const RenderSettings& settings,

@@ -506,30 +506,22 @@ void warn_unless_lit(const Scene& scene) {
         });
     if (!lit) {
         log_warning(scene.path.string() +
-                    ": the scene has no emitter that gives light: the image will be black");
+                    ": the scene has no emitter that gives light: the image will be black "
+                    "(render --environment R,G,B lights it with a constant sky)");
     }
 }
 
-}  // namespace
-
-bool is_imported_scene_path(const std::filesystem::path& path) {
-    return is_gltf_path(path) || is_pbrt_path(path);
-}
-
-Scene load_scene(const std::filesystem::path& path, const SceneFiles& files,
+// The scene of `path`, posed at its first frame (load_scene without the overrides and checks).
+Scene read_scene(const std::filesystem::path& path, const SceneFiles& files,
                  const std::string& camera) {
     if (is_gltf_path(path)) {
-        Scene scene = load_gltf_scene(path, files, camera);
-        warn_unless_lit(scene);
-        return scene;
+        return load_gltf_scene(path, files, camera);
     }
     if (!camera.empty()) {
         throw Error("--camera " + excerpt(camera) + ": applies to glTF scenes only", kExitUsage);
     }
     if (is_pbrt_path(path)) {
-        Scene scene = load_pbrt_scene(path, files);
-        warn_unless_lit(scene);
-        return scene;
+        return load_pbrt_scene(path, files);
     }
     if (!files.exists(path)) {
         throw Error(path.string() + ": scene file not found");
@@ -542,6 +534,41 @@ Scene load_scene(const std::filesystem::path& path, const SceneFiles& files,
     scene.path = path;
     SceneParser(path, files, scene).parse(root);
     pose_loaded_scene(scene, scene.animation.frame_start);
+    return scene;
+}
+
+// The scene's constant environment set to `radiance`: the one it has, or a new one (as a glTF
+// viewer lights a model), and the scene posed again for its lights.
+void set_environment(Scene& scene, glm::vec3 radiance) {
+    bool found = false;
+    for (Emitter& emitter : scene.emitters) {
+        if (emitter.kind == EmitterKind::kConstant) {
+            emitter.radiance = radiance;
+            found = true;
+        }
+    }
+    if (!found) {
+        Emitter sky;
+        sky.name = "--environment";
+        sky.kind = EmitterKind::kConstant;
+        sky.radiance = radiance;
+        scene.emitters.push_back(sky);
+    }
+    pose_loaded_scene(scene, scene.animation.frame_start);
+}
+
+}  // namespace
+
+bool is_imported_scene_path(const std::filesystem::path& path) {
+    return is_gltf_path(path) || is_pbrt_path(path);
+}
+
+Scene load_scene(const std::filesystem::path& path, const SceneFiles& files,
+                 const std::string& camera, const std::optional<glm::vec3>& environment) {
+    Scene scene = read_scene(path, files, camera);
+    if (environment) {
+        set_environment(scene, *environment);
+    }
     warn_unless_lit(scene);
     return scene;
 }

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <filesystem>
+#include <glm/vec3.hpp>
+#include <optional>
 
 #include "scene/scene.h"
 #include "scene/scene_files.h"
@@ -12,11 +14,13 @@ namespace rc {
 // Error naming the file and the key or line. A scene without light is warned about (log_warning).
 // A .gltf or .glb file is imported (scene/gltf_loader.h), `camera` naming its camera (empty: the
 // first); a .pbrt file is imported (scene/pbrt_loader.h); a JSON or pbrt scene takes no camera
-// name.
+// name. With `environment`, the scene's constant environment is that radiance (added when the
+// scene has none, its radiance replaced when it has one) before the lighting check.
 // Whether `path` names a scene load_scene imports from another format (glTF or pbrt-v4).
 bool is_imported_scene_path(const std::filesystem::path& path);
 
 Scene load_scene(const std::filesystem::path& path, const SceneFiles& files = disk_files(),
-                 const std::string& camera = "");
+                 const std::string& camera = "",
+                 const std::optional<glm::vec3>& environment = std::nullopt);
 
 }  // namespace rc

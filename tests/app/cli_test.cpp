@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <nlohmann/json.hpp>
+#include <tuple>
 
 #include "image/image.h"
 #include "image/image_io.h"
@@ -55,6 +57,52 @@ struct BadCommand {
     std::string expected;
 };
 
+// --environment: a plane of reflectance 0.5 under a constant sky L reflects 0.5 L (its irradiance
+// pi L). Without an emitter the scene gets that sky, and no "no emitter" warning; with a sky of
+// its own the sky's radiance is replaced, not added to. The path tracer's mean of 16 x 16 pixels
+// at 32 samples is within 0.3 % of it (one standard error): 3 % is 10.
+TEST(Cli, EnvironmentLightsAnUnlitSceneAndReplacesItsSky) {
+    const auto dir = test::scratch_dir("cli_environment");
+    const std::string plane = R"({
+        "camera": {"position": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 30,
+                   "resolution": [16, 16]},
+        "materials": {"ground": {"type": "diffuse", "reflectance": 0.5}},
+        "shapes": [{"type": "rectangle", "material": "ground",
+                    "transform": [{"scale": 5}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]}])";
+    write_file_atomically(dir / "unlit.json", plane + "}");
+    write_file_atomically(dir / "sky.json",
+                          plane + R"(, "emitters": [{"type": "constant", "radiance": 7}]})");
+    for (const auto& [scene, colour, expected] :
+         {std::tuple<std::string, std::string, std::array<double, 3>>{
+              "unlit", "1,0.5,0.25", {0.5, 0.25, 0.125}},
+          {"sky", "2", {1.0, 1.0, 1.0}}}) {
+        SCOPED_TRACE(scene);
+        const auto image = dir / (scene + ".exr");
+        const test::CommandResult result =
+            test::run_radcache({"render", (dir / (scene + ".json")).string(), "-o", image.string(),
+                                "--spp", "32", "--environment", colour});
+        ASSERT_EQ(result.exit_code, 0) << result.output;
+        EXPECT_EQ(result.output.find("no emitter"), std::string::npos) << result.output;
+        const Image beauty = read_image(image);
+        for (int c = 0; c < 3; ++c) {
+            double sum = 0.0;
+            for (int y = 0; y < beauty.height; ++y) {
+                for (int x = 0; x < beauty.width; ++x) {
+                    sum += beauty.at(x, y, c);
+                }
+            }
+            EXPECT_NEAR(sum / (beauty.width * beauty.height), expected[c], 0.03 * expected[c])
+                << "channel " << c;
+        }
+    }
+    // Without it, the unlit scene is warned about, naming the way out.
+    const test::CommandResult unlit =
+        test::run_radcache({"render", (dir / "unlit.json").string(), "-o",
+                            (dir / "black.png").string(), "--spp", "1"});
+    EXPECT_NE(unlit.output.find("no emitter that gives light"), std::string::npos) << unlit.output;
+    EXPECT_NE(unlit.output.find("--environment"), std::string::npos) << unlit.output;
+}
+
 TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
     const auto dir = test::scratch_dir("cli_bad");
     const std::string out = (dir / "out.png").string();
@@ -66,6 +114,12 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
          "unknown method 'no-such-method'"},
         {{"render", cornell_box(), "-o", out, "--bogus"}, 2, "unknown option '--bogus'"},
         {{"render", cornell_box(), "-o", out, "--spp", "0"}, 2, "--spp"},
+        {{"render", cornell_box(), "-o", out, "--environment", "1,2"}, 2, "--environment"},
+        {{"render", cornell_box(), "-o", out, "--environment", "-1"}, 2, "--environment"},
+        {{"render", cornell_box(), "-o", out, "--environment", "nan,1,1"}, 2, "--environment"},
+        {{"render", cornell_box(), "-o", out, "--environment", "sky.exr"},
+         2,
+         "image maps are not supported"},
         {{"render", cornell_box(), "-o", out, "--width", "abc"}, 2, "--width"},
         {{"render", cornell_box(), "-o", out, "--width"}, 2, "needs a value"},
         {{"render", (dir / "nope.json").string(), "-o", out}, 1, "not found"},
