@@ -221,7 +221,7 @@ int render(const ParsedArguments& arguments) {
     auto start = SteadyClock::now();
     const RecordedFiles scene_files;  // what the scene read: no output may overwrite it
     Scene scene = load_scene(job.scene, scene_files, arguments.value("--camera"),
-                             environment_radiance(arguments));
+                             environment_override(arguments));
     totals.phase("load") = seconds_since(start);
     if (scene.dropped_degenerate > 0) {
         log_note("dropped " + std::to_string(scene.dropped_degenerate) + " degenerate triangles");

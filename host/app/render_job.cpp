@@ -39,10 +39,11 @@ std::vector<OptionSpec> render_option_specs() {
             .integers(1, 1 << 16),
         {"--camera", "", "NAME",
          "glTF scenes: the camera of that name (or its node's name; default: the first)"},
-        {"--environment", "", "COLOUR",
-         "light the scene with a constant environment of this radiance, R,G,B or one value for "
-         "all three, each in [0, 1e9]: added when the scene has none, replacing the radiance of "
-         "the one it has (as a glTF viewer lights a model)"},
+        {"--environment", "", "COLOUR|FILE",
+         "light the scene with an environment: a constant radiance, R,G,B or one value for all "
+         "three, each in [0, 1e9], or a lat-long image (EXR, HDR, PNG, ...; the top row looks up "
+         "+y, as Mitsuba's envmap): added when the scene has none, replacing the one it has (as "
+         "a glTF viewer lights a model)"},
         OptionSpec{"--filter", "", "NAME",
                    "pixel reconstruction filter: box, tent or gaussian (default: the scene "
                    "camera's, else box)"}
@@ -276,7 +277,7 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
     }
     pixel_filter(arguments, PixelFilter{});
     pixel_sampler(arguments, RC_SAMPLER_SOBOL);
-    environment_radiance(arguments);
+    environment_override(arguments);
     job.write_options.half = arguments.has("--half");
     if (arguments.has("--aovs")) {
         job.layers = parse_layers(arguments.value("--aovs"));
@@ -347,36 +348,38 @@ PixelFilter pixel_filter(const ParsedArguments& arguments, PixelFilter filter) {
     return filter;
 }
 
-std::optional<glm::vec3> environment_radiance(const ParsedArguments& arguments) {
+std::optional<EnvironmentOverride> environment_override(const ParsedArguments& arguments) {
     if (!arguments.has("--environment")) {
         return std::nullopt;
     }
     const std::string text = arguments.value("--environment");
-    const auto fail = [&]() {
-        throw Error("--environment: expected a colour R,G,B or one value, each in [0, 1e9], got '" +
-                        excerpt(text) + "' (image maps are not supported)",
-                    kExitUsage);
-    };
     std::vector<float> values;
     size_t start = 0;
-    while (start <= text.size()) {
+    bool colour = !text.empty();
+    while (colour && start <= text.size()) {
         const size_t comma = std::min(text.find(',', start), text.size());
         const std::string word = text.substr(start, comma - start);
         char* end = nullptr;
         const double value = std::strtod(word.c_str(), &end);
-        if (word.empty() || end != word.c_str() + word.size() || !(value >= 0.0 && value <= 1e9)) {
-            fail();
-        }
+        colour = !word.empty() && end == word.c_str() + word.size() && value >= 0.0 && value <= 1e9;
         values.push_back(static_cast<float>(value));
         start = comma + 1;
     }
-    if (values.size() == 1) {
-        return glm::vec3(values[0]);
+    EnvironmentOverride environment;
+    if (colour && (values.size() == 1 || values.size() == 3)) {
+        environment.radiance =
+            values.size() == 1 ? glm::vec3(values[0]) : glm::vec3(values[0], values[1], values[2]);
+        return environment;
     }
-    if (values.size() != 3) {
-        fail();
+    if (text.find(',') != std::string::npos || !std::filesystem::is_regular_file(text)) {
+        throw Error(
+            "--environment: expected a colour R,G,B or one value, each in [0, 1e9], or "
+            "a lat-long image file, got '" +
+                excerpt(text) + "'",
+            kExitUsage);
     }
-    return glm::vec3(values[0], values[1], values[2]);
+    environment.map = text;
+    return environment;
 }
 
 int pixel_sampler(const ParsedArguments& arguments, int scene_sampler) {

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <filesystem>
-#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +13,7 @@
 #include "methods/method.h"
 #include "scene/camera.h"
 #include "scene/render_settings.h"
+#include "scene/scene_loader.h"
 #include "util/cli.h"
 #include "util/output_identity.h"  // frame_path
 
@@ -87,9 +87,9 @@ PixelFilter pixel_filter(const ParsedArguments& arguments, PixelFilter scene_fil
 // naming the option for an unknown name.
 int pixel_sampler(const ParsedArguments& arguments, int scene_sampler);
 
-// The radiance of --environment (R,G,B or one value), or none without it; Error (exit status 2)
-// naming the option for anything else.
-std::optional<glm::vec3> environment_radiance(const ParsedArguments& arguments);
+// --environment: a radiance (R,G,B or one value) or an existing lat-long image file, or none
+// without it; Error (exit status 2) naming the option for anything else.
+std::optional<EnvironmentOverride> environment_override(const ParsedArguments& arguments);
 
 // What every method reads, for frames first..last.
 MethodSettings method_settings(const ParsedArguments& arguments, const RenderSettings& settings,

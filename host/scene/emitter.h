@@ -2,6 +2,7 @@
 // (Area lights are shapes with an emitter; see Shape::emission.)
 #pragma once
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 #include <string>
 
@@ -20,6 +21,15 @@ struct Emitter {
     glm::vec3 irradiance{0.0f};              // distant: W/m^2 on a surface facing the light
     float cutoff_angle = 20.0f;              // spot, degrees
     float beam_width = 15.0f;                // spot, degrees
+    // constant: a radiance map instead of `radiance` (scene/environment_map.h): its texture in
+    // Scene::textures (the image times its scale), how it covers the sphere (RC_MAP_*), and the
+    // map's frame (map-frame direction = map_from_world x world direction; a rotation, or a
+    // rotation and a reflection).
+    int map = -1;
+    int map_mapping = 0;
+    glm::mat3 map_from_world{1.0f};
+    std::string map_file;  // the image the map was read from, for convert and messages
+    glm::vec3 map_scale{1.0f};
 };
 
 }  // namespace rc

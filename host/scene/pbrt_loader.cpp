@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 
+#include "scene/environment_map.h"
 #include "scene/pbrt_materials.h"
 #include "scene/pbrt_params.h"
 #include "scene/pbrt_shapes.h"
@@ -376,7 +377,10 @@ class PbrtSceneBuilder {
     }
 
     void world_directive(const PbrtDirective& d) {
-        require(d, true);
+        // pbrt-v4 takes media before WorldBegin too (the camera's, through MediumInterface).
+        if (d.name != "MakeNamedMedium" && d.name != "MediumInterface") {
+            require(d, true);
+        }
         if (d.name == "AttributeBegin") {
             stack_.push_back(attributes_);
             stack_.back().opened_at = d.where();
@@ -563,15 +567,15 @@ class PbrtSceneBuilder {
                         kExitUnsupported);
         }
         PbrtParams params(d, what);
-        if (params.has("filename")) {
-            params.refuse("image maps (\"filename\") are not supported: give \"rgb L\"");
+        if (params.has("filename") && type != "infinite") {
+            params.refuse("image maps (\"filename\") are not supported here");
         }
         const float scale = params.get_float("scale", 1.0f);
         const glm::mat4 to_world = object_to_world(d, attributes_.ctm);
         Emitter emitter;
         emitter.name = "light" + std::to_string(scene_.emitters.size());
         if (type == "infinite") {
-            infinite(params, scale, emitter);
+            infinite(params, to_world, scale, emitter);
         } else if (type == "distant") {
             distant(params, to_world, scale, emitter);
         } else {
@@ -603,17 +607,65 @@ class PbrtSceneBuilder {
 
     // "infinite" without a map: the constant environment; illuminance E_v on an upward patch
     // under it is pi L (k_e = pi).
-    void infinite(PbrtParams& params, float scale, Emitter& emitter) {
+    void infinite(PbrtParams& params, const glm::mat4& to_world, float scale, Emitter& emitter) {
         params.ignore("portal");  // a sampling aid: the image is the same
+        for (const Emitter& other : scene_.emitters) {
+            if (other.kind == EmitterKind::kConstant) {
+                params.refuse("a scene has at most one infinite light");
+            }
+        }
         emitter.kind = EmitterKind::kConstant;
+        const std::string file = params.get_string("filename", "");
+        if (!file.empty()) {
+            image_infinite(params, to_world, scale, file, emitter);
+            return;
+        }
         emitter.radiance = params.get_rgb("L").value_or(glm::vec3(1.0f)) * scale *
                            photometric_factor(params, "illuminance", kPi);
         check_range(emitter.radiance, 1e9f, params, "L times scale");
-        for (const Emitter& other : scene_.emitters) {
-            if (other.kind == EmitterKind::kConstant) {
-                params.refuse("a scene has at most one constant infinite light");
+    }
+
+    // "infinite" with "filename": pbrt-v4's ImageInfiniteLight, an equal-area octahedral map in
+    // the light's frame (its CTM, with pbrt's mirrored x), times "scale".
+    void image_infinite(PbrtParams& params, const glm::mat4& to_world, float scale,
+                        const std::string& file, Emitter& emitter) {
+        if (params.has("L")) {
+            params.fail("\"L\" and \"filename\" together (pbrt-v4 refuses them too)");
+        }
+        if (params.has("illuminance")) {
+            params.refuse("\"illuminance\" of an image map is not supported: give \"scale\"");
+        }
+        if (!(scale >= 0.0f && scale <= 1e9f)) {
+            params.fail("scale must lie in [0, 1e9]");
+        }
+        glm::mat3 light_to_world(to_world);
+        const float unit = std::cbrt(std::fabs(glm::determinant(light_to_world)));
+        if (!(unit > 0.0f) || !std::isfinite(unit)) {
+            params.fail("the light's transform collapses directions");
+        }
+        light_to_world /= unit;
+        const glm::mat3 gram = glm::transpose(light_to_world) * light_to_world;
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) {
+                if (std::fabs(gram[i][j] - (i == j ? 1.0f : 0.0f)) > 1e-3f) {
+                    params.refuse(
+                        "an image map under a transform that is not a rotation (with "
+                        "a uniform scale)");
+                }
             }
         }
+        const std::filesystem::path path =
+            std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : dir_ / file;
+        if (!files_.exists(path)) {
+            params.fail("image file \"" + excerpt(path.string()) + "\" not found");
+        }
+        try {
+            load_environment_map(scene_, emitter, path, files_, glm::vec3(scale),
+                                 RC_MAP_EQUAL_AREA);
+        } catch (const Error& error) {
+            params.fail(error.what());
+        }
+        emitter.map_from_world = glm::transpose(light_to_world);
     }
 
     // "distant": light travelling from "from" to "to" (default (0,0,0) to (0,0,1)), irradiance

@@ -10,6 +10,7 @@
 #include <glm/trigonometric.hpp>
 #include <limits>
 
+#include "scene/environment_map.h"
 #include "scene/mesh_bounds.h"
 #include "scene/scene.h"
 #include "scene/transform.h"
@@ -305,6 +306,7 @@ shared::Light emitter_light(const Emitter& emitter, const std::string& emitter_n
     shared::Light light{};
     if (emitter.kind == EmitterKind::kConstant) {
         light.kind = RC_LIGHT_CONSTANT;
+        light.map = -1;  // a map is added by the caller (scene/environment_map.h)
         light.radiance = float4_of(emitter.radiance);
         *power = kPi * kPi * radius * radius * luminance(emitter.radiance);
         return light;
@@ -409,7 +411,13 @@ void Scene::set_frame(double new_frame) {
         }
         const std::string name =
             "emitter '" + excerpt(emitter.name) + "' (index " + std::to_string(e) + ")";
-        lights.lights.push_back(emitter_light(emitter, name, motion, radius, frame, &light_power));
+        shared::Light light = emitter_light(emitter, name, motion, radius, frame, &light_power);
+        if (emitter.kind == EmitterKind::kConstant && emitter.map >= 0) {
+            const glm::vec3 mean = add_environment_map(
+                emitter, textures[static_cast<size_t>(emitter.map)], lights.triangle_cdf, light);
+            light_power = kPi * kPi * radius * radius * luminance(mean);
+        }
+        lights.lights.push_back(light);
         power.push_back(light_power);
     }
     lights.cdf = selection_cdf(power);

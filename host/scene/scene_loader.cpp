@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "scene/environment_map.h"
 #include "scene/generated_meshes.h"
 #include "scene/gltf_loader.h"
 #include "scene/json_reader.h"
@@ -404,24 +405,44 @@ class SceneParser {
             }
             emitter.direction = glm::normalize(emitter.direction);
             emitter.irradiance = parse_colour(reader, "irradiance", glm::vec3(1.0f), 0.0f, 1e9f);
-        } else if (type == "constant") {
-            reader.allow_only({"type", "name", "radiance"});
-            emitter.kind = EmitterKind::kConstant;
-            emitter.radiance = parse_colour(reader, "radiance", glm::vec3(1.0f), 0.0f, 1e9f);
+        } else if (type == "constant" || type == "envmap") {
             for (const Emitter& other : scene_.emitters) {
                 if (other.kind == EmitterKind::kConstant) {
-                    reader.fail("type", "a scene has at most one constant environment");
+                    reader.fail("type", "a scene has at most one environment (constant or envmap)");
                 }
+            }
+            emitter.kind = EmitterKind::kConstant;
+            if (type == "constant") {
+                reader.allow_only({"type", "name", "radiance"});
+                emitter.radiance = parse_colour(reader, "radiance", glm::vec3(1.0f), 0.0f, 1e9f);
+            } else {
+                parse_environment_map(reader, emitter);
             }
         } else {
             reader.fail("type", "unknown emitter type '" + excerpt(type) +
-                                    "' (point, spot, distant, constant)");
+                                    "' (point, spot, distant, constant, envmap)");
         }
         emitter.name = reader.string("name", type + "_" + std::to_string(scene_.emitters.size()));
         if (!emitter_names_.insert(emitter.name).second) {
             reader.fail("name", "an emitter named '" + excerpt(emitter.name) + "' already exists");
         }
         scene_.emitters.push_back(emitter);
+    }
+
+    // {"type": "envmap", "filename": F, "scale": s, "mapping": "latlong" | "equal-area"}.
+    void parse_environment_map(const JsonReader& reader, Emitter& emitter) {
+        reader.allow_only({"type", "name", "filename", "scale", "mapping"});
+        const std::filesystem::path image = dir_ / reader.string("filename");
+        if (!files_.exists(image)) {
+            reader.fail("filename", "environment map '" + excerpt(image.string()) + "' not found");
+        }
+        const int mapping = map_mapping_of(reader.string("mapping", "latlong"));
+        if (mapping < 0) {
+            reader.fail("mapping", "expected latlong or equal-area, got '" +
+                                       excerpt(reader.string("mapping")) + "'");
+        }
+        const glm::vec3 scale = parse_colour(reader, "scale", glm::vec3(1.0f), 0.0f, 1e9f);
+        load_environment_map(scene_, emitter, image, files_, scale, mapping);
     }
 
     void parse_animation(const JsonReader& reader) {
@@ -537,22 +558,34 @@ Scene read_scene(const std::filesystem::path& path, const SceneFiles& files,
     return scene;
 }
 
-// The scene's constant environment set to `radiance`: the one it has, or a new one (as a glTF
+// The scene's environment replaced by `environment` (the one it has, or a new one, as a glTF
 // viewer lights a model), and the scene posed again for its lights.
-void set_environment(Scene& scene, glm::vec3 radiance) {
-    bool found = false;
+void set_environment(Scene& scene, const SceneFiles& files,
+                     const EnvironmentOverride& environment) {
+    Emitter* sky = nullptr;
     for (Emitter& emitter : scene.emitters) {
         if (emitter.kind == EmitterKind::kConstant) {
-            emitter.radiance = radiance;
-            found = true;
+            sky = &emitter;
         }
     }
-    if (!found) {
-        Emitter sky;
-        sky.name = "--environment";
-        sky.kind = EmitterKind::kConstant;
-        sky.radiance = radiance;
-        scene.emitters.push_back(sky);
+    if (sky == nullptr) {
+        Emitter added;
+        added.name = "--environment";
+        scene.emitters.push_back(added);
+        sky = &scene.emitters.back();
+    }
+    const std::string name = sky->name;
+    *sky = Emitter{};
+    sky->name = name;
+    sky->kind = EmitterKind::kConstant;
+    sky->radiance = environment.radiance;
+    if (!environment.map.empty()) {
+        if (!files.exists(environment.map)) {
+            throw Error("--environment " + excerpt(environment.map.string()) +
+                            ": environment map not found",
+                        kExitUsage);
+        }
+        load_environment_map(scene, *sky, environment.map, files, glm::vec3(1.0f), RC_MAP_LATLONG);
     }
     pose_loaded_scene(scene, scene.animation.frame_start);
 }
@@ -564,10 +597,10 @@ bool is_imported_scene_path(const std::filesystem::path& path) {
 }
 
 Scene load_scene(const std::filesystem::path& path, const SceneFiles& files,
-                 const std::string& camera, const std::optional<glm::vec3>& environment) {
+                 const std::string& camera, const std::optional<EnvironmentOverride>& environment) {
     Scene scene = read_scene(path, files, camera);
     if (environment) {
-        set_environment(scene, *environment);
+        set_environment(scene, files, *environment);
     }
     warn_unless_lit(scene);
     return scene;

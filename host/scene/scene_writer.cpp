@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "scene/environment_map.h"
 #include "scene/mesh_instances.h"
 #include "scene/scene_files.h"
 #include "util/error.h"
@@ -218,6 +219,21 @@ class SceneWriter {
         return json;
     }
 
+    // An environment map as the JSON format's "envmap": its image named by absolute path. The
+    // format has no frame for a map: one under a rotation (pbrt's) is refused.
+    static nlohmann::json environment_map_json(const Emitter& emitter) {
+        if (emitter.map_from_world != glm::mat3(1.0f)) {
+            throw Error("convert: the environment map " + excerpt(emitter.map_file) +
+                            " is turned (the scene format's envmap has no frame): not written",
+                        kExitUnsupported);
+        }
+        return {{"type", "envmap"},
+                {"name", limited(emitter.name, "an emitter's name")},
+                {"filename", std::filesystem::absolute(emitter.map_file).string()},
+                {"scale", vec3_json(emitter.map_scale)},
+                {"mapping", map_mapping_name(emitter.map_mapping)}};
+    }
+
     static nlohmann::json emitter_json(const Emitter& emitter) {
         switch (emitter.kind) {
             case EmitterKind::kPoint:
@@ -239,6 +255,9 @@ class SceneWriter {
                         {"direction", vec3_json(emitter.direction)},
                         {"irradiance", vec3_json(emitter.irradiance)}};
             default:
+                if (emitter.map >= 0) {
+                    return environment_map_json(emitter);
+                }
                 return {{"type", "constant"},
                         {"name", limited(emitter.name, "an emitter's name")},
                         {"radiance", vec3_json(emitter.radiance)}};

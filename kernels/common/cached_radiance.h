@@ -87,7 +87,7 @@ RC_FUNC bool rc_cached_vertex(const SceneData* scene, Ray ray, RngStream* rng, b
     const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
     if (hit.primitive == RC_NO_HIT) {
         if (scene->environment >= 0 && count_emission) {
-            c->direct = scene->lights[scene->environment].radiance.xyz;
+            c->direct = rc_environment_light(scene, ray.direction.xyz);
         }
         return false;
     }

@@ -5,6 +5,8 @@
 // solid angle.
 #pragma once
 
+#include "common/cdf.h"
+#include "common/environment_map.h"
 #include "common/math.h"
 #include "common/ray_offset.h"
 #include "common/scene_data.h"
@@ -42,25 +44,6 @@ RC_FUNC float rc_light_triangle_solid_angle(RC_GLOBAL const Triangle* triangle, 
 RC_FUNC float rc_solid_angle_light_pdf(const Light* light, float selection,
                                        RC_GLOBAL const Triangle* triangle, float solid_angle) {
     return selection * (rc_triangle_area(triangle) / light->area) / solid_angle;
-}
-
-// Index i of the first cdf[i] > u in cdf[0, count), count >= 1 (cdf[count - 1] = 1).
-RC_FUNC int rc_sample_cdf(RC_GLOBAL const float* cdf, int count, float u) {
-    int low = 0;
-    int high = count - 1;
-    while (low < high) {
-        const int middle = (low + high) / 2;
-        if (cdf[middle] > u) {
-            high = middle;
-        } else {
-            low = middle + 1;
-        }
-    }
-    return low;
-}
-
-RC_FUNC float rc_cdf_probability(RC_GLOBAL const float* cdf, int i) {
-    return cdf[i] - (i > 0 ? cdf[i - 1] : 0.0f);
 }
 
 // A sampled light direction from a shading point.
@@ -171,13 +154,10 @@ RC_FUNC LightSample rc_sample_light(const SceneData* scene, int l, float selecti
         s.pdf = selection;
         s.radiance = light.radiance.xyz;
     } else {
-        // Constant environment: uniform directions on the sphere.
-        const float z = 1.0f - 2.0f * u1;
-        const float r = sqrt(fmax(0.0f, 1.0f - z * z));
-        const float phi = 2.0f * RC_PI * u2;
-        s.direction = (float3)(r * cos(phi), r * sin(phi), z);
-        s.pdf = selection * RC_INV_FOUR_PI;
-        s.radiance = light.radiance.xyz;
+        // The environment: uniform directions on the sphere, or by its map's distribution.
+        float pdf = 0.0f;
+        s.direction = rc_sample_environment(scene, &light, u1, u2, &pdf, &s.radiance);
+        s.pdf = selection * pdf;
         s.infinite = true;
     }
     return s;
@@ -205,8 +185,21 @@ RC_FUNC float rc_area_light_pdf(const SceneData* scene, int l, uint primitive, f
 }
 
 // Density of light sampling for a direction that leaves the scene (the environment).
-RC_FUNC float rc_environment_pdf(const SceneData* scene) {
-    return scene->environment >= 0
-               ? rc_cdf_probability(scene->light_cdf, scene->environment) * RC_INV_FOUR_PI
-               : 0.0f;
+RC_FUNC float rc_environment_pdf(const SceneData* scene, float3 w) {
+    if (scene->environment < 0) {
+        return 0.0f;
+    }
+    const Light light = scene->lights[scene->environment];
+    return rc_cdf_probability(scene->light_cdf, scene->environment) *
+           rc_environment_direction_pdf(scene, &light, w);
+}
+
+// Radiance arriving along world direction w from the environment (black without one): what a
+// ray that leaves the scene in direction w sees.
+RC_FUNC float3 rc_environment_light(const SceneData* scene, float3 w) {
+    if (scene->environment < 0) {
+        return (float3)(0.0f);
+    }
+    const Light light = scene->lights[scene->environment];
+    return rc_environment_radiance(scene, &light, w);
 }

@@ -135,8 +135,8 @@ RC_FUNC float3 rc_bsdf_sampled_emission(const SceneData* scene, const SurfacePoi
         if (scene->environment < 0) {
             return (float3)(0.0f);
         }
-        return throughput * scene->lights[scene->environment].radiance.xyz *
-               rc_power_heuristic(pdf, count * rc_environment_pdf(scene));
+        return throughput * rc_environment_light(scene, direction) *
+               rc_power_heuristic(pdf, count * rc_environment_pdf(scene, direction));
     }
     const SurfacePoint light_point = rc_surface_point(scene, ray, hit);
     if (light_point.light < 0 || !light_point.front) {
@@ -168,11 +168,11 @@ RC_FUNC PathSample rc_path_radiance(const SceneData* scene, Ray ray, RngStream* 
         s.rays += 1;
         if (hit.primitive == RC_NO_HIT) {
             if (scene->environment >= 0 && (!first || first_emission)) {
+                const float3 w = ray.direction.xyz;
                 const float weight =
-                    first ? 1.0f : rc_power_heuristic(previous_pdf, rc_environment_pdf(scene));
-                rc_add_contribution(
-                    &s, depth,
-                    throughput * scene->lights[scene->environment].radiance.xyz * weight);
+                    first ? 1.0f : rc_power_heuristic(previous_pdf, rc_environment_pdf(scene, w));
+                rc_add_contribution(&s, depth,
+                                    throughput * rc_environment_light(scene, w) * weight);
             }
             break;
         }

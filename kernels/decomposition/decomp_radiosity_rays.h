@@ -5,6 +5,7 @@
 // with no further ray.
 #pragma once
 
+#include "common/light.h"
 #include "common/scene_data.h"
 #include "decomposition/decomp_far.h"
 
@@ -56,7 +57,7 @@ RC_FUNC ClusterRay rc_decomp_trace_cluster_hit(
     out.inside = 0;
     if (missed) {
         if (out.kept != 0 && scene->environment >= 0 && params->count_emission != 0) {
-            out.radiance = (float4)(scene->lights[scene->environment].radiance.xyz, 0.0f);
+            out.radiance = (float4)(rc_environment_light(scene, ray.direction.xyz), 0.0f);
         }
         return out;
     }

@@ -81,14 +81,27 @@ RC_FUNC Photon rc_ivg_emit(const SceneData* scene, const IvgParams* p, RngStream
         origin = p->sphere_centre.xyz + radius * (disk.x * t + disk.y * b - direction);
         photon.power = light.radiance.xyz * (RC_PI * radius * radius);
     } else {
+        // The environment: a direction towards it, uniform or by its map's distribution
+        // (density pdf), the photon travelling back along it from the scene's disk facing it:
+        // power L / pdf x pi r^2 (4 pi^2 r^2 L for a uniform L).
         const float radius = p->sphere_radius;
-        direction = rc_direction_about((float3)(0.0f, 0.0f, 1.0f), 1.0f - 2.0f * u1, u2);
+        float3 radiance = light.radiance.xyz;
+        float pdf = RC_INV_FOUR_PI;
+        if (light.map < 0) {
+            direction = rc_direction_about((float3)(0.0f, 0.0f, 1.0f), 1.0f - 2.0f * u1, u2);
+        } else {
+            direction = -rc_sample_environment(scene, &light, u1, u2, &pdf, &radiance);
+        }
         const float2 disk = rc_concentric_disk(u3, u4);
         float3 t;
         float3 b;
         rc_orthonormal_basis(direction, &t, &b);
         origin = p->sphere_centre.xyz + radius * (disk.x * t + disk.y * b - direction);
-        photon.power = light.radiance.xyz * (4.0f * RC_PI * RC_PI * radius * radius);
+        if (light.map < 0) {
+            photon.power = radiance * (4.0f * RC_PI * RC_PI * radius * radius);
+        } else {
+            photon.power = pdf > 0.0f ? radiance * (RC_PI * radius * radius / pdf) : (float3)(0.0f);
+        }
     }
     photon.power /= selection;
     photon.ray.origin = (float4)(origin, 0.0f);

@@ -178,7 +178,19 @@ typedef struct Light {
     int kind;            // RC_LIGHT_*
     int first_triangle;  // area: first entry in the light-triangle arrays
     int triangle_count;  // area: number of triangles
+    // constant: its radiance map (common/environment_map.h), or map -1 for a uniform radiance.
+    int map;               // the map's texture (texels radiance, scale applied), or -1
+    int map_distribution;  // first entry of its sampling distribution in the light-triangle cdf
+    int map_mapping;       // RC_MAP_*: how a direction finds its texel
+    int pad0;
+    float4 map_x;  // xyz: the rows of the map-from-world linear map (directions into the
+    float4 map_y;  // map's frame); w: padding
+    float4 map_z;
 } Light;
+
+// How an environment map's image covers the sphere of directions (Light.map_mapping).
+#define RC_MAP_LATLONG 0     // longitude across, latitude down (common/environment_map.h)
+#define RC_MAP_EQUAL_AREA 1  // Clarberg's equal-area octahedral square, as pbrt-v4's
 
 // Per-pass parameters of the path tracer.
 typedef struct PathTracerParams {
@@ -383,6 +395,12 @@ RC_SHARED_END
     FIELD(Light, kind)                     \
     FIELD(Light, first_triangle)           \
     FIELD(Light, triangle_count)           \
+    FIELD(Light, map)                      \
+    FIELD(Light, map_distribution)         \
+    FIELD(Light, map_mapping)              \
+    FIELD(Light, map_x)                    \
+    FIELD(Light, map_y)                    \
+    FIELD(Light, map_z)                    \
     STRUCT(PathTracerParams)               \
     FIELD(PathTracerParams, width)         \
     FIELD(PathTracerParams, height)        \
@@ -469,7 +487,8 @@ static_assert(sizeof(rc::shared::Material) == 64);
 static_assert(offsetof(rc::shared::Material, exponent) == 32);
 static_assert(sizeof(rc::shared::TextureInfo) == 16);
 static_assert(sizeof(rc::shared::TriangleShading) == 32);
-static_assert(sizeof(rc::shared::Light) == 80);
+static_assert(sizeof(rc::shared::Light) == 144);
+static_assert(offsetof(rc::shared::Light, map_x) == 96);
 static_assert(offsetof(rc::shared::Light, area) == 48);
 static_assert(sizeof(rc::shared::PathTracerParams) == 32);
 static_assert(sizeof(rc::shared::GBufferSample) == 64);

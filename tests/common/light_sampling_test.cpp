@@ -4,6 +4,7 @@
 // solid-angle densities, and the radiance of point, spot and distant lights.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -12,8 +13,10 @@
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "chi_square.h"
+#include "image/image_io.h"
 #include "methods/scene_arguments.h"
 #include "scene/device_scene.h"
+#include "scene/environment_map.h"
 #include "scene/generated_meshes.h"
 #include "test_support.h"
 
@@ -241,6 +244,113 @@ TEST(LightSampling, DistantLightIsADeltaDirectionWithoutEnd) {
         const double expected = n * power[4] / total;
         EXPECT_NEAR(static_cast<double>(chosen), expected, 5.0 * std::sqrt(expected));
     }
+}
+
+// A scene whose only light is an environment map of `map` in `mapping` (a triangle under it).
+Scene environment_scene(const Image& map, int mapping, const std::string& scratch) {
+    const auto dir = test::scratch_dir(scratch);
+    write_image(dir / "map.exr", map);
+    Scene scene;
+    scene.base_camera.position = {0, 0, -5};
+    scene.base_camera.look_at = {0, 0, 0};
+    Shape triangle;
+    triangle.name = "triangle";
+    triangle.type = "generated";
+    triangle.mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    triangle.mesh.triangles = {{0, 1, 2}};
+    scene.add_shape(triangle);
+    Emitter sky;
+    sky.name = "sky";
+    load_environment_map(scene, sky, dir / "map.exr", disk_files(), glm::vec3(1.0f), mapping);
+    scene.emitters.push_back(sky);
+    scene.set_frame(0.0);
+    return scene;
+}
+
+// A lat-long map (Mitsuba's convention: u = atan2(x, -z) / 2 pi, v = acos(y) / pi, the image's
+// top row up): each texel is drawn in proportion to its mean radiance times its solid angle
+// (chi-square over the texels, each sample's texel found from its direction by that definition),
+// with the texel's radiance, and the pdf its probability over the solid angle its image area
+// covers, p W H / (2 pi^2 sin theta).
+TEST(LightSampling, EnvironmentMapTexelsInProportionToTheirPower) {
+    const int width = 8;
+    const int height = 4;
+    Image map(width, height, 3);
+    map.channel_names = {"R", "G", "B"};
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                map.at(x, y, c) = 0.1f + static_cast<float>((x * 5 + y * 3 + c) % 7);
+            }
+        }
+    }
+    const Scene scene = environment_scene(map, RC_MAP_LATLONG, "light_sampling_latlong");
+    std::vector<double> weight(width * height);
+    double total = 0.0;
+    for (int y = 0; y < height; ++y) {
+        const double omega =
+            2.0 * kPi / width * (std::cos(kPi * y / height) - std::cos(kPi * (y + 1) / height));
+        for (int x = 0; x < width; ++x) {
+            weight[y * width + x] =
+                (map.at(x, y, 0) + map.at(x, y, 1) + map.at(x, y, 2)) / 3.0 * omega;
+            total += weight[y * width + x];
+        }
+    }
+    const size_t n = 1 << 18;
+    const ProbeResult r = probe(scene, {0.1f, 0.2f, 0.3f}, n, 5);
+    std::vector<double> observed(width * height, 0.0);
+    for (size_t i = 0; i < n; ++i) {
+        const glm::dvec3 d(r.geometry[2 * i].x, r.geometry[2 * i].y, r.geometry[2 * i].z);
+        double u = std::atan2(d.x, -d.z) / (2.0 * kPi);
+        u -= std::floor(u);
+        const double v = std::acos(std::clamp(d.y, -1.0, 1.0)) / kPi;
+        const int x = std::min(width - 1, static_cast<int>(u * width));
+        const int y = std::min(height - 1, static_cast<int>(v * height));
+        observed[y * width + x] += 1.0;
+        ASSERT_EQ(r.choice[i].w, 1.0f);  // no end
+        const double pdf =
+            weight[y * width + x] / total * width * height / (2.0 * kPi * kPi * std::sin(v * kPi));
+        // (theta from the direction's float y: near a pole acos amplifies its rounding, so the
+        // density is compared away from them.)
+        if (std::sin(v * kPi) > 0.05) {
+            ASSERT_NEAR(r.choice[i].y, pdf, 1e-2 * pdf) << x << ", " << y;
+        }
+        ASSERT_EQ(r.radiance[i].x, map.at(x, y, 0)) << x << ", " << y;
+        ASSERT_EQ(r.radiance[i].z, map.at(x, y, 2)) << x << ", " << y;
+    }
+    std::vector<double> expected(width * height);
+    for (size_t t = 0; t < expected.size(); ++t) {
+        expected[t] = n * weight[t] / total;
+    }
+    const test::ChiSquareResult chi = test::chi_square_test(observed, expected);
+    EXPECT_GT(chi.p_value, 1e-4) << chi.summary();
+}
+
+// An equal-area map (pbrt-v4's) of one radiance is the constant environment: every sample's pdf
+// 1 / 4 pi, the directions uniform on the sphere (chi-square over 8 bands of z and 8 sectors of
+// the azimuth, both uniform for the uniform density whatever the mapping).
+TEST(LightSampling, ConstantEqualAreaMapIsUniformOnTheSphere) {
+    Image map(4, 4, 3);
+    map.channel_names = {"R", "G", "B"};
+    std::fill(map.pixels.begin(), map.pixels.end(), 2.0f);
+    const Scene scene = environment_scene(map, RC_MAP_EQUAL_AREA, "light_sampling_equal_area");
+    const size_t n = 1 << 18;
+    const ProbeResult r = probe(scene, {0.0f, 0.0f, 0.5f}, n, 9);
+    std::vector<double> bands(8, 0.0);
+    std::vector<double> sectors(8, 0.0);
+    for (size_t i = 0; i < n; ++i) {
+        const glm::dvec3 d(r.geometry[2 * i].x, r.geometry[2 * i].y, r.geometry[2 * i].z);
+        ASSERT_NEAR(glm::length(d), 1.0, 1e-5);
+        ASSERT_NEAR(r.choice[i].y, 1.0 / (4.0 * kPi), 1e-4 / (4.0 * kPi));
+        ASSERT_EQ(r.radiance[i].y, 2.0f);
+        bands[std::min(7, static_cast<int>((d.z + 1.0) * 4.0))] += 1.0;
+        double phi = std::atan2(d.y, d.x) / (2.0 * kPi);
+        phi -= std::floor(phi);
+        sectors[std::min(7, static_cast<int>(phi * 8.0))] += 1.0;
+    }
+    const std::vector<double> expected(8, n / 8.0);
+    EXPECT_GT(test::chi_square_test(bands, expected).p_value, 1e-4);
+    EXPECT_GT(test::chi_square_test(sectors, expected).p_value, 1e-4);
 }
 
 }  // namespace

@@ -121,6 +121,60 @@ std::filesystem::path distant_corner_scene(const std::string& scratch) {
     return dir / "scene.json";
 }
 
+// The sky scene's plane under a lat-long environment map of kMapWidth x kMapHeight texels of
+// varied radiance (the top row looks up +y, the plane's normal). The plane's irradiance is the
+// sum over the upper half's texels of L times the integral of cos(theta) over the texel,
+// (pi / W) (sin^2 theta1 - sin^2 theta0) for a texel of row theta0..theta1: its radiance rho / pi
+// of that. A map sampled or looked up in the wrong place, or the wrong density, shows.
+constexpr int kMapWidth = 8;
+constexpr int kMapHeight = 6;
+
+float map_texel(int x, int y, int c) {
+    return 0.2f + 0.5f * static_cast<float>((x * 7 + y * 3 + c * 5) % 11);
+}
+
+std::filesystem::path environment_map_scene(const std::string& scratch) {
+    const auto dir = test::scratch_dir(scratch);
+    Image map(kMapWidth, kMapHeight, 3);
+    map.channel_names = {"R", "G", "B"};
+    for (int y = 0; y < kMapHeight; ++y) {
+        for (int x = 0; x < kMapWidth; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                map.at(x, y, c) = map_texel(x, y, c);
+            }
+        }
+    }
+    write_image(dir / "sky.exr", map);
+    std::ofstream(dir / "scene.json") << R"({
+        "camera": {"position": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 30,
+                   "resolution": [16, 16]},
+        "materials": {"ground": {"type": "diffuse", "reflectance": )"
+                                      << kPlaneReflectance << R"(}},
+        "shapes": [{"type": "rectangle", "material": "ground",
+                    "transform": [{"scale": 5}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]}],
+        "emitters": [{"type": "envmap", "filename": "sky.exr"}]
+    })";
+    return dir / "scene.json";
+}
+
+std::array<double, 3> environment_map_plane_radiance() {
+    const double pi = 3.14159265358979;
+    std::array<double, 3> irradiance = {0.0, 0.0, 0.0};
+    for (int y = 0; y < kMapHeight / 2; ++y) {
+        const double s0 = std::sin(pi * y / kMapHeight);
+        const double s1 = std::sin(pi * (y + 1) / kMapHeight);
+        for (int x = 0; x < kMapWidth; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                irradiance[c] += map_texel(x, y, c) * pi / kMapWidth * (s1 * s1 - s0 * s0);
+            }
+        }
+    }
+    for (double& e : irradiance) {
+        e *= kPlaneReflectance / pi;
+    }
+    return irradiance;
+}
+
 // Renders `scene` with `method` at kSize x kSize into EXRs of every layer, one per frame of
 // `frames` (render --frames A:B) after `options`: kSpp samples per pixel, one for the normals
 // preview (its one centred ray per pixel sees one face). Empty where the render failed.
@@ -365,6 +419,18 @@ TEST_P(EveryMethod, DistantLightInterreflectionMatchesThePathTracer) {
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(mean[c], expected[c], 0.02 * expected[c]) << "channel " << c;
     }
+}
+
+TEST_P(EveryMethod, PlaneUnderEnvironmentMapReflectsItsIrradiance) {
+    const MethodEntry& entry = method();
+    if (entry.beauty != Beauty::kRadiance) {
+        GTEST_SKIP() << entry.name << " shows no radiance";
+    }
+    const std::string scratch = "every_method_envmap_" + test_name(entry.name);
+    const std::vector<Image> images =
+        render(entry, environment_map_scene(scratch), scratch + "_out");
+    ASSERT_EQ(images.size(), 1u);
+    expect_radiance(entry, images[0], environment_map_plane_radiance());
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryMethod, testing::ValuesIn(registered_methods()),

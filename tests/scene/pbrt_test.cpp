@@ -400,8 +400,9 @@ TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
         {"twosided", "AreaLightSource \"diffuse\" \"bool twosided\" true\n",
          "two-sided area lights are not supported"},
         {"medium", "MediumInterface \"fog\" \"\"\n", "participating media are not supported"},
-        {"envmap", "LightSource \"infinite\" \"string filename\" \"sky.exr\"\n",
-         "image maps (\"filename\") are not"},
+        {"envmap_illuminance",
+         "LightSource \"infinite\" \"string filename\" \"sky.exr\" \"float illuminance\" 10\n",
+         "\"illuminance\" of an image map is not supported"},
         {"checkerboard",
          "Texture \"c\" \"spectrum\" \"checkerboard\"\nMaterial \"diffuse\" \"texture "
          "reflectance\" \"c\"\n" +
@@ -411,7 +412,7 @@ TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
          "pbrt's default copper spectra are not supported", 6},
         {"unknown", "Frobnicate 1 2 3\n", "unknown directive 'Frobnicate'", 0, 1},
         {"two_skies", "LightSource \"infinite\"\nLightSource \"infinite\"\n",
-         "at most one constant infinite light"},
+         "at most one infinite light"},
         {"motion", "ActiveTransform StartTime\n", "animated transforms (motion blur)"},
         {"partial_sphere", "Shape \"sphere\" \"float zmax\" 0.5\n", "partial spheres"},
         {"spectrum",
@@ -433,6 +434,11 @@ TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
                    "PixelFilter \"mitchell\" is not supported", 1, 2);
     expect_refused(dir, "shape_first", std::string(kTriangle) + "WorldBegin\n",
                    "Shape is not allowed before WorldBegin", 1);
+    // The camera's medium (pbrt-v4 allows media before WorldBegin): refused as unsupported.
+    expect_refused(dir, "camera_medium",
+                   "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
+                   "MediumInterface \"\" \"fog\"\nCamera \"perspective\"\nWorldBegin\n",
+                   "participating media are not supported", 2, 2);
 }
 
 // pbrt-v4's photometric normalisations for an RGB illuminant (lights.cpp's Create functions):

@@ -55,7 +55,12 @@ float largest_photon_flux(const Scene& scene, float sphere_radius) {
                 scale = pi * sphere_radius * sphere_radius;
                 break;
             default:
-                scale = 4.0f * pi * pi * sphere_radius * sphere_radius;
+                // The environment: 4 pi x pi r^2 x its radiance; a map's largest radiance over
+                // the density of its direction (scene/environment_map.h) x pi r^2.
+                scale = light.map >= 0 ? light.area * pi * sphere_radius * sphere_radius /
+                                             std::max({light.radiance.x, light.radiance.y,
+                                                       light.radiance.z, 1e-30f})
+                                       : 4.0f * pi * pi * sphere_radius * sphere_radius;
                 break;
         }
         const float brightest =

@@ -20,6 +20,9 @@ with one line naming it. The mapping (docs/peers.md):
               an emitter is refused
   point, spot, constant   Mitsuba's `point`, `spot` (the same linear fall-off), `constant`
   distant     Mitsuba's `directional` (the same direction of travel and irradiance)
+  envmap      Mitsuba's `envmap` (the same lat-long convention) of the image with each texel
+              repeated 8 x 8, so that its bilinear lookup matches radcache's constant texels but
+              within 1/16 texel of their edges; an equal-area map or a scale per channel refused
   depth       path `max_depth` = radcache's max_depth + 1 (Mitsuba counts the camera segment),
               rr_depth likewise (Russian roulette changes the noise, not the mean)
   animation   refused (the peer renders still scenes)
@@ -141,7 +144,22 @@ def shape(spec, index, folder, bsdfs):
     return name, out
 
 
-def emitter(spec, index):
+def nearest_envmap(path, factor=8):
+    """radcache reads an envmap's texels as constant over their area, Mitsuba's envmap
+    interpolates bilinearly: the image with every texel repeated factor x factor (written beside
+    the original as NAME.nearestK.exr) makes the interpolation differ only within 1/2K of a texel
+    of its edges."""
+    import mitsuba as mi
+    import numpy
+    out = "%s.nearest%d.exr" % (os.path.splitext(path)[0], factor)
+    image = numpy.array(mi.Bitmap(path).convert(mi.Bitmap.PixelFormat.RGB,
+                                                mi.Struct.Type.Float32, srgb_gamma=False))
+    repeated = numpy.repeat(numpy.repeat(image, factor, axis=0), factor, axis=1)
+    mi.Bitmap(numpy.ascontiguousarray(repeated)).write(out)
+    return out
+
+
+def emitter(spec, index, folder):
     """A point, spot, distant or constant radcache emitter as Mitsuba's."""
     import mitsuba as mi
     kind = spec["type"]
@@ -150,6 +168,17 @@ def emitter(spec, index):
                 "intensity": colour(spec.get("intensity"), 1)}
     if kind == "constant":
         return {"type": "constant", "radiance": colour(spec.get("radiance"), 1)}
+    if kind == "envmap":
+        if spec.get("mapping", "latlong") != "latlong":
+            raise ExportError("emitter %d: an %s envmap has no Mitsuba counterpart"
+                              % (index, spec["mapping"]))
+        scale = spec.get("scale", 1)
+        if isinstance(scale, list):
+            if len(set(map(float, scale))) != 1:
+                raise ExportError("emitter %d: an envmap scale per channel is not exported" % index)
+            scale = scale[0]
+        return {"type": "envmap", "filename": nearest_envmap(os.path.join(folder, spec["filename"])),
+                "scale": float(scale)}
     if kind == "distant":
         return {"type": "directional", "direction": list(map(float, spec["direction"])),
                 "irradiance": colour(spec.get("irradiance"), 1)}
@@ -211,5 +240,5 @@ def scene_dict(scene_json, width=None, height=None, spp=None, integrator=None):
         name, value = shape(spec, index, folder, bsdfs)
         out["shape-" + name] = value
     for index, spec in enumerate(scene.get("emitters", [])):
-        out["emitter-%d" % index] = emitter(spec, index)
+        out["emitter-%d" % index] = emitter(spec, index, folder)
     return out
