@@ -23,6 +23,7 @@ import json
 import os
 import re
 import shutil
+import struct
 import subprocess
 import sys
 import time
@@ -90,6 +91,11 @@ def stand_in(path):
         with gzip.open(path, "wt") as f:
             f.write(PLY_STAND_IN)
         return "mesh"
+    if path.lower().endswith(".pfm"):
+        # OpenImageIO reads PFM but does not write it: 2 x 2 RGB floats, little-endian.
+        with open(path, "wb") as f:
+            f.write(b"PF\n2 2\n-1.0\n" + struct.pack("<12f", *([0.5] * 12)))
+        return "image"
     subprocess.run(["oiiotool", "--pattern", "constant:color=0.5,0.5,0.5", "2x2", "3", "-o", path],
                    check=True, capture_output=True)
     return "image"
