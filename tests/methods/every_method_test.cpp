@@ -69,7 +69,9 @@ std::vector<std::string> registered_methods() {
     return names;
 }
 
-std::filesystem::path sky_plane_scene(const std::string& scratch) {
+// A grey plane seen from straight above, filling the image, under `emitter` (a JSON object),
+// written to the scratch folder `scratch`.
+std::filesystem::path plane_scene(const std::string& scratch, const std::string& emitter) {
     const auto dir = test::scratch_dir(scratch);
     std::ofstream(dir / "scene.json") << R"({
         "camera": {"position": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 30,
@@ -78,10 +80,17 @@ std::filesystem::path sky_plane_scene(const std::string& scratch) {
                                       << kPlaneReflectance << R"(}},
         "shapes": [{"type": "rectangle", "material": "ground",
                     "transform": [{"scale": 5}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]}],
-        "emitters": [{"type": "constant", "radiance": [)"
-                                      << kSky[0] << ", " << kSky[1] << ", " << kSky[2] << R"(]}]
-    })";
+        "emitters": [)" << emitter << "]}";
     return dir / "scene.json";
+}
+
+std::string rgb_json(const std::array<float, 3>& c) {
+    return "[" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) +
+           "]";
+}
+
+std::filesystem::path sky_plane_scene(const std::string& scratch) {
+    return plane_scene(scratch, R"({"type": "constant", "radiance": )" + rgb_json(kSky) + "}");
 }
 
 // The distant-light scenes: the sky scene's plane under a distant light 60 degrees from its
@@ -91,18 +100,9 @@ std::filesystem::path sky_plane_scene(const std::string& scratch) {
 constexpr std::array<float, 3> kSun = {2.0f, 1.0f, 0.5f};
 
 std::filesystem::path distant_plane_scene(const std::string& scratch) {
-    const auto dir = test::scratch_dir(scratch);
-    std::ofstream(dir / "scene.json") << R"({
-        "camera": {"position": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 30,
-                   "resolution": [16, 16]},
-        "materials": {"ground": {"type": "diffuse", "reflectance": )"
-                                      << kPlaneReflectance << R"(}},
-        "shapes": [{"type": "rectangle", "material": "ground",
-                    "transform": [{"scale": 5}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]}],
-        "emitters": [{"type": "distant", "direction": [0.8660254, -0.5, 0], "irradiance": [)"
-                                      << kSun[0] << ", " << kSun[1] << ", " << kSun[2] << R"(]}]
-    })";
-    return dir / "scene.json";
+    return plane_scene(scratch,
+                       R"({"type": "distant", "direction": [0.8660254, -0.5, 0], "irradiance": )" +
+                           rgb_json(kSun) + "}");
 }
 
 std::filesystem::path distant_corner_scene(const std::string& scratch) {
@@ -134,7 +134,8 @@ float map_texel(int x, int y, int c) {
 }
 
 std::filesystem::path environment_map_scene(const std::string& scratch) {
-    const auto dir = test::scratch_dir(scratch);
+    const std::filesystem::path scene =
+        plane_scene(scratch, R"({"type": "envmap", "filename": "sky.exr"})");
     Image map(kMapWidth, kMapHeight, 3);
     map.channel_names = {"R", "G", "B"};
     for (int y = 0; y < kMapHeight; ++y) {
@@ -144,17 +145,8 @@ std::filesystem::path environment_map_scene(const std::string& scratch) {
             }
         }
     }
-    write_image(dir / "sky.exr", map);
-    std::ofstream(dir / "scene.json") << R"({
-        "camera": {"position": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 30,
-                   "resolution": [16, 16]},
-        "materials": {"ground": {"type": "diffuse", "reflectance": )"
-                                      << kPlaneReflectance << R"(}},
-        "shapes": [{"type": "rectangle", "material": "ground",
-                    "transform": [{"scale": 5}, {"rotate": {"axis": [1, 0, 0], "angle": -90}}]}],
-        "emitters": [{"type": "envmap", "filename": "sky.exr"}]
-    })";
-    return dir / "scene.json";
+    write_image(scene.parent_path() / "sky.exr", map);
+    return scene;
 }
 
 std::array<double, 3> environment_map_plane_radiance() {
