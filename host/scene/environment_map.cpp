@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 
 #include "util/error.h"
 
@@ -109,8 +110,18 @@ void load_environment_map(Scene& scene, Emitter& emitter, const std::filesystem:
         throw Error(file.string() + ": an equal-area environment map must be square, not " +
                     std::to_string(texture.width) + " x " + std::to_string(texture.height));
     }
-    for (glm::vec4& t : texture.texels) {
-        t = glm::vec4(glm::vec3(t) * scale, 1.0f);
+    // Radiance is not negative (pbrt-v4 clamps an RGB illuminant at zero); a texel that is not
+    // finite would make every sample's density NaN.
+    for (size_t i = 0; i < texture.texels.size(); ++i) {
+        glm::vec4& t = texture.texels[i];
+        const glm::vec3 radiance = glm::max(glm::vec3(t), glm::vec3(0.0f)) * scale;
+        if (!std::isfinite(radiance.x + radiance.y + radiance.z)) {
+            throw Error(file.string() + ": environment map texel (" +
+                        std::to_string(i % static_cast<size_t>(texture.width)) + ", " +
+                        std::to_string(i / static_cast<size_t>(texture.width)) +
+                        ") is not finite (times the scale)");
+        }
+        t = glm::vec4(radiance, 1.0f);
     }
     texture.max_value *= std::max({scale.x, scale.y, scale.z});
     emitter.kind = EmitterKind::kConstant;

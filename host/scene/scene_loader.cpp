@@ -442,7 +442,11 @@ class SceneParser {
                                        excerpt(reader.string("mapping")) + "'");
         }
         const glm::vec3 scale = parse_colour(reader, "scale", glm::vec3(1.0f), 0.0f, 1e9f);
-        load_environment_map(scene_, emitter, image, files_, scale, mapping);
+        try {
+            load_environment_map(scene_, emitter, image, files_, scale, mapping);
+        } catch (const Error& error) {
+            reader.fail("filename", error.what());
+        }
     }
 
     void parse_animation(const JsonReader& reader) {

@@ -6,8 +6,11 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <limits>
 
 #include "error_of.h"
+#include "image/image.h"
+#include "image/image_io.h"
 #include "scene/obj_loader.h"
 #include "scratch_files.h"
 #include "test_support.h"
@@ -126,7 +129,20 @@ TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
     const auto dir = test::scratch_dir("scene_bad");
     test::write_file(dir / "ok.obj", std::string(kSquare) + "f 1 2 3\n");
     test::write_file(dir / "flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+    // Environment maps: 2 x 1 (not square), all black, one texel infinite.
+    for (const auto& [name, first] : {std::pair{"wide.exr", 1.0f},
+                                      {"black.exr", 0.0f},
+                                      {"infinite.exr", std::numeric_limits<float>::infinity()}}) {
+        Image map(2, 1, 3);
+        map.channel_names = {"R", "G", "B"};
+        std::fill(map.pixels.begin(), map.pixels.end(), first == 0.0f ? 0.0f : 1.0f);
+        map.pixels[0] = first;
+        write_image(dir / name, map);
+    }
     const std::string shape = R"([{"type": "obj", "file": "ok.obj"}])";
+    const auto with_emitters = [&](const std::string& emitters) {
+        return scene_with(kCamera, shape).replace(1, 0, "\"emitters\": " + emitters + ",");
+    };
     const std::vector<BadScene> cases = {
         {"malformed", "{\n  \"camera\": {\n    \"fov\": 40,,\n", {"malformed JSON", "line 3"}},
         {"unknown_top",
@@ -219,6 +235,24 @@ TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
                  1, 0,
                  R"("emitters": [{"type": "distant", "direction": [0, -1, 0], "position": [0, 1, 0]}],)"),
          {"emitters[0]", "position"}},
+        {"envmap_missing",
+         with_emitters(R"([{"type": "envmap", "filename": "nope.exr"}])"),
+         {"emitters[0].filename", "nope.exr", "not found"}},
+        {"envmap_mapping",
+         with_emitters(R"([{"type": "envmap", "filename": "wide.exr", "mapping": "cube"}])"),
+         {"emitters[0].mapping", "cube"}},
+        {"envmap_not_square",
+         with_emitters(R"([{"type": "envmap", "filename": "wide.exr", "mapping": "equal-area"}])"),
+         {"emitters[0].filename", "wide.exr", "must be square"}},
+        {"envmap_infinite",
+         with_emitters(R"([{"type": "envmap", "filename": "infinite.exr"}])"),
+         {"emitters[0].filename", "infinite.exr", "not finite"}},
+        {"envmap_black",
+         with_emitters(R"([{"type": "envmap", "filename": "black.exr"}])"),
+         {"black.exr", "black everywhere"}},
+        {"two_environments",
+         with_emitters(R"([{"type": "constant"}, {"type": "envmap", "filename": "wide.exr"}])"),
+         {"emitters[1].type", "at most one environment"}},
         {"missing_texture",
          scene_with(kCamera, shape)
              .replace(
