@@ -22,19 +22,6 @@ bool is_pbrt_shape_supported(const std::string& type) {
 
 namespace {
 
-// Whether the quad a b c d lies in one plane (to a relative 1e-5 of its size): then its two
-// triangles are exactly pbrt's bilinear patch.
-bool planar(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
-    const glm::dvec3 n = glm::cross(glm::dvec3(c) - glm::dvec3(a), glm::dvec3(d) - glm::dvec3(b));
-    const double size =
-        glm::length(glm::dvec3(c) - glm::dvec3(a)) + glm::length(glm::dvec3(d) - glm::dvec3(b));
-    const double length = glm::length(n);
-    if (!(length > 0.0)) {
-        return true;  // degenerate: its triangles are dropped or flat
-    }
-    return std::abs(glm::dot(n / length, glm::dvec3(d) - glm::dvec3(a))) <= 1e-5 * size;
-}
-
 // Each of the `corners` indices of the face from indices[first] names one of the vertices.
 void check_face(const std::vector<double>& indices, size_t first, size_t corners, size_t vertices,
                 const PbrtParams& params) {
@@ -117,7 +104,7 @@ TriangleMesh bilinear_mesh(PbrtParams& params) {
         mesh.triangles.emplace_back(q.x, q.y, q.w);
         mesh.triangles.emplace_back(q.x, q.w, q.z);
         const auto& p = mesh.positions;
-        if (!warned && !planar(p[q.x], p[q.y], p[q.w], p[q.z])) {
+        if (!warned && !is_planar_quad(p[q.x], p[q.y], p[q.w], p[q.z])) {
             log_warning(params.what() +
                         ": a non-planar bilinear patch is rendered as two triangles");
             warned = true;

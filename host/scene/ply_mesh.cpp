@@ -156,15 +156,6 @@ void read_vertices(PlyValues& values, const PlyElement& e, TriangleMesh& mesh,
     }
 }
 
-bool planar(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
-    const glm::dvec3 n = glm::cross(glm::dvec3(c) - glm::dvec3(a), glm::dvec3(d) - glm::dvec3(b));
-    const double size =
-        glm::length(glm::dvec3(c) - glm::dvec3(a)) + glm::length(glm::dvec3(d) - glm::dvec3(b));
-    const double length = glm::length(n);
-    return !(length > 0.0) ||
-           std::abs(glm::dot(n / length, glm::dvec3(d) - glm::dvec3(a))) <= 1e-5 * size;
-}
-
 // One face's index list into *mesh (after the vertices: PLY files put them first).
 void add_face(const std::vector<double>& indices, size_t f, size_t vertices, TriangleMesh& mesh,
               bool& warned, const std::string& what) {
@@ -185,7 +176,7 @@ void add_face(const std::vector<double>& indices, size_t f, size_t vertices, Tri
     if (indices.size() == 4) {
         mesh.triangles.emplace_back(i[0], i[2], i[3]);
         const auto& p = mesh.positions;
-        if (!warned && !planar(p[i[0]], p[i[1]], p[i[2]], p[i[3]])) {
+        if (!warned && !is_planar_quad(p[i[0]], p[i[1]], p[i[2]], p[i[3]])) {
             log_warning(what + ": a non-planar quad is rendered as two triangles");
             warned = true;
         }

@@ -1,5 +1,6 @@
 #include "scene/triangle_mesh.h"
 
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -63,6 +64,15 @@ size_t drop_degenerate_triangles(TriangleMesh& mesh, std::vector<size_t>* kept) 
         mesh.materials = std::move(remaining_materials);
     }
     return dropped;
+}
+
+bool is_planar_quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+    const glm::dvec3 n = glm::cross(glm::dvec3(c) - glm::dvec3(a), glm::dvec3(d) - glm::dvec3(b));
+    const double size =
+        glm::length(glm::dvec3(c) - glm::dvec3(a)) + glm::length(glm::dvec3(d) - glm::dvec3(b));
+    const double length = glm::length(n);
+    return !(length > 0.0) ||
+           std::abs(glm::dot(n / length, glm::dvec3(d) - glm::dvec3(a))) <= 1e-5 * size;
 }
 
 }  // namespace rc

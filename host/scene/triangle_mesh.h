@@ -26,4 +26,9 @@ struct TriangleMesh {
 // its index before the removal.
 size_t drop_degenerate_triangles(TriangleMesh& mesh, std::vector<size_t>* kept = nullptr);
 
+// Whether the quad a b c d lies in one plane (to a relative 1e-5 of its size): then its two
+// triangles a b c, a c d are exactly the quad (pbrt's bilinear patch, a PLY quad). A degenerate
+// quad counts as planar (its triangles are dropped or flat).
+bool is_planar_quad(glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d);
+
 }  // namespace rc
