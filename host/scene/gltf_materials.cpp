@@ -87,7 +87,16 @@ GltfMaterial GltfMaterials::make(int index, const std::string& where) {
     const float roughness = unit_number(pbr.roughnessFactor, what + ": roughnessFactor");
     Material material;
     material.name = "gltf" + std::to_string(index) + (gltf.name.empty() ? "" : "_" + gltf.name);
-    if (metallic > 0.0f || roughness < kGltfGlossyRoughness) {
+    if (metallic == 1.0f && pbr.baseColorTexture.index < 0 &&
+        pbr.metallicRoughnessTexture.index < 0) {
+        // A plain metal: the Trowbridge-Reitz conductor of reflectance base, alpha roughness^2
+        // (glTF 2.0, Appendix B: the metal BRDF is F0 = baseColor with alpha = roughness^2).
+        material.kind = MaterialKind::kConductor;
+        material.diffuse = glm::vec3(0.0f);
+        material.specular = glm::vec3(1.0f);
+        set_conductor_reflectance(material, base);
+        material.alpha_x = material.alpha_y = roughness * roughness;
+    } else if (metallic > 0.0f || roughness < kGltfGlossyRoughness) {
         // Fresnel at normal incidence: 0.04 for the dielectric, the base colour for the metal.
         material.kind = MaterialKind::kPhong;
         material.specular = metallic * base + (1.0f - metallic) * glm::vec3(0.04f);

@@ -1,5 +1,7 @@
 // Surface materials (docs/scene-format.md): diffuse (Lambert), phong (energy-conserving modified
-// Phong) and ward (anisotropic Ward with bounded albedo), and their device form.
+// Phong), ward (anisotropic Ward with bounded albedo), conductor (smooth or Trowbridge-Reitz
+// rough, complex index per channel), dielectric (smooth or rough glass, water) and
+// thindielectric (a window pane), and their device form.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -9,18 +11,32 @@
 
 namespace rc {
 
-enum class MaterialKind { kDiffuse, kPhong, kWard };
+enum class MaterialKind { kDiffuse, kPhong, kWard, kConductor, kDielectric, kThinDielectric };
 
 struct Material {
     std::string name;
     MaterialKind kind = MaterialKind::kDiffuse;
     glm::vec3 diffuse{0.5f};   // diffuse reflectance; scales the texture when there is one
     int diffuse_texture = -1;  // index into Scene::textures, or -1
-    glm::vec3 specular{0.0f};
-    float exponent = 0.0f;  // phong
-    float alpha_x = 0.1f;   // ward
+    glm::vec3 specular{0.0f};  // conductor, dielectrics: a tint (1: none)
+    float exponent = 0.0f;     // phong
+    float alpha_x = 0.1f;      // ward; conductor, dielectric: Trowbridge-Reitz alpha (0: smooth)
     float alpha_y = 0.1f;
+    glm::vec3 eta{1.0f};  // conductor: the index's real part per channel
+    glm::vec3 k{0.0f};    // conductor: its imaginary part
+    float ior = 1.5f;     // dielectrics: the index inside over outside
 };
+
+// Whether the material transmits light (the dielectrics).
+bool transmits(const Material& material);
+
+// Whether its only lobes are the Lambertian and a Phong or Ward lobe (what every caching method
+// serves); the conductor and the dielectrics are path traced.
+bool is_reflectance_model(const Material& material);
+
+// The conductor that pbrt-v4 makes of a normal-incidence reflectance r per channel: eta = 1,
+// k = 2 sqrt(r) / sqrt(1 - r) (pbrt-v4's ConductorMaterial), r clamped below 1.
+void set_conductor_reflectance(Material& material, glm::vec3 r);
 
 // The device form; the diffuse lobe is sampled with probability lum(diffuse) / lum(diffuse +
 // specular).

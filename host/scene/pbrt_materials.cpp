@@ -1,6 +1,8 @@
 #include "scene/pbrt_materials.h"
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "scene/pbrt_params.h"
 #include "scene/texture.h"
@@ -15,42 +17,51 @@ std::string in_quotes(const std::string& text) { return "\"" + excerpt(text) + "
 
 // Why a pbrt material type has no radcache counterpart (empty: it has one).
 std::string refusal(const std::string& type) {
-    if (type == "diffuse" || type == "coateddiffuse" || type == "conductor") {
+    if (type == "diffuse" || type == "coateddiffuse" || type == "conductor" ||
+        type == "dielectric" || type == "thindielectric") {
         return "";
     }
-    if (type == "dielectric" || type == "thindielectric" || type == "diffusetransmission") {
-        return "transmits light, and radcache's materials only reflect";
+    if (type == "diffusetransmission") {
+        return "transmits light diffusely, which radcache's materials do not";
     }
     if (type == "interface") {
         return "bounds a participating medium, and radcache has none";
     }
-    return "is not supported (diffuse, coateddiffuse and conductor are)";
+    return "is not supported (diffuse, coateddiffuse, conductor, dielectric and thindielectric "
+           "are)";
 }
 
-// pbrt's roughness to a microfacet alpha: TrowbridgeReitzDistribution::RoughnessToAlpha
-// (alpha = sqrt(roughness)) unless "remaproughness" is false.
-float alpha_of(PbrtParams& params, const std::string& prefix) {
-    const float roughness = params.get_float(prefix + "roughness", 0.0f);
-    float u = params.get_float(prefix + "uroughness", roughness);
-    float v = params.get_float(prefix + "vroughness", roughness);
-    if (!(u >= 0.0f && v >= 0.0f)) {
-        params.fail("roughness must not be negative");
+// pbrt's roughness to Trowbridge-Reitz alphas along u and v: "roughness", or "uroughness" and
+// "vroughness"; TrowbridgeReitzDistribution::RoughnessToAlpha (alpha = sqrt(roughness)) unless
+// "remaproughness" is false.
+std::pair<float, float> alphas_of(PbrtParams& params) {
+    for (const char* name : {"roughness", "uroughness", "vroughness"}) {
+        if (params.type_of(name) == "texture") {
+            params.refuse(std::string("a textured \"") + name + "\" is not supported");
+        }
     }
-    if (u != v) {
-        log_warning(params.what() + ": anisotropic roughness (uroughness " + std::to_string(u) +
-                    ", vroughness " + std::to_string(v) +
-                    ") is rendered isotropic with their geometric mean");
+    const float roughness = params.get_float("roughness", 0.0f);
+    float u = params.get_float("uroughness", roughness);
+    float v = params.get_float("vroughness", roughness);
+    if (!(u >= 0.0f && v >= 0.0f && u <= 1e3f && v <= 1e3f)) {
+        params.fail("roughness must lie in [0, 1000]");
     }
     if (params.get_bool("remaproughness", true)) {
         u = std::sqrt(u);
         v = std::sqrt(v);
     }
-    return std::sqrt(u * v);
+    return {std::min(u, 1.0f), std::min(v, 1.0f)};
 }
 
-// A Fresnel reflectance at normal incidence, ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2), per channel.
-glm::vec3 normal_incidence_reflectance(glm::vec3 eta, glm::vec3 k) {
-    return ((eta - 1.0f) * (eta - 1.0f) + k * k) / ((eta + 1.0f) * (eta + 1.0f) + k * k);
+// The isotropic alpha of the same roughness (their geometric mean), for the Phong lobe of a
+// coated diffuse material.
+float alpha_of(PbrtParams& params) {
+    const auto [u, v] = alphas_of(params);
+    if (u != v) {
+        log_warning(params.what() + ": anisotropic roughness (alphas " + std::to_string(u) + ", " +
+                    std::to_string(v) + ") is rendered isotropic with their geometric mean");
+    }
+    return std::sqrt(u * v);
 }
 
 void check_unit(glm::vec3 colour, const PbrtParams& params, const std::string& name) {
@@ -203,6 +214,65 @@ glm::vec3 PbrtMaterials::reflectance(PbrtParams& params, const std::string& name
     return colour;
 }
 
+// pbrt-v4's DielectricMaterial and ThinDielectricMaterial: "eta" (a float, default 1.5), the
+// dielectric's roughness.
+void PbrtMaterials::make_dielectric(PbrtParams& params, bool thin, Material* material) {
+    material->kind = thin ? MaterialKind::kThinDielectric : MaterialKind::kDielectric;
+    material->diffuse = glm::vec3(0.0f);
+    material->specular = glm::vec3(1.0f);
+    const std::string eta_type = params.type_of("eta");
+    if (eta_type == "spectrum") {
+        params.ignore("eta");
+        params.refuse(
+            "parameter \"spectrum eta\": an index of refraction given as a spectrum is not "
+            "supported (give \"float eta\")");
+    }
+    material->ior = params.get_float("eta", 1.5f);
+    if (!(material->ior > 0.0f && material->ior <= 10.0f)) {
+        params.fail("eta must lie in (0, 10], got " + std::to_string(material->ior));
+    }
+    if (material->ior < 1.0f) {
+        material->ior = 1.0f / material->ior;  // pbrt-v4 inverts an index below 1 the same way
+    }
+    if (!thin) {
+        std::tie(material->alpha_x, material->alpha_y) = alphas_of(params);
+    }
+}
+
+// pbrt-v4's ConductorMaterial: "eta" and "k" (rgb) or a "reflectance", its roughness.
+void PbrtMaterials::make_conductor(PbrtParams& params, Material* material) {
+    material->kind = MaterialKind::kConductor;
+    material->diffuse = glm::vec3(0.0f);
+    material->specular = glm::vec3(1.0f);
+    std::tie(material->alpha_x, material->alpha_y) = alphas_of(params);
+    if (params.has("reflectance")) {
+        int texture = -1;
+        const glm::vec3 r = reflectance(params, "reflectance", glm::vec3(1.0f), &texture);
+        if (texture >= 0) {
+            params.refuse("a textured conductor reflectance is not supported");
+        }
+        set_conductor_reflectance(*material, r);
+        params.ignore("eta");
+        params.ignore("k");
+        return;
+    }
+    const auto eta = params.get_rgb("eta");
+    const auto k = params.get_rgb("k");
+    if (!eta || !k) {
+        params.refuse(
+            "give \"rgb eta\" and \"rgb k\", or \"rgb reflectance\" (pbrt's "
+            "default copper spectra are not supported)");
+    }
+    if (!(glm::all(glm::greaterThan(*eta, glm::vec3(0.0f))) &&
+          glm::all(glm::greaterThanEqual(*k, glm::vec3(0.0f))) &&
+          glm::all(glm::lessThanEqual(*eta, glm::vec3(100.0f))) &&
+          glm::all(glm::lessThanEqual(*k, glm::vec3(100.0f))))) {
+        params.fail("eta must lie in (0, 100] and k in [0, 100]");
+    }
+    material->eta = *eta;
+    material->k = *k;
+}
+
 Material PbrtMaterials::make(Spec& spec) {
     const std::string why = refusal(spec.type);
     if (!why.empty()) {
@@ -228,37 +298,17 @@ Material PbrtMaterials::make(Spec& spec) {
         material.kind = MaterialKind::kPhong;
         material.diffuse = (1.0f - f0) * base;
         material.specular = glm::vec3(f0);
-        material.exponent = phong_exponent_of_alpha(alpha_of(params, ""));
+        material.exponent = phong_exponent_of_alpha(alpha_of(params));
         if (params.get_rgb("albedo").value_or(glm::vec3(0.0f)) != glm::vec3(0.0f)) {
             log_warning(spec.what + ": the scattering medium in the coat (albedo) is ignored");
         }
         for (const char* ignored : {"thickness", "g", "maxdepth", "nsamples"}) {
             params.ignore(ignored);  // the layered simulation's own settings
         }
+    } else if (spec.type == "dielectric" || spec.type == "thindielectric") {
+        make_dielectric(params, spec.type == "thindielectric", &material);
     } else {
-        material.kind = MaterialKind::kPhong;
-        material.diffuse = glm::vec3(0.0f);
-        int texture = -1;
-        if (params.has("reflectance")) {
-            material.specular = reflectance(params, "reflectance", glm::vec3(1.0f), &texture);
-            if (texture >= 0) {
-                params.refuse("a textured conductor reflectance is not supported");
-            }
-        } else {
-            const auto eta = params.get_rgb("eta");
-            const auto k = params.get_rgb("k");
-            if (!eta || !k) {
-                params.refuse(
-                    "give \"rgb eta\" and \"rgb k\", or \"rgb reflectance\" (pbrt's "
-                    "default copper spectra are not supported)");
-            }
-            if (glm::any(glm::lessThan(*eta, glm::vec3(0.0f))) ||
-                glm::any(glm::lessThan(*k, glm::vec3(0.0f)))) {
-                params.fail("eta and k must not be negative");
-            }
-            material.specular = normal_incidence_reflectance(*eta, *k);
-        }
-        material.exponent = phong_exponent_of_alpha(alpha_of(params, ""));
+        make_conductor(params, &material);
     }
     params.warn_unused();
     return material;

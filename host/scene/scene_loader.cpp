@@ -186,10 +186,73 @@ class SceneParser {
         return parse_colour(reader, key, fallback, 0.0f, 1.0f);
     }
 
+    // A microfacet roughness: "alpha", or "alpha_x" and "alpha_y" (anisotropic), in [0, 1];
+    // 0 (the default) is smooth.
+    static void parse_alpha(const JsonReader& reader, Material* material) {
+        const float alpha = reader.number("alpha", 0.0f);
+        material->alpha_x = reader.number("alpha_x", alpha);
+        material->alpha_y = reader.number("alpha_y", alpha);
+        for (const char* key : {"alpha", "alpha_x", "alpha_y"}) {
+            const float value = reader.number(key, 0.0f);
+            if (!(value >= 0.0f && value <= 1.0f)) {
+                reader.fail(key, "must lie in [0, 1], got " + std::to_string(value));
+            }
+        }
+    }
+
+    // The conductor: "eta" and "k" per channel, or a normal-incidence "reflectance".
+    void parse_conductor(const JsonReader& reader, Material* material) {
+        reader.allow_only({"type", "eta", "k", "reflectance", "alpha", "alpha_x", "alpha_y"});
+        material->kind = MaterialKind::kConductor;
+        material->specular = glm::vec3(1.0f);
+        parse_alpha(reader, material);
+        if (reader.has("reflectance")) {
+            if (reader.has("eta") || reader.has("k")) {
+                reader.fail("reflectance", "give either eta and k or reflectance, not both");
+            }
+            set_conductor_reflectance(
+                *material, parse_colour(reader, "reflectance", glm::vec3(1.0f), 0.0f, 1.0f));
+            return;
+        }
+        if (!reader.has("eta") || !reader.has("k")) {
+            reader.fail("a conductor needs \"eta\" and \"k\" (or \"reflectance\")");
+        }
+        material->eta = parse_colour(reader, "eta", glm::vec3(1.0f), 1e-4f, 100.0f);
+        material->k = parse_colour(reader, "k", glm::vec3(0.0f), 0.0f, 100.0f);
+    }
+
+    // A dielectric: its index "ior" (inside over outside, in (1, 10]; 1 passes light
+    // unchanged) and, for "dielectric", a roughness.
+    void parse_dielectric(const JsonReader& reader, const std::string& type, Material* material) {
+        const bool thin = type == "thindielectric";
+        if (thin) {
+            reader.allow_only({"type", "ior"});
+        } else {
+            reader.allow_only({"type", "ior", "alpha", "alpha_x", "alpha_y"});
+            parse_alpha(reader, material);
+        }
+        material->kind = thin ? MaterialKind::kThinDielectric : MaterialKind::kDielectric;
+        material->diffuse = glm::vec3(0.0f);
+        material->specular = glm::vec3(1.0f);
+        material->ior = reader.number("ior", 1.5f);
+        if (!(material->ior >= 1.0f && material->ior <= 10.0f)) {
+            reader.fail("ior", "must lie in [1, 10], got " + std::to_string(material->ior));
+        }
+    }
+
     Material parse_material(const JsonReader& reader, const std::string& name) {
         Material material;
         material.name = name;
         const std::string type = reader.string("type");
+        if (type == "conductor") {
+            material.diffuse = glm::vec3(0.0f);
+            parse_conductor(reader, &material);
+            return material;
+        }
+        if (type == "dielectric" || type == "thindielectric") {
+            parse_dielectric(reader, type, &material);
+            return material;
+        }
         if (type == "diffuse") {
             reader.allow_only({"type", "reflectance"});
             material.kind = MaterialKind::kDiffuse;
@@ -218,7 +281,8 @@ class SceneParser {
             }
         } else {
             reader.fail("type",
-                        "unknown material type '" + excerpt(type) + "' (diffuse, phong, ward)");
+                        "unknown material type '" + excerpt(type) +
+                            "' (diffuse, phong, ward, conductor, dielectric, thindielectric)");
         }
         material.diffuse =
             parse_reflectance(reader, "diffuse", glm::vec3(0.5f), &material.diffuse_texture);

@@ -172,6 +172,26 @@ class SceneWriter {
         if (material.kind == MaterialKind::kDiffuse) {
             return {{"type", "diffuse"}, {"reflectance", reflectance_json(material)}};
         }
+        if (material.specular != glm::vec3(1.0f) && !is_reflectance_model(material)) {
+            throw Error("convert: material '" + material.name +
+                        "' is a tinted conductor or dielectric, which the format cannot hold");
+        }
+        if (material.kind == MaterialKind::kConductor) {
+            return {{"type", "conductor"},
+                    {"eta", vec3_json(material.eta)},
+                    {"k", vec3_json(material.k)},
+                    {"alpha_x", material.alpha_x},
+                    {"alpha_y", material.alpha_y}};
+        }
+        if (material.kind == MaterialKind::kDielectric) {
+            return {{"type", "dielectric"},
+                    {"ior", material.ior},
+                    {"alpha_x", material.alpha_x},
+                    {"alpha_y", material.alpha_y}};
+        }
+        if (material.kind == MaterialKind::kThinDielectric) {
+            return {{"type", "thindielectric"}, {"ior", material.ior}};
+        }
         json["diffuse"] = reflectance_json(material);
         json["specular"] = vec3_json(material.specular);
         if (material.kind == MaterialKind::kPhong) {

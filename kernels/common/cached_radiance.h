@@ -104,17 +104,16 @@ RC_FUNC void rc_trace_lobes(const SceneData* scene, const SurfacePoint* sp,
         (traced->kind == RC_MATERIAL_DIFFUSE || rc_is_black(traced->specular))) {
         return;
     }
-    float3 wi;
-    float pdf;
-    float3 f;
+    BsdfSample b;
     float3 direction;
-    if (rc_sample_bounce(sp, traced, wo, rng, &wi, &pdf, &f, &direction)) {
+    float3 origin;
+    if (rc_sample_bounce(sp, traced, wo, rng, &b, &direction, &origin)) {
         Ray next;
-        next.origin = (float4)(sp->origin, 0.0f);
+        next.origin = (float4)(origin, 0.0f);
         next.direction = (float4)(direction, INFINITY);
         const PathSample p =
             rc_path_radiance(scene, next, rng, bounces + 1, max_depth, rr_depth, false);
         c->rays += p.rays;
-        c->indirect += f * (wi.z / pdf) * p.radiance;
+        c->indirect += rc_bounce_weight(&b) * p.radiance;
     }
 }

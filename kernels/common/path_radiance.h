@@ -61,23 +61,28 @@ RC_FUNC float3 rc_light_sample(const SceneData* scene, const SurfacePoint* sp,
     const int l = rc_sample_cdf(scene->light_cdf, scene->light_count, u_light);
     const LightSample ls = rc_sample_light(scene, l, rc_cdf_probability(scene->light_cdf, l),
                                            sp->position, u1, u2, u3);
-    if (ls.pdf <= 0.0f || rc_is_black(ls.radiance) ||
-        dot(ls.direction, sp->geometric_normal) <= 0.0f) {
+    const float side = dot(ls.direction, sp->geometric_normal);
+    const bool through = rc_material_transmits(material);
+    if (ls.pdf <= 0.0f || rc_is_black(ls.radiance) || side == 0.0f || (side < 0.0f && !through)) {
         return (float3)(0.0f);
     }
     const float3 wi = rc_to_local(&sp->shading, ls.direction);
+    if (through && (wi.z > 0.0f) != (side > 0.0f)) {
+        return (float3)(0.0f);  // the shading normal disagrees with the geometry's side
+    }
     const float3 f = rc_material_eval(material, wo, wi);
     if (rc_is_black(f)) {
         return (float3)(0.0f);
     }
     *rays += 1;
-    if (rc_occluded(scene, sp->origin, ls.target, ls.infinite, ls.direction)) {
+    const float3 origin = side > 0.0f ? sp->origin : sp->through_origin;
+    if (rc_occluded(scene, origin, ls.target, ls.infinite, ls.direction)) {
         return (float3)(0.0f);
     }
     const float weight = ls.delta ? 1.0f
                                   : rc_power_heuristic((float)light_samples * ls.pdf,
                                                        rc_material_pdf(material, wo, wi));
-    return f * (wi.z * weight / ls.pdf) * ls.radiance;
+    return f * (fabs(wi.z) * weight / ls.pdf) * ls.radiance;
 }
 
 // Next-event estimation at a surface point with `light_samples` independent light samples
@@ -88,26 +93,44 @@ RC_FUNC float3 rc_next_event(const SceneData* scene, const SurfacePoint* sp,
                              const SurfaceMaterial* material, float3 wo, int light_samples,
                              RngStream* rng, uint* rays) {
     float3 sum = (float3)(0.0f);
+    if (rc_material_is_delta(material)) {
+        return sum;  // no light sample can reach a delta lobe
+    }
     for (int j = 0; j < light_samples; ++j) {
         sum += rc_light_sample(scene, sp, material, wo, light_samples, rng, rays);
     }
     return sum / (float)light_samples;
 }
 
-// A bounce sampled from `material` at sp with three numbers of rng: the direction in the
-// shading frame (*wi), its density and BRDF value, and the world direction. False when sampling
-// fails or the direction lies below the geometric surface (shading normals must not leak light).
+// A bounce sampled from `material` at sp with three numbers of rng (*s, in the shading frame),
+// its world direction and the origin of the ray leaving along it (on the side it leaves to).
+// False when sampling fails or the direction lies on the other side of the geometric surface than
+// of the shading one (shading normals must not leak light).
 RC_FUNC bool rc_sample_bounce(const SurfacePoint* sp, const SurfaceMaterial* material, float3 wo,
-                              RngStream* rng, float3* wi, float* pdf, float3* f,
-                              float3* direction) {
+                              RngStream* rng, BsdfSample* s, float3* direction, float3* origin) {
     const float u_lobe = rc_rng_next_float(rng);
     const float u1 = rc_rng_next_float(rng);
     const float u2 = rc_rng_next_float(rng);
-    if (!rc_material_sample(material, wo, u_lobe, u1, u2, wi, pdf, f)) {
+    if (!rc_material_sample(material, wo, u_lobe, u1, u2, s)) {
         return false;
     }
-    *direction = rc_from_local(&sp->shading, *wi);
-    return dot(*direction, sp->geometric_normal) > 0.0f;
+    *direction = rc_from_local(&sp->shading, s->wi);
+    const float side = dot(*direction, sp->geometric_normal);
+    if (s->wi.z > 0.0f) {
+        *origin = sp->origin;
+        return side > 0.0f;
+    }
+    *origin = sp->through_origin;
+    return side < 0.0f;
+}
+
+// The throughput factor f |cos| / pdf of a sampled bounce.
+RC_FUNC float3 rc_bounce_weight(const BsdfSample* s) { return s->f * (fabs(s->wi.z) / s->pdf); }
+
+// The MIS weight of emission a bounce reached, against light sampling's density light_pdf (delta
+// lobes: 1, light sampling cannot reach their directions).
+RC_FUNC float rc_bounce_mis(const BsdfSample* s, float light_pdf) {
+    return s->delta ? 1.0f : rc_power_heuristic(s->pdf, light_pdf);
 }
 
 // Emission reached by sampling the BRDF once at a surface point, weighted by the power heuristic
@@ -117,35 +140,34 @@ RC_FUNC bool rc_sample_bounce(const SurfacePoint* sp, const SurfaceMaterial* mat
 RC_FUNC float3 rc_bsdf_sampled_emission(const SceneData* scene, const SurfacePoint* sp,
                                         const SurfaceMaterial* material, float3 wo,
                                         int light_samples, RngStream* rng, uint* rays) {
-    float3 wi;
-    float pdf;
-    float3 f;
+    BsdfSample b;
     float3 direction;
-    if (!rc_sample_bounce(sp, material, wo, rng, &wi, &pdf, &f, &direction)) {
+    float3 origin;
+    if (!rc_sample_bounce(sp, material, wo, rng, &b, &direction, &origin)) {
         return (float3)(0.0f);
     }
     Ray ray;
-    ray.origin = (float4)(sp->origin, 0.0f);
+    ray.origin = (float4)(origin, 0.0f);
     ray.direction = (float4)(direction, INFINITY);
     const Hit hit = rc_trace_closest(scene->nodes, scene->triangles, ray);
     *rays += 1;
-    const float3 throughput = f * (wi.z / pdf);
+    const float3 throughput = rc_bounce_weight(&b);
     const float count = (float)light_samples;
     if (hit.primitive == RC_NO_HIT) {
         if (scene->environment < 0) {
             return (float3)(0.0f);
         }
         return throughput * rc_environment_light(scene, direction) *
-               rc_power_heuristic(pdf, count * rc_environment_pdf(scene, direction));
+               rc_bounce_mis(&b, count * rc_environment_pdf(scene, direction));
     }
     const SurfacePoint light_point = rc_surface_point(scene, ray, hit);
     if (light_point.light < 0 || !light_point.front) {
         return (float3)(0.0f);
     }
     return throughput * scene->lights[light_point.light].radiance.xyz *
-           rc_power_heuristic(
-               pdf, count * rc_area_light_pdf(scene, light_point.light, hit.primitive, sp->position,
-                                              light_point.position, light_point.geometric_normal));
+           rc_bounce_mis(
+               &b, count * rc_area_light_pdf(scene, light_point.light, hit.primitive, sp->position,
+                                             light_point.position, light_point.geometric_normal));
 }
 
 // Radiance arriving along `ray` (unit direction), by path tracing. With first_emission false the
@@ -160,7 +182,9 @@ RC_FUNC PathSample rc_path_radiance(const SceneData* scene, Ray ray, RngStream* 
     s.distance = INFINITY;
     s.rays = 0;
     float3 throughput = (float3)(1.0f);
-    float previous_pdf = 0.0f;  // BRDF pdf of the last bounce (for MIS on emitters hit)
+    BsdfSample previous;  // the last bounce (for MIS on emitters hit)
+    previous.delta = true;
+    previous.pdf = 0.0f;
     float3 previous_position = ray.origin.xyz;
     for (int depth = bounces;; ++depth) {
         const bool first = depth == bounces;
@@ -170,7 +194,7 @@ RC_FUNC PathSample rc_path_radiance(const SceneData* scene, Ray ray, RngStream* 
             if (scene->environment >= 0 && (!first || first_emission)) {
                 const float3 w = ray.direction.xyz;
                 const float weight =
-                    first ? 1.0f : rc_power_heuristic(previous_pdf, rc_environment_pdf(scene, w));
+                    first ? 1.0f : rc_bounce_mis(&previous, rc_environment_pdf(scene, w));
                 rc_add_contribution(&s, depth,
                                     throughput * rc_environment_light(scene, w) * weight);
             }
@@ -187,10 +211,9 @@ RC_FUNC PathSample rc_path_radiance(const SceneData* scene, Ray ray, RngStream* 
         if (sp.light >= 0 && sp.front && (!first || first_emission)) {
             const float weight =
                 first ? 1.0f
-                      : rc_power_heuristic(
-                            previous_pdf,
-                            rc_area_light_pdf(scene, sp.light, hit.primitive, previous_position,
-                                              sp.position, sp.geometric_normal));
+                      : rc_bounce_mis(&previous, rc_area_light_pdf(scene, sp.light, hit.primitive,
+                                                                   previous_position, sp.position,
+                                                                   sp.geometric_normal));
             rc_add_contribution(&s, depth,
                                 throughput * scene->lights[sp.light].radiance.xyz * weight);
         }
@@ -201,16 +224,13 @@ RC_FUNC PathSample rc_path_radiance(const SceneData* scene, Ray ray, RngStream* 
         rc_add_contribution(&s, depth + 1,
                             throughput * rc_next_event(scene, &sp, &material, wo, 1, rng, &s.rays));
 
-        // Continue the path by sampling the BRDF.
-        float3 wi;
-        float pdf;
-        float3 f;
+        // Continue the path by sampling the BSDF.
         float3 direction;
-        if (!rc_sample_bounce(&sp, &material, wo, rng, &wi, &pdf, &f, &direction)) {
+        float3 origin;
+        if (!rc_sample_bounce(&sp, &material, wo, rng, &previous, &direction, &origin)) {
             break;
         }
-        throughput *= f * (wi.z / pdf);
-        previous_pdf = pdf;
+        throughput *= rc_bounce_weight(&previous);
         previous_position = sp.position;
         if (depth + 1 >= rr_depth) {
             const float survive = fmin(rc_max_component(throughput), 0.95f);
@@ -219,7 +239,7 @@ RC_FUNC PathSample rc_path_radiance(const SceneData* scene, Ray ray, RngStream* 
             }
             throughput /= survive;
         }
-        ray.origin = (float4)(sp.origin, 0.0f);
+        ray.origin = (float4)(origin, 0.0f);
         ray.direction = (float4)(direction, INFINITY);
     }
     s.radiance = s.direct + s.indirect;

@@ -32,6 +32,7 @@ typedef struct SceneData {
 typedef struct SurfacePoint {
     float3 position;
     float3 origin;            // where rays leaving the surface (on the normal's side) start
+    float3 through_origin;    // where rays passing through it (to the other side) start
     float3 geometric_normal;  // unit, facing the incoming ray
     Frame shading;            // shading frame; n faces the incoming ray's side
     float2 uv;
@@ -64,6 +65,7 @@ RC_FUNC SurfacePoint rc_surface_point(const SceneData* scene, Ray ray, Hit hit) 
     }
     sp.geometric_normal = ng;
     sp.origin = rc_offset_surface_origin(sp.position, ng, triangle);
+    sp.through_origin = rc_offset_surface_origin(sp.position, -ng, triangle);
     sp.uv = (float2)(0.0f, 0.0f);
     float3 tangent = (float3)(0.0f);
     if (shading.uv0 >= 0) {
@@ -95,12 +97,17 @@ RC_FUNC SurfacePoint rc_surface_point(const SceneData* scene, Ray ray, Hit hit) 
     return sp;
 }
 
-// The material at a surface point, its diffuse texture applied.
+// The material at a surface point, its diffuse texture applied; a dielectric's index seen from
+// the side the ray arrived on (the material's index inside, where the winding's normal points
+// away from, over 1 outside).
 RC_FUNC SurfaceMaterial rc_surface_material(const SceneData* scene, const SurfacePoint* sp) {
     const Material material = scene->materials[sp->material];
     SurfaceMaterial m = rc_surface_material_of(&material);
     if (material.texture >= 0) {
         m.diffuse *= rc_texture_lookup(scene->texels, scene->textures[material.texture], sp->uv);
+    }
+    if (material.model == RC_MATERIAL_DIELECTRIC && !sp->front) {
+        m.eta.x = 1.0f / m.eta.x;
     }
     return m;
 }

@@ -142,15 +142,15 @@ RC_FUNC uint rc_ivg_trace_photon(const SceneData* scene, const IvgParams* p, uin
         const SurfacePoint sp = rc_surface_point(scene, ray, hit);
         const SurfaceMaterial material = rc_surface_material(scene, &sp);
         const float3 wo = rc_to_local(&sp.shading, -ray.direction.xyz);
-        float3 wi;
-        float pdf;
-        float3 f;
+        BsdfSample b;
         float3 direction;
-        if (!rc_sample_bounce(&sp, &material, wo, &rng, &wi, &pdf, &f, &direction)) {
+        float3 origin;
+        if (!rc_sample_bounce(&sp, &material, wo, &rng, &b, &direction, &origin)) {
             break;
         }
         const float u_survive = rc_rng_next_float(&rng);
-        float3 factor = f * (wi.z / pdf);
+        // Photons carry flux, not radiance: undo the 1 / eta'^2 of a refraction.
+        float3 factor = rc_bounce_weight(&b) * (b.eta * b.eta);
         if (bounces + 1 >= rr_depth) {
             const float survive = fmin(1.0f, rc_max_component(factor));
             if (!(u_survive < survive)) {
@@ -159,7 +159,7 @@ RC_FUNC uint rc_ivg_trace_photon(const SceneData* scene, const IvgParams* p, uin
             factor /= survive;
         }
         photon.power *= factor;
-        photon.ray.origin = (float4)(sp.origin, 0.0f);
+        photon.ray.origin = (float4)(origin, 0.0f);
         photon.ray.direction = (float4)(direction, INFINITY);
     }
     return crossings;

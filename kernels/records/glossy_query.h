@@ -36,8 +36,7 @@ RC_FUNC RcQuery rc_glossy_camera_query(const SceneData* scene, const IcParams* p
     q.footprint = rc_ic_pixel_footprint(camera, x, y, hit.t);
     q.material = sp.material;
     q.primitive = (int)hit.primitive;
-    *glossy = material.kind != RC_MATERIAL_DIFFUSE && !rc_is_black(material.specular) &&
-              params->max_depth >= 2;
+    *glossy = rc_material_has_glossy_lobe(&material) && params->max_depth >= 2;
     return q;
 }
 

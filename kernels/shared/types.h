@@ -123,14 +123,19 @@ typedef struct CameraParams {
 #define RC_MATERIAL_DIFFUSE 0
 #define RC_MATERIAL_PHONG 1
 #define RC_MATERIAL_WARD 2
+#define RC_MATERIAL_CONDUCTOR 3
+#define RC_MATERIAL_DIELECTRIC 4
+#define RC_MATERIAL_THIN_DIELECTRIC 5
 
-// A surface material (docs/scene-format.md). Two-sided and reflective only.
+// A surface material (docs/scene-format.md). Two-sided; the dielectrics transmit.
 typedef struct Material {
     float4 diffuse;             // rgb: diffuse reflectance (the Lambertian lobe); w: padding
-    float4 specular;            // rgb: specular reflectance; w: padding
+    float4 specular;            // rgb: specular reflectance (conductor, dielectrics: a tint)
+    float4 eta;                 // conductor: rgb, eta per channel; dielectrics: x, the index
+    float4 k;                   // conductor: rgb, k per channel
     float exponent;             // Phong exponent
-    float alpha_x;              // Ward roughness along the tangent
-    float alpha_y;              // Ward roughness along the bitangent
+    float alpha_x;              // Ward or Trowbridge-Reitz roughness along the tangent
+    float alpha_y;              // Ward or Trowbridge-Reitz roughness along the bitangent
     float diffuse_probability;  // probability of sampling the diffuse lobe
     int model;                  // RC_MATERIAL_*
     int texture;                // texture scaling the diffuse reflectance, or -1
@@ -364,6 +369,8 @@ RC_SHARED_END
     STRUCT(Material)                       \
     FIELD(Material, diffuse)               \
     FIELD(Material, specular)              \
+    FIELD(Material, eta)                   \
+    FIELD(Material, k)                     \
     FIELD(Material, exponent)              \
     FIELD(Material, alpha_x)               \
     FIELD(Material, alpha_y)               \
@@ -483,8 +490,8 @@ static_assert(offsetof(rc::shared::WideBvhNode, meta) == 24);
 static_assert(sizeof(rc::shared::TrianglePacket) == 160);
 static_assert(sizeof(rc::shared::Triangle) == 48);
 static_assert(sizeof(rc::shared::CameraParams) == 96);
-static_assert(sizeof(rc::shared::Material) == 64);
-static_assert(offsetof(rc::shared::Material, exponent) == 32);
+static_assert(sizeof(rc::shared::Material) == 96);
+static_assert(offsetof(rc::shared::Material, exponent) == 64);
 static_assert(sizeof(rc::shared::TextureInfo) == 16);
 static_assert(sizeof(rc::shared::TriangleShading) == 32);
 static_assert(sizeof(rc::shared::Light) == 144);

@@ -6,6 +6,8 @@
 //   Le (1 + rho + ... + rho^D) whatever the geometry, so every pixel shows that radiance;
 // - a diffuse plane of reflectance rho under a constant sky of radiance L, nothing else: its
 //   irradiance is pi L, so it reflects rho L towards the camera, channel by channel;
+// - a smooth glass sphere, a thin pane and a near-perfect mirror under the sky alone: lossless
+//   interfaces in a furnace, so every pixel shows the sky's radiance L;
 // - the plane under a distant light instead (rho / pi E cos theta), and an L of two planes under
 //   it, against the path tracer at many samples (the interreflection).
 // Every image has exactly the layers its method declares (MethodEntry::aovs). A method whose
@@ -423,6 +425,42 @@ TEST_P(EveryMethod, PlaneUnderEnvironmentMapReflectsItsIrradiance) {
         render(entry, environment_map_scene(scratch), scratch + "_out");
     ASSERT_EQ(images.size(), 1u);
     expect_radiance(entry, images[0], environment_map_plane_radiance());
+}
+
+// The specular furnace: a smooth glass sphere (index 1.5), a thin glass pane and a conductor of
+// reflectance 0.9999 under the sky of radiance kSky, nothing else. Every interface is lossless
+// (Fresnel reflection and refraction sum to 1; the mirror loses 1e-4), so every pixel shows the
+// sky: light lost at an interface, refraction's radiance scaling applied once only, or a delta
+// lobe weighted by MIS shows as a darker or brighter mean.
+std::filesystem::path specular_furnace_scene(const std::string& scratch) {
+    const auto dir = test::scratch_dir(scratch);
+    std::ofstream(dir / "scene.json") << R"({
+        "camera": {"position": [0, 0, 6], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 30,
+                   "resolution": [16, 16]},
+        "materials": {"glass": {"type": "dielectric", "ior": 1.5},
+                      "pane": {"type": "thindielectric", "ior": 1.5},
+                      "mirror": {"type": "conductor", "reflectance": 0.9999}},
+        "shapes": [{"type": "sphere", "material": "glass", "radius": 1},
+                   {"type": "rectangle", "material": "pane",
+                    "transform": [{"scale": 0.8}, {"translate": [1.0, 0.8, 2]}]},
+                   {"type": "rectangle", "material": "mirror",
+                    "transform": [{"scale": 1.2}, {"rotate": {"axis": [0, 1, 0], "angle": 35}},
+                                  {"translate": [-1.2, -1.0, -1.5]}]}],
+        "emitters": [{"type": "constant", "radiance": )"
+                                      << rgb_json(kSky) << "}]}";
+    return dir / "scene.json";
+}
+
+TEST_P(EveryMethod, SpecularFurnaceShowsTheSky) {
+    const MethodEntry& entry = method();
+    if (entry.beauty != Beauty::kRadiance) {
+        GTEST_SKIP() << entry.name << " shows no radiance";
+    }
+    const std::string scratch = "every_method_specular_" + test_name(entry.name);
+    const std::vector<Image> images =
+        render(entry, specular_furnace_scene(scratch), scratch + "_out");
+    ASSERT_EQ(images.size(), 1u);
+    expect_radiance(entry, images[0], {kSky[0], kSky[1], kSky[2]});
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryMethod, testing::ValuesIn(registered_methods()),

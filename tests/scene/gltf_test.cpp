@@ -80,10 +80,14 @@ TEST(Gltf, HierarchyTransformsCamerasMaterialsAndLights) {
     const Shape& plate = shape_named(scene, "plate");
     expect_near(glm::vec3(plate.transform * glm::vec4(1, 1, 0, 1)), glm::vec3(0, 2, 1), "plate");
     const Material& gold = scene.materials[plate.materials[0]];
-    EXPECT_EQ(gold.kind, MaterialKind::kPhong);
-    expect_near(gold.specular, glm::vec3(0.9f, 0.6f, 0.2f), "metal specular = base colour");
+    // A plain metal: the conductor reflecting the base colour at normal incidence (eta 1,
+    // k = 2 sqrt(r / (1 - r))), alpha = roughness^2.
+    EXPECT_EQ(gold.kind, MaterialKind::kConductor);
+    expect_near(gold.eta, glm::vec3(1.0f), "metal eta");
+    const glm::vec3 r(0.9f, 0.6f, 0.2f);
+    expect_near(gold.k, 2.0f * glm::sqrt(r / (1.0f - r)), "metal k");
     expect_near(gold.diffuse, glm::vec3(0.0f), "metal diffuse");
-    EXPECT_NEAR(gold.exponent, 2.0 / std::pow(0.3, 4) - 2.0, 1e-2);
+    EXPECT_NEAR(gold.alpha_x, 0.09f, 1e-6f);
     const Material& floor = scene.materials[shape_named(scene, "ground").materials[0]];
     EXPECT_EQ(floor.kind, MaterialKind::kDiffuse);
     expect_near(floor.diffuse, glm::vec3(0.8f), "rough dielectric");

@@ -75,11 +75,12 @@ TEST(Pbrt, HierarchyTransformsMaterialsLightsAndInstances) {
     const Shape& plate = scene.shapes[1];
     expect_near(world(plate, {-1, -1, 0}), glm::vec3(4, -2, 6), "plate");
     const Material& gold = scene.materials[plate.materials[0]];
-    EXPECT_EQ(gold.kind, MaterialKind::kPhong);
+    EXPECT_EQ(gold.kind, MaterialKind::kConductor);
     expect_near(gold.diffuse, glm::vec3(0.0f), "conductor diffuse");
-    // F0 = ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2) of n = 0.2, k = 3.5 (red channel).
-    EXPECT_NEAR(gold.specular.r, (0.64 + 12.25) / (1.44 + 12.25), 1e-5);
-    EXPECT_NEAR(gold.exponent, 2.0 / (0.09 * 0.09) - 2.0, 1e-2);  // alpha = 0.09, not remapped
+    expect_near(gold.eta, glm::vec3(0.2f, 0.4f, 1.4f), "conductor eta");
+    EXPECT_NEAR(gold.k.r, 3.5f, 1e-6f);
+    EXPECT_NEAR(gold.alpha_x, 0.09f, 1e-6f);  // roughness 0.09, not remapped
+    EXPECT_NEAR(gold.alpha_y, 0.09f, 1e-6f);
     // The picture: Transform replaces the CTM; an image texture times 0.5, uvs as given.
     const Shape& picture = scene.shapes[2];
     expect_near(world(picture, {1, 1, 0}), glm::vec3(-1, 0.5, 8), "picture");
@@ -391,8 +392,11 @@ TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
     const std::vector<Refusal> cases = {
         {"curve", "Shape \"curve\" \"point3 P\" [0 0 0 1 0 0 2 0 0 3 0 0]\n",
          "Shape \"curve\" is not supported"},
-        {"dielectric", std::string("Material \"dielectric\"\n") + kTriangle,
-         "Material \"dielectric\" transmits light", 6},
+        {"diffusetransmission", std::string("Material \"diffusetransmission\"\n") + kTriangle,
+         "Material \"diffusetransmission\" transmits light diffusely", 6},
+        {"dispersive_glass",
+         std::string("Material \"dielectric\" \"spectrum eta\" \"glass-BK7\"\n") + kTriangle,
+         "an index of refraction given as a spectrum is not supported", 6},
         {"goniometric", "LightSource \"goniometric\"\n",
          "LightSource \"goniometric\" is not supported"},
         {"blackbody", "AreaLightSource \"diffuse\" \"blackbody L\" [6500]\n",
@@ -447,6 +451,53 @@ TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
 // gives a distant light irradiance L x scale x E on a surface facing it and the constant
 // environment radiance L x scale x E / pi. The distant light travels from "from" to "to" in its
 // object space, through the CTM (here a rotation) and pbrt's mirrored x.
+// Dielectrics and conductors as pbrt-v4 defines them: "eta" (an index below 1 inverted),
+// roughness per axis remapped by sqrt unless "remaproughness" is false, a conductor's
+// "reflectance" as eta 1 and k = 2 sqrt(r / (1 - r)).
+TEST(Pbrt, DielectricsAndConductorsTakePbrtV4Parameters) {
+    const auto dir = test::scratch_dir("pbrt_bsdfs");
+    const auto file = dir / "bsdfs.pbrt";
+    const std::string triangle = kTriangle;
+    write_file_atomically(
+        file, std::string(kHeader) + "Material \"dielectric\" \"float eta\" 1.33\n" + triangle +
+                  "Material \"dielectric\" \"float eta\" 0.5 \"float roughness\" 0.04\n" +
+                  triangle + "Material \"thindielectric\"\n" + triangle +
+                  "Material \"conductor\" \"rgb eta\" [0.2 0.9 1.1] \"rgb k\" [3.9 2.4 2.1]\n"
+                  "    \"float uroughness\" 0.01 \"float vroughness\" 0.16\n" +
+                  triangle + "Material \"conductor\" \"rgb reflectance\" [0.8 0.5 0.2]\n" +
+                  triangle);
+    const Scene scene = load_scene(file);
+    ASSERT_EQ(scene.shapes.size(), 5u);
+    const auto material = [&](size_t i) { return scene.materials[scene.shapes[i].materials[0]]; };
+    EXPECT_EQ(material(0).kind, MaterialKind::kDielectric);
+    EXPECT_FLOAT_EQ(material(0).ior, 1.33f);
+    EXPECT_FLOAT_EQ(material(0).alpha_x, 0.0f);
+    EXPECT_FLOAT_EQ(material(1).ior, 2.0f);
+    EXPECT_NEAR(material(1).alpha_x, 0.2f, 1e-6f);
+    EXPECT_EQ(material(2).kind, MaterialKind::kThinDielectric);
+    EXPECT_FLOAT_EQ(material(2).ior, 1.5f);  // pbrt-v4's default
+    EXPECT_EQ(material(3).kind, MaterialKind::kConductor);
+    EXPECT_NEAR(material(3).alpha_x, 0.1f, 1e-6f);
+    EXPECT_NEAR(material(3).alpha_y, 0.4f, 1e-6f);
+    EXPECT_NEAR(material(3).k.g, 2.4f, 1e-6f);
+    EXPECT_NEAR(material(4).k.r, 2.0f * std::sqrt(0.8f / 0.2f), 1e-5f);
+    EXPECT_FLOAT_EQ(material(4).eta.b, 1.0f);
+    const auto bad = test::scratch_dir("pbrt_bsdfs_bad");
+    expect_refused(bad, "eta_zero",
+                   std::string(kHeader) + "Material \"dielectric\" \"float eta\" 0\n" + triangle,
+                   "eta must lie in (0, 10]", 6, 1);
+    expect_refused(bad, "roughness_negative",
+                   std::string(kHeader) +
+                       "Material \"conductor\" \"rgb reflectance\" [1 1 1]\n"
+                       "    \"float roughness\" -0.1\n" +
+                       triangle,
+                   "roughness must lie in [0, 1000]", 6, 1);
+    expect_refused(bad, "conductor_eta_negative",
+                   std::string(kHeader) +
+                       "Material \"conductor\" \"rgb eta\" [-1 1 1] \"rgb k\" [1 1 1]\n" + triangle,
+                   "eta must lie in (0, 100]", 6, 1);
+}
+
 TEST(Pbrt, LightsTakePowerIlluminanceAndDirectionAsPbrtV4) {
     const auto dir = test::scratch_dir("pbrt_lights");
     const auto file = dir / "lights.pbrt";

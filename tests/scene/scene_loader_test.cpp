@@ -253,6 +253,43 @@ TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
         {"two_environments",
          with_emitters(R"([{"type": "constant"}, {"type": "envmap", "filename": "wide.exr"}])"),
          {"emitters[1].type", "at most one environment"}},
+        {"ior_zero",
+         scene_with(kCamera, shape)
+             .replace(1, 0, R"("materials": {"g": {"type": "dielectric", "ior": 0}},)"),
+         {"materials.g.ior", "[1, 10]"}},
+        {"ior_negative",
+         scene_with(kCamera, shape)
+             .replace(1, 0, R"("materials": {"g": {"type": "thindielectric", "ior": -1.5}},)"),
+         {"materials.g.ior", "[1, 10]"}},
+        {"alpha_range",
+         scene_with(kCamera, shape)
+             .replace(1, 0, R"("materials": {"g": {"type": "dielectric", "alpha": 1.5}},)"),
+         {"materials.g.alpha", "[0, 1]"}},
+        {"alpha_y_negative",
+         scene_with(kCamera, shape)
+             .replace(
+                 1, 0,
+                 R"("materials": {"m": {"type": "conductor", "reflectance": 0.9, "alpha_y": -0.1}},)"),
+         {"materials.m.alpha_y", "[0, 1]"}},
+        {"conductor_without_k",
+         scene_with(kCamera, shape)
+             .replace(1, 0,
+                      R"("materials": {"m": {"type": "conductor", "eta": [0.2, 0.9, 1.1]}},)"),
+         {"materials.m", "needs \"eta\" and \"k\""}},
+        {"conductor_both_forms",
+         scene_with(kCamera, shape)
+             .replace(
+                 1, 0,
+                 R"("materials": {"m": {"type": "conductor", "reflectance": 0.9, "eta": 1, "k": 2}},)"),
+         {"materials.m.reflectance", "not both"}},
+        {"conductor_eta_zero",
+         scene_with(kCamera, shape)
+             .replace(1, 0, R"("materials": {"m": {"type": "conductor", "eta": 0, "k": 2}},)"),
+         {"materials.m.eta", "outside"}},
+        {"thin_roughness",
+         scene_with(kCamera, shape)
+             .replace(1, 0, R"("materials": {"g": {"type": "thindielectric", "alpha": 0.2}},)"),
+         {"materials.g", "alpha"}},
         {"missing_texture",
          scene_with(kCamera, shape)
              .replace(

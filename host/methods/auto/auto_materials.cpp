@@ -22,7 +22,8 @@ const char* lobe_server_name(LobeServer server) {
 bool has_glossy_lobe(const Material& material) {
     const float specular =
         std::max({material.specular.x, material.specular.y, material.specular.z});
-    return material.kind != MaterialKind::kDiffuse && specular > 0.0f;
+    return (material.kind == MaterialKind::kPhong || material.kind == MaterialKind::kWard) &&
+           specular > 0.0f;
 }
 
 double glossy_exponent(const Material& material) {
@@ -56,7 +57,9 @@ std::vector<MaterialChoice> choose_lobe_servers(const std::vector<Material>& mat
     for (const Material& material : materials) {
         MaterialChoice choice;
         choice.name = material.name;
-        if (has_glossy_lobe(material)) {
+        if (!is_reflectance_model(material)) {
+            choice.server = LobeServer::kPath;  // a conductor or dielectric: no cache serves it
+        } else if (has_glossy_lobe(material)) {
             choice.exponent = glossy_exponent(material);
             choice.rc_fallback = rc_fallback_of(rc_materials, material.name);
             if (choice.rc_fallback >= 0.0 && choice.rc_fallback <= model.rc_max_fallback) {

@@ -23,7 +23,8 @@ void require(bool ok, const std::string& option, const std::string& value,
 // A material whose specular lobe radiance caching represents.
 bool has_lobe(const Material& material) {
     const glm::vec3& ks = material.specular;
-    return material.kind != MaterialKind::kDiffuse && std::max({ks.r, ks.g, ks.b}) > 0.0f;
+    return (material.kind == MaterialKind::kPhong || material.kind == MaterialKind::kWard) &&
+           std::max({ks.r, ks.g, ks.b}) > 0.0f;
 }
 
 // The centre of texel t on the parabolic map, and the solid angle of directions around it

@@ -9,6 +9,12 @@ with one line naming it. The mapping (docs/peers.md):
   filter      box (radius 0.5: Mitsuba's `box`) or tent (`tent`, the same radius); radcache's
               Gaussian (sigma = R/3, cut at R) differs from Mitsuba's (cut at 4 sigma): refused
   diffuse     `twosided` `diffuse` (radcache's materials are two-sided, Mitsuba's one-sided)
+  conductor   `twosided` `conductor` (alpha 0) or `roughconductor` (GGX, alpha_u = alpha_x,
+              alpha_v = alpha_y) with the same eta and k; a reflectance r as eta 1 and
+              k = 2 sqrt(r / (1 - r)), as radcache converts it
+  dielectric  `dielectric` (alpha 0) or `roughdielectric` (GGX) with int_ior = ior, ext_ior 1
+              (both renderers put the index on the side the normal points away from)
+  thindielectric   `thindielectric`, int_ior = ior
   phong, ward refused: Mitsuba 3 has neither the modified Phong nor the bounded-albedo Ward
   textures    refused (the uv and colour conventions of Mitsuba's `bitmap` are unchecked)
   obj         `obj` with face_normals unless every face has vertex normals (Mitsuba would smooth
@@ -85,9 +91,48 @@ def transform(steps):
     return m
 
 
+def conductor_eta_k(spec):
+    """A radcache conductor's (eta, k) per channel: given, or pbrt-v4's form of a reflectance."""
+    if "reflectance" in spec:
+        r = numpy.clip(numpy.array(colour(spec["reflectance"], 1)["value"]), 0.0, 0.9999)
+        return colour(1, 1), colour([float(v) for v in 2.0 * numpy.sqrt(r / (1.0 - r))], 0)
+    return colour(spec["eta"], 1), colour(spec["k"], 0)
+
+
+def alphas(spec):
+    alpha = spec.get("alpha", 0.0)
+    return spec.get("alpha_x", alpha), spec.get("alpha_y", alpha)
+
+
+def conductor(spec):
+    eta, k = conductor_eta_k(spec)
+    alpha_x, alpha_y = alphas(spec)
+    bsdf = {"type": "conductor", "eta": eta, "k": k}
+    if max(alpha_x, alpha_y) >= 1e-3:  # radcache renders alphas below 1e-3 smooth
+        bsdf.update({"type": "roughconductor", "distribution": "ggx",
+                     "alpha_u": float(alpha_x), "alpha_v": float(alpha_y)})
+    return {"type": "twosided", "bsdf": bsdf}
+
+
+def dielectric(spec, thin):
+    ior = float(spec.get("ior", 1.5))
+    if thin:
+        return {"type": "thindielectric", "int_ior": ior, "ext_ior": 1.0}
+    alpha_x, alpha_y = alphas(spec)
+    bsdf = {"type": "dielectric", "int_ior": ior, "ext_ior": 1.0}
+    if max(alpha_x, alpha_y) >= 1e-3 and ior != 1.0:
+        bsdf.update({"type": "roughdielectric", "distribution": "ggx",
+                     "alpha_u": float(alpha_x), "alpha_v": float(alpha_y)})
+    return bsdf
+
+
 def material(name, spec):
     """A named radcache material as a Mitsuba BSDF, or ExportError naming it."""
     kind = spec.get("type", "diffuse")
+    if kind == "conductor":
+        return conductor(spec)
+    if kind in ("dielectric", "thindielectric"):
+        return dielectric(spec, kind == "thindielectric")
     if kind != "diffuse":
         raise ExportError("material '%s' (%s): Mitsuba 3 has no exact counterpart; not exported"
                           % (name, kind))
