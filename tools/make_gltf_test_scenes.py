@@ -8,7 +8,9 @@ buffers, written from scratch (no library):
                      KHR_materials_emissive_strength.
   hierarchy.gltf     an asymmetric scene: a node hierarchy (translation, rotation, scale, matrix)
                      holding an emissive quad, a glossy metal, a textured quad (embedded PNG),
-                     a point light and a spot light, and two cameras.
+                     a thin-walled glass window (KHR_materials_transmission) and a solid rough
+                     glass block (with KHR_materials_volume and KHR_materials_ior), a point
+                     light and a spot light, and two cameras.
 
 usage: tools/make_gltf_test_scenes.py [OUT_DIR]   (default tests/data/gltf)
 """
@@ -128,6 +130,13 @@ def hierarchy():
                                                            "metallicFactor": 0.0, "roughnessFactor": 0.9})
     textured = b.material(name="checker", pbrMetallicRoughness={
         "baseColorTexture": {"index": 0}, "baseColorFactor": [0.5, 1, 1, 1], "metallicFactor": 0.0})
+    window = b.material(name="window", pbrMetallicRoughness={"metallicFactor": 0.0},
+                        extensions={"KHR_materials_transmission": {"transmissionFactor": 1.0}})
+    lens = b.material(name="lens", pbrMetallicRoughness={"metallicFactor": 0.0,
+                                                         "roughnessFactor": 0.2},
+                      extensions={"KHR_materials_transmission": {"transmissionFactor": 0.9},
+                                  "KHR_materials_ior": {"ior": 1.33},
+                                  "KHR_materials_volume": {"thicknessFactor": 0.1}})
     view = b.view(png_2x2())
     b.gltf["images"] = [{"bufferView": view, "mimeType": "image/png"}]
     b.gltf["textures"] = [{"source": 0}]
@@ -145,7 +154,10 @@ def hierarchy():
     b.node(name="ground", mesh=ground, translation=[0, -1, 0], rotation=[-s, 0, 0, s],
            scale=[5, 5, 5])
     b.node(name="picture", mesh=picture, translation=[2.5, 0.5, -1.0])
-    b.gltf["extensionsUsed"] = ["KHR_lights_punctual"]
+    b.node(name="window", mesh=b.mesh(quad, quad_faces, window), translation=[-3.0, 0.5, -2.0])
+    b.node(name="lens", mesh=b.mesh(quad, quad_faces, lens), translation=[3.0, 0.5, -2.0])
+    b.gltf["extensionsUsed"] = ["KHR_lights_punctual", "KHR_materials_transmission",
+                                "KHR_materials_ior", "KHR_materials_volume"]
     b.gltf["extensions"] = {"KHR_lights_punctual": {"lights": [
         {"type": "point", "color": [1, 0.8, 0.6], "intensity": 5.0},
         {"type": "spot", "intensity": 20.0, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.5}},

@@ -187,8 +187,9 @@ class GltfSceneBuilder {
     }
 
     void check_extensions() {
-        static const std::set<std::string> supported = {"KHR_lights_punctual",
-                                                        "KHR_materials_emissive_strength"};
+        static const std::set<std::string> supported = {
+            "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_transmission",
+            "KHR_materials_ior", "KHR_materials_volume"};
         for (const std::string& extension : model_.extensionsRequired) {
             if (!supported.count(extension)) {
                 throw Error(file_ + ": requires the glTF extension " + excerpt(extension) +

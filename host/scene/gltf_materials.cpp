@@ -134,6 +134,10 @@ GltfMaterial GltfMaterials::make(int index, const std::string& where) {
     }
     float strength = 1.0f;
     for (const auto& [name, value] : gltf.extensions) {
+        if (name == "KHR_materials_transmission" || name == "KHR_materials_ior" ||
+            name == "KHR_materials_volume") {
+            continue;  // transmissive(): read together
+        }
         if (name == "KHR_materials_emissive_strength") {
             const tinygltf::Value& s = value.Get("emissiveStrength");
             if (!s.IsNumber() || !(s.GetNumberAsDouble() >= 0.0) ||
@@ -145,11 +149,56 @@ GltfMaterial GltfMaterials::make(int index, const std::string& where) {
             warnings_.warn("material extension " + excerpt(name), "ignored");
         }
     }
+    transmissive(gltf, what, roughness, &material);
     result.emission =
         unit_colour(gltf.emissiveFactor, 3, glm::vec3(0.0f), what + ": emissiveFactor") * strength;
     scene_.materials.push_back(material);
     result.index = static_cast<int>(scene_.materials.size() - 1);
     return result;
+}
+
+// KHR_materials_transmission with transmissionFactor >= 0.5 (and KHR_materials_ior's ior,
+// default 1.5): glass. Thin-walled without KHR_materials_volume, as the extension defines it (a
+// `thindielectric`), a solid `dielectric` of alpha roughness^2 with it. A transmission below 0.5
+// is left opaque, and a transmission texture or volume attenuation ignored: both warned.
+void GltfMaterials::transmissive(const tinygltf::Material& gltf, const std::string& what,
+                                 float roughness, Material* material) {
+    const auto found = gltf.extensions.find("KHR_materials_transmission");
+    if (found == gltf.extensions.end()) {
+        return;
+    }
+    const tinygltf::Value& factor = found->second.Get("transmissionFactor");
+    const float transmission =
+        factor.IsNumber() ? unit_number(factor.GetNumberAsDouble(), what + ": transmissionFactor")
+                          : 0.0f;
+    if (found->second.Has("transmissionTexture")) {
+        warnings_.warn("transmissionTexture", "transmissionFactor applies over the whole surface");
+    }
+    if (transmission < 0.5f) {
+        if (transmission > 0.0f) {
+            warnings_.warn("transmissionFactor below 0.5", "the surface is opaque");
+        }
+        return;
+    }
+    float ior = 1.5f;
+    const auto ior_extension = gltf.extensions.find("KHR_materials_ior");
+    if (ior_extension != gltf.extensions.end() && ior_extension->second.Has("ior")) {
+        const tinygltf::Value& value = ior_extension->second.Get("ior");
+        ior = value.IsNumber() ? static_cast<float>(value.GetNumberAsDouble()) : -1.0f;
+        if (!(ior >= 1.0f && ior <= 10.0f)) {
+            throw Error(what + ": KHR_materials_ior ior must be a number in [1, 10]");
+        }
+    }
+    const bool solid = gltf.extensions.count("KHR_materials_volume") != 0;
+    if (solid && gltf.extensions.at("KHR_materials_volume").Has("attenuationColor")) {
+        warnings_.warn("volume attenuation", "glass is clear");
+    }
+    material->kind = solid ? MaterialKind::kDielectric : MaterialKind::kThinDielectric;
+    material->diffuse = glm::vec3(0.0f);
+    material->diffuse_texture = -1;
+    material->specular = glm::vec3(1.0f);
+    material->ior = ior;
+    material->alpha_x = material->alpha_y = solid ? roughness * roughness : 0.0f;
 }
 
 int GltfMaterials::texture(int index, const std::string& what) {

@@ -55,6 +55,8 @@ class GltfMaterials {
    private:
     GltfMaterial make(int index, const std::string& where);
     int texture(int index, const std::string& where);
+    void transmissive(const tinygltf::Material& gltf, const std::string& what, float roughness,
+                      Material* material);
 
     std::filesystem::path path_;
     const tinygltf::Model& model_;

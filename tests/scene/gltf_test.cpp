@@ -88,6 +88,15 @@ TEST(Gltf, HierarchyTransformsCamerasMaterialsAndLights) {
     expect_near(gold.k, 2.0f * glm::sqrt(r / (1.0f - r)), "metal k");
     expect_near(gold.diffuse, glm::vec3(0.0f), "metal diffuse");
     EXPECT_NEAR(gold.alpha_x, 0.09f, 1e-6f);
+    // KHR_materials_transmission: thin-walled glass without KHR_materials_volume, solid glass of
+    // KHR_materials_ior's index and alpha = roughness^2 with it.
+    const Material& window = scene.materials[shape_named(scene, "window").materials[0]];
+    EXPECT_EQ(window.kind, MaterialKind::kThinDielectric);
+    EXPECT_FLOAT_EQ(window.ior, 1.5f);
+    const Material& lens = scene.materials[shape_named(scene, "lens").materials[0]];
+    EXPECT_EQ(lens.kind, MaterialKind::kDielectric);
+    EXPECT_FLOAT_EQ(lens.ior, 1.33f);
+    EXPECT_NEAR(lens.alpha_x, 0.04f, 1e-6f);
     const Material& floor = scene.materials[shape_named(scene, "ground").materials[0]];
     EXPECT_EQ(floor.kind, MaterialKind::kDiffuse);
     expect_near(floor.diffuse, glm::vec3(0.8f), "rough dielectric");
@@ -193,6 +202,13 @@ TEST(Gltf, MalformedFilesAreRefusedCleanly) {
     m = model;
     m["buffers"][0]["uri"] = "missing.bin";
     cases.push_back({"missing_buffer", m.dump(), "missing_buffer.gltf"});
+    // The lens (material 5): an index below 1, and a transmission factor outside [0, 1].
+    m = model;
+    m["materials"][5]["extensions"]["KHR_materials_ior"]["ior"] = 0.5;
+    cases.push_back({"ior_below_one", m.dump(), "ior must be a number in [1, 10]"});
+    m = model;
+    m["materials"][5]["extensions"]["KHR_materials_transmission"]["transmissionFactor"] = 1.5;
+    cases.push_back({"transmission_range", m.dump(), "transmissionFactor"});
     m = model;
     m["extensionsRequired"] = {"KHR_draco_mesh_compression"};
     cases.push_back({"draco", m.dump(), "KHR_draco_mesh_compression", 2});
