@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "scene/pbrt_params.h"
+#include "scene/spectra.h"
 #include "scene/texture.h"
 #include "util/error.h"
 #include "util/log.h"
@@ -86,7 +87,7 @@ void PbrtMaterials::define_texture(const PbrtDirective& directive) {
         entry.refused = "is a " + excerpt(kind) + " texture (only spectrum textures serve, as " +
                         "diffuse reflectances)";
     } else if (type == "constant") {
-        entry.value = params.get_rgb("value").value_or(glm::vec3(1.0f));
+        entry.value = params.get_material_spectrum("value").value_or(glm::vec3(1.0f));
         check_unit(entry.value, params, "value");
         params.warn_unused();
     } else if (type == "imagemap") {
@@ -209,7 +210,7 @@ glm::vec3 PbrtMaterials::reflectance(PbrtParams& params, const std::string& name
         *texture = found->second.texture;
         return found->second.value;
     }
-    const glm::vec3 colour = params.get_rgb(name).value_or(fallback);
+    const glm::vec3 colour = params.get_material_spectrum(name).value_or(fallback);
     check_unit(colour, params, name);
     return colour;
 }
@@ -220,14 +221,7 @@ void PbrtMaterials::make_dielectric(PbrtParams& params, bool thin, Material* mat
     material->kind = thin ? MaterialKind::kThinDielectric : MaterialKind::kDielectric;
     material->diffuse = glm::vec3(0.0f);
     material->specular = glm::vec3(1.0f);
-    const std::string eta_type = params.type_of("eta");
-    if (eta_type == "spectrum") {
-        params.ignore("eta");
-        params.refuse(
-            "parameter \"spectrum eta\": an index of refraction given as a spectrum is not "
-            "supported (give \"float eta\")");
-    }
-    material->ior = params.get_float("eta", 1.5f);
+    material->ior = params.get_index_of_refraction("eta").value_or(1.5f);
     if (!(material->ior > 0.0f && material->ior <= 10.0f)) {
         params.fail("eta must lie in (0, 10], got " + std::to_string(material->ior));
     }
@@ -256,12 +250,13 @@ void PbrtMaterials::make_conductor(PbrtParams& params, Material* material) {
         params.ignore("k");
         return;
     }
-    const auto eta = params.get_rgb("eta");
-    const auto k = params.get_rgb("k");
+    // pbrt-v4's default conductor is copper.
+    const auto eta = params.has("eta") ? params.get_material_spectrum("eta")
+                                       : named_spectrum_rgb("metal-Cu-eta");
+    const auto k =
+        params.has("k") ? params.get_material_spectrum("k") : named_spectrum_rgb("metal-Cu-k");
     if (!eta || !k) {
-        params.refuse(
-            "give \"rgb eta\" and \"rgb k\", or \"rgb reflectance\" (pbrt's "
-            "default copper spectra are not supported)");
+        params.fail("eta and k are missing");
     }
     if (!(glm::all(glm::greaterThan(*eta, glm::vec3(0.0f))) &&
           glm::all(glm::greaterThanEqual(*k, glm::vec3(0.0f))) &&

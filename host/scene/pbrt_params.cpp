@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "scene/spectra.h"
 #include "util/error.h"
 #include "util/log.h"
 #include "util/text.h"
@@ -147,6 +148,61 @@ std::optional<glm::vec3> PbrtParams::get_rgb(const std::string& name) {
         fail("parameter \"rgb " + excerpt(name) + "\" expects 3 numbers");
     }
     return glm::vec3(v[0], v[1], v[2]);
+}
+
+std::optional<glm::vec3> PbrtParams::get_material_spectrum(const std::string& name) {
+    if (type_of(name) != "spectrum") {
+        return get_rgb(name);
+    }
+    const PbrtParam* p = find(name, {"spectrum"});
+    if (p->strings.size() == 1 && p->numbers.empty()) {
+        const auto rgb = named_spectrum_rgb(p->strings[0]);
+        if (!rgb) {
+            refuse("parameter " + declared(*p) + ": \"" + excerpt(p->strings[0]) +
+                   "\" is not one of pbrt-v4's named spectra radcache knows (spectrum files are "
+                   "not read)");
+        }
+        return rgb;
+    }
+    const std::vector<double> v = get_numbers(name, {"spectrum"}, 1);
+    if (v.size() == 1) {
+        return glm::vec3(static_cast<float>(v[0]));
+    }
+    const auto rgb = sampled_spectrum_rgb(v);
+    if (!rgb) {
+        fail("parameter " + declared(*p) +
+             " expects wavelength-value pairs with increasing wavelengths (or a name)");
+    }
+    return rgb;
+}
+
+std::optional<float> PbrtParams::get_index_of_refraction(const std::string& name) {
+    if (type_of(name) != "spectrum") {
+        if (!has(name)) {
+            return std::nullopt;
+        }
+        return get_float(name, 1.0f);
+    }
+    const PbrtParam* p = find(name, {"spectrum"});
+    if (p->strings.size() == 1 && p->numbers.empty()) {
+        const auto ior = named_glass_ior(p->strings[0]);
+        if (!ior) {
+            refuse("parameter " + declared(*p) + ": \"" + excerpt(p->strings[0]) +
+                   "\" is not one of pbrt-v4's named glasses radcache knows");
+        }
+        return ior;
+    }
+    const std::vector<double> v = get_numbers(name, {"spectrum"}, 1);
+    if (v.size() == 1) {
+        return static_cast<float>(v[0]);
+    }
+    const auto at = sampled_spectrum_at(v, 550.0);
+    if (!at) {
+        fail("parameter " + declared(*p) +
+             " expects wavelength-value pairs with increasing "
+             "wavelengths (or a name)");
+    }
+    return static_cast<float>(*at);
 }
 
 void PbrtParams::ignore(const std::string& name) {

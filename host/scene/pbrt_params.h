@@ -35,6 +35,13 @@ class PbrtParams {
                                     size_t width);
     // An "rgb" (or pbrt-v3 "color") spectrum; blackbody and sampled spectra are refused.
     std::optional<glm::vec3> get_rgb(const std::string& name);
+    // A material's spectrum as linear sRGB: "rgb" (or "color"), or a "spectrum" given by one of
+    // pbrt-v4's names (named_spectra.h), as wavelength-value pairs, or as one constant;
+    // blackbody spectra are refused.
+    std::optional<glm::vec3> get_material_spectrum(const std::string& name);
+    // The parameter's one value at 550 nm: a "float", a named glass or a sampled "spectrum" (an
+    // index of refraction, which radcache renders without dispersion).
+    std::optional<float> get_index_of_refraction(const std::string& name);
     // Marks the parameter read without using it (a parameter the import may ignore).
     void ignore(const std::string& name);
 
