@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "material_probes.h"
 #include "scene/material.h"
 #include "shared/types.h"
 #include "test_support.h"
@@ -59,28 +60,15 @@ double fresnel_conductor(double theta, double n, double k) {
     return 0.5 * (rs + rp);
 }
 
-struct Samples {
-    std::vector<shared::float4> directions;  // xyz: wi, w: pdf (-1: failed)
-    std::vector<shared::float4> values;      // xyz: f, w: 1 for a delta lobe
-};
+using test::MaterialSamples;
 
-Samples sample(const Material& material, shared::float4 wo, size_t count, unsigned seed) {
-    Context& context = test::shared_context();
-    Kernel kernel = context.kernel("material_probe.cl", "material_sample_probe");
-    Buffer<shared::float4> directions(context, count, "samples");
-    Buffer<shared::float4> values(context, count, "sample_values");
-    context.launch(kernel, count, to_device(material), wo, seed, directions, values);
-    return {directions.download(), values.download()};
+MaterialSamples sample(const Material& material, shared::float4 wo, size_t count, unsigned seed) {
+    return test::material_samples(to_device(material), wo, count, seed);
 }
 
 std::vector<shared::float4> evaluate(const Material& material, shared::float4 wo,
                                      const std::vector<shared::float4>& directions) {
-    Context& context = test::shared_context();
-    Kernel kernel = context.kernel("material_probe.cl", "material_eval_probe");
-    const Buffer<shared::float4> in(context, directions, "directions");
-    Buffer<shared::float4> out(context, directions.size(), "values");
-    context.launch(kernel, directions.size(), to_device(material), wo, in, out);
-    return out.download();
+    return test::material_values(to_device(material), wo, directions);
 }
 
 Material dielectric(float ior, float alpha) {
@@ -121,7 +109,7 @@ TEST(Dielectric, SmoothInterfaceFollowsFresnelAndSnell) {
             const shared::float4 wo = direction(theta, 30.0);
             const double f = fresnel_dielectric(std::cos(theta * kPi / 180.0), eta);
             const size_t n = 1 << 16;
-            const Samples s = sample(dielectric(eta, 0.0f), wo, n, 7);
+            const MaterialSamples s = sample(dielectric(eta, 0.0f), wo, n, 7);
             size_t reflected = 0;
             for (size_t i = 0; i < n; ++i) {
                 const shared::float4& d = s.directions[i];
@@ -146,7 +134,7 @@ TEST(Dielectric, SmoothInterfaceFollowsFresnelAndSnell) {
             EXPECT_NEAR(p, f, 5.0 * std::sqrt(f * (1.0 - f) / n) + 1e-9);
         }
     }
-    const Samples tir = sample(dielectric(1.0f / 1.5f, 0.0f), direction(45.0, 0.0), 256, 3);
+    const MaterialSamples tir = sample(dielectric(1.0f / 1.5f, 0.0f), direction(45.0, 0.0), 256, 3);
     for (const shared::float4& d : tir.directions) {
         EXPECT_GT(d.z, 0.0f) << "light beyond the critical angle (41.8 degrees) escaped";
     }
@@ -161,7 +149,7 @@ TEST(Dielectric, ThinPaneSumsItsInternalReflections) {
         const shared::float4 wo = direction(theta, 0.0);
         const double r = fresnel_dielectric(std::cos(theta * kPi / 180.0), 1.5);
         const double expected = r + (1.0 - r) * (1.0 - r) * r / (1.0 - r * r);
-        const Samples s = sample(pane, wo, 4096, 5);
+        const MaterialSamples s = sample(pane, wo, 4096, 5);
         for (size_t i = 0; i < s.directions.size(); ++i) {
             const shared::float4& d = s.directions[i];
             if (d.z > 0.0f) {
@@ -184,7 +172,7 @@ TEST(Conductor, SmoothReflectanceMatchesTheClosedForm) {
     for (double theta : {0.0, 30.0, 60.0, 80.0, 89.0}) {
         SCOPED_TRACE("theta " + std::to_string(theta));
         const shared::float4 wo = direction(theta, 10.0);
-        const Samples s = sample(conductor(eta, k, 0.0f, 0.0f), wo, 16, 1);
+        const MaterialSamples s = sample(conductor(eta, k, 0.0f, 0.0f), wo, 16, 1);
         const shared::float4& d = s.directions[0];
         ASSERT_GE(d.w, 0.0f);
         const float channel[3] = {s.values[0].x, s.values[0].y, s.values[0].z};
@@ -203,33 +191,10 @@ TEST(Conductor, SmoothReflectanceMatchesTheClosedForm) {
 TEST(Conductor, ReflectanceFormReflectsItAtNormalIncidence) {
     Material m = conductor(glm::vec3(1.0f), glm::vec3(0.0f), 0.0f, 0.0f);
     set_conductor_reflectance(m, glm::vec3(0.9f, 0.5f, 0.04f));
-    const Samples s = sample(m, direction(0.0, 0.0), 4, 1);
+    const MaterialSamples s = sample(m, direction(0.0, 0.0), 4, 1);
     EXPECT_NEAR(s.values[0].x * s.directions[0].z / s.directions[0].w, 0.9, 1e-5);
     EXPECT_NEAR(s.values[0].y * s.directions[0].z / s.directions[0].w, 0.5, 1e-5);
     EXPECT_NEAR(s.values[0].z * s.directions[0].z / s.directions[0].w, 0.04, 1e-5);
-}
-
-// Directions over the whole sphere (midpoint rule in theta and phi) with their solid angles.
-struct SphereGrid {
-    std::vector<shared::float4> directions;
-    std::vector<double> weights;
-};
-
-SphereGrid sphere_grid(int theta_steps, int phi_steps, double theta_max = kPi) {
-    SphereGrid g;
-    const double d_theta = theta_max / theta_steps;
-    const double d_phi = 2.0 * kPi / phi_steps;
-    for (int i = 0; i < theta_steps; ++i) {
-        const double theta = (i + 0.5) * d_theta;
-        for (int j = 0; j < phi_steps; ++j) {
-            const double phi = (j + 0.5) * d_phi;
-            g.directions.push_back({static_cast<float>(std::sin(theta) * std::cos(phi)),
-                                    static_cast<float>(std::sin(theta) * std::sin(phi)),
-                                    static_cast<float>(std::cos(theta)), 0.0f});
-            g.weights.push_back(std::sin(theta) * d_theta * d_phi);
-        }
-    }
-    return g;
 }
 
 std::vector<shared::float4> microfacet(float alpha_x, float alpha_y, shared::float4 w,
@@ -246,7 +211,7 @@ std::vector<shared::float4> microfacet(float alpha_x, float alpha_y, shared::flo
 // Heitz 2014 Eq. 4), and the normals visible from any w form a density (integral of D_w = 1,
 // Heitz 2014 Eq. 17, which holds only with the matching Smith G1).
 TEST(TrowbridgeReitz, DistributionAndVisibleNormalsAreNormalised) {
-    const SphereGrid grid = sphere_grid(2048, 256, 0.5 * kPi);
+    const test::DirectionGrid grid = test::direction_grid(2048, 256, 0.5 * kPi);
     for (const auto& [ax, ay] :
          {std::pair{0.2f, 0.2f}, std::pair{0.5f, 0.5f}, std::pair{0.1f, 0.4f}}) {
         for (double theta : {0.0, 45.0, 80.0}) {
@@ -272,7 +237,7 @@ TEST(TrowbridgeReitz, DistributionAndVisibleNormalsAreNormalised) {
 // from inside, where the tenth of the microfacets tilted past the critical angle reflect light
 // into the surface; below 0.7 would be light lost by a wrong lobe.
 TEST(Dielectric, RoughInterfaceConservesEnergy) {
-    const SphereGrid grid = sphere_grid(1024, 512);
+    const test::DirectionGrid grid = test::direction_grid(1024, 512, kPi);
     for (float eta : {1.5f, 1.0f / 1.5f}) {
         for (double theta : {0.0, 40.0, 75.0}) {
             SCOPED_TRACE("eta " + std::to_string(eta) + " theta " + std::to_string(theta));

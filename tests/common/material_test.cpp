@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "chi_square.h"
+#include "material_probes.h"
 #include "shared/types.h"
 #include "test_support.h"
 
@@ -151,47 +152,15 @@ Quadrature bin_quadrature(const SphereBins& bins, int cells) {
     return q;
 }
 
-// Directions at the centres of a theta x phi grid over the upper hemisphere, with their solid
-// angles (midpoint rule), for albedo integrals.
-Quadrature hemisphere_grid(int theta_steps, int phi_steps) {
-    Quadrature q;
-    const double d_theta = 0.5 * kPi / theta_steps;
-    const double d_phi = 2.0 * kPi / phi_steps;
-    for (int i = 0; i < theta_steps; ++i) {
-        for (int j = 0; j < phi_steps; ++j) {
-            const double theta = (i + 0.5) * d_theta;
-            const double phi = (j + 0.5) * d_phi;
-            q.directions.push_back({static_cast<float>(std::sin(theta) * std::cos(phi)),
-                                    static_cast<float>(std::sin(theta) * std::sin(phi)),
-                                    static_cast<float>(std::cos(theta)), 0.0f});
-            q.weights.push_back(std::sin(theta) * d_theta * d_phi);
-        }
-    }
-    return q;
-}
-
 std::vector<shared::float4> evaluate(const shared::Material& m, shared::float4 wo,
                                      const std::vector<shared::float4>& directions) {
-    Context& context = test::shared_context();
-    Kernel kernel = context.kernel("material_probe.cl", "material_eval_probe");
-    const Buffer<shared::float4> in(context, directions, "directions");
-    Buffer<shared::float4> out(context, directions.size(), "values");
-    context.launch(kernel, directions.size(), m, wo, in, out);
-    return out.download();
+    return test::material_values(m, wo, directions);
 }
 
-struct Samples {
-    std::vector<shared::float4> directions;  // xyz: wi, w: pdf (-1: failed)
-    std::vector<shared::float4> values;      // xyz: f
-};
+using test::MaterialSamples;
 
-Samples sample(const shared::Material& m, shared::float4 wo, size_t count, unsigned seed) {
-    Context& context = test::shared_context();
-    Kernel kernel = context.kernel("material_probe.cl", "material_sample_probe");
-    Buffer<shared::float4> directions(context, count, "samples");
-    Buffer<shared::float4> values(context, count, "sample_values");
-    context.launch(kernel, count, m, wo, seed, directions, values);
-    return {directions.download(), values.download()};
+MaterialSamples sample(const shared::Material& m, shared::float4 wo, size_t count, unsigned seed) {
+    return test::material_samples(m, wo, count, seed);
 }
 
 const float kAngles[][2] = {{0.0f, 0.0f}, {35.0f, 20.0f}, {70.0f, 200.0f}, {87.0f, 120.0f}};
@@ -226,7 +195,7 @@ TEST(Material, SamplersMatchTheirPdfByChiSquare) {
             }
             ASSERT_LE(total, 1.0 + 1e-3) << "pdf integrates to more than 1";
             expected[bins.count()] = std::max(0.0, 1.0 - total) * n;
-            const Samples s = sample(m, wo, n, seed++);
+            const MaterialSamples s = sample(m, wo, n, seed++);
             std::vector<double> observed(bins.count() + 1, 0.0);
             for (const shared::float4& d : s.directions) {
                 observed[d.w < 0.0f ? bins.count() : bins.of(d)] += 1.0;
@@ -254,7 +223,7 @@ TEST(Material, SamplesAgreeWithPdfAndEval) {
         for (const auto& angle : kAngles) {
             SCOPED_TRACE(c.name + " at theta " + std::to_string(angle[0]));
             const shared::float4 wo = wo_at(angle[0], angle[1]);
-            const Samples s = sample(m, wo, 4096, 99);
+            const MaterialSamples s = sample(m, wo, 4096, 99);
             std::vector<shared::float4> ok;
             std::vector<shared::float4> ok_values;
             for (size_t i = 0; i < s.directions.size(); ++i) {
@@ -282,7 +251,7 @@ TEST(Material, SamplesAgreeWithPdfAndEval) {
 // Directional albedo: the integral of f cos over the hemisphere (midpoint rule, 256 x 512), at
 // most 1 for every BRDF and incident angle, and the diffuse albedo exactly for Lambert.
 TEST(Material, DirectionalAlbedoIsAtMostOne) {
-    const Quadrature grid = hemisphere_grid(256, 512);
+    const test::DirectionGrid grid = test::direction_grid(256, 512, 0.5 * kPi);
     for (const Case& c : cases()) {
         Material full = c.material;
         if (full.kind != MaterialKind::kDiffuse) {

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "material_probes.h"
 #include "methods/radiance_cache/brdf_tables.h"
 #include "methods/radiance_cache/gauss_legendre.h"
 #include "scene/scene_loader.h"
@@ -61,12 +62,7 @@ double radiance(double x, double y, double z) {
 // (kernels/material_probe.cl; its diffuse part is zero).
 std::vector<shared::float4> lobe_values(const Material& material, shared::float4 wo,
                                         const std::vector<shared::float4>& directions) {
-    Context& context = test::shared_context();
-    Kernel kernel = context.kernel("material_probe.cl", "material_eval_probe");
-    const Buffer<shared::float4> in(context, directions, "directions");
-    Buffer<shared::float4> out(context, directions.size(), "values");
-    context.launch(kernel, directions.size(), to_device(material), wo, in, out);
-    return out.download();
+    return test::material_values(to_device(material), wo, directions);
 }
 
 shared::float4 direction(double theta, double phi) {
