@@ -21,13 +21,16 @@ const char* material_kind_name(MaterialKind kind) {
             return "dielectric";
         case MaterialKind::kThinDielectric:
             return "thindielectric";
+        case MaterialKind::kDiffuseTransmission:
+            return "diffusetransmission";
     }
     return "?";
 }
 
 bool transmits(const Material& material) {
     return material.kind == MaterialKind::kDielectric ||
-           material.kind == MaterialKind::kThinDielectric;
+           material.kind == MaterialKind::kThinDielectric ||
+           material.kind == MaterialKind::kDiffuseTransmission;
 }
 
 bool is_reflectance_model(const Material& material) {
@@ -45,7 +48,8 @@ void set_conductor_reflectance(Material& material, glm::vec3 r) {
 
 namespace {
 
-// The device form of a conductor or dielectric: one lobe, no diffuse one.
+// The device form of a conductor, dielectric or diffuse transmitter: one lobe, no (reflective)
+// diffuse one.
 shared::Material single_lobe_device(const Material& material) {
     shared::Material m{};
     m.specular = {material.specular.r, material.specular.g, material.specular.b, 0.0f};
@@ -53,7 +57,11 @@ shared::Material single_lobe_device(const Material& material) {
     m.alpha_y = material.alpha_y;
     m.diffuse_probability = 0.0f;
     m.texture = -1;
-    if (material.kind == MaterialKind::kConductor) {
+    if (material.kind == MaterialKind::kDiffuseTransmission) {
+        m.model = RC_MATERIAL_DIFFUSE_TRANSMISSION;
+        const glm::vec3& t = material.transmittance;
+        m.k = {t.r, t.g, t.b, 0.0f};
+    } else if (material.kind == MaterialKind::kConductor) {
         m.model = RC_MATERIAL_CONDUCTOR;
         m.eta = {material.eta.r, material.eta.g, material.eta.b, 0.0f};
         m.k = {material.k.r, material.k.g, material.k.b, 0.0f};

@@ -1,7 +1,7 @@
 // Surface materials (docs/scene-format.md): diffuse (Lambert), phong (energy-conserving modified
 // Phong), ward (anisotropic Ward with bounded albedo), conductor (smooth or Trowbridge-Reitz
 // rough, complex index per channel), dielectric (smooth or rough glass, water) and
-// thindielectric (a window pane), and their device form.
+// thindielectric (a window pane) and diffusetransmission (a lampshade), and their device form.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -11,7 +11,15 @@
 
 namespace rc {
 
-enum class MaterialKind { kDiffuse, kPhong, kWard, kConductor, kDielectric, kThinDielectric };
+enum class MaterialKind {
+    kDiffuse,
+    kPhong,
+    kWard,
+    kConductor,
+    kDielectric,
+    kThinDielectric,
+    kDiffuseTransmission
+};
 
 struct Material {
     std::string name;
@@ -22,12 +30,13 @@ struct Material {
     float exponent = 0.0f;     // phong
     float alpha_x = 0.1f;      // ward; conductor, dielectric: Trowbridge-Reitz alpha (0: smooth)
     float alpha_y = 0.1f;
-    glm::vec3 eta{1.0f};  // conductor: the index's real part per channel
-    glm::vec3 k{0.0f};    // conductor: its imaginary part
-    float ior = 1.5f;     // dielectrics: the index inside over outside
+    glm::vec3 eta{1.0f};             // conductor: the index's real part per channel
+    glm::vec3 k{0.0f};               // conductor: its imaginary part
+    float ior = 1.5f;                // dielectrics: the index inside over outside
+    glm::vec3 transmittance{0.25f};  // diffuse transmission (its reflectance is `specular`)
 };
 
-// Whether the material transmits light (the dielectrics).
+// Whether the material transmits light (the dielectrics, the diffuse transmitter).
 bool transmits(const Material& material);
 
 // Whether its only lobes are the Lambertian and a Phong or Ward lobe (what every caching method

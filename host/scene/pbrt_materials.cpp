@@ -19,17 +19,14 @@ std::string in_quotes(const std::string& text) { return "\"" + excerpt(text) + "
 // Why a pbrt material type has no radcache counterpart (empty: it has one).
 std::string refusal(const std::string& type) {
     if (type == "diffuse" || type == "coateddiffuse" || type == "conductor" ||
-        type == "dielectric" || type == "thindielectric") {
+        type == "dielectric" || type == "thindielectric" || type == "diffusetransmission") {
         return "";
-    }
-    if (type == "diffusetransmission") {
-        return "transmits light diffusely, which radcache's materials do not";
     }
     if (type == "interface") {
         return "bounds a participating medium, and radcache has none";
     }
-    return "is not supported (diffuse, coateddiffuse, conductor, dielectric and thindielectric "
-           "are)";
+    return "is not supported (diffuse, coateddiffuse, conductor, dielectric, thindielectric and "
+           "diffusetransmission are)";
 }
 
 // pbrt's roughness to Trowbridge-Reitz alphas along u and v: "roughness", or "uroughness" and
@@ -233,6 +230,34 @@ void PbrtMaterials::make_dielectric(PbrtParams& params, bool thin, Material* mat
     }
 }
 
+// pbrt-v4's DiffuseTransmissionMaterial: "reflectance" and "transmittance" (0.25 each), both
+// times "scale", clamped to [0, 1] as pbrt-v4 clamps them; textures refused.
+void PbrtMaterials::make_diffuse_transmission(PbrtParams& params, Material* material) {
+    material->kind = MaterialKind::kDiffuseTransmission;
+    material->diffuse = glm::vec3(0.0f);
+    const float scale = params.get_float("scale", 1.0f);
+    if (!(scale >= 0.0f)) {
+        params.fail("scale must not be negative");
+    }
+    for (const char* name : {"reflectance", "transmittance"}) {
+        int texture = -1;
+        const glm::vec3 value = reflectance(params, name, glm::vec3(0.25f), &texture);
+        if (texture >= 0) {
+            params.refuse(std::string("a textured diffuse-transmission \"") + name +
+                          "\" is not supported");
+        }
+        (name[0] == 'r' ? material->specular : material->transmittance) =
+            glm::clamp(value * scale, 0.0f, 1.0f);
+    }
+    const glm::vec3 total = material->specular + material->transmittance;
+    if (glm::any(glm::greaterThan(total, glm::vec3(1.0f)))) {
+        log_warning(params.what() + ": reflectance + transmittance exceeds 1; scaled to 1");
+        const float m = std::max({total.r, total.g, total.b});
+        material->specular /= m;
+        material->transmittance /= m;
+    }
+}
+
 // pbrt-v4's ConductorMaterial: "eta" and "k" (rgb) or a "reflectance", its roughness.
 void PbrtMaterials::make_conductor(PbrtParams& params, Material* material) {
     material->kind = MaterialKind::kConductor;
@@ -300,6 +325,8 @@ Material PbrtMaterials::make(Spec& spec) {
         for (const char* ignored : {"thickness", "g", "maxdepth", "nsamples"}) {
             params.ignore(ignored);  // the layered simulation's own settings
         }
+    } else if (spec.type == "diffusetransmission") {
+        make_diffuse_transmission(params, &material);
     } else if (spec.type == "dielectric" || spec.type == "thindielectric") {
         make_dielectric(params, spec.type == "thindielectric", &material);
     } else {

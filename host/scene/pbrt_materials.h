@@ -50,6 +50,7 @@ class PbrtMaterials {
     Material make(Spec& spec);
     void make_dielectric(class PbrtParams& params, bool thin, Material* material);
     void make_conductor(class PbrtParams& params, Material* material);
+    void make_diffuse_transmission(class PbrtParams& params, Material* material);
     glm::vec3 reflectance(class PbrtParams& params, const std::string& name, glm::vec3 fallback,
                           int* texture);
     int load_image(const std::filesystem::path& path, class PbrtParams& params);

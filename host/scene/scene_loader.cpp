@@ -253,6 +253,20 @@ class SceneParser {
             parse_dielectric(reader, type, &material);
             return material;
         }
+        if (type == "diffusetransmission") {
+            reader.allow_only({"type", "reflectance", "transmittance"});
+            material.kind = MaterialKind::kDiffuseTransmission;
+            material.diffuse = glm::vec3(0.0f);
+            material.specular = parse_colour(reader, "reflectance", glm::vec3(0.25f), 0.0f, 1.0f);
+            material.transmittance =
+                parse_colour(reader, "transmittance", glm::vec3(0.25f), 0.0f, 1.0f);
+            const glm::vec3 total = material.specular + material.transmittance;
+            if (total.r > 1.0f || total.g > 1.0f || total.b > 1.0f) {
+                reader.fail("reflectance + transmittance = " + format_vec3(total) +
+                            " exceeds 1 (albedo > 1 breaks energy conservation)");
+            }
+            return material;
+        }
         if (type == "diffuse") {
             reader.allow_only({"type", "reflectance"});
             material.kind = MaterialKind::kDiffuse;
@@ -282,7 +296,8 @@ class SceneParser {
         } else {
             reader.fail("type",
                         "unknown material type '" + excerpt(type) +
-                            "' (diffuse, phong, ward, conductor, dielectric, thindielectric)");
+                            "' (diffuse, phong, ward, conductor, dielectric, thindielectric, "
+                            "diffusetransmission)");
         }
         material.diffuse =
             parse_reflectance(reader, "diffuse", glm::vec3(0.5f), &material.diffuse_texture);

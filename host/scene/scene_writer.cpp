@@ -172,6 +172,11 @@ class SceneWriter {
         if (material.kind == MaterialKind::kDiffuse) {
             return {{"type", "diffuse"}, {"reflectance", reflectance_json(material)}};
         }
+        if (material.kind == MaterialKind::kDiffuseTransmission) {
+            return {{"type", "diffusetransmission"},
+                    {"reflectance", vec3_json(material.specular)},
+                    {"transmittance", vec3_json(material.transmittance)}};
+        }
         if (material.specular != glm::vec3(1.0f) && !is_reflectance_model(material)) {
             throw Error("convert: material '" + material.name +
                         "' is a tinted conductor or dielectric, which the format cannot hold");

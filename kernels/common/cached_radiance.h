@@ -101,7 +101,8 @@ RC_FUNC void rc_trace_lobes(const SceneData* scene, const SurfacePoint* sp,
                             const SurfaceMaterial* traced, float3 wo, RngStream* rng, int bounces,
                             int max_depth, int rr_depth, CachedRadiance* c) {
     if (rc_is_black(traced->diffuse) &&
-        (traced->kind == RC_MATERIAL_DIFFUSE || rc_is_black(traced->specular))) {
+        (traced->kind == RC_MATERIAL_DIFFUSE || rc_is_black(traced->specular)) &&
+        (traced->kind != RC_MATERIAL_DIFFUSE_TRANSMISSION || rc_is_black(traced->k))) {
         return;
     }
     BsdfSample b;

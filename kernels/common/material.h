@@ -3,12 +3,14 @@
 // phong and ward models reflect only: a Lambertian lobe with an optional Phong or Ward specular
 // lobe, the diffuse lobe sampled with probability Material.diffuse_probability, so their pdfs are
 // the mixture of both lobes'. The conductor and the dielectrics are single lobes of their own
-// files (conductor_bsdf.h, dielectric_bsdf.h, thin_dielectric_bsdf.h), smooth ones delta lobes.
+// files (conductor_bsdf.h, dielectric_bsdf.h, thin_dielectric_bsdf.h, diffuse_transmission_bsdf.h),
+// smooth ones delta lobes.
 #pragma once
 
 #include "common/bsdf_sample.h"
 #include "common/conductor_bsdf.h"
 #include "common/dielectric_bsdf.h"
+#include "common/diffuse_transmission_bsdf.h"
 #include "common/math.h"
 #include "common/phong_brdf.h"
 #include "common/sampling.h"
@@ -20,13 +22,14 @@
 typedef struct SurfaceMaterial {
     int kind;
     float3 diffuse;
-    float3 specular;  // phong, ward: the lobe's reflectance; conductor, dielectrics: a tint
+    float3 specular;  // phong, ward: the lobe's reflectance; conductor, dielectrics: a tint;
+                      // diffuse transmission: its reflectance
     float exponent;
     float alpha_x;  // ward: its roughness; conductor, dielectric: the Trowbridge-Reitz alpha
     float alpha_y;
     float diffuse_probability;
     float3 eta;  // conductor: eta per channel; dielectrics: x, the far side's index over wo's
-    float3 k;    // conductor: k per channel
+    float3 k;    // conductor: k per channel; diffuse transmission: its transmittance
 } SurfaceMaterial;
 
 // The material's constant parameters (scene_data.h applies textures and the side on top).
@@ -53,7 +56,8 @@ RC_FUNC TrowbridgeReitz rc_material_distribution(const SurfaceMaterial* m) {
 
 // Whether the material lets light through (wi below the surface).
 RC_FUNC bool rc_material_transmits(const SurfaceMaterial* m) {
-    return m->kind == RC_MATERIAL_DIELECTRIC || m->kind == RC_MATERIAL_THIN_DIELECTRIC;
+    return m->kind == RC_MATERIAL_DIELECTRIC || m->kind == RC_MATERIAL_THIN_DIELECTRIC ||
+           m->kind == RC_MATERIAL_DIFFUSE_TRANSMISSION;
 }
 
 // Whether every lobe of the material is a delta lobe (rc_material_eval is 0 everywhere: light
@@ -102,6 +106,9 @@ RC_FUNC float3 rc_material_eval(const SurfaceMaterial* m, float3 wo, float3 wi) 
     if (m->kind == RC_MATERIAL_DIELECTRIC) {
         return m->specular * rc_dielectric_eval(rc_material_distribution(m), m->eta.x, wo, wi);
     }
+    if (m->kind == RC_MATERIAL_DIFFUSE_TRANSMISSION) {
+        return rc_diffuse_transmission_eval(m->specular, m->k, wo, wi);
+    }
     if (m->kind == RC_MATERIAL_THIN_DIELECTRIC || wo.z <= 0.0f || wi.z <= 0.0f) {
         return (float3)(0.0f);
     }
@@ -121,6 +128,9 @@ RC_FUNC float rc_material_pdf(const SurfaceMaterial* m, float3 wo, float3 wi) {
     }
     if (m->kind == RC_MATERIAL_DIELECTRIC) {
         return rc_dielectric_pdf(rc_material_distribution(m), m->eta.x, wo, wi);
+    }
+    if (m->kind == RC_MATERIAL_DIFFUSE_TRANSMISSION) {
+        return rc_diffuse_transmission_pdf(m->specular, m->k, wo, wi);
     }
     if (m->kind == RC_MATERIAL_THIN_DIELECTRIC || wo.z <= 0.0f || wi.z <= 0.0f) {
         return 0.0f;
@@ -173,6 +183,8 @@ RC_FUNC bool rc_material_sample(const SurfaceMaterial* m, float3 wo, float u_lob
                                     u1, u2, s);
     } else if (m->kind == RC_MATERIAL_THIN_DIELECTRIC) {
         return rc_thin_dielectric_sample(m->eta.x, m->specular, wo, u_lobe, s);
+    } else if (m->kind == RC_MATERIAL_DIFFUSE_TRANSMISSION) {
+        return rc_diffuse_transmission_sample(m->specular, m->k, wo, u_lobe, u1, u2, s);
     } else {
         return rc_reflection_sample(m, wo, u_lobe, u1, u2, s);
     }

@@ -126,13 +126,15 @@ typedef struct CameraParams {
 #define RC_MATERIAL_CONDUCTOR 3
 #define RC_MATERIAL_DIELECTRIC 4
 #define RC_MATERIAL_THIN_DIELECTRIC 5
+#define RC_MATERIAL_DIFFUSE_TRANSMISSION 6
 
 // A surface material (docs/scene-format.md). Two-sided; the dielectrics transmit.
 typedef struct Material {
     float4 diffuse;             // rgb: diffuse reflectance (the Lambertian lobe); w: padding
-    float4 specular;            // rgb: specular reflectance (conductor, dielectrics: a tint)
+    float4 specular;            // rgb: specular reflectance (conductor, dielectrics: a tint;
+                                // diffuse transmission: its reflectance)
     float4 eta;                 // conductor: rgb, eta per channel; dielectrics: x, the index
-    float4 k;                   // conductor: rgb, k per channel
+    float4 k;                   // conductor: rgb, k per channel; diffuse transmission: rgb, T
     float exponent;             // Phong exponent
     float alpha_x;              // Ward or Trowbridge-Reitz roughness along the tangent
     float alpha_y;              // Ward or Trowbridge-Reitz roughness along the bitangent

@@ -256,6 +256,34 @@ TEST(Dielectric, RoughInterfaceConservesEnergy) {
     }
 }
 
+// A diffuse transmitter reflects R and transmits T in all (the sphere's integral of f |cos| is
+// R + T per channel, split R above and T below), whatever the incident direction and side.
+TEST(DiffuseTransmission, ReflectsAndTransmitsItsAlbedos) {
+    Material m;
+    m.kind = MaterialKind::kDiffuseTransmission;
+    m.diffuse = glm::vec3(0.0f);
+    m.specular = glm::vec3(0.5f, 0.3f, 0.1f);
+    m.transmittance = glm::vec3(0.2f, 0.6f, 0.0f);
+    const test::DirectionGrid grid = test::direction_grid(512, 64, kPi);
+    for (double theta : {0.0, 60.0, 120.0}) {
+        const shared::float4 wo = direction(theta, 40.0);
+        const std::vector<shared::float4> f = evaluate(m, wo, grid.directions);
+        double same[3] = {0, 0, 0};
+        double other[3] = {0, 0, 0};
+        for (size_t i = 0; i < f.size(); ++i) {
+            const double w = std::fabs(grid.directions[i].z) * grid.weights[i];
+            double* side = grid.directions[i].z * wo.z > 0.0f ? same : other;
+            side[0] += f[i].x * w;
+            side[1] += f[i].y * w;
+            side[2] += f[i].z * w;
+        }
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(same[c], m.specular[c], 1e-4) << "theta " << theta << " channel " << c;
+            EXPECT_NEAR(other[c], m.transmittance[c], 1e-4) << "theta " << theta;
+        }
+    }
+}
+
 // Reciprocity: f(wo, wi) = f(wi, wo) for reflection (conductor and dielectric); across the
 // dielectric, radiance's BTDF obeys f(wo, wi) eta^2 = f(wi, wo) (Veach 1997, §5.2's generalised
 // reciprocity f(wo, wi) / eta_i^2 = f(wi, wo) / eta_o^2, with the 1 / eta'^2 radiance scaling).

@@ -80,6 +80,12 @@ std::vector<Case> cases() {
         glass.alpha_x = glass.alpha_y = 0.3f;
         list.push_back({"dielectric 0.3 eta " + std::to_string(ior).substr(0, 4), glass});
     }
+    Material lampshade;
+    lampshade.kind = MaterialKind::kDiffuseTransmission;
+    lampshade.diffuse = glm::vec3(0.0f);
+    lampshade.specular = glm::vec3(0.5f, 0.3f, 0.2f);
+    lampshade.transmittance = glm::vec3(0.3f, 0.4f, 0.6f);
+    list.push_back({"diffuse transmission", lampshade});
     return list;
 }
 

@@ -392,8 +392,8 @@ TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
     const std::vector<Refusal> cases = {
         {"curve", "Shape \"curve\" \"point3 P\" [0 0 0 1 0 0 2 0 0 3 0 0]\n",
          "Shape \"curve\" is not supported"},
-        {"diffusetransmission", std::string("Material \"diffusetransmission\"\n") + kTriangle,
-         "Material \"diffusetransmission\" transmits light diffusely", 6},
+        {"subsurface", std::string("Material \"subsurface\"\n") + kTriangle,
+         "Material \"subsurface\" is not supported", 6},
         {"unknown_glass",
          std::string("Material \"dielectric\" \"spectrum eta\" \"glass-Unobtainium\"\n") +
              kTriangle,
@@ -466,10 +466,16 @@ TEST(Pbrt, DielectricsAndConductorsTakePbrtV4Parameters) {
                   "Material \"conductor\" \"rgb eta\" [0.2 0.9 1.1] \"rgb k\" [3.9 2.4 2.1]\n"
                   "    \"float uroughness\" 0.01 \"float vroughness\" 0.16\n" +
                   triangle + "Material \"conductor\" \"rgb reflectance\" [0.8 0.5 0.2]\n" +
+                  triangle +
+                  "Material \"diffusetransmission\" \"rgb transmittance\" [0.4 0.5 0.6]\n"
+                  "    \"float scale\" 0.5\n" +
                   triangle);
     const Scene scene = load_scene(file);
-    ASSERT_EQ(scene.shapes.size(), 5u);
+    ASSERT_EQ(scene.shapes.size(), 6u);
     const auto material = [&](size_t i) { return scene.materials[scene.shapes[i].materials[0]]; };
+    EXPECT_EQ(material(5).kind, MaterialKind::kDiffuseTransmission);
+    EXPECT_NEAR(material(5).specular.r, 0.125f, 1e-6f);  // the default 0.25 times the scale
+    EXPECT_NEAR(material(5).transmittance.b, 0.3f, 1e-6f);
     EXPECT_EQ(material(0).kind, MaterialKind::kDielectric);
     EXPECT_FLOAT_EQ(material(0).ior, 1.33f);
     EXPECT_FLOAT_EQ(material(0).alpha_x, 0.0f);

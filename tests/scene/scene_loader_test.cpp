@@ -286,6 +286,12 @@ TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
          scene_with(kCamera, shape)
              .replace(1, 0, R"("materials": {"m": {"type": "conductor", "eta": 0, "k": 2}},)"),
          {"materials.m.eta", "outside"}},
+        {"transmitter_albedo",
+         scene_with(kCamera, shape)
+             .replace(
+                 1, 0,
+                 R"("materials": {"m": {"type": "diffusetransmission", "reflectance": 0.6, "transmittance": 0.5}},)"),
+         {"materials.m", "exceeds 1"}},
         {"thin_roughness",
          scene_with(kCamera, shape)
              .replace(1, 0, R"("materials": {"g": {"type": "thindielectric", "alpha": 0.2}},)"),

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """tools/bench/collection.py on a made-up collection: a scene that renders once its missing
-texture and PLY mesh are stood in for, one radcache refuses (a diffuse transmitter: exit status 2, the
+texture and PLY mesh are stood in for, one radcache refuses (subsurface scattering: exit status 2, the
 refusal's line in the table), one that fails (malformed: exit status 1), a file included by
 another (not a scene of its own); the source folder is left as it was. Run by CTest with
 $RADCACHE set to the built executable."""
@@ -33,7 +33,7 @@ class CollectionTest(unittest.TestCase):
         with open(os.path.join(source, "a", "lights.pbrt"), "w") as f:
             f.write('LightSource "distant" "point3 to" [0 0 1]\n')
         with open(os.path.join(source, "glass.pbrt"), "w") as f:
-            f.write(HEAD + 'Material "diffusetransmission"\n' + TRIANGLE)
+            f.write(HEAD + 'Material "subsurface"\n' + TRIANGLE)
         with open(os.path.join(source, "broken.pbrt"), "w") as f:
             f.write(HEAD + 'Shape "trianglemesh" "point3 P" [0 0 0 1 0 0\n')
         before = sorted(os.walk(source))
@@ -51,7 +51,7 @@ class CollectionTest(unittest.TestCase):
         self.assertEqual(sorted(runs["a/good.pbrt"]["stand_ins"]),
                          ["a/meshes/body.ply.gz (mesh)", "a/tex/wood.png (image)"])
         self.assertEqual(runs["glass.pbrt"]["outcome"], "refused")
-        self.assertIn('Material "diffusetransmission"', runs["glass.pbrt"]["message"])
+        self.assertIn('Material "subsurface"', runs["glass.pbrt"]["message"])
         self.assertEqual(runs["broken.pbrt"]["outcome"], "failed")
         self.assertEqual(runs["broken.pbrt"]["exit_status"], 1)
         with open(os.path.join(out, "collection.md")) as f:
