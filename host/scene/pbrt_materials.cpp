@@ -123,10 +123,65 @@ void PbrtMaterials::define_texture(const PbrtDirective& directive) {
                         " (albedo > 1)");
         }
         params.warn_unused();
+    } else if (type == "checkerboard") {
+        entry.texture = bake_checkerboard(params, entry.what);
+        params.warn_unused();
     } else {
-        entry.refused = "is of class " + in_quotes(type) + " (imagemap and constant are supported)";
+        entry.refused = "is of class " + in_quotes(type) +
+                        " (imagemap, checkerboard and constant are supported)";
     }
     textures_[name] = entry;
+}
+
+// pbrt-v4's 2D checkerboard (textures.cpp, Checkerboard): tex1 where floor(s) + floor(t) is even,
+// tex2 elsewhere, (s, t) = (uscale u + udelta, vscale v + vdelta), baked into an image of 8 x 8
+// texels a check so that radcache's uv lookup repeats it (whole scales only; the bilinear lookup
+// blurs each check's edge over one texel, where pbrt-v4 filters by the ray's footprint).
+int PbrtMaterials::bake_checkerboard(PbrtParams& params, const std::string& what) {
+    if (params.get_int("dimension", 2) != 2 || params.get_string("mapping", "uv") != "uv") {
+        params.refuse("only the 2D checkerboard with the \"uv\" mapping is supported");
+    }
+    for (const char* name : {"tex1", "tex2"}) {
+        if (params.type_of(name) == "texture") {
+            params.refuse(std::string("a checkerboard of textures (\"") + name +
+                          "\") is not supported");
+        }
+    }
+    const glm::vec3 colours[2] = {params.get_material_spectrum("tex1").value_or(glm::vec3(1.0f)),
+                                  params.get_material_spectrum("tex2").value_or(glm::vec3(0.0f))};
+    check_unit(colours[0], params, "tex1");
+    check_unit(colours[1], params, "tex2");
+    const float scale[2] = {params.get_float("uscale", 1.0f), params.get_float("vscale", 1.0f)};
+    const float delta[2] = {params.get_float("udelta", 0.0f), params.get_float("vdelta", 0.0f)};
+    for (int a = 0; a < 2; ++a) {
+        if (!(scale[a] >= 1.0f && scale[a] <= 512.0f && scale[a] == std::floor(scale[a])) ||
+            !std::isfinite(delta[a])) {
+            params.refuse(
+                "a checkerboard scale must be a whole number in [1, 512] (it is baked "
+                "into a texture that repeats over uv [0, 1])");
+        }
+    }
+    constexpr int kTexelsPerCheck = 8;
+    Texture texture;
+    texture.file = what;
+    texture.procedural = true;
+    texture.width = static_cast<int>(scale[0]) * kTexelsPerCheck;
+    texture.height = static_cast<int>(scale[1]) * kTexelsPerCheck;
+    texture.texels.resize(static_cast<size_t>(texture.width) * texture.height);
+    for (int y = 0; y < texture.height; ++y) {
+        const double v = 1.0 - (y + 0.5) / texture.height;  // rows top to bottom
+        for (int x = 0; x < texture.width; ++x) {
+            const double u = (x + 0.5) / texture.width;
+            const long parity = static_cast<long>(std::floor(scale[0] * u + delta[0])) +
+                                static_cast<long>(std::floor(scale[1] * v + delta[1]));
+            texture.texels[static_cast<size_t>(y) * texture.width + x] =
+                glm::vec4(colours[parity % 2 == 0 ? 0 : 1], 1.0f);
+        }
+    }
+    texture.max_value = std::max(
+        {colours[0].r, colours[0].g, colours[0].b, colours[1].r, colours[1].g, colours[1].b});
+    scene_.textures.push_back(std::move(texture));
+    return static_cast<int>(scene_.textures.size() - 1);
 }
 
 int PbrtMaterials::load_image(const std::filesystem::path& path, PbrtParams& params) {

@@ -54,6 +54,7 @@ class PbrtMaterials {
     glm::vec3 reflectance(class PbrtParams& params, const std::string& name, glm::vec3 fallback,
                           int* texture);
     int load_image(const std::filesystem::path& path, class PbrtParams& params);
+    int bake_checkerboard(class PbrtParams& params, const std::string& what);
 
     Scene& scene_;
     const SceneFiles& files_;

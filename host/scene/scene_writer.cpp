@@ -151,6 +151,10 @@ class SceneWriter {
             return vec3_json(material.diffuse);
         }
         const Texture& texture = scene_.textures[material.diffuse_texture];
+        if (texture.procedural) {
+            throw Error("convert: material '" + material.name + "' has a procedural texture (" +
+                        texture.file.string() + "), which the format cannot hold");
+        }
         if (texture.encoded.empty()) {
             return {{"type", "bitmap"},
                     {"filename",

@@ -19,6 +19,9 @@ struct Texture {
     // The image file's bytes when the texture came from inside a glTF file (embedded or not;
     // `radcache convert` writes them out); empty otherwise.
     std::string encoded;
+    // Baked from a procedural texture (a pbrt checkerboard): no file holds it, `file` names its
+    // definition.
+    bool procedural = false;
 };
 
 // Reads the image through `files` (within image/image_io.h's limits); 8- and 16-bit integer images

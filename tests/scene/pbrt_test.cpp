@@ -408,11 +408,11 @@ TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
         {"envmap_illuminance",
          "LightSource \"infinite\" \"string filename\" \"sky.exr\" \"float illuminance\" 10\n",
          "\"illuminance\" of an image map is not supported"},
-        {"checkerboard",
-         "Texture \"c\" \"spectrum\" \"checkerboard\"\nMaterial \"diffuse\" \"texture "
+        {"marble",
+         "Texture \"c\" \"spectrum\" \"marble\"\nMaterial \"diffuse\" \"texture "
          "reflectance\" \"c\"\n" +
              std::string(kTriangle),
-         "is of class \"checkerboard\"", 7},
+         "is of class \"marble\"", 7},
         {"spectrum_file",
          std::string("Material \"conductor\" \"spectrum eta\" \"metal.spd\"\n") + kTriangle,
          "is not one of pbrt-v4's named spectra", 6},
@@ -544,6 +544,45 @@ TEST(Pbrt, NamedAndSampledSpectraBecomeRgb) {
     EXPECT_NEAR(material(5).diffuse.r, 0.5f, 2e-3f);
     EXPECT_NEAR(material(5).diffuse.g, 0.5f, 2e-3f);
     EXPECT_NEAR(material(5).diffuse.b, 0.5f, 2e-3f);
+}
+
+// pbrt-v4's 2D checkerboard: tex1 where floor(uscale u + udelta) + floor(vscale v + vdelta) is
+// even, tex2 elsewhere (pbrt-v4's Checkerboard without its filtering), baked into a texture
+// radcache's uv lookup repeats; `convert` refuses it by name; a scale it cannot bake is refused.
+TEST(Pbrt, CheckerboardTextureIsBakedAsPbrtV4DefinesIt) {
+    const auto dir = test::scratch_dir("pbrt_checkerboard");
+    const auto file = dir / "checks.pbrt";
+    const std::string checks =
+        "Texture \"c\" \"spectrum\" \"checkerboard\" \"rgb tex1\" [0.8 0.1 0.1]\n"
+        "    \"rgb tex2\" [0.1 0.1 0.8] \"float uscale\" 4 \"float vscale\" 2 "
+        "\"float udelta\" 0.5\n"
+        "Material \"diffuse\" \"texture reflectance\" \"c\"\n";
+    write_file_atomically(file, std::string(kHeader) + checks + kTriangle);
+    const Scene scene = load_scene(file);
+    const Material& m = scene.materials[scene.shapes[0].materials[0]];
+    ASSERT_GE(m.diffuse_texture, 0);
+    const Texture& t = scene.textures[m.diffuse_texture];
+    ASSERT_EQ(t.width, 32);
+    ASSERT_EQ(t.height, 16);
+    for (const auto& [u, v] : {std::pair{0.05, 0.1}, std::pair{0.2, 0.1}, std::pair{0.05, 0.6},
+                               std::pair{0.9, 0.9}, std::pair{0.6, 0.3}}) {
+        const bool even =
+            (static_cast<int>(std::floor(4 * u + 0.5)) + static_cast<int>(std::floor(2 * v))) % 2 ==
+            0;
+        const int x = static_cast<int>(u * t.width);
+        const int y = static_cast<int>((1.0 - v) * t.height);  // rows top to bottom
+        EXPECT_FLOAT_EQ(t.texels[y * t.width + x].r, even ? 0.8f : 0.1f) << u << ", " << v;
+        EXPECT_FLOAT_EQ(t.texels[y * t.width + x].b, even ? 0.1f : 0.8f) << u << ", " << v;
+    }
+    const test::CommandResult converted =
+        test::run_radcache({"convert", file.string(), (dir / "checks.json").string(), "-q"});
+    EXPECT_NE(converted.exit_code, 0);
+    EXPECT_NE(converted.output.find("procedural texture"), std::string::npos) << converted.output;
+    expect_refused(dir, "fractional_scale",
+                   std::string(kHeader) +
+                       "Texture \"c\" \"spectrum\" \"checkerboard\" \"float uscale\" 2.5\n" +
+                       "Material \"diffuse\" \"texture reflectance\" \"c\"\n" + kTriangle,
+                   "a checkerboard scale must be a whole number", 6, 2);
 }
 
 TEST(Pbrt, LightsTakePowerIlluminanceAndDirectionAsPbrtV4) {
