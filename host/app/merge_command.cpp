@@ -1,5 +1,6 @@
 // `radcache merge OUT PART...`: the parts of one render (app/merge_parts.h) as one image.
 #include "app/commands.h"
+#include "app/denoise_options.h"
 #include "app/merge_parts.h"
 #include "app/render_job.h"
 #include "image/image_io.h"
@@ -45,6 +46,7 @@ int merge(const ParsedArguments& arguments) {
     run.output_frames("OUT", words[0], frames.first, frames.last);
     run.check();
     set_quiet(arguments.has("--quiet"));
+    const std::unique_ptr<Denoiser> denoiser = open_denoiser(read_denoise_request(arguments));
     // Every frame merged before any is written: a refused part leaves no output.
     std::vector<Image> merged;
     for (int frame = frames.first; frame <= frames.last; ++frame) {
@@ -53,6 +55,9 @@ int merge(const ParsedArguments& arguments) {
             parts.push_back(name(words[i], frame));
         }
         merged.push_back(merge_parts(parts));
+        if (denoiser) {
+            merged.back() = denoiser->denoise(merged.back());
+        }
     }
     ImageWriteOptions options;
     options.half = arguments.has("--half");
@@ -65,6 +70,18 @@ int merge(const ParsedArguments& arguments) {
                  image.metadata.at("radcache:samples") + ")");
     }
     return 0;
+}
+
+std::vector<OptionSpec> merge_option_specs() {
+    std::vector<OptionSpec> specs = {
+        {"--frames", "", "A:B",
+         "merge frames A to B: #### in OUT and each PART becomes the frame number"},
+        {"--half", "", "", ".exr: store half floats"},
+        {"--quiet", "-q", "", "print nothing but errors"}};
+    for (OptionSpec& spec : denoise_option_specs()) {
+        specs.push_back(std::move(spec));
+    }
+    return specs;
 }
 
 }  // namespace
@@ -81,11 +98,7 @@ CommandSpec merge_command() {
                 "would resolve them. Parts of another scene, method, options, image size or "
                 "frame, overlapping windows or sample ranges, and gaps are refused naming the "
                 "part; nothing is written then (docs/farm.md).",
-            .options = {{"--frames", "", "A:B",
-                         "merge frames A to B: #### in OUT and each PART becomes the frame "
-                         "number"},
-                        {"--half", "", "", ".exr: store half floats"},
-                        {"--quiet", "-q", "", "print nothing but errors"}},
+            .options = merge_option_specs(),
             .run = merge};
 }
 

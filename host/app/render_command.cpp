@@ -14,6 +14,7 @@
 #include "app/render_parts.h"
 #include "app/render_stats.h"
 #include "bvh/device_bvh.h"
+#include "image/denoiser.h"
 #include "image/image_io.h"
 #include "methods/registry.h"
 #include "scene/device_scene.h"
@@ -85,11 +86,18 @@ std::function<void(int, const std::function<void(const FrameScene&)>&)> visit_fr
     };
 }
 
+// The layers less `name`.
+std::vector<std::string> without_layer(std::vector<std::string> layers, const std::string& name) {
+    layers.erase(std::remove(layers.begin(), layers.end(), name), layers.end());
+    return layers;
+}
+
 // Poses the scene at `frame`, renders it with `method` (on every device of `contexts`, the
 // first holding the method's state) and writes its image.
 void render_frame(const RenderJob& job, int frame,
                   const std::vector<std::unique_ptr<Context>>& contexts, Scene& scene, Bvh& bvh,
-                  Method& method, PartIdentity identity, RenderTotals& totals) {
+                  Method& method, const Denoiser* denoiser, PartIdentity identity,
+                  RenderTotals& totals) {
     Context& context = *contexts[0];
     if (static_cast<double>(frame) != scene.frame) {
         scene.set_frame(frame);
@@ -111,8 +119,12 @@ void render_frame(const RenderJob& job, int frame,
     totals.phase("upload") += seconds_since(start);
 
     start = SteadyClock::now();
+    // The intermediate images (--save-every-pow2) are the noisy ones, even with --denoise.
+    const std::vector<std::string> noisy_layers = without_layer(job.layers, "beauty_noisy");
     const auto written = [&](const Image& image) {
-        return job.layers.empty() ? image : select_layers(image, job.layers);
+        return job.layers.empty()     ? image
+               : noisy_layers.empty() ? select_layers(image, {"beauty"})
+                                      : select_layers(image, noisy_layers);
     };
     ProgressBar progress(job.frames.given ? "frame " + std::to_string(frame) : "render", !quiet());
     FrameHooks hooks;
@@ -123,10 +135,15 @@ void render_frame(const RenderJob& job, int frame,
         write_image(intermediate_path(output, spp), written(image), job.write_options);
     };
     hooks.visit_frame = visit_frame_hook(context, scene);
-    const FrameResult result = method.render_frame(
+    FrameResult result = method.render_frame(
         {context, scene, device_bvh, device_scene, frame, &peers.frames()}, hooks);
     progress.finish();
     totals.phase("render") += seconds_since(start);
+    if (denoiser != nullptr && frame >= job.write_from) {
+        start = SteadyClock::now();
+        result.image = denoiser->denoise(result.image);
+        totals.phase("denoise") += seconds_since(start);
+    }
 
     if (frame < job.write_from) {  // --write-from: a warm-up frame, not written
         log_note("frame " + std::to_string(frame) + " rendered, not written (--write-from " +
@@ -203,6 +220,18 @@ int list_knobs(const ParsedArguments& arguments) {
     return 0;
 }
 
+// --denoise: Error (exit status 2) unless the method writes the layers the denoiser reads.
+void check_denoise_layers(const RenderJob& job, const MethodEntry& entry) {
+    for (const char* layer : {"beauty", "albedo", "normal"}) {
+        if (job.denoise.given &&
+            std::find(entry.aovs.begin(), entry.aovs.end(), layer) == entry.aovs.end()) {
+            throw Error("--denoise: method " + entry.name + " writes no " + layer +
+                            " layer for the denoiser to read",
+                        kExitUsage);
+        }
+    }
+}
+
 // Renders the scene of `arguments` frame after frame; returns the exit status.
 int render(const ParsedArguments& arguments) {
     if (arguments.has("--list-knobs")) {
@@ -234,7 +263,7 @@ int render(const ParsedArguments& arguments) {
     job.write_options.exposure = settings.exposure;
     const MethodEntry& entry = find_method(settings.method);
     read_method_options(entry, arguments, &job);
-    check_layers(entry, job.layers);
+    check_layers(entry, job.denoise.given ? without_layer(job.layers, "beauty_noisy") : job.layers);
     const int first =
         job.frames.given ? job.frames.first : static_cast<int>(scene.animation.frame_start);
     const int last = job.frames.given ? job.frames.last : first;
@@ -245,8 +274,22 @@ int render(const ParsedArguments& arguments) {
     const PartIdentity identity = part_identity(arguments, scene_files.content_digest(), entry.name,
                                                 width, height, job.crop, job.samples);
     warn_unless_frames_in_range(job.frames, scene.animation);
+    // The denoiser before any work, and its predicted time out of each frame's --time.
+    check_denoise_layers(job, entry);
+    const std::unique_ptr<Denoiser> denoiser = open_denoiser(job.denoise);
+    RenderSettings budget = settings;
+    const double denoise_seconds =
+        denoiser && settings.time > 0.0 ? denoiser->predicted_seconds(width, height) : 0.0;
+    budget.time = settings.time - denoise_seconds;
+    if (settings.time > 0.0 && budget.time < 0.1 * settings.time) {
+        throw Error("--time " + std::to_string(settings.time) +
+                        " s: the denoise alone is predicted "
+                        "to take " +
+                        std::to_string(denoise_seconds) + " s a frame",
+                    kExitUsage);
+    }
     const std::unique_ptr<Method> method =
-        entry.create(job.method_options, method_settings(arguments, settings, job, first, last));
+        entry.create(job.method_options, method_settings(arguments, budget, job, first, last));
 
     start = SteadyClock::now();
     const std::vector<std::unique_ptr<Context>> contexts =
@@ -268,11 +311,19 @@ int render(const ParsedArguments& arguments) {
     }
     Bvh bvh;
     for (long long frame = first; frame <= last; ++frame) {
-        render_frame(job, static_cast<int>(frame), contexts, scene, bvh, *method, identity, totals);
+        render_frame(job, static_cast<int>(frame), contexts, scene, bvh, *method, denoiser.get(),
+                     identity, totals);
     }
     if (!job.stats.empty()) {
-        const nlohmann::json stats =
+        nlohmann::json stats =
             totals.json(settings, scene, context, bvh, seconds_since(total_start));
+        if (denoiser) {
+            stats["denoise"] = {{"library", denoiser->library_path()},
+                                {"quality", job.denoise.quality}};
+            if (settings.time > 0.0) {  // predicted only where it is taken out of --time
+                stats["denoise"]["predicted_seconds_per_frame"] = denoise_seconds;
+            }
+        }
         write_file_atomically(job.stats, stats.dump(2) + "\n");
     }
     outputs.commit();

@@ -7,6 +7,7 @@
 #include <regex>
 #include <sstream>
 
+#include "app/denoise_options.h"
 #include "app/device_options.h"
 #include "methods/registry.h"
 #include "scene/animation.h"
@@ -104,6 +105,9 @@ std::vector<OptionSpec> render_option_specs() {
     for (OptionSpec& spec : device_option_specs()) {
         specs.push_back(std::move(spec));
     }
+    for (OptionSpec& spec : denoise_option_specs()) {
+        specs.push_back(std::move(spec));
+    }
     return specs;
 }
 
@@ -189,6 +193,18 @@ void read_part_options(const ParsedArguments& arguments, RenderJob* job) {
     }
 }
 
+// --denoise and what it cannot go with: a farm part is denoised after the merge.
+void read_denoise_options(const ParsedArguments& arguments, RenderJob* job) {
+    job->denoise = read_denoise_request(arguments);
+    for (const char* part : {"--crop", "--sample-range", "--write-sums"}) {
+        if (job->denoise.given && arguments.has(part)) {
+            throw Error(std::string("--denoise with ") + part +
+                            ": a part is denoised after the merge (radcache merge ... --denoise)",
+                        kExitUsage);
+        }
+    }
+}
+
 // --write-from F: the first frame written (without the option, --frames' first). Error (exit
 // status 2) naming the option unless F is a whole number within --frames.
 int read_write_from(const ParsedArguments& arguments, const FrameRange& frames) {
@@ -252,6 +268,7 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
     job.write_from = read_write_from(arguments, job.frames);
     check_output_path(frame_path(job.output_pattern, job.frames.first));
     read_part_options(arguments, &job);
+    read_denoise_options(arguments, &job);
     if (job.frames.given) {
         check_output_path(frame_path(job.output_pattern, job.frames.last));
     }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "app/denoise_options.h"
 #include "app/recorded_files.h"
 #include "app/render_parts.h"
 #include "image/image_io.h"
@@ -45,6 +46,7 @@ struct RenderJob {
     PixelWindow crop;
     SampleRange samples;
     bool write_sums = false;
+    DenoiseRequest denoise;  // --denoise: each frame's beauty denoised before it is written
     // The method's options, read once: by read_render_job when --method names the method,
     // otherwise once the scene's render defaults name it (read_method_options).
     std::string method;
