@@ -36,8 +36,22 @@ Part read_part(const std::filesystem::path& path) {
     } catch (const Error& error) {
         throw Error(part.name + ": unreadable part attributes (" + error.what() + ")");
     }
-    if (part.crop.width() != part.image.width || part.crop.height() != part.image.height) {
-        throw Error(part.name + ": its window " + window_text(part.crop) + " is not its size");
+    // The attributes the merge places the part by, against the EXR's own windows: its data
+    // window (origin and size) and its display window (the whole image's size).
+    const Image& image = part.image;
+    const bool whole = image.full_width == 0;
+    const PixelWindow data{image.origin_x, image.origin_x + image.width, image.origin_y,
+                           image.origin_y + image.height};
+    if (part.crop.x0 != data.x0 || part.crop.x1 != data.x1 || part.crop.y0 != data.y0 ||
+        part.crop.y1 != data.y1) {
+        throw Error(part.name + ": its radcache:crop " + window_text(part.crop) +
+                    " is not its data window " + window_text(data));
+    }
+    const std::string size = std::to_string(whole ? image.width : image.full_width) + "x" +
+                             std::to_string(whole ? image.height : image.full_height);
+    if (attribute(part, "radcache:size") != size) {
+        throw Error(part.name + ": its radcache:size " + attribute(part, "radcache:size") +
+                    " is not its display window's size " + size);
     }
     return part;
 }

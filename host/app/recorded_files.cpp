@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 namespace rc {
 
@@ -12,13 +13,27 @@ uint64_t RecordedFiles::bytes_fingerprint(const std::string& bytes) {
 }
 
 std::string RecordedFiles::content_digest() const {
-    std::vector<uint64_t> sorted;
+    std::vector<std::pair<std::filesystem::path, uint64_t>> files;
     {
         const std::lock_guard<std::mutex> lock(mutex_);
-        sorted = fingerprints_;
+        files = fingerprints_;
     }
-    // Sorted, so that neither the paths nor the order of the reads count; a file read twice
-    // (an include named twice) counts twice, as it does for the loader.
+    // Each file's role: its path relative to the scene file's folder (the first file read).
+    const std::filesystem::path base =
+        files.empty()
+            ? std::filesystem::path()
+            : std::filesystem::absolute(files.front().first).lexically_normal().parent_path();
+    std::vector<uint64_t> sorted;
+    for (const auto& [path, fingerprint] : files) {
+        const std::string role = std::filesystem::absolute(path)
+                                     .lexically_normal()
+                                     .lexically_relative(base)
+                                     .generic_string();
+        const std::string keyed = role + '\0' + std::to_string(fingerprint);
+        sorted.push_back(bytes_fingerprint(keyed));
+    }
+    // Sorted, so that the order of the reads does not count; a file read twice (an include named
+    // twice) counts twice, as it does for the loader.
     std::sort(sorted.begin(), sorted.end());
     const uint64_t digest = OIIO::farmhash::Fingerprint64(
         reinterpret_cast<const char*>(sorted.data()), sorted.size() * sizeof(uint64_t));

@@ -29,12 +29,15 @@ class RecordedFiles : public SceneFiles {
         std::string bytes = files_.read(path, max_bytes, what);
         const uint64_t fingerprint = bytes_fingerprint(bytes);
         const std::lock_guard<std::mutex> lock(mutex_);
-        fingerprints_.push_back(fingerprint);
+        fingerprints_.emplace_back(path, fingerprint);
         return bytes;
     }
 
-    // A fingerprint of the bytes of every file read (whatever their paths and the order they were
-    // read in): the same scene, meshes and textures give the same 16 hex digits on any machine.
+    // A fingerprint of every file read, each file's bytes bound to its role: its path relative to
+    // the folder of the first file read (the scene file). The same scene, meshes and textures at
+    // the same places under the scene's folder give the same 16 hex digits on any machine,
+    // wherever that folder is and whatever order the files were read in; two files' contents
+    // swapped give another.
     std::string content_digest() const;
 
     // Every file read, each an input of `run` named by what it is ("mesh file").
@@ -49,7 +52,7 @@ class RecordedFiles : public SceneFiles {
     const SceneFiles& files_;
     mutable std::mutex mutex_;
     mutable std::vector<std::pair<std::string, std::filesystem::path>> read_;
-    mutable std::vector<uint64_t> fingerprints_;
+    mutable std::vector<std::pair<std::filesystem::path, uint64_t>> fingerprints_;
 
     static uint64_t bytes_fingerprint(const std::string& bytes);
 };

@@ -270,7 +270,7 @@ int render(const ParsedArguments& arguments) {
     check_run_files(job, entry, arguments, scene_files, first, last);
     const int width = static_cast<int>(arguments.integer("--width", scene.camera.width));
     const int height = static_cast<int>(arguments.integer("--height", scene.camera.height));
-    check_part_options(job, entry, width, height);
+    check_part_options(job, entry, width, height, settings.time);
     const PartIdentity identity = part_identity(arguments, scene_files.content_digest(), entry.name,
                                                 width, height, job.crop, job.samples);
     warn_unless_frames_in_range(job.frames, scene.animation);

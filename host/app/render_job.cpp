@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <regex>
 #include <sstream>
 
 #include "app/denoise_options.h"
 #include "app/device_options.h"
+#include "app/render_parts.h"
 #include "methods/registry.h"
 #include "scene/animation.h"
 #include "util/error.h"
@@ -231,7 +233,16 @@ int read_write_from(const ParsedArguments& arguments, const FrameRange& frames) 
 
 }  // namespace
 
-void check_part_options(const RenderJob& job, const MethodEntry& entry, int width, int height) {
+void check_part_options(const RenderJob& job, const MethodEntry& entry, int width, int height,
+                        double time) {
+    if (job.samples.end > 0 && time > 0.0) {
+        char seconds[32];
+        std::snprintf(seconds, sizeof seconds, "%g", time);
+        throw Error("--sample-range " + range_text(job.samples) +
+                        " renders S1 - S0 samples, but the render is by time (" + seconds +
+                        " s, from -D time= or the scene's render.time): add -D time=0",
+                    kExitUsage);
+    }
     if (entry.name != "pt") {
         for (const auto& [given, name] :
              {std::pair{job.samples.end > 0, "--sample-range"}, {job.write_sums, "--write-sums"}}) {

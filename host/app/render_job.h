@@ -55,8 +55,10 @@ struct RenderJob {
 
 // Error (exit status 2) naming the option when --sample-range or --write-sums is given to a
 // method other than pt (the only method whose image is a mean of independent samples per pixel),
-// or --crop reaches outside a width x height image.
-void check_part_options(const RenderJob& job, const MethodEntry& entry, int width, int height);
+// --sample-range is given to a render by time however the time is given (`time`: --time, -D
+// time= or the scene's render.time), or --crop reaches outside a width x height image.
+void check_part_options(const RenderJob& job, const MethodEntry& entry, int width, int height,
+                        double time);
 
 // Reads the options of the method `entry` into job->method_options unless they are read already;
 // Error (exit status 2) naming an option another method declares or a combination that cannot

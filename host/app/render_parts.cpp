@@ -1,8 +1,11 @@
 #include "app/render_parts.h"
 
+#include <OpenImageIO/hash.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <regex>
 #include <set>
 
@@ -28,6 +31,22 @@ const std::set<std::string>& part_options() {
         "--strict",     "--device",    "--kernel-dir",    "--dump-kernels", "--no-kernel-cache",
         "--local-size", "--max-chunk", "--device-memory", "--bvh",          "--write-from"};
     return names;
+}
+
+// A farmhash fingerprint of the bytes of the file at `path` (16 hex digits), or "unreadable"
+// (the run's own read of it then names the problem).
+std::string file_fingerprint(const std::string& path) {
+    std::string bytes;
+    try {
+        bytes = read_file(path, std::numeric_limits<uint64_t>::max(), "--cache-in file");
+    } catch (const Error&) {
+        return "unreadable";
+    }
+    char text[17];
+    std::snprintf(
+        text, sizeof text, "%016llx",
+        static_cast<unsigned long long>(OIIO::farmhash::Fingerprint64(bytes.data(), bytes.size())));
+    return text;
 }
 
 }  // namespace
@@ -91,6 +110,9 @@ PartIdentity part_identity(const ParsedArguments& arguments, const std::string& 
         identity.options += (identity.options.empty() ? "" : " ") + name;
         for (const std::string& value : arguments.values(name)) {
             identity.options += " " + value;
+            if (name == "--cache-in") {  // what the part read, not only where from
+                identity.options += " (content " + file_fingerprint(value) + ")";
+            }
         }
     }
     identity.width = width;

@@ -541,10 +541,15 @@ class SceneParser {
         if (!(animation.fps > 0.0)) {
             reader.fail("fps", "must be positive");
         }
+        std::set<std::string> targets;  // one track a target: a second would be dropped
         for (const JsonReader& track_reader : reader.array("tracks")) {
             track_reader.allow_only({"target", "keyframes"});
             AnimationTrack track;
             const std::string target = track_reader.string("target");
+            if (!targets.insert(target).second) {
+                track_reader.fail("target", "a second track for '" + excerpt(target) +
+                                                "': give each target one track of keyframes");
+            }
             if (target == "camera") {
                 track.target = TrackTarget::kCamera;
             } else if (target.rfind("shape:", 0) == 0) {

@@ -208,12 +208,12 @@ TEST(RenderParts, MergeRefusesPartsOfAnotherRenderWithoutOutput) {
 }
 
 // A part is of another scene when a file the scene reads differs, though the scene file is the
-// same: here one vertex of the tall block's mesh moved. The same files under another directory
-// are the same scene.
+// same: here one vertex of the tall block's mesh moved, or two meshes' files swapped their bytes.
+// The same files under another directory are the same scene.
 TEST(RenderParts, MergeRefusesPartsWhoseMeshDiffers) {
     const auto dir = test::scratch_dir("parts_mesh");
     const auto source = test::source_dir() / "scenes" / "cornell-box";
-    for (const char* copy : {"a", "b", "c"}) {
+    for (const char* copy : {"a", "b", "c", "d"}) {
         std::filesystem::remove_all(dir / copy);
         std::filesystem::copy(source, dir / copy, std::filesystem::copy_options::recursive);
     }
@@ -231,9 +231,22 @@ TEST(RenderParts, MergeRefusesPartsWhoseMeshDiffers) {
         EXPECT_EQ(result.exit_code, 0) << result.output;
         return out;
     };
+    // Copy d: the floor's and the light's meshes swapped, the same set of file contents.
+    const auto floor = dir / "d" / "meshes" / "floor.obj";
+    const auto light = dir / "d" / "meshes" / "light.obj";
+    const std::string floor_bytes = read_file(floor);
+    std::ofstream(floor, std::ios::binary) << read_file(light);
+    std::ofstream(light, std::ios::binary) << floor_bytes;
     const auto a = part("a", "0:2");
     const auto b = part("b", "2:4");
     const auto c = part("c", "2:4");
+    const auto d = part("d", "2:4");
+    const test::CommandResult swapped = merge(dir / "merged.exr", {a, d});
+    EXPECT_NE(swapped.exit_code, 0);
+    EXPECT_NE(swapped.output.find("d.exr: another scene (its file or a file it reads)"),
+              std::string::npos)
+        << swapped.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "merged.exr"));
     const test::CommandResult refused = merge(dir / "merged.exr", {a, b});
     EXPECT_NE(refused.exit_code, 0);
     EXPECT_NE(refused.output.find("b.exr: another scene (its file or a file it reads)"),
@@ -241,6 +254,54 @@ TEST(RenderParts, MergeRefusesPartsWhoseMeshDiffers) {
         << refused.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "merged.exr"));
     const test::CommandResult merged = merge(dir / "merged.exr", {a, c});
+    EXPECT_EQ(merged.exit_code, 0) << merged.output;
+}
+
+// The merge places a part by its radcache:crop attribute only where the attribute is the EXR's
+// data window: two crops whose attributes were swapped are refused, not merged upside down.
+TEST(RenderParts, MergeRefusesACropAttributeThatIsNotItsDataWindow) {
+    const auto dir = test::scratch_dir("parts_window");
+    render(dir / "top.exr", {"--spp", "2", "--crop", "0:24,0:8"});
+    render(dir / "bottom.exr", {"--spp", "2", "--crop", "0:24,8:16"});
+    for (const auto& [name, crop] :
+         {std::pair{"top.exr", "0:24,8:16"}, {"bottom.exr", "0:24,0:8"}}) {
+        Image part = read_image(dir / name);
+        part.metadata["radcache:crop"] = crop;
+        write_image(dir / name, part, {});
+    }
+    const test::CommandResult result =
+        merge(dir / "merged.exr", {dir / "top.exr", dir / "bottom.exr"});
+    EXPECT_NE(result.exit_code, 0);
+    EXPECT_NE(result.output.find("top.exr: its radcache:crop 0:24,8:16 is not its data window "
+                                 "0:24,0:8"),
+              std::string::npos)
+        << result.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "merged.exr"));
+}
+
+// Crops of an irradiance-cache render read from one --cache-in path whose contents changed
+// between them are parts of two renders.
+TEST(RenderParts, MergeRefusesCropsOfAnotherCacheAtTheSamePath) {
+    const auto dir = test::scratch_dir("parts_cache_in");
+    const auto cache = dir / "records.bin";
+    const auto crop = [&](const char* name, const char* window) {
+        render(dir / name, {"--method", "ic", "--spp", "1", "--ic-rays", "16", "--crop", window,
+                            "--cache-in", cache.string()});
+        return dir / name;
+    };
+    render(dir / "seed1.exr", {"--method", "ic", "--spp", "1", "--ic-rays", "16", "--seed", "1",
+                               "--cache-out", cache.string()});
+    const auto top = crop("top.exr", "0:24,0:8");
+    const auto same = crop("same.exr", "0:24,8:16");
+    render(dir / "seed2.exr", {"--method", "ic", "--spp", "1", "--ic-rays", "16", "--seed", "2",
+                               "--cache-out", cache.string()});
+    const auto other = crop("other.exr", "0:24,8:16");
+    const test::CommandResult refused = merge(dir / "merged.exr", {top, other});
+    EXPECT_NE(refused.exit_code, 0);
+    EXPECT_NE(refused.output.find("other.exr: another options"), std::string::npos)
+        << refused.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "merged.exr"));
+    const test::CommandResult merged = merge(dir / "merged.exr", {top, same});
     EXPECT_EQ(merged.exit_code, 0) << merged.output;
 }
 
@@ -254,6 +315,8 @@ TEST(RenderParts, BadPartOptionsFailClearlyWithoutOutput) {
         {{"--sample-range", "4"}, "--sample-range: expected S0:S1, got '4'"},
         {{"--sample-range", "8:4"}, "--sample-range 8:4: an empty range"},
         {{"--sample-range", "0:4", "--spp", "4"}, "drop --spp"},
+        {{"--sample-range", "0:4", "-D", "time=2"},
+         "renders S1 - S0 samples, but the render is by time (2 s"},
         {{"--sample-range", "0:4", "--method", "ic"}, "--sample-range applies to --method pt only"},
         {{"--write-sums", "--method", "ic"}, "--write-sums applies to --method pt only"},
         {{"--write-sums", "-o", (dir / "out.png").string()}, "--write-sums needs an .exr output"},

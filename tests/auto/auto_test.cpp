@@ -3,12 +3,13 @@
 // 200 sphere; a static clip, a walkthrough and a clip whose every object moves fast), the rules for
 // --spp without --time and for a budget too small for the pilot, a scene without emitters,
 // --dry-run, --time kept, the same plan and image from the same seed and options, and a stale
-// throughput file replaced once.
+// throughput file and one with an implausible figure each replaced once.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -295,13 +296,14 @@ TEST(AutoPilot, ThePathTracersNoiseIsReadAsManySamplesReadIt) {
     EXPECT_LT(v_pt, v * 1.6) << "64-sample renders read " << v;
 }
 
-// The device's throughput file of an older radcache (without the BRDF tables' figure) is measured
-// again and replaced once, not measured again on every render. The kernel binaries are the
-// suite's (hard links), the throughput file a copy of its own.
-TEST(AutoThroughput, AnUnreadableCachedFileIsReplacedOnce) {
-    dry_run(cornell_box(), "auto_stale_warm", {"--spp", "1", "--width", "8", "--height", "8"});
+// A device's throughput file spoilt by `spoil` is measured again and replaced once, not measured
+// again on every render. The kernel binaries are the suite's (hard links), the throughput file a
+// copy of its own.
+void expect_replaced_once(const std::string& scratch,
+                          const std::function<void(nlohmann::json&)>& spoil) {
+    dry_run(cornell_box(), scratch + "_warm", {"--spp", "1", "--width", "8", "--height", "8"});
     const std::filesystem::path shared = test::kernel_cache_dir();
-    const auto dir = test::scratch_dir("auto_stale") / "cache";
+    const auto dir = test::scratch_dir(scratch) / "cache";
     std::filesystem::create_directories(dir);
     // Every device's throughput file made stale (the suite's cache holds one per device it ran
     // on): the render's device measures again and rewrites its own.
@@ -319,7 +321,7 @@ TEST(AutoThroughput, AnUnreadableCachedFileIsReplacedOnce) {
     ASSERT_FALSE(files.empty()) << "the suite's cache holds no throughput file";
     for (const std::filesystem::path& file : files) {
         nlohmann::json stale = nlohmann::json::parse(read_file(shared / file.filename()));
-        stale.erase("table_seconds_per_material");
+        spoil(stale);
         std::ofstream(file) << stale.dump();
     }
     const std::vector<std::string> environment = {"RADCACHE_CACHE_DIR=" + dir.string()};
@@ -335,10 +337,26 @@ TEST(AutoThroughput, AnUnreadableCachedFileIsReplacedOnce) {
         measured.push_back(plan.at("throughput").at("measured_now").get<bool>());
     }
     EXPECT_EQ(measured, (std::vector<bool>{true, false}));
-    const auto rewritten = std::count_if(files.begin(), files.end(), [](const auto& file) {
-        return nlohmann::json::parse(read_file(file)).contains("table_seconds_per_material");
+    const auto rewritten = std::count_if(files.begin(), files.end(), [&](const auto& file) {
+        nlohmann::json own = nlohmann::json::parse(read_file(file));
+        nlohmann::json spoilt = own;
+        spoil(spoilt);
+        return own != spoilt;  // spoiling it again changes it: it was measured anew
     });
     EXPECT_EQ(rewritten, 1) << "of " << files.size() << " throughput files";
+}
+
+// The file of an older radcache (without the BRDF tables' figure).
+TEST(AutoThroughput, AnUnreadableCachedFileIsReplacedOnce) {
+    expect_replaced_once("auto_stale",
+                         [](nlohmann::json& file) { file.erase("table_seconds_per_material"); });
+}
+
+// A figure no device could measure (10^-300 s a ray would plan a million samples a pixel for a
+// two-second budget).
+TEST(AutoThroughput, AnImplausibleCachedFigureIsMeasuredAgain) {
+    expect_replaced_once("auto_implausible",
+                         [](nlohmann::json& file) { file["pt_seconds_per_ray"] = 1e-300; });
 }
 
 TEST(AutoTime, TheRenderKeepsToItsBudget) {

@@ -311,6 +311,12 @@ TEST(SceneLoader, BadScenesGiveOneLineErrorsNamingFileAndKey) {
                  1, 0,
                  R"("animation": {"tracks": [{"target": "shape:nothing", "keyframes": [{"frame": 0}]}]},)"),
          {"animation.tracks[0].target", "nothing"}},
+        {"animation_twice",
+         scene_with(kCamera, shape)
+             .replace(
+                 1, 0,
+                 R"("animation": {"tracks": [{"target": "camera", "keyframes": [{"frame": 0}]}, {"target": "camera", "keyframes": [{"frame": 1, "translate": [1, 0, 0]}]}]},)"),
+         {"animation.tracks[1].target", "a second track for 'camera'"}},
     };
     for (const BadScene& bad : cases) {
         SCOPED_TRACE(bad.name);

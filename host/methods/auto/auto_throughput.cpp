@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -88,9 +89,17 @@ CacheRayCost ray_cost_of(const nlohmann::json& json) {
     return cost;
 }
 
+// The seconds a ray may plausibly take on any device: from 10^-12 (a thousand billion rays a
+// second, beyond any device today) to 1 s. A cached figure outside (a hand-edited or damaged
+// file) would plan absurd work, so the file is measured again.
+bool plausible_ray_seconds(double seconds) {
+    return std::isfinite(seconds) && seconds >= 1e-12 && seconds <= 1.0;
+}
+
 bool valid(const CacheRayCost& cost) {
-    return cost.rays[0] > 0 && cost.rays[1] > cost.rays[0] && cost.seconds_per_ray[0] > 0.0 &&
-           cost.seconds_per_ray[1] > 0.0;
+    return cost.rays[0] > 0 && cost.rays[1] > cost.rays[0] &&
+           plausible_ray_seconds(cost.seconds_per_ray[0]) &&
+           plausible_ray_seconds(cost.seconds_per_ray[1]);
 }
 
 nlohmann::json throughput_json(const DeviceThroughput& t, const Context& context) {
@@ -125,12 +134,16 @@ bool read_throughput(const std::filesystem::path& file, DeviceThroughput* t) {
     }
     for (const char* method : kCachingMethods) {
         const auto cost = t->cache_seconds_per_ray.find(method);
+        const auto camera = t->camera_seconds_per_ray.find(method);
         if (cost == t->cache_seconds_per_ray.end() || !valid(cost->second) ||
-            t->camera_seconds_per_ray.count(method) == 0) {
+            camera == t->camera_seconds_per_ray.end() || !plausible_ray_seconds(camera->second)) {
             return false;
         }
     }
-    return t->pt_seconds_per_ray > 0.0 && t->table_seconds_per_material >= 0.0;
+    // A material's BRDF tables: at most an hour.
+    return plausible_ray_seconds(t->pt_seconds_per_ray) &&
+           std::isfinite(t->table_seconds_per_material) && t->table_seconds_per_material >= 0.0 &&
+           t->table_seconds_per_material <= 3600.0;
 }
 
 // Writes the figures unless another process has cached its own since (the first write wins, so
