@@ -26,6 +26,10 @@ MERGE = "merge.sbatch"
 PREPASS = "prepass.sbatch"
 
 
+# Slurm's largest array: MaxArraySize is at most 4 000 001, the indices 0 .. 4 000 000.
+MAX_ARRAY_TASKS = 4_000_001
+
+
 def fail(message, status=1):
     print(f"farm: {message}", file=sys.stderr)
     sys.exit(status)
@@ -91,6 +95,18 @@ def arguments(argv):
         fail("--frames-per-task, --sample-ranges and --spp must be at least 1", 2)
     if options.pre_roll < 0:
         fail(f"--pre-roll {options.pre_roll}: must be at least 0", 2)
+    if options.width < 1 or options.height < 1:
+        fail(f"--width {options.width} --height {options.height}: must be at least 1", 2)
+    if not options.poll > 0:
+        fail(f"--poll {options.poll}: must be a positive number of seconds", 2)
+    # The tasks counted before any is built: a Slurm array holds at most MAX_ARRAY_TASKS.
+    first, last = parse_range(options.frames, "--frames")
+    columns, rows = parse_tiles(options.tiles)
+    count = (-(-(last - first + 1) // options.frames_per_task) * columns * rows
+             * options.sample_ranges)
+    if count > MAX_ARRAY_TASKS:
+        fail(f"--frames {options.frames}: {count} tasks, more than a Slurm array holds "
+             f"({MAX_ARRAY_TASKS}): raise --frames-per-task", 2)
     if options.sample_ranges > options.spp:
         fail(f"--sample-ranges {options.sample_ranges}: more ranges than --spp {options.spp}", 2)
     for refused in ("-o", "--output", "--frames", "--crop", "--sample-range", "--spp",
@@ -285,6 +301,8 @@ def prepare(options, tasks):
 
 def main(argv):
     options = arguments(argv)
+    if not options.dry_run:  # the cluster asked before any task is built
+        slurm(["sinfo", "-h", "-o", "%P"], "the Slurm cluster does not answer: sinfo")
     tasks = plan(options)
     out = options.out.resolve()
     if options.dry_run:
@@ -299,7 +317,6 @@ def main(argv):
         print(f"# {out / 'scripts' / MERGE} (after the array: --dependency=afterok:ARRAY)")
         print(merge_script(options, tasks))
         return 0
-    slurm(["sinfo", "-h", "-o", "%P"], "the Slurm cluster does not answer: sinfo")
     prepare(options, tasks)
     missing = [i for i in range(len(tasks)) if not (out / "done" / f"task-{i}").exists()]
     (out / "done" / "merge").unlink(missing_ok=True)

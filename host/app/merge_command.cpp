@@ -36,11 +36,23 @@ int merge(const ParsedArguments& arguments) {
     const auto name = [&](const std::string& word, int frame) {
         return frames.given ? frame_path(word, frame) : std::filesystem::path(word);
     };
+    // Work in proportion to the parts that exist, not to the range: each frame's parts must be
+    // there before the next frame is looked at, and an output folder is probed once.
     RunFiles run;
+    std::filesystem::path probed;
     for (int frame = frames.first; frame <= frames.last; ++frame) {
-        check_output_path(name(words[0], frame));
         for (size_t i = 1; i < words.size(); ++i) {
-            run.input("part", name(words[i], frame));
+            const std::filesystem::path part = name(words[i], frame);
+            if (!std::filesystem::is_regular_file(part)) {
+                throw Error(part.string() + ": no such part" +
+                            (frames.given ? " (frame " + std::to_string(frame) + ")" : ""));
+            }
+            run.input("part", part);
+        }
+        const std::filesystem::path out = name(words[0], frame);
+        if (frame == frames.first || out.parent_path() != probed) {
+            check_output_path(out);
+            probed = out.parent_path();
         }
     }
     run.output_frames("OUT", words[0], frames.first, frames.last);

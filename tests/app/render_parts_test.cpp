@@ -131,6 +131,16 @@ TEST(RenderParts, MergeFramesMergesEachFrameOrWritesNone) {
     EXPECT_EQ(result.exit_code, 1);
     EXPECT_NE(result.output.find("top.0005.exr"), std::string::npos) << result.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "again.0003.exr"));
+    // A range of two billion frames: refused at the first frame without parts (frame 5), having
+    // looked at no more than the frames before it, and leaving no probe file behind.
+    const auto before = test::file_names(dir);
+    result = test::run_radcache({"merge", "--quiet", "--frames", "3:2000000000",
+                                 (dir / "again.####.exr").string(), (dir / "top.####.exr").string(),
+                                 (dir / "bottom.####.exr").string()});
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_NE(result.output.find("top.0005.exr: no such part (frame 5)"), std::string::npos)
+        << result.output;
+    EXPECT_EQ(test::file_names(dir), before);
 }
 
 TEST(RenderParts, SampleRangesAddUpToTheWholeRender) {

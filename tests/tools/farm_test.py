@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """tools/farm.py and tools/farm/local-slurm.sh (docs/farm.md). Without Slurm: the dry run's
 scripts (the array, the merge after it by afterok, --gres with --gpu) and one clear line when
-sbatch is missing or the controller does not answer. On the local one-node cluster (tools/farm/local-slurm.sh start; skipped, saying
+sbatch is missing or the controller does not answer, and a farm no task could render (a range of more
+tasks than a Slurm array holds, an empty image, a negative poll) refused before any task is built. On the local one-node cluster (tools/farm/local-slurm.sh start; skipped, saying
 so, only when no cluster answers): a 6-frame clip split 2 frames a task is bitwise the clip of one
 process; the Cornell box split into 4 sample ranges merges to the single render (beauty within
 relative 1e-6 of its value, the stddev layer within 1e-4, by OpenImageIO's idiff); a task killed mid-render is reported
@@ -82,6 +83,19 @@ class FarmWithoutSlurm(unittest.TestCase):
         self.assertEqual(result.stderr.count("\n"), 1, result.stderr)
         self.assertIn("not found", result.stderr)
 
+
+    def test_what_no_task_could_render_is_refused_before_any_task_is_built(self):
+        for args, expected in (
+                (["--frames", "0:20000000"], "20000001 tasks, more than a Slurm array holds"),
+                (["--width", "0"], "--width 0 --height 8: must be at least 1"),
+                (["--poll", "-1"], "--poll -1.0: must be a positive number of seconds")):
+            base = [CORNELL, "--out", os.path.join(SCRATCH, "refused"), "--width", "8",
+                    "--height", "8", "--dry-run"]
+            result = subprocess.run([sys.executable, FARM, "--radcache", RADCACHE] + base + args,
+                                    capture_output=True, text=True, timeout=60)
+            self.assertEqual(result.returncode, 2, result.stderr)
+            self.assertEqual(result.stderr.count("\n"), 1, result.stderr)
+            self.assertIn(expected, result.stderr)
 
     @unittest.skipUnless(shutil.which("sinfo"), "no Slurm client (sinfo)")
     def test_a_cluster_that_does_not_answer_is_one_line(self):
