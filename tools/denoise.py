@@ -104,6 +104,10 @@ def main(argv):
     args = parser.parse_args(argv)
     if not os.path.isfile(args.input):
         parser.error("no such image: %s" % args.input)
+    if os.path.exists(args.output) and os.path.samefile(args.input, args.output):
+        print("denoise: the output %s is the input: name another file" % args.output,
+              file=sys.stderr)
+        sys.exit(2)
     try:
         seconds = denoise_file(args.input, args.output, args.quality)
     except DenoiseError as e:

@@ -333,6 +333,14 @@ void check_run_files(const RenderJob& job, const MethodEntry& method,
     if (!job.stats.empty()) {
         run.output("--stats", job.stats);
     }
+    // The intermediate images beside each frame's: name.sppN.ext for every power of two N up
+    // to the most samples a render takes (2^24, as by --time).
+    if (arguments.has("--save-every-pow2")) {
+        for (int spp = 1; spp <= (1 << 24); spp *= 2) {
+            run.output_frames("--save-every-pow2",
+                              intermediate_path(job.output_pattern, spp).string(), first, last);
+        }
+    }
     // The method's file options: --cache-out, --grid-out, ... write; --cache-in, ... read.
     for (const OptionInfo& option : method.table) {
         const std::string& name = option.spec.name;

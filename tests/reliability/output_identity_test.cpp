@@ -2,8 +2,8 @@
 // of the run's inputs (the scene, a mesh, the glTF file, --cache-in, compare's TEST or REF), by
 // name or through a hard link or symlink, or two outputs naming one file, destroyed the input with
 // exit status 0; now refused with one line and exit status 2 before any work, the input intact
-// and no output written. An interrupted --frames run left its finished frames as temporaries; now
-// it leaves none.
+// and no output written; the intermediate images of --save-every-pow2 are outputs too. An
+// interrupted --frames run left its finished frames as temporaries; now it leaves none.
 #include "util/output_identity.h"
 
 #include <fcntl.h>
@@ -90,6 +90,25 @@ TEST(OutputIdentity, StatsNamingTheSceneOrAMeshIsRefused) {
     const std::string mesh_bytes = bytes_of(mesh);
     expect_refused(quick_render(scene, {"-o", out.string(), "--stats", mesh.string()}), "--stats",
                    mesh.string(), "is the run's mesh file", mesh, mesh_bytes, {out});
+}
+
+// The intermediate images of --save-every-pow2 (name.sppN.ext) are outputs like the others: one
+// named by --stats, or a link to a mesh with an intermediate's name, is refused before any work.
+TEST(OutputIdentity, IntermediateImagesAreCheckedLikeEveryOutput) {
+    const auto dir = cornell_copy("identity_intermediates");
+    const auto scene = dir / "scene.json";
+    const auto out = dir / "p.exr";
+    const auto stats = dir / "p.spp1.exr";
+    expect_refused(
+        quick_render(scene, {"-o", out.string(), "--save-every-pow2", "--stats", stats.string()},
+                     "pt"),
+        "--save-every-pow2", stats.string(), kTwice, scene, bytes_of(scene), {out, stats});
+    const auto mesh = dir / "meshes/floor.obj";
+    const std::string mesh_bytes = bytes_of(mesh);
+    const auto alias = dir / "p.spp2.exr";
+    std::filesystem::create_symlink(mesh, alias);
+    expect_refused(quick_render(scene, {"-o", out.string(), "--save-every-pow2"}, "pt"),
+                   "--save-every-pow2", alias.string(), kInput, mesh, mesh_bytes, {out});
 }
 
 TEST(OutputIdentity, HardLinkAndSymlinkAliasesOfTheSceneAreRefused) {

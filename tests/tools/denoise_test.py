@@ -2,7 +2,8 @@
 """tools/denoise.py on a synthetic image: a smooth clean image plus seeded Gaussian noise, with
 albedo and normal layers and one more layer, is denoised to a lower relMSE against the clean
 image, and keeps its size, its channels and the other layer bit for bit; an image without its
-normal layer is refused with one line naming it. Skips (exit 0) only when pyoidn or OpenEXR is
+normal layer is refused with one line naming it, and an output that is the input (by name or by
+a link) is refused, the input untouched. Skips (exit 0) only when pyoidn or OpenEXR is
 not installed."""
 
 import os
@@ -89,6 +90,25 @@ class DenoiseTest(unittest.TestCase):
         self.assertEqual(len(lines), 1, result.stderr)
         self.assertIn("no normal layer", lines[0])
         self.assertFalse(os.path.exists(target))
+
+    def test_an_output_that_is_the_input_is_refused_untouched(self):
+        _, _, layers = synthetic()
+        source = os.path.join(SCRATCH, "same.exr")
+        write_exr(source, layers)
+        link = os.path.join(SCRATCH, "same-link.exr")
+        if os.path.lexists(link):
+            os.remove(link)
+        os.symlink(source, link)
+        with open(source, "rb") as f:
+            before = f.read()
+        for target in (source, link):
+            result = subprocess.run([sys.executable, DENOISE, source, target],
+                                    capture_output=True, text=True)
+            self.assertEqual(result.returncode, 2, result.stderr)
+            self.assertEqual(result.stderr.count("\n"), 1, result.stderr)
+            self.assertIn("is the input", result.stderr)
+            with open(source, "rb") as f:
+                self.assertEqual(f.read(), before)
 
 
 if __name__ == "__main__":
