@@ -110,7 +110,7 @@ def arguments(argv):
     if options.sample_ranges > options.spp:
         fail(f"--sample-ranges {options.sample_ranges}: more ranges than --spp {options.spp}", 2)
     for refused in ("-o", "--output", "--frames", "--crop", "--sample-range", "--spp",
-                    "--width", "--height", "--write-sums", "--write-from"):
+                    "--width", "--height", "--write-sums", "--write-from", "--clip-end"):
         if refused in options.render:
             fail(f"{refused} after --: the farm sets it", 2)
     if options.cache_prepass:
@@ -160,6 +160,10 @@ def plan(options):
                            "--width", str(options.width), "--height", str(options.height)]
                 if start < a:
                     command += ["--write-from", str(a)]
+                if b < last and "--temporal" in options.render:
+                    # The task's frames are part of the clip: records placed ahead of them and
+                    # their lives ended as in one process (radcache render --clip-end).
+                    command += ["--clip-end", str(last)]
                 # Sums (pt's) only where ranges are added: windows and frames need none.
                 command += (["--sample-range", f"{s0}:{s1}", "--write-sums"] if k > 1
                             else ["--spp", str(spp)])

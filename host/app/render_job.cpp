@@ -65,6 +65,10 @@ std::vector<OptionSpec> render_option_specs() {
         {"--write-from", "", "F",
          "with --frames A:B: frames A to F-1 are rendered (a temporal cache's warm-up, a farm "
          "task's pre-roll) but not written; F in A..B"},
+        {"--clip-end", "", "F",
+         "with --frames A:B: the clip goes on to frame F >= B, of which these frames are a part "
+         "(a farm task's): temporal caching places its records ahead and ends their lives as a "
+         "render of A to F does, so frames A to B are that render's (default B)"},
         {"-D", "", "KEY=VALUE",
          "override a render default: method, spp, time, max_depth, rr_depth, seed, exposure", true},
         OptionSpec{"--exposure", "", "STOPS", "exposure applied before 8-bit encoding (default 0)"}
@@ -231,6 +235,30 @@ int read_write_from(const ParsedArguments& arguments, const FrameRange& frames) 
     return first;
 }
 
+// --clip-end F: the clip's last frame (without the option, --frames' last). Error (exit status
+// 2) naming the option unless F is a whole number at or after --frames' last.
+int read_clip_end(const ParsedArguments& arguments, const FrameRange& frames) {
+    if (!arguments.has("--clip-end")) {
+        return frames.last;
+    }
+    const std::string text = arguments.value("--clip-end");
+    if (!frames.given) {
+        throw Error("--clip-end " + text + " needs --frames", kExitUsage);
+    }
+    static const std::regex whole(R"(^-?\d{1,9}$)");
+    if (!std::regex_match(text, whole)) {
+        throw Error("--clip-end: expected a frame number, got '" + excerpt(text) + "'",
+                    kExitUsage);
+    }
+    const int end = std::stoi(text);
+    if (end < frames.last) {
+        throw Error("--clip-end " + text + ": before the last of --frames " +
+                        std::to_string(frames.first) + ":" + std::to_string(frames.last),
+                    kExitUsage);
+    }
+    return end;
+}
+
 }  // namespace
 
 void check_part_options(const RenderJob& job, const MethodEntry& entry, int width, int height,
@@ -277,6 +305,7 @@ RenderJob read_render_job(const ParsedArguments& arguments) {
             kExitUsage);
     }
     job.write_from = read_write_from(arguments, job.frames);
+    job.clip_end = read_clip_end(arguments, job.frames);
     check_output_path(frame_path(job.output_pattern, job.frames.first));
     read_part_options(arguments, &job);
     read_denoise_options(arguments, &job);
@@ -441,7 +470,9 @@ MethodSettings method_settings(const ParsedArguments& arguments, const RenderSet
     method.seed = settings.seed;
     method.max_depth = settings.max_depth;
     method.rr_depth = settings.rr_depth;
-    const long long frames = static_cast<long long>(last) - first + 1;
+    // The clip the frames belong to: on to --clip-end (a farm task's frames are part of one).
+    const int end = job.frames.given ? std::max(last, job.clip_end) : last;
+    const long long frames = static_cast<long long>(end) - first + 1;
     method.frame_count = static_cast<int>(std::min<long long>(frames, 1 << 30));
     method.first_frame = first;
     method.layers = job.layers;

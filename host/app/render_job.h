@@ -38,6 +38,7 @@ struct RenderJob {
     std::string output_pattern;  // #### becomes the frame number
     FrameRange frames;
     int write_from = 0;           // frames before it are rendered, not written (--write-from)
+    int clip_end = 0;             // the clip's last frame (--clip-end; default: --frames' last)
     std::filesystem::path stats;  // empty: no stats file
     std::vector<std::string> layers;
     ImageWriteOptions write_options;

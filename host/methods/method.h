@@ -28,7 +28,8 @@ namespace rc {
 // command line's shared options.
 struct MethodSettings : SharedSettings {
     double time = 0.0;    // the scene's or -D's time budget (seconds); methods may ignore it
-    int frame_count = 1;  // frames this render will ask for
+    int frame_count = 1;  // frames of the clip from first_frame (the render may ask for fewer:
+                          // --clip-end)
     int first_frame = 0;  // the first of them (they come in order, one apart)
     std::vector<std::string> layers;  // the AOV layers that will be written (empty: all)
     bool write_sums = false;          // --write-sums: the frame's FrameResult::sums are written too

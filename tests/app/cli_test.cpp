@@ -314,6 +314,11 @@ TEST(Cli, BadCommandsFailClearlyWithoutOutput) {
           "--write-from", "two"},
          2,
          "--write-from: expected a frame number, got 'two'"},
+        {{"render", cornell_box(), "-o", out, "--clip-end", "2"}, 2, "--clip-end 2 needs --frames"},
+        {{"render", cornell_box(), "-o", (dir / "f####.exr").string(), "--frames", "0:3",
+          "--clip-end", "2"},
+         2,
+         "--clip-end 2: before the last of --frames 0:3"},
     };
     for (const BadCommand& bad : cases) {
         const test::CommandResult result = test::run_radcache(bad.args);

@@ -9,7 +9,8 @@ relative 1e-6 of its value, the stddev layer within 1e-4, by OpenImageIO's idiff
 by name and log, and a second call renders only it, the frames then right; 2x2 tiles merge to
 the single render bitwise, and a part of another scene is refused; ic tiles rendered with the
 cache of a pre-pass job merge to the single render bitwise; `ic --temporal` tasks with the
-whole clip as pre-roll give one process's frames bitwise (and without it, not). Run by CTest with
+whole clip as pre-roll give every frame of a 6-frame clip bitwise as one process (and without it,
+not). Run by CTest with
 $RADCACHE set to the built executable."""
 
 import os
@@ -135,12 +136,12 @@ class FarmOnLocalSlurm(unittest.TestCase):
 
     def test_temporal_tasks_with_a_whole_pre_roll_are_those_of_one_process(self):
         one = os.path.join(self.dir, "one.####.exr")
-        render([SPHERE, "--method", "ic", "--temporal", "--frames", "0:3", "--width", "16",
+        render([SPHERE, "--method", "ic", "--temporal", "--frames", "0:5", "--width", "16",
                 "--height", "16", "--spp", "2", "-o", one])
         farmed = {}
-        for pre_roll in ("0", "4"):
+        for pre_roll in ("0", "6"):
             out = os.path.join(self.dir, "farm" + pre_roll)
-            result = farm([SPHERE, "--out", out, "--frames", "0:3", "--frames-per-task", "2",
+            result = farm([SPHERE, "--out", out, "--frames", "0:5", "--frames-per-task", "2",
                            "--pre-roll", pre_roll, "--width", "16", "--height", "16", "--spp",
                            "2", "--", "--method", "ic", "--temporal"])
             self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
@@ -148,12 +149,16 @@ class FarmOnLocalSlurm(unittest.TestCase):
             self.assertEqual(sorted(f for f in os.listdir(os.path.join(out, "parts"))
                                     if f.startswith("f2-3")),
                              ["f2-3.t0.s0-2.0002.exr", "f2-3.t0.s0-2.0003.exr"])
-            farmed[pre_roll] = os.path.join(out, "frame.0002.exr")
-        frame2 = one.replace("####", "0002")
-        # With the whole clip as pre-roll, bitwise one process's frames; without it the second
-        # task's records start afresh at frame 2, and its image differs.
-        self.assertEqual(differs(farmed["4"], frame2, "R,G,B", 0, self.dir), "")
-        self.assertNotEqual(differs(farmed["0"], frame2, "R,G,B", 0, self.dir), "")
+            farmed[pre_roll] = os.path.join(out, "frame.####.exr")
+        # With the whole clip as pre-roll (and each task told where the clip ends), every frame
+        # bitwise one process's, the last of each task included; without it the second task's
+        # records start afresh at frame 2, and its image differs.
+        for frame in range(6):
+            self.assertEqual(differs(farmed["6"].replace("####", f"{frame:04d}"),
+                                     one.replace("####", f"{frame:04d}"), "R,G,B", 0, self.dir),
+                             "", f"frame {frame}")
+        self.assertNotEqual(differs(farmed["0"].replace("####", "0002"),
+                                    one.replace("####", "0002"), "R,G,B", 0, self.dir), "")
 
     def test_sample_ranges_merge_to_the_single_render(self):
         out = os.path.join(self.dir, "farm")
