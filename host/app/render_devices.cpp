@@ -19,7 +19,8 @@ std::vector<std::unique_ptr<Context>> open_render_devices(const ContextOptions& 
     std::vector<std::unique_ptr<Context>> contexts;
     for (const DeviceInfo& device : devices) {
         ContextOptions one = options;
-        one.device_spec = devices.size() > 1 ? device.spec() : options.device_spec;
+        // Each context its one device, by index ("all" or a list naming one device included).
+        one.device_spec = options.device_spec.empty() ? "" : device.spec();
         contexts.push_back(std::make_unique<Context>(one));
         if (!one.allow_loop_cap) {
             // The loop probe's program first, one of the render's: a refused device waits for no

@@ -180,7 +180,8 @@ DeviceInfo select_device(const std::vector<DeviceInfo>& devices, const std::stri
                         "several)",
                     kExitUsage);
     }
-    static const std::regex index_form(R"(^\s*(\d+)\s*:\s*(\d+)\s*$)");
+    // At most 9 digits each (an index past int names no device rather than overflowing).
+    static const std::regex index_form(R"(^\s*(\d{1,9})\s*:\s*(\d{1,9})\s*$)");
     std::smatch match;
     if (std::regex_match(spec, match, index_form)) {
         const int platform = std::stoi(match[1].str());

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -68,6 +69,13 @@ std::string listed(const std::vector<std::string>& words) {
     return list;
 }
 
+// `v` with six significant digits ("0.001" for 1e-3f, "16", "1e+07").
+std::string shortest(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
 }  // namespace
 
 std::string check_value(const ValueCheck& check, const std::string& value) {
@@ -88,13 +96,17 @@ std::string check_value(const ValueCheck& check, const std::string& value) {
                    std::to_string(check.integer_max) + "]" + got;
         }
         case ValueCheck::Kind::kNumber: {
+            // A bound given as a float (1e-3f) is met by the value that rounds to it: "0.001".
+            const auto at_least = [](double v, double bound) {
+                return v >= bound || static_cast<float>(v) == static_cast<float>(bound);
+            };
             double parsed = 0.0;
-            if (parse_number(value, &parsed) && parsed >= check.number_min &&
-                parsed <= check.number_max) {
+            if (parse_number(value, &parsed) && at_least(parsed, check.number_min) &&
+                at_least(-parsed, -check.number_max)) {
                 return "";
             }
-            return "expected a number in [" + std::to_string(check.number_min) + ", " +
-                   std::to_string(check.number_max) + "]" + got;
+            return "expected a number in [" + shortest(check.number_min) + ", " +
+                   shortest(check.number_max) + "]" + got;
         }
     }
     return "";

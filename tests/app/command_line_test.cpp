@@ -32,7 +32,12 @@ TEST(CommandLine, NumberAndChoiceValuesAreChecked) {
     for (const char* bad : {"0.49", "2.01", "nan", "inf", "", "1,5"}) {
         EXPECT_NE(check_value(number, bad), "") << bad;
     }
-    EXPECT_EQ(check_value(number, "3"), "expected a number in [0.500000, 2.000000], got '3'");
+    EXPECT_EQ(check_value(number, "3"), "expected a number in [0.5, 2], got '3'");
+    // A bound declared as a float (1e-3f lies above 0.001 as a double) is met by its decimal.
+    const ValueCheck float_bound = OptionSpec{"--r", "", "R", ""}.numbers(1e-3f, 16.0f).check;
+    EXPECT_EQ(check_value(float_bound, "0.001"), "");
+    EXPECT_EQ(check_value(float_bound, "0.00099"),
+              "expected a number in [0.001, 16], got '0.00099'");
     const ValueCheck choice = OptionSpec{"--c", "", "NAME", ""}.one_of({"a", "b", "c"}).check;
     EXPECT_EQ(check_value(choice, "b"), "");
     EXPECT_EQ(check_value(choice, "d"), "expected a, b or c, got 'd'");
@@ -70,7 +75,7 @@ TEST(CommandLine, ParseErrorsAreOneLineNamingTheOption) {
         {{"render", scene, "-o", out, "--method", "ic", "--temporal", "--temporal-gradients", "x"},
          "--temporal-gradients: expected interpolated, extrapolated or none, got 'x'"},
         {{"render", scene, "-o", out, "--exposure=65"},
-         "--exposure: expected a number in [-64.000000, 64.000000], got '65'"},
+         "--exposure: expected a number in [-64, 64], got '65'"},
         {{"render", "-o", out, "--", scene, "--spp"},
          "radcache render needs exactly one scene file"},
         {{"bench", "rays", "--width", "0"}, "--width: expected an integer in [1, 16384], got '0'"},

@@ -381,6 +381,37 @@ TEST(HostileInput, OutOfRangeFramesAreABadCommandLine) {
         << result.output;
 }
 
+// Messages: `--device all` on a machine of one device was refused as naming several; a device
+// index past int printed "error: stoi"; a folder or /dev/zero given as a cache was "not found";
+// `--filter-radius 0.001`, the documented least radius, was refused.
+TEST(HostileInput, DeviceCacheAndBoundMessagesSayWhatIsWrong) {
+    const auto dir = test::scratch_dir("hostile_messages");
+    const std::string scene = (test::source_dir() / "scenes/cornell-box/scene.json").string();
+    const std::string out = (dir / "out.png").string();
+    const auto render = [&](std::vector<std::string> options) {
+        std::vector<std::string> args = {"render", scene, "--width", "8",  "--height", "8",
+                                         "--spp",  "1",   "-q",      "-o", out};
+        args.insert(args.end(), options.begin(), options.end());
+        return test::run_radcache(args);
+    };
+    const test::CommandResult all = render({"--device", "all"});
+    EXPECT_EQ(all.exit_code, 0) << all.output;
+    EXPECT_EQ(render({"--filter", "tent", "--filter-radius", "0.001"}).exit_code, 0);
+    std::filesystem::remove(out);
+    const std::vector<std::pair<std::vector<std::string>, std::string>> refused = {
+        {{"--device", "0:99999999999"}, "no OpenCL device matches --device '0:99999999999'"},
+        {{"--method", "ic", "--cache-in", dir.string()}, "is not a regular file"},
+        {{"--method", "ic", "--cache-in", "/dev/zero"}, "is not a regular file"},
+    };
+    for (const auto& [options, expected] : refused) {
+        const test::CommandResult result = render(options);
+        EXPECT_NE(result.exit_code, 0) << result.output;
+        EXPECT_EQ(result.output.find("stoi"), std::string::npos) << result.output;
+        EXPECT_NE(result.output.find(expected), std::string::npos) << result.output;
+        EXPECT_FALSE(std::filesystem::exists(out)) << expected;
+    }
+}
+
 // Messages: a bad numeric option was refused only after the scene had loaded, so the scene's own
 // notes ("dropped 192 degenerate triangles") came before the error line. Every value that does
 // not depend on the scene is now checked first: the error is the only line.

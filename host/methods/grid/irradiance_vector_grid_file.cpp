@@ -64,7 +64,10 @@ void write_grid_file(const std::filesystem::path& path, const Scene& scene, cons
 GridFile read_grid_file(const std::filesystem::path& path, const Scene& scene) {
     const std::string name = path.string();
     if (!std::filesystem::is_regular_file(path)) {
-        throw Error(name + ": irradiance vector grid file not found");
+        throw Error(name + ": irradiance vector grid file " +
+                    (std::filesystem::exists(path) ? "is not a regular file (a folder, a device "
+                                                     "or a FIFO)"
+                                                   : "not found"));
     }
     return parse_grid_file(read_file(path, kDefaultMaxFileBytes, "irradiance vector grid"), name,
                            scene_fingerprint(scene), scene.path.string());

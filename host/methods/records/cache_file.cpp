@@ -170,7 +170,10 @@ std::vector<RecordStore> read_cache_file(const std::filesystem::path& path,
                                          const CacheFileKey& key) {
     const std::string name = path.string();
     if (!std::filesystem::is_regular_file(path)) {
-        throw Error(name + ": " + key.method + " cache file not found");
+        throw Error(name + ": " + key.method + " cache file " +
+                    (std::filesystem::exists(path) ? "is not a regular file (a folder, a device "
+                                                     "or a FIFO)"
+                                                   : "not found"));
     }
     return parse_cache_file(read_file(path, kDefaultMaxFileBytes, key.method + " cache"), name,
                             key);
