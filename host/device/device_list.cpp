@@ -1,10 +1,14 @@
 #include "device/device_list.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <regex>
+#include <system_error>
 
 #include "device/cl_calls.h"
 #include "device/cl_error.h"
@@ -49,7 +53,34 @@ std::string lower(std::string text) {
     return text;
 }
 
+// The cache folder a driver would make under $XDG_CACHE_HOME, where that cannot be made: PoCL
+// keeps its kernel cache there and its platform does not load without it (radcache then sees no
+// platform at all). Empty when the variable is unset or its folder usable.
+std::string unusable_cache_home() {
+    const char* home = std::getenv("XDG_CACHE_HOME");
+    if (home == nullptr || *home == '\0' || std::getenv("POCL_CACHE_DIR") != nullptr) {
+        return "";
+    }
+    // The folder, or the nearest of its parents that exists, must be a writable folder (nothing
+    // is created here).
+    std::error_code error;
+    std::filesystem::path folder = std::filesystem::absolute(home, error);
+    while (!error && !std::filesystem::exists(folder, error) && folder.has_parent_path() &&
+           folder.parent_path() != folder) {
+        folder = folder.parent_path();
+    }
+    const bool usable =
+        !error && std::filesystem::is_directory(folder, error) && access(folder.c_str(), W_OK) == 0;
+    return usable ? "" : home;
+}
+
 std::string no_platform_message() {
+    const std::string home = unusable_cache_home();
+    if (!home.empty()) {
+        return "no OpenCL platform found, and $XDG_CACHE_HOME (" + excerpt(home) +
+               ") is not a writable folder: PoCL keeps its kernel cache there and does not "
+               "load without it (set XDG_CACHE_HOME or POCL_CACHE_DIR to a writable folder)";
+    }
     return "no OpenCL platform found: install an OpenCL driver, e.g. the Debian package "
            "pocl-opencl-icd (CPU) or your GPU vendor's OpenCL ICD";
 }

@@ -412,6 +412,23 @@ TEST(HostileInput, DeviceCacheAndBoundMessagesSayWhatIsWrong) {
     }
 }
 
+// Messages: an unusable $XDG_CACHE_HOME, where PoCL keeps its kernel cache and without which
+// its platform does not load, was reported as "install an OpenCL driver". Where another
+// implementation loads all the same (Intel's runtime), there is nothing to report.
+TEST(HostileInput, AnUnusableCacheHomeIsNamedWhenNoPlatformLoads) {
+    const test::CommandResult result =
+        test::run_radcache({"devices"}, {"XDG_CACHE_HOME=/dev/null/cache"});
+    if (result.exit_code == 0) {
+        EXPECT_EQ(result.output.find("Portable Computing Language"), std::string::npos)
+            << "PoCL loaded with an unusable cache folder: " << result.output;
+        return;
+    }
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_NE(result.output.find("$XDG_CACHE_HOME (/dev/null/cache) is not a writable folder"),
+              std::string::npos)
+        << result.output;
+}
+
 // Messages: a bad numeric option was refused only after the scene had loaded, so the scene's own
 // notes ("dropped 192 degenerate triangles") came before the error line. Every value that does
 // not depend on the scene is now checked first: the error is the only line.
