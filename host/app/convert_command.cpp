@@ -1,6 +1,9 @@
 // `radcache convert IN OUT.json`: reads a glTF 2.0 or pbrt-v4 scene and writes it in
 // radcache's scene format (scene/scene_writer.h), so that the user can edit it; rendering OUT.json
 // gives the image of rendering IN.
+#include <algorithm>
+#include <system_error>
+
 #include "app/commands.h"
 #include "app/recorded_files.h"
 #include "scene/scene_loader.h"
@@ -22,6 +25,25 @@ void check_folders(const std::vector<std::filesystem::path>& folders) {
         if (std::filesystem::exists(status) && !std::filesystem::is_directory(status)) {
             throw Error("convert: OUT's folder " + folder.string() + " exists and is not a folder",
                         kExitUsage);
+        }
+    }
+}
+
+// Error (exit status 2) before any work when IN read a file inside a folder convert writes
+// (a glTF buffer or a pbrt include stored as OUT_meshes/0.obj would be overwritten).
+void refuse_inputs_in(const std::vector<std::filesystem::path>& inputs,
+                      const std::vector<std::filesystem::path>& folders) {
+    for (const std::filesystem::path& folder : folders) {
+        std::error_code error;
+        const std::filesystem::path base = std::filesystem::weakly_canonical(folder, error);
+        for (const std::filesystem::path& input : inputs) {
+            const std::filesystem::path file = std::filesystem::weakly_canonical(input, error);
+            const auto [end, _] = std::mismatch(base.begin(), base.end(), file.begin(), file.end());
+            if (!error && end == base.end()) {
+                throw Error("convert: IN reads " + input.string() + ", inside " + folder.string() +
+                                ", which convert writes: choose another OUT",
+                            kExitUsage);
+            }
         }
     }
 }
@@ -48,6 +70,7 @@ int convert(const ParsedArguments& arguments) {
     check_folders(folders);
     const RecordedFiles read;  // OUT may be none of the files IN read
     const Scene scene = load_scene(in, read, arguments.value("--camera"));
+    refuse_inputs_in(read.paths(), folders);
     RunFiles run;
     run.input("IN scene", in);
     read.add_inputs_to(run);

@@ -40,6 +40,16 @@ class RecordedFiles : public SceneFiles {
     // swapped give another.
     std::string content_digest() const;
 
+    // Every file read, as the loader named it.
+    std::vector<std::filesystem::path> paths() const {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        std::vector<std::filesystem::path> paths;
+        for (const auto& entry : read_) {
+            paths.push_back(entry.second);
+        }
+        return paths;
+    }
+
     // Every file read, each an input of `run` named by what it is ("mesh file").
     void add_inputs_to(RunFiles& run) const {
         const std::lock_guard<std::mutex> lock(mutex_);

@@ -2,7 +2,8 @@
 // of the run's inputs (the scene, a mesh, the glTF file, --cache-in, compare's TEST or REF), by
 // name or through a hard link or symlink, or two outputs naming one file, destroyed the input with
 // exit status 0; now refused with one line and exit status 2 before any work, the input intact
-// and no output written; the intermediate images of --save-every-pow2 are outputs too. An
+// and no output written; the intermediate images of --save-every-pow2 are outputs too, and
+// convert refuses inputs inside the folders it writes. An
 // interrupted --frames run left its finished frames as temporaries; now it leaves none.
 #include "util/output_identity.h"
 
@@ -148,6 +149,27 @@ TEST(OutputIdentity, TheGltfFileIsRefusedAsAnOutput) {
     std::filesystem::create_symlink(gltf, link);
     expect_refused(test::run_radcache({"convert", gltf.string(), link.string(), "-q"}), "OUT",
                    link.string(), kInput, gltf, gltf_bytes);
+}
+
+// convert writes OUT_meshes/N.obj: a file IN reads from inside that folder (here a pbrt include
+// stored as out_meshes/0.obj) is refused before any work, untouched.
+TEST(OutputIdentity, ConvertRefusesInputsInsideTheFoldersItWrites) {
+    const auto dir = test::scratch_dir("identity_convert_folders");
+    std::filesystem::create_directories(dir / "out_meshes");
+    const auto include = dir / "out_meshes" / "0.obj";
+    std::ofstream(include) << "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0]\n";
+    const std::string include_bytes = bytes_of(include);
+    const auto scene = dir / "scene.pbrt";
+    std::ofstream(scene) << "LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\"\nWorldBegin\n"
+                            "LightSource \"point\" \"point3 from\" [0 0 -4]\n"
+                            "Include \"out_meshes/0.obj\"\n";
+    const test::CommandResult result =
+        test::run_radcache({"convert", scene.string(), (dir / "out.json").string(), "-q"});
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    EXPECT_EQ(std::count(result.output.begin(), result.output.end(), '\n'), 1) << result.output;
+    EXPECT_NE(result.output.find("out_meshes/0.obj, inside"), std::string::npos) << result.output;
+    EXPECT_EQ(bytes_of(include), include_bytes);
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
 }
 
 TEST(OutputIdentity, CacheAndGridOutputsNamingInputsAreRefused) {

@@ -444,6 +444,9 @@ TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
                    "MakeNamedMedium \"fog\" \"string type\" \"homogeneous\"\n"
                    "MediumInterface \"\" \"fog\"\nCamera \"perspective\"\nWorldBegin\n",
                    "participating media are not supported", 2, 2);
+    // A token in Latin-1: quoted with its byte escaped, not copied raw into the line.
+    expect_refused(dir, "latin1", std::string(kHeader) + "Shape \"tr\xe9s\"\n",
+                   "Shape \"tr\\xe9s\" is not supported", 6, 2);
 }
 
 // pbrt-v4's photometric normalisations for an RGB illuminant (lights.cpp's Create functions):

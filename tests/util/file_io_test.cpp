@@ -122,6 +122,13 @@ TEST(FileIo, TheTrailingChecksumCatchesAnyChangedByteAndATruncation) {
 TEST(Text, ExcerptsAreShortAndOnOneLine) {
     EXPECT_EQ(excerpt("short"), "short");
     EXPECT_EQ(excerpt("a\nb\tc\x1b[31m"), "a\\nb\\tc\\x1b[31m");
+    // UTF-8 kept whole; a byte that is not part of a well-formed sequence escaped (a Latin-1
+    // é, a lone continuation byte, an overlong form, a surrogate, a cut sequence).
+    EXPECT_EQ(excerpt("caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80"),
+              "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80");
+    EXPECT_EQ(excerpt("caf\xe9"), "caf\\xe9");
+    EXPECT_EQ(excerpt("\x80|\xc0\xaf|\xed\xa0\x80|\xe2\x82"),
+              "\\x80|\\xc0\\xaf|\\xed\\xa0\\x80|\\xe2\\x82");
     const std::string long_text(5000000, 'x');
     const std::string cut = excerpt(long_text);
     EXPECT_EQ(cut, std::string(80, 'x') + "... (5000000 bytes)");
