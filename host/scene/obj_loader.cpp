@@ -218,6 +218,49 @@ class ValidatingMaterialReader : public tinyobj::MaterialReader {
     const SceneFiles& files_;
 };
 
+// tinyobjloader's warnings, a line each, prefixed with the file. Where a material library is
+// missing (our own line), its "Failed to load material file(s)" and its "material [ 'a' ] not
+// found in .mtl" lines are folded into that one: the library, and the materials it would have held.
+std::vector<std::string> obj_warnings(const std::string& warning, const std::string& file) {
+    std::vector<std::string> lines, missing;
+    int library = -1;  // our "material library ... not found" line
+    std::istringstream in(warning);
+    for (std::string line; std::getline(in, line);) {
+        const size_t open = line.find("material [ '");
+        const size_t close = line.find("' ] not found in .mtl");
+        if (line.empty()) {
+            continue;
+        } else if (line.rfind("material library '", 0) == 0) {
+            library = library < 0 ? static_cast<int>(lines.size()) : library;
+            lines.push_back(line);
+        } else if (line.rfind("Failed to load material file(s)", 0) == 0) {
+            continue;  // said by the library's line; if none, said by the materials' lines
+        } else if (open != std::string::npos && close != std::string::npos && close > open) {
+            missing.push_back(line.substr(open + 12, close - open - 12));
+        } else {
+            lines.push_back(line);
+        }
+    }
+    if (!missing.empty()) {
+        std::string names;
+        for (const std::string& name : missing) {
+            names += (names.empty() ? "'" : ", '") + name + "'";
+        }
+        const std::string said = ": its materials " + names + " get the default material";
+        if (library >= 0) {
+            lines[static_cast<size_t>(library)] += said;
+        } else {
+            lines.push_back("no material library defines the materials " + names +
+                            ": they get the default material");
+        }
+    }
+    std::vector<std::string> out;
+    for (const std::string& line : lines) {
+        out.push_back(file + ": " + excerpt(line, 4 * kQuoteLimit));
+    }
+    return out;
+}
+
 ObjMaterial material_of(const tinyobj::material_t& m, const std::filesystem::path& directory) {
     ObjMaterial material;
     material.name = m.name;
@@ -347,12 +390,7 @@ ObjData load_obj(const std::filesystem::path& path, const SceneFiles& files) {
         throw Error(file + ": cannot parse OBJ: " + excerpt(error));
     }
     ObjData data;
-    std::istringstream lines(warning);
-    for (std::string line; std::getline(lines, line);) {
-        if (!line.empty()) {
-            data.warnings.push_back(file + ": " + excerpt(line));
-        }
-    }
+    data.warnings = obj_warnings(warning, file);
     for (const tinyobj::material_t& m : materials) {
         data.materials.push_back(material_of(m, path.parent_path()));
     }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <fstream>
 #include <glm/geometric.hpp>
 
 #include "app/render_job.h"
@@ -410,6 +411,31 @@ TEST(HostileInput, DeviceCacheAndBoundMessagesSayWhatIsWrong) {
         EXPECT_NE(result.output.find(expected), std::string::npos) << result.output;
         EXPECT_FALSE(std::filesystem::exists(out)) << expected;
     }
+}
+
+// Messages: an OBJ whose material library is missing gave three warnings, two in
+// tinyobjloader's words ("Failed to load material file(s). Use default material.", "material [
+// 'a' ] not found in .mtl"); now one line naming the library and the materials it would hold.
+TEST(HostileInput, AMissingMaterialLibraryIsOneWarning) {
+    const auto dir = test::scratch_dir("hostile_missing_mtl");
+    std::ofstream(dir / "m.obj") << "mtllib missing.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                                    "usemtl a\nf 1 2 3\nusemtl b\nf 1 3 2\n";
+    std::ofstream(dir / "s.json")
+        << R"({"camera": {"position": [0.3, 0.3, 2], "look_at": [0.3, 0.3, 0], "fov": 40,
+                          "resolution": [8, 8]},
+              "shapes": [{"type": "obj", "file": "m.obj"}],
+              "emitters": [{"type": "point", "position": [0, 0, 2], "intensity": [1, 1, 1]}]})";
+    const test::CommandResult result =
+        test::run_radcache({"render", (dir / "s.json").string(), "--method", "normals", "-o",
+                            (dir / "out.png").string()});
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("m.obj: material library '"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("missing.mtl' not found: its materials 'a', 'b' get the default "
+                                 "material"),
+              std::string::npos)
+        << result.output;
+    EXPECT_EQ(result.output.find("Failed to load"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("not found in .mtl"), std::string::npos) << result.output;
 }
 
 // Messages: an unusable $XDG_CACHE_HOME, where PoCL keeps its kernel cache and without which
