@@ -233,7 +233,11 @@ void remove_staged_outputs_on_signals() {
     std::call_once(once, [] {
         sigset_t signals;
         sigemptyset(&signals);
-        for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        // Every signal whose default action ends the process and that another process (a
+        // shell, `timeout -s`, a closed pipe's reader) may send: SIGPIPE from a write to a
+        // closed pipe is the writing thread's own, blocked there, so the write fails with EPIPE.
+        for (const int signal :
+             {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGALRM, SIGUSR1, SIGUSR2}) {
             struct sigaction action {};
             if (::sigaction(signal, nullptr, &action) == 0 && action.sa_handler != SIG_IGN) {
                 sigaddset(&signals, signal);

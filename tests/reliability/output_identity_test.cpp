@@ -272,8 +272,9 @@ int interrupted_render(const std::filesystem::path& dir, int signal) {
     posix_spawnattr_init(&attributes);
     sigset_t defaults;
     sigemptyset(&defaults);
-    sigaddset(&defaults, SIGINT);
-    sigaddset(&defaults, SIGTERM);
+    for (const int each : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGALRM}) {
+        sigaddset(&defaults, each);
+    }
     posix_spawnattr_setsigdefault(&attributes, &defaults);
     sigset_t none;
     sigemptyset(&none);
@@ -318,7 +319,9 @@ std::vector<std::string> files_in(const std::filesystem::path& dir) {
 }
 
 TEST(OutputIdentity, InterruptedSequencesLeaveNoTemporaries) {
-    for (const int signal : {SIGINT, SIGTERM}) {
+    // SIGPIPE and SIGALRM (a closed pipe's reader, `timeout -s ALRM`) left a finished frame's
+    // temporary file.
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGALRM}) {
         const auto dir = test::scratch_dir("identity_signal_" + std::to_string(signal));
         EXPECT_EQ(interrupted_render(dir, signal), 128 + signal);
         // The staged frames are removed: no temporary, and (all or nothing) no frame.
