@@ -39,7 +39,7 @@ void check_size(const std::string& bytes, uint64_t limit, const std::filesystem:
 // Makes the folder `dir`; Error naming it (not the library's text) when it cannot be made.
 void make_folder(const std::filesystem::path& dir) {
     std::error_code error;
-    std::filesystem::create_directories(dir, error);
+    create_output_folder(dir, error);
     if (error) {
         throw Error("convert: " + dir.string() + ": cannot make the folder (" + error.message() +
                     ")");

@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
@@ -42,6 +43,7 @@ struct StagedFiles {
     std::mutex mutex;
     bool open = false;
     std::vector<std::pair<std::filesystem::path, std::filesystem::path>> files;
+    std::vector<std::string> folders;  // made by the run (note_new_folder), innermost last
 };
 
 StagedFiles& staged() {
@@ -61,6 +63,9 @@ void remove_staged_outputs_and_die(sigset_t signals) {
     batch.mutex.lock();    // step 2: no commit is renaming; remove what is staged
     for (const auto& file : batch.files) {
         ::unlink(file.first.c_str());
+    }
+    for (auto folder = batch.folders.rbegin(); folder != batch.folders.rend(); ++folder) {
+        ::rmdir(folder->c_str());  // only an empty one goes
     }
     // Step 3: the default action, delivered to this thread alone (the others block it).
     std::signal(signal, SIG_DFL);
@@ -228,16 +233,35 @@ void OutputBatch::commit() {
     }
 }
 
+void create_output_folder(const std::filesystem::path& folder, std::error_code& error) {
+    // Under the write lock, which a signal's cleanup takes and keeps: it never sees a folder
+    // made again after it removed it.
+    const std::lock_guard<std::recursive_mutex> writing(staged().writing);
+    std::filesystem::create_directories(folder, error);
+}
+
+void note_new_folder(const std::filesystem::path& folder) {
+    StagedFiles& batch = staged();
+    std::lock_guard<std::mutex> lock(batch.mutex);
+    batch.folders.push_back(folder.string());
+}
+
+void forget_new_folder(const std::filesystem::path& folder) {
+    StagedFiles& batch = staged();
+    std::lock_guard<std::mutex> lock(batch.mutex);
+    batch.folders.erase(std::remove(batch.folders.begin(), batch.folders.end(), folder.string()),
+                        batch.folders.end());
+}
+
 void remove_staged_outputs_on_signals() {
     static std::once_flag once;
     std::call_once(once, [] {
         sigset_t signals;
         sigemptyset(&signals);
         // Every signal whose default action ends the process and that another process (a
-        // shell, `timeout -s`, a closed pipe's reader) may send: SIGPIPE from a write to a
-        // closed pipe is the writing thread's own, blocked there, so the write fails with EPIPE.
-        for (const int signal :
-             {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGALRM, SIGUSR1, SIGUSR2}) {
+        // shell, `timeout -s`) may send. Not SIGPIPE: tried, a loaded run then once left a
+        // temporary (cause not found), so a closed pipe still ends the run at once.
+        for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1, SIGUSR2}) {
             struct sigaction action {};
             if (::sigaction(signal, nullptr, &action) == 0 && action.sa_handler != SIG_IGN) {
                 sigaddset(&signals, signal);

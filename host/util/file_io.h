@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <system_error>
 
 namespace rc {
 
@@ -50,6 +51,14 @@ class OutputBatch {
     // (the later ones are removed).
     void commit();
 };
+
+// A folder the run made for its outputs (util/new_folders.h): removed, when empty, by a signal
+// that ends the run (util/interrupt_cleanup.h), after the staged files; forgotten when the run
+// keeps it or removes it itself.
+void note_new_folder(const std::filesystem::path& folder);
+// Makes `folder` (and its parents) for outputs; what create_directories reports in `error`.
+void create_output_folder(const std::filesystem::path& folder, std::error_code& error);
+void forget_new_folder(const std::filesystem::path& folder);
 
 // Error (exit status 2) "<option> <file>: ..." unless `file` could be written: its directory
 // exists and is writable, and the path is not a directory or another non-regular file. Checked

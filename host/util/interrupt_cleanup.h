@@ -1,4 +1,4 @@
-// SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGALRM, SIGUSR1 and SIGUSR2 during a run: the files
+// SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1 and SIGUSR2 during a run: the files
 // its OutputBatch staged (util/file_io.h) are removed before the process dies by the signal (the
 // shell reports 128 + its number: 130, 143, 129), so an interrupted run leaves no temporary and no
 // new output, and every old file as it was: the all-or-nothing rule of the batch, as for a run that

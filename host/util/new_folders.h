@@ -6,6 +6,8 @@
 #include <system_error>
 #include <vector>
 
+#include "util/file_io.h"
+
 namespace rc {
 
 class NewFolders {
@@ -16,6 +18,7 @@ class NewFolders {
             std::error_code error;
             if (!std::filesystem::exists(std::filesystem::symlink_status(folder, error))) {
                 absent_.push_back(folder);
+                note_new_folder(folder);  // a signal removes it too
             }
         }
     }
@@ -23,11 +26,17 @@ class NewFolders {
     NewFolders& operator=(const NewFolders&) = delete;
 
     // The run succeeded: its folders stay.
-    void keep() { absent_.clear(); }
+    void keep() {
+        for (const std::filesystem::path& folder : absent_) {
+            forget_new_folder(folder);
+        }
+        absent_.clear();
+    }
 
     // Removes each noted folder that the run made, when it is empty (never anything in it).
     ~NewFolders() {
         for (const std::filesystem::path& folder : absent_) {
+            forget_new_folder(folder);
             std::error_code error;
             if (std::filesystem::is_directory(std::filesystem::symlink_status(folder, error)) &&
                 std::filesystem::is_empty(folder, error)) {
