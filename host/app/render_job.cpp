@@ -211,49 +211,46 @@ void read_denoise_options(const ParsedArguments& arguments, RenderJob* job) {
     }
 }
 
-// --write-from F: the first frame written (without the option, --frames' first). Error (exit
-// status 2) naming the option unless F is a whole number within --frames.
-int read_write_from(const ParsedArguments& arguments, const FrameRange& frames) {
-    if (!arguments.has("--write-from")) {
-        return frames.first;
+// The frame number of the option `name`, which needs --frames: Error (exit status 2) naming
+// the option unless it is a whole number; `fallback` without the option.
+int frame_option(const ParsedArguments& arguments, const std::string& name,
+                 const FrameRange& frames, int fallback) {
+    if (!arguments.has(name)) {
+        return fallback;
     }
-    const std::string text = arguments.value("--write-from");
+    const std::string text = arguments.value(name);
     if (!frames.given) {
-        throw Error("--write-from " + text + " needs --frames", kExitUsage);
+        throw Error(name + " " + text + " needs --frames", kExitUsage);
     }
     static const std::regex whole(R"(^-?\d{1,9}$)");
     if (!std::regex_match(text, whole)) {
-        throw Error("--write-from: expected a frame number, got '" + excerpt(text) + "'",
-                    kExitUsage);
+        throw Error(name + ": expected a frame number, got '" + excerpt(text) + "'", kExitUsage);
     }
-    const int first = std::stoi(text);
+    return std::stoi(text);
+}
+
+std::string frames_text(const FrameRange& frames) {
+    return std::to_string(frames.first) + ":" + std::to_string(frames.last);
+}
+
+// --write-from F: the first frame written (without the option, --frames' first), within --frames.
+int read_write_from(const ParsedArguments& arguments, const FrameRange& frames) {
+    const int first = frame_option(arguments, "--write-from", frames, frames.first);
     if (first < frames.first || first > frames.last) {
-        throw Error("--write-from " + text + ": not within --frames " +
-                        std::to_string(frames.first) + ":" + std::to_string(frames.last),
+        throw Error("--write-from " + std::to_string(first) + ": not within --frames " +
+                        frames_text(frames),
                     kExitUsage);
     }
     return first;
 }
 
-// --clip-end F: the clip's last frame (without the option, --frames' last). Error (exit status
-// 2) naming the option unless F is a whole number at or after --frames' last.
+// --clip-end F: the clip's last frame (without the option, --frames' last), at or after
+// --frames' last.
 int read_clip_end(const ParsedArguments& arguments, const FrameRange& frames) {
-    if (!arguments.has("--clip-end")) {
-        return frames.last;
-    }
-    const std::string text = arguments.value("--clip-end");
-    if (!frames.given) {
-        throw Error("--clip-end " + text + " needs --frames", kExitUsage);
-    }
-    static const std::regex whole(R"(^-?\d{1,9}$)");
-    if (!std::regex_match(text, whole)) {
-        throw Error("--clip-end: expected a frame number, got '" + excerpt(text) + "'",
-                    kExitUsage);
-    }
-    const int end = std::stoi(text);
+    const int end = frame_option(arguments, "--clip-end", frames, frames.last);
     if (end < frames.last) {
-        throw Error("--clip-end " + text + ": before the last of --frames " +
-                        std::to_string(frames.first) + ":" + std::to_string(frames.last),
+        throw Error("--clip-end " + std::to_string(end) + ": before the last of --frames " +
+                        frames_text(frames),
                     kExitUsage);
     }
     return end;
