@@ -8,6 +8,14 @@
 
 namespace rc {
 
+std::string bytes_digest(std::string_view bytes) {
+    char text[17];
+    std::snprintf(
+        text, sizeof text, "%016llx",
+        static_cast<unsigned long long>(OIIO::farmhash::Fingerprint64(bytes.data(), bytes.size())));
+    return text;
+}
+
 uint64_t RecordedFiles::bytes_fingerprint(const std::string& bytes) {
     return OIIO::farmhash::Fingerprint64(bytes.data(), bytes.size());
 }
@@ -35,11 +43,8 @@ std::string RecordedFiles::content_digest() const {
     // Sorted, so that the order of the reads does not count; a file read twice (an include named
     // twice) counts twice, as it does for the loader.
     std::sort(sorted.begin(), sorted.end());
-    const uint64_t digest = OIIO::farmhash::Fingerprint64(
-        reinterpret_cast<const char*>(sorted.data()), sorted.size() * sizeof(uint64_t));
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(digest));
-    return text;
+    return bytes_digest(std::string_view(reinterpret_cast<const char*>(sorted.data()),
+                                         sorted.size() * sizeof(uint64_t)));
 }
 
 }  // namespace rc

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -13,6 +14,9 @@
 #include "util/output_identity.h"
 
 namespace rc {
+
+// A farmhash fingerprint of `bytes` as 16 hex digits: the same on any machine.
+std::string bytes_digest(std::string_view bytes);
 
 class RecordedFiles : public SceneFiles {
    public:

@@ -1,7 +1,5 @@
 #include "app/render_parts.h"
 
-#include <OpenImageIO/hash.h>
-
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +7,7 @@
 #include <regex>
 #include <set>
 
+#include "app/recorded_files.h"
 #include "util/error.h"
 #include "util/file_io.h"
 #include "util/text.h"
@@ -42,11 +41,7 @@ std::string file_fingerprint(const std::string& path) {
     } catch (const Error&) {
         return "unreadable";
     }
-    char text[17];
-    std::snprintf(
-        text, sizeof text, "%016llx",
-        static_cast<unsigned long long>(OIIO::farmhash::Fingerprint64(bytes.data(), bytes.size())));
-    return text;
+    return bytes_digest(bytes);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <type_traits>
@@ -250,39 +251,24 @@ Image Denoiser::denoise(const Image& image) const {
     run(colour.data(), albedo_pixels.data(), normal_pixels.data(), denoised.data(), image.width,
         image.height);
 
-    // The output: the beauty's channels denoised, beauty_noisy after them, the rest as they were.
-    const int last_beauty = std::max({beauty[0], beauty[1], beauty[2]});
-    Image out(image.width, image.height, image.channels + 3);
-    out.channel_names.clear();
-    std::vector<int> source;  // per output channel: the input channel, or -1 - k for noisy k
-    for (int c = 0; c < image.channels; ++c) {
-        out.channel_names.push_back(image.channel_names[c]);
-        source.push_back(c);
-        if (c == last_beauty) {
-            for (int k = 0; k < 3; ++k) {
-                out.channel_names.push_back(std::string("beauty_noisy.") + "RGB"[k]);
-                source.push_back(-1 - beauty[k]);
-            }
-        }
-    }
+    // The output: the image (its windows and attributes kept) with beauty_noisy inserted after
+    // the beauty's last channel and the beauty's channels denoised (they lie before the insert).
+    const size_t insert = static_cast<size_t>(std::max({beauty[0], beauty[1], beauty[2]})) + 1;
+    Image out = image;
+    out.channels = image.channels + 3;
+    out.channel_names.insert(out.channel_names.begin() + static_cast<std::ptrdiff_t>(insert),
+                             {"beauty_noisy.R", "beauty_noisy.G", "beauty_noisy.B"});
+    out.pixels.resize(pixels * out.channels);
     for (size_t p = 0; p < pixels; ++p) {
-        for (int c = 0; c < out.channels; ++c) {
-            const int s = source[c];
-            const float* in = &image.pixels[p * image.channels];
-            float value = s < 0 ? in[-1 - s] : in[s];
-            for (int k = 0; k < 3; ++k) {
-                if (s == beauty[k]) {
-                    value = denoised[p * 3 + k];
-                }
-            }
-            out.pixels[p * out.channels + c] = value;
+        const float* in = &image.pixels[p * image.channels];
+        float* to = &out.pixels[p * out.channels];
+        std::copy(in, in + insert, to);
+        std::copy(in + insert, in + image.channels, to + insert + 3);
+        for (int k = 0; k < 3; ++k) {
+            to[insert + k] = in[beauty[k]];
+            to[beauty[k]] = denoised[p * 3 + k];
         }
     }
-    out.origin_x = image.origin_x;
-    out.origin_y = image.origin_y;
-    out.full_width = image.full_width;
-    out.full_height = image.full_height;
-    out.metadata = image.metadata;
     return out;
 }
 
