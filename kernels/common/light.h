@@ -26,15 +26,19 @@
 // The strategy for light triangle `triangle` seen from p, a function of the geometry alone so
 // that sampling and the density MIS evaluates agree: the triangle's solid angle when directions
 // are drawn uniformly in it (p in front of the emitting side, the solid angle at least
-// RC_SOLID_ANGLE_SAMPLING_MIN), 0 when points are drawn uniformly by area.
-RC_FUNC float rc_light_triangle_solid_angle(RC_GLOBAL const Triangle* triangle, float3 p) {
+// RC_SOLID_ANGLE_SAMPLING_MIN), 0 when points are drawn uniformly by area. *a, *b, *c: the unit
+// directions from p to the vertices (the spherical triangle sampling draws in), where it is not 0.
+RC_FUNC float rc_light_triangle_solid_angle(RC_GLOBAL const Triangle* triangle, float3 p, float3* a,
+                                            float3* b, float3* c) {
     const float3 v0 = triangle->v0.xyz;
     const float3 winding = cross(triangle->v1.xyz - v0, triangle->v2.xyz - v0);
     if (dot(winding, p - v0) <= 0.0f) {
         return 0.0f;  // behind the emitter or in its plane: nothing to sample in solid angle
     }
-    const float solid_angle = rc_spherical_triangle_solid_angle(
-        normalize(v0 - p), normalize(triangle->v1.xyz - p), normalize(triangle->v2.xyz - p));
+    *a = normalize(v0 - p);
+    *b = normalize(triangle->v1.xyz - p);
+    *c = normalize(triangle->v2.xyz - p);
+    const float solid_angle = rc_spherical_triangle_solid_angle(*a, *b, *c);
     return solid_angle >= RC_SOLID_ANGLE_SAMPLING_MIN && solid_angle > 0.0f ? solid_angle : 0.0f;
 }
 
@@ -80,13 +84,12 @@ RC_FUNC void rc_sample_area_light(const SceneData* scene, const Light* light, fl
     const uint primitive = scene->light_triangles[entry];
     RC_GLOBAL const Triangle* triangle = scene->triangles + scene->triangle_of_primitive[primitive];
     const float3 nl = rc_triangle_normal(triangle);
-    const float solid_angle = rc_light_triangle_solid_angle(triangle, p);
+    float3 a, b, c;
+    const float solid_angle = rc_light_triangle_solid_angle(triangle, p, &a, &b, &c);
     if (solid_angle > 0.0f) {
         // Uniform in the spherical triangle (Arvo 1995); the point is where the direction meets
         // the triangle's plane.
-        s->direction = rc_sample_spherical_triangle(
-            normalize(triangle->v0.xyz - p), normalize(triangle->v1.xyz - p),
-            normalize(triangle->v2.xyz - p), solid_angle, u2, u3);
+        s->direction = rc_sample_spherical_triangle(a, b, c, solid_angle, u2, u3);
         const float cos_light = -dot(nl, s->direction);
         if (cos_light <= 0.0f) {
             return;
@@ -170,7 +173,8 @@ RC_FUNC float rc_area_light_pdf(const SceneData* scene, int l, uint primitive, f
                                 float3 nl) {
     const float selection = rc_cdf_probability(scene->light_cdf, l);
     RC_GLOBAL const Triangle* triangle = scene->triangles + scene->triangle_of_primitive[primitive];
-    const float solid_angle = rc_light_triangle_solid_angle(triangle, p);
+    float3 a, b, c;
+    const float solid_angle = rc_light_triangle_solid_angle(triangle, p, &a, &b, &c);
     if (solid_angle > 0.0f) {
         const Light light = scene->lights[l];
         return rc_solid_angle_light_pdf(&light, selection, triangle, solid_angle);

@@ -13,12 +13,12 @@ RC_FUNC float2 rc_concentric_disk(float u1, float u2) {
         return (float2)(0.0f, 0.0f);
     }
     const float kQuarterPi = 0.78539816339744831f;
-    if (fabs(a) > fabs(b)) {
-        const float phi = kQuarterPi * (b / a);
-        return (float2)(a * cos(phi), a * sin(phi));
-    }
-    const float phi = 2.0f * kQuarterPi - kQuarterPi * (a / b);
-    return (float2)(b * cos(phi), b * sin(phi));
+    const bool by_a = fabs(a) > fabs(b);
+    const float r = by_a ? a : b;
+    const float phi = by_a ? kQuarterPi * (b / a) : 2.0f * kQuarterPi - kQuarterPi * (a / b);
+    float cos_phi;
+    const float sin_phi = sincos(phi, &cos_phi);  // one argument reduction for both
+    return (float2)(r * cos_phi, r * sin_phi);
 }
 
 // Cosine-distributed direction about +z (Malley's method: lift the disk point to the

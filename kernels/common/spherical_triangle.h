@@ -22,11 +22,21 @@ RC_FUNC float rc_spherical_triangle_solid_angle(float3 a, float3 b, float3 c) {
     return 2.0f * atan2(fabs(rc_spherical_triple(a, b, c)), denominator);
 }
 
-// The angle at vertex a (unit) between the arcs ab and ac: the angle between the planes a x b and
-// a x c, whose cross product is a (a.(b x c)) (Arvo 1995, Figure 1's alpha). The planes' normals
-// are taken as a x (b - a) and a x (c - a), which are exact for nearby vertices.
-RC_FUNC float rc_spherical_angle(float3 a, float3 b, float3 c) {
-    return atan2(fabs(rc_spherical_triple(a, b, c)), dot(cross(a, b - a), cross(a, c - a)));
+// The angle at vertex a (unit) between the arcs ab and ac, as its sine and cosine (returns the
+// sine): the angle between the planes a x b and a x c, whose cross product is a (a.(b x c)) (Arvo
+// 1995, Figure 1's alpha). The planes' normals are taken as a x (b - a) and a x (c - a), which are
+// exact for nearby vertices; sine and cosine come from the two products without a trigonometric
+// call (alpha = atan2(|a.(b x c)|, (a x b).(a x c))).
+RC_FUNC float rc_spherical_angle_sin_cos(float3 a, float3 b, float3 c, float* cos_alpha) {
+    const float y = fabs(rc_spherical_triple(a, b, c));
+    const float x = dot(cross(a, b - a), cross(a, c - a));
+    const float r = sqrt(x * x + y * y);  // |x|, |y| <= 4 for unit a, b, c: no overflow
+    if (r <= 0.0f) {
+        *cos_alpha = 1.0f;
+        return 0.0f;
+    }
+    *cos_alpha = x / r;
+    return y / r;
 }
 
 // The unit tangent at unit u of the great arc from u towards unit v: v - (v.u) u normalised,
@@ -58,15 +68,19 @@ RC_FUNC float3 rc_arc_point(float3 u, float3 t, float w) {
 // 1 - z = u2 |c' - b|^2 / 2.
 RC_FUNC float3 rc_sample_spherical_triangle(float3 a, float3 b, float3 c, float area, float u1,
                                             float u2) {
-    const float alpha = rc_spherical_angle(a, b, c);
-    const float sin_alpha = sin(alpha);
+    float cos_alpha;
+    const float sin_alpha = rc_spherical_angle_sin_cos(a, b, c, &cos_alpha);
     const float3 ab = b - a;
     const float sin2_half_c = 0.25f * dot(ab, ab);  // sin^2(c_arc / 2)
-    // Stage 1: 1 - cos(arc a c') and c'.
-    const float sub_area = u1 * area;
-    const float sin_half_sub = sin(0.5f * sub_area);
+    // Stage 1: 1 - cos(arc a c') and c'. sin(A' - alpha) = sin A' cos alpha - cos A' sin alpha,
+    // sin A' and cos A' from the half angle's sine and cosine (one argument reduction).
+    float cos_half_sub;
+    const float sin_half_sub = sincos(0.5f * u1 * area, &cos_half_sub);
     const float sin2_half_sub = sin_half_sub * sin_half_sub;
-    const float denominator = sin2_half_sub - sin(sub_area - alpha) * sin_alpha * sin2_half_c;
+    const float sin_sub = 2.0f * sin_half_sub * cos_half_sub;
+    const float cos_sub = 1.0f - 2.0f * sin2_half_sub;
+    const float sin_sub_minus_alpha = sin_sub * cos_alpha - cos_sub * sin_alpha;
+    const float denominator = sin2_half_sub - sin_sub_minus_alpha * sin_alpha * sin2_half_c;
     const float one_minus_q =
         denominator > 0.0f
             ? clamp((2.0f - 2.0f * sin2_half_c) * sin2_half_sub / denominator, 0.0f, 2.0f)
