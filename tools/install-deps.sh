@@ -6,7 +6,8 @@
 # RUSTICL_ENABLE=llvmpipe: docs/devices.md); Intel's OpenCL CPU runtime, through pip, a third
 # (tools/intel-opencl.sh).
 # slurmctld, slurmd, slurm-client and munge run the one-node cluster of the farm tests
-# (tools/farm/local-slurm.sh, docs/farm.md).
+# (tools/farm/local-slurm.sh, docs/farm.md). linux-perf samples the kernels PoCL compiles
+# (tools/bench/kernel_profile.py, docs/lab/path-tracer-profile.md).
 # Idempotent: runs `apt-get update` at most once, and only when something is missing.
 set -euo pipefail
 
@@ -17,6 +18,7 @@ packages=(
     libtinyobjloader-dev libtinygltf-dev zlib1g-dev libcli11-dev libgtest-dev googletest
     clang libclang-rt-dev
     slurmctld slurmd slurm-client munge
+    linux-perf
 )
 
 missing=()
