@@ -255,6 +255,10 @@ int render(const ParsedArguments& arguments) {
     if (scene.dropped_degenerate > 0) {
         log_note("dropped " + std::to_string(scene.dropped_degenerate) + " degenerate triangles");
     }
+    if (scene.dropped_repeated > 0) {
+        log_note("dropped " + std::to_string(scene.dropped_repeated) +
+                 " triangles that repeat an earlier triangle of their shape (the same vertices)");
+    }
     scene.base_camera.filter = pixel_filter(arguments, scene.base_camera.filter);
     scene.camera.filter = scene.base_camera.filter;
     scene.base_camera.sampler = pixel_sampler(arguments, scene.base_camera.sampler);

@@ -94,6 +94,7 @@ nlohmann::json RenderTotals::json(const RenderSettings& settings, const Scene& s
     stats["triangles"] = scene.mesh.triangle_count();
     stats["lights"] = scene.lights.lights.size();
     stats["dropped_degenerate_triangles"] = scene.dropped_degenerate;
+    stats["dropped_repeated_triangles"] = scene.dropped_repeated;
     stats["resolution"] = {width_, height_};
     stats["spp"] = spp_;
     stats["filter"] = {{"type", pixel_filter_name(scene.camera.filter.type)},

@@ -50,6 +50,7 @@ Scene imported_scene(const std::filesystem::path& path, const std::function<void
 
 void Scene::add_shape(Shape shape) {
     dropped_degenerate += drop_degenerate_triangles(shape.mesh);
+    dropped_repeated += drop_repeated_triangles(shape.mesh);
     if (shape.materials.empty()) {
         shape.materials.push_back(default_material(*this));
     }

@@ -66,6 +66,7 @@ struct Scene {
     Animation animation;
     RenderSettings render;
     size_t dropped_degenerate = 0;  // zero-area triangles removed while loading
+    size_t dropped_repeated = 0;    // triangles repeating an earlier one of their shape, removed
 
     // World data of the current frame.
     double frame = 0.0;

@@ -1,8 +1,13 @@
 #include "scene/triangle_mesh.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <unordered_set>
 
 namespace rc {
 
@@ -62,6 +67,59 @@ size_t drop_degenerate_triangles(TriangleMesh& mesh, std::vector<size_t>* kept) 
     mesh.triangles = std::move(remaining);
     if (!mesh.materials.empty()) {
         mesh.materials = std::move(remaining_materials);
+    }
+    return dropped;
+}
+
+namespace {
+
+// A triangle's vertex positions as bits, rotated so that the smallest vertex comes first: equal
+// for two triangles exactly when they have bitwise the same vertices in the same cyclic order.
+using TriangleKey = std::array<uint32_t, 9>;
+
+TriangleKey triangle_key(const TriangleMesh& mesh, const glm::uvec3& t) {
+    std::array<std::array<uint32_t, 3>, 3> v{};
+    for (int i = 0; i < 3; ++i) {
+        std::memcpy(v[i].data(), &mesh.positions[t[i]], sizeof(glm::vec3));
+    }
+    const int first = static_cast<int>(std::min_element(v.begin(), v.end()) - v.begin());
+    TriangleKey key{};
+    for (int i = 0; i < 3; ++i) {
+        std::copy(v[(first + i) % 3].begin(), v[(first + i) % 3].end(), key.begin() + 3 * i);
+    }
+    return key;
+}
+
+struct TriangleKeyHash {
+    size_t operator()(const TriangleKey& key) const {
+        uint64_t h = 1469598103934665603ull;  // FNV-1a over the nine words
+        for (uint32_t word : key) {
+            h = (h ^ word) * 1099511628211ull;
+        }
+        return static_cast<size_t>(h);
+    }
+};
+
+}  // namespace
+
+size_t drop_repeated_triangles(TriangleMesh& mesh) {
+    std::unordered_set<TriangleKey, TriangleKeyHash> seen;
+    seen.reserve(mesh.triangles.size());
+    size_t kept = 0;
+    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+        if (!seen.insert(triangle_key(mesh, mesh.triangles[i])).second) {
+            continue;
+        }
+        mesh.triangles[kept] = mesh.triangles[i];
+        if (!mesh.materials.empty()) {
+            mesh.materials[kept] = mesh.materials[i];
+        }
+        ++kept;
+    }
+    const size_t dropped = mesh.triangles.size() - kept;
+    mesh.triangles.resize(kept);
+    if (!mesh.materials.empty()) {
+        mesh.materials.resize(kept);
     }
     return dropped;
 }

@@ -26,6 +26,12 @@ struct TriangleMesh {
 // its index before the removal.
 size_t drop_degenerate_triangles(TriangleMesh& mesh, std::vector<size_t>* kept = nullptr);
 
+// Removes each triangle whose vertex positions repeat, bitwise and in the same cyclic order (the
+// same oriented surface), an earlier triangle's: the earlier one is kept with its material,
+// normals and texture coordinates. Coincident copies add no surface, but a ray through them must
+// test every copy (no BVH can split them). Returns how many were removed.
+size_t drop_repeated_triangles(TriangleMesh& mesh);
+
 // Whether the quad a b c d lies in one plane (to a relative 1e-5 of its size): then its two
 // triangles a b c, a c d are exactly the quad (pbrt's bilinear patch, a PLY quad). A degenerate
 // quad counts as planar (its triangles are dropped or flat).

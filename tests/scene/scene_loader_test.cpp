@@ -105,6 +105,26 @@ TEST(SceneLoader, LoadsShapesRelativeToTheSceneFileAndDropsDegenerateTriangles) 
     EXPECT_FLOAT_EQ(scene.camera.fov_degrees, 40.0f);
 }
 
+TEST(SceneLoader, DropsTrianglesThatRepeatAnEarlierOneOfTheirShape) {
+    const auto dir = test::scratch_dir("scene_repeated");
+    // 1 2 3 again, rotated (2 3 1) and as a copy with the same corners written again (5 6 7 =
+    // 1 2 3): dropped. Reversed (3 2 1, the other side) and in another shape: kept.
+    test::write_file(dir / "a.obj", std::string(kSquare) +
+                                        "v 0 0 0\nv 1 0 0\nv 1 1 0\n"
+                                        "f 1 2 3\nf 1 3 4\nf 2 3 1\nf 1 2 3\nf 5 6 7\nf 3 2 1\n");
+    test::write_file(dir / "b.obj", std::string(kSquare) + "f 1 2 3\n");
+    const Scene scene = load_scene(test::write_file(
+        dir / "scene.json",
+        scene_with(kCamera,
+                   R"([{"type": "obj", "file": "a.obj"}, {"type": "obj", "file": "b.obj"}])")));
+    EXPECT_EQ(scene.dropped_repeated, 3u);
+    EXPECT_EQ(scene.dropped_degenerate, 0u);
+    ASSERT_EQ(scene.shapes.size(), 2u);
+    EXPECT_EQ(scene.shapes[0].triangle_count, 3u);
+    EXPECT_EQ(scene.shapes[1].triangle_count, 1u);
+    EXPECT_EQ(scene.mesh.triangle_count(), 4u);
+}
+
 TEST(SceneLoader, TheCornellBoxHasItsPublishedDimensions) {
     const Scene scene = test::load_cornell_box();
     EXPECT_EQ(scene.shapes.size(), 8u);
