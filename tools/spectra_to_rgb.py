@@ -19,6 +19,11 @@ spectrum 1 (the tabulated D65 is not exactly sRGB's white point: without this a 
 colour a spectral reflectance or index has under sRGB's white (an index clamped at 0), the way an RGB renderer such as
 Mitsuba 3 turns its spectral tables into RGB ones. A glass's index is also given at 550 nm alone:
 radcache renders RGB, without dispersion.
+Emission (a blackbody's radiance) is converted without an illuminant, as pbrt-v4's film sees a
+light: RGB = M sum L(l) cmf(l) / sum L(l) ybar(l), the light's luminance made 1 (pbrt-v4 divides
+every light's spectrum by its photometric integral, SpectrumToPhotometric); the table holds, per
+STEP nm, M cmf and ybar integrated over the sample's hat, so that the C++ side forms both sums
+from a spectrum's samples.
 
 usage: tools/spectra_to_rgb.py PBRT_V4/src/pbrt/util/spectrum.cpp [OUT]
        (OUT defaults to host/scene/spectra_table.inc)
@@ -75,6 +80,16 @@ def observer():
     return wavelengths, rgb_weights / white[:, None]
 
 
+def emission_observer():
+    """(wavelengths, M cmf per nm as a 3 x N array, ybar per nm) at 1 nm: emission's weights."""
+    import colour
+    wavelengths = numpy.arange(FIRST, LAST + 1, dtype=float)
+    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"]
+    cmf = numpy.array([cmfs[l] for l in wavelengths]).T
+    matrix = colour.RGB_COLOURSPACES["sRGB"].matrix_XYZ_to_RGB
+    return wavelengths, matrix @ cmf, cmf[1]
+
+
 def to_rgb(wavelengths, values, grid, weights):
     return weights @ numpy.interp(grid, wavelengths, values)
 
@@ -117,6 +132,13 @@ def table(named, grid, weights, source):
     lines.append("const float kSampledWeights[%d][3] = {" % len(samples))
     for w in per_sample:
         lines.append("    {%s, %s, %s}," % (fmt(w[0]), fmt(w[1]), fmt(w[2])))
+    lines.append("};")
+    grid_e, rgb_e, y_e = emission_observer()
+    _, emission = sampled_weights(grid_e, numpy.vstack([rgb_e, y_e]))
+    lines.append("// Emission: per sample, M cmf (linear sRGB) and ybar, for RGB = sum L w / sum L y.")
+    lines.append("const float kEmissionWeights[%d][4] = {" % len(emission))
+    for w in emission:
+        lines.append("    {%s, %s, %s, %s}," % (fmt(w[0]), fmt(w[1]), fmt(w[2]), fmt(w[3])))
     lines.append("};")
     lines.append("// clang-format on")
     return "\n".join(lines) + "\n"

@@ -440,7 +440,7 @@ class PbrtSceneBuilder {
                 "of their normal)");
         }
         const glm::vec3 radiance =
-            params.get_rgb("L").value_or(glm::vec3(1.0f)) * params.get_float("scale", 1.0f);
+            params.get_illuminant("L").value_or(glm::vec3(1.0f)) * params.get_float("scale", 1.0f);
         check_range(radiance, 1e9f, params, "L times scale");
         params.warn_unused();
         attributes_.area_radiance = radiance;
@@ -587,7 +587,7 @@ class PbrtSceneBuilder {
             if (type == "spot") {
                 unit_power = spot(params, to_world, from, emitter);
             }
-            emitter.intensity = params.get_rgb("I").value_or(glm::vec3(1.0f)) * scale *
+            emitter.intensity = params.get_illuminant("I").value_or(glm::vec3(1.0f)) * scale *
                                 photometric_factor(params, "power", unit_power);
             check_range(emitter.intensity, 1e12f, params, "I times scale");
         }
@@ -620,7 +620,7 @@ class PbrtSceneBuilder {
             image_infinite(params, to_world, scale, file, emitter);
             return;
         }
-        emitter.radiance = params.get_rgb("L").value_or(glm::vec3(1.0f)) * scale *
+        emitter.radiance = params.get_illuminant("L").value_or(glm::vec3(1.0f)) * scale *
                            photometric_factor(params, "illuminance", kPi);
         check_range(emitter.radiance, 1e9f, params, "L times scale");
     }
@@ -681,7 +681,7 @@ class PbrtSceneBuilder {
         }
         emitter.kind = EmitterKind::kDistant;
         emitter.direction = glm::normalize(direction);
-        emitter.irradiance = params.get_rgb("L").value_or(glm::vec3(1.0f)) * scale *
+        emitter.irradiance = params.get_illuminant("L").value_or(glm::vec3(1.0f)) * scale *
                              photometric_factor(params, "illuminance", 1.0f);
         check_range(emitter.irradiance, 1e9f, params, "L times scale");
     }

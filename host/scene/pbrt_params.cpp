@@ -150,6 +150,24 @@ std::optional<glm::vec3> PbrtParams::get_rgb(const std::string& name) {
     return glm::vec3(v[0], v[1], v[2]);
 }
 
+std::optional<glm::vec3> PbrtParams::get_illuminant(const std::string& name) {
+    if (type_of(name) != "blackbody") {
+        return get_rgb(name);
+    }
+    const PbrtParam* p = find(name, {"blackbody"});
+    const std::vector<double> v = get_numbers(name, {"blackbody"}, 1);
+    if (v.empty() || v.size() > 2) {
+        fail("parameter " + declared(*p) +
+             " expects one temperature in kelvin (or pbrt-v3's temperature and scale)");
+    }
+    const auto rgb = blackbody_rgb(v[0]);
+    if (!rgb) {
+        fail("parameter " + declared(*p) + ": " + excerpt(std::to_string(v[0])) +
+             " K is not a temperature that emits visible light (give a positive kelvin value)");
+    }
+    return *rgb * static_cast<float>(v.size() == 2 ? v[1] : 1.0);
+}
+
 std::optional<glm::vec3> PbrtParams::get_material_spectrum(const std::string& name) {
     if (type_of(name) != "spectrum") {
         return get_rgb(name);

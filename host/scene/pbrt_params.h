@@ -35,6 +35,9 @@ class PbrtParams {
                                     size_t width);
     // An "rgb" (or pbrt-v3 "color") spectrum; blackbody and sampled spectra are refused.
     std::optional<glm::vec3> get_rgb(const std::string& name);
+    // A light's spectrum as linear sRGB: "rgb" (or "color"), or "blackbody" [T] (kelvin; pbrt-v3's
+    // [T scale] too), its luminance made 1 as pbrt-v4 normalises a light's spectrum.
+    std::optional<glm::vec3> get_illuminant(const std::string& name);
     // A material's spectrum as linear sRGB: "rgb" (or "color"), or a "spectrum" given by one of
     // pbrt-v4's names (named_spectra.h), as wavelength-value pairs, or as one constant;
     // blackbody spectra are refused.

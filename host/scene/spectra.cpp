@@ -82,6 +82,30 @@ std::optional<glm::vec3> sampled_spectrum_rgb(const std::vector<double>& pairs) 
     return glm::vec3(rgb[0], rgb[1], rgb[2]);
 }
 
+std::optional<glm::vec3> blackbody_rgb(double kelvin) {
+    if (!std::isfinite(kelvin) || !(kelvin > 0.0)) {
+        return std::nullopt;
+    }
+    // Planck's law up to its constant factor, which the luminance normalisation removes:
+    // L(l) ~ l^-5 / (exp(hc / (l k T)) - 1), hc / k = 1.438777e-2 m K.
+    constexpr double kSecondRadiation = 1.438777e-2;  // m K
+    double rgb[3] = {0.0, 0.0, 0.0};
+    double luminance = 0.0;
+    for (size_t i = 0; i < std::size(kEmissionWeights); ++i) {
+        const double metres = (kSampledFirst + kSampledStep * i) * 1e-9;
+        const double planck =
+            1.0 / (std::pow(metres * 1e6, 5.0) * std::expm1(kSecondRadiation / (metres * kelvin)));
+        for (int c = 0; c < 3; ++c) {
+            rgb[c] += planck * kEmissionWeights[i][c];
+        }
+        luminance += planck * kEmissionWeights[i][3];
+    }
+    if (!(luminance > 0.0) || !std::isfinite(luminance)) {
+        return std::nullopt;  // so cold that no visible light is left in double precision
+    }
+    return glm::vec3(rgb[0] / luminance, rgb[1] / luminance, rgb[2] / luminance);
+}
+
 std::optional<double> sampled_spectrum_at(const std::vector<double>& pairs, double wavelength) {
     if (!valid_pairs(pairs)) {
         return std::nullopt;

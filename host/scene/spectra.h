@@ -22,6 +22,12 @@ std::optional<float> named_glass_ior(const std::string& name);
 // every number finite.
 std::optional<glm::vec3> sampled_spectrum_rgb(const std::vector<double>& pairs);
 
+// A blackbody's emission at `kelvin` as linear sRGB with luminance Y = 1: pbrt-v4's normalisation
+// of a light's spectrum (it divides by the spectrum's photometric integral), so that a light's
+// "blackbody L" [T] and "scale" give a luminance of `scale`, as "rgb L" [1 1 1] does. Planck's law
+// (pbrt-v4 §4.4.1) on 360-830 nm; nullopt unless kelvin is finite and positive.
+std::optional<glm::vec3> blackbody_rgb(double kelvin);
+
 // The same spectrum's value at one wavelength.
 std::optional<double> sampled_spectrum_at(const std::vector<double>& pairs, double wavelength);
 

@@ -400,8 +400,9 @@ TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
          "is not one of pbrt-v4's named glasses", 6},
         {"goniometric", "LightSource \"goniometric\"\n",
          "LightSource \"goniometric\" is not supported"},
-        {"blackbody", "AreaLightSource \"diffuse\" \"blackbody L\" [6500]\n",
-         "blackbody spectra are not supported"},
+        {"blackbody_reflectance",
+         std::string("Material \"diffuse\" \"blackbody reflectance\" [6500]\n") + kTriangle,
+         "blackbody spectra are not supported", 6},
         {"twosided", "AreaLightSource \"diffuse\" \"bool twosided\" true\n",
          "two-sided area lights are not supported"},
         {"medium", "MediumInterface \"fog\" \"\"\n", "participating media are not supported"},
@@ -547,6 +548,40 @@ TEST(Pbrt, NamedAndSampledSpectraBecomeRgb) {
     EXPECT_NEAR(material(5).diffuse.r, 0.5f, 2e-3f);
     EXPECT_NEAR(material(5).diffuse.g, 0.5f, 2e-3f);
     EXPECT_NEAR(material(5).diffuse.b, 0.5f, 2e-3f);
+}
+
+// A light's "blackbody" [T] is Planck's spectrum at T kelvin made luminance 1 (pbrt-v4 divides a
+// light's spectrum by its photometric integral), times "scale": checked against the CIE's own
+// chromaticities of Planckian radiators (illuminant A, 2856 K: x 0.44757, y 0.40745; 6504 K, D65's
+// correlated colour temperature, on the locus near x 0.3135, y 0.3237, CIE 15:2004 table T.2),
+// read back through the standard sRGB-to-XYZ matrix (IEC 61966-2-1). A temperature that emits no
+// light is refused in one line.
+TEST(Pbrt, BlackbodyLightsHavePlanckChromaticityAndUnitLuminance) {
+    const auto dir = test::scratch_dir("pbrt_blackbody");
+    const auto file = dir / "blackbody.pbrt";
+    write_file_atomically(file,
+                          std::string(kHeader) +
+                              "LightSource \"point\" \"blackbody I\" [2856] \"float scale\" 3\n"
+                              "LightSource \"distant\" \"blackbody L\" [6504]\n" +
+                              kTriangle);
+    const Scene scene = load_scene(file);
+    ASSERT_EQ(scene.emitters.size(), 3u);
+    const auto xyz = [](glm::vec3 rgb) {
+        return glm::dvec3(0.4124 * rgb.r + 0.3576 * rgb.g + 0.1805 * rgb.b,
+                          0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b,
+                          0.0193 * rgb.r + 0.1192 * rgb.g + 0.9505 * rgb.b);
+    };
+    const glm::dvec3 a = xyz(scene.emitters[1].intensity);
+    EXPECT_NEAR(a.y, 3.0, 3e-3);
+    EXPECT_NEAR(a.x / (a.x + a.y + a.z), 0.44757, 1e-3);
+    EXPECT_NEAR(a.y / (a.x + a.y + a.z), 0.40745, 1e-3);
+    const glm::dvec3 d = xyz(scene.emitters[2].irradiance);
+    EXPECT_NEAR(d.y, 1.0, 1e-3);
+    EXPECT_NEAR(d.x / (d.x + d.y + d.z), 0.3135, 1.5e-3);
+    EXPECT_NEAR(d.y / (d.x + d.y + d.z), 0.3237, 1.5e-3);
+    expect_refused(dir, "blackbody_zero",
+                   std::string(kHeader) + "LightSource \"point\" \"blackbody I\" [0]\n",
+                   "is not a temperature that emits visible light", 6, 1);
 }
 
 // pbrt-v4's 2D checkerboard: tex1 where floor(uscale u + udelta) + floor(vscale v + vdelta) is
