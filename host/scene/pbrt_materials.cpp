@@ -80,6 +80,7 @@ void PbrtMaterials::define_texture(const PbrtDirective& directive) {
     TextureEntry entry;
     entry.what = directive.where() + ": Texture " + in_quotes(name);
     PbrtParams params(directive, entry.what + " (" + excerpt(type) + ")");
+    params.read_spectrum_files(files_, dir_);
     if (kind != "spectrum" && kind != "color") {
         entry.refused = "is a " + excerpt(kind) + " texture (only spectrum textures serve, as " +
                         "diffuse reflectances)";
@@ -218,6 +219,7 @@ void PbrtMaterials::define_named(const PbrtDirective& directive) {
                     "second definition)");
     }
     PbrtParams params(directive, spec.what);
+    params.read_spectrum_files(files_, dir_);
     spec.type = params.get_string("type", "");
     if (spec.type.empty()) {
         params.fail("parameter \"string type\" is missing");
@@ -354,6 +356,7 @@ Material PbrtMaterials::make(Spec& spec) {
         throw Error(spec.what + " " + why, kExitUnsupported);
     }
     PbrtParams params(spec.directive, spec.what);
+    params.read_spectrum_files(files_, dir_);
     params.ignore("type");
     Material material;
     material.name = "pbrt" + std::to_string(scene_.materials.size()) + "_" + spec.type;

@@ -1,7 +1,9 @@
 #include "scene/pbrt_params.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <set>
 
 #include "scene/spectra.h"
@@ -168,19 +170,70 @@ std::optional<glm::vec3> PbrtParams::get_illuminant(const std::string& name) {
     return *rgb * static_cast<float>(v.size() == 2 ? v[1] : 1.0);
 }
 
+void PbrtParams::read_spectrum_files(const SceneFiles& files, std::filesystem::path dir) {
+    spectrum_files_ = &files;
+    spectrum_dir_ = std::move(dir);
+}
+
+std::vector<double> PbrtParams::spectrum_file_pairs(const PbrtParam& p) const {
+    const std::string& name = p.strings[0];
+    if (spectrum_files_ == nullptr) {
+        refuse("parameter " + declared(p) + ": \"" + excerpt(name) +
+               "\" is not one of pbrt-v4's named spectra radcache knows");
+    }
+    const std::filesystem::path given(name);
+    const std::filesystem::path path = given.is_absolute() ? given : spectrum_dir_ / given;
+    if (!spectrum_files_->exists(path)) {
+        fail("parameter " + declared(p) + ": \"" + excerpt(name) +
+             "\" is neither one of pbrt-v4's named spectra nor a file (" + excerpt(path.string()) +
+             " not found)");
+    }
+    std::string text;
+    try {
+        text = spectrum_files_->read(path, kMaxMaterialFileBytes, "spectrum file");
+    } catch (const Error& error) {
+        fail("parameter " + declared(p) + ": " + error.what());
+    }
+    // pbrt-v4's float files: numbers separated by white space, '#' to the end of a line a comment.
+    std::vector<double> pairs;
+    size_t at = 0;
+    while (at < text.size()) {
+        const char c = text[at];
+        if (c == '#') {
+            at = text.find('\n', at);
+            at = at == std::string::npos ? text.size() : at;
+        } else if (std::isspace(static_cast<unsigned char>(c))) {
+            ++at;
+        } else {
+            const size_t end = text.find_first_of(" \t\r\n#", at);
+            const std::string word = text.substr(at, end == std::string::npos ? end : end - at);
+            char* parsed_end = nullptr;
+            const double value = std::strtod(word.c_str(), &parsed_end);
+            if (parsed_end != word.c_str() + word.size() || !std::isfinite(value)) {
+                fail("parameter " + declared(p) + ": spectrum file " + excerpt(path.string()) +
+                     ": \"" + excerpt(word) + "\" is not a finite number");
+            }
+            pairs.push_back(value);
+            at = end == std::string::npos ? text.size() : end;
+        }
+    }
+    if (pairs.size() < 4 || pairs.size() % 2 != 0 || !sampled_spectrum_at(pairs, 550.0)) {
+        fail("parameter " + declared(p) + ": spectrum file " + excerpt(path.string()) +
+             " does not hold wavelength-value pairs with increasing wavelengths");
+    }
+    return pairs;
+}
+
 std::optional<glm::vec3> PbrtParams::get_material_spectrum(const std::string& name) {
     if (type_of(name) != "spectrum") {
         return get_rgb(name);
     }
     const PbrtParam* p = find(name, {"spectrum"});
     if (p->strings.size() == 1 && p->numbers.empty()) {
-        const auto rgb = named_spectrum_rgb(p->strings[0]);
-        if (!rgb) {
-            refuse("parameter " + declared(*p) + ": \"" + excerpt(p->strings[0]) +
-                   "\" is not one of pbrt-v4's named spectra radcache knows (spectrum files are "
-                   "not read)");
+        if (const auto rgb = named_spectrum_rgb(p->strings[0])) {
+            return rgb;
         }
-        return rgb;
+        return sampled_spectrum_rgb(spectrum_file_pairs(*p));
     }
     const std::vector<double> v = get_numbers(name, {"spectrum"}, 1);
     if (v.size() == 1) {
@@ -203,12 +256,10 @@ std::optional<float> PbrtParams::get_index_of_refraction(const std::string& name
     }
     const PbrtParam* p = find(name, {"spectrum"});
     if (p->strings.size() == 1 && p->numbers.empty()) {
-        const auto ior = named_glass_ior(p->strings[0]);
-        if (!ior) {
-            refuse("parameter " + declared(*p) + ": \"" + excerpt(p->strings[0]) +
-                   "\" is not one of pbrt-v4's named glasses radcache knows");
+        if (const auto ior = named_glass_ior(p->strings[0])) {
+            return ior;
         }
-        return ior;
+        return static_cast<float>(*sampled_spectrum_at(spectrum_file_pairs(*p), 550.0));
     }
     const std::vector<double> v = get_numbers(name, {"spectrum"}, 1);
     if (v.size() == 1) {

@@ -4,6 +4,7 @@
 // nothing in the file is dropped without a word.
 #pragma once
 
+#include <filesystem>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "scene/pbrt_parser.h"
+#include "scene/scene_files.h"
 
 namespace rc {
 
@@ -20,6 +22,10 @@ class PbrtParams {
     PbrtParams(const PbrtDirective& directive, std::string what);
 
     const std::string& what() const { return what_; }
+    // Lets a "spectrum" parameter name a spectrum file (pbrt-v4's .spd: wavelength-value pairs),
+    // read from `files` relative to `dir` (the scene file's folder) when no named spectrum has
+    // its name.
+    void read_spectrum_files(const SceneFiles& files, std::filesystem::path dir);
     bool has(const std::string& name) const;
     // The parameter's declared type ("" when absent); does not mark it read.
     std::string type_of(const std::string& name) const;
@@ -39,11 +45,11 @@ class PbrtParams {
     // [T scale] too), its luminance made 1 as pbrt-v4 normalises a light's spectrum.
     std::optional<glm::vec3> get_illuminant(const std::string& name);
     // A material's spectrum as linear sRGB: "rgb" (or "color"), or a "spectrum" given by one of
-    // pbrt-v4's names (named_spectra.h), as wavelength-value pairs, or as one constant;
-    // blackbody spectra are refused.
+    // pbrt-v4's names (named_spectra.h), a spectrum file (read_spectrum_files), as
+    // wavelength-value pairs, or as one constant; blackbody spectra are refused.
     std::optional<glm::vec3> get_material_spectrum(const std::string& name);
-    // The parameter's one value at 550 nm: a "float", a named glass or a sampled "spectrum" (an
-    // index of refraction, which radcache renders without dispersion).
+    // The parameter's one value at 550 nm: a "float", a named glass, a spectrum file or a sampled
+    // "spectrum" (an index of refraction, which radcache renders without dispersion).
     std::optional<float> get_index_of_refraction(const std::string& name);
     // Marks the parameter read without using it (a parameter the import may ignore).
     void ignore(const std::string& name);
@@ -63,9 +69,14 @@ class PbrtParams {
     const PbrtParam* find_single(const std::string& name, const std::vector<std::string>& types,
                                  bool strings, const std::string& expects);
 
+    // The wavelength-value pairs of the spectrum file parameter p names (its one string).
+    std::vector<double> spectrum_file_pairs(const PbrtParam& p) const;
+
     std::vector<PbrtParam> params_;
     std::vector<bool> used_;
     std::string what_;
+    const SceneFiles* spectrum_files_ = nullptr;
+    std::filesystem::path spectrum_dir_;
 };
 
 }  // namespace rc

@@ -397,7 +397,7 @@ TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
         {"unknown_glass",
          std::string("Material \"dielectric\" \"spectrum eta\" \"glass-Unobtainium\"\n") +
              kTriangle,
-         "is not one of pbrt-v4's named glasses", 6},
+         "\"glass-Unobtainium\" is neither one of pbrt-v4's named spectra nor a file", 6, 1},
         {"goniometric", "LightSource \"goniometric\"\n",
          "LightSource \"goniometric\" is not supported"},
         {"blackbody_reflectance",
@@ -414,9 +414,9 @@ TEST(Pbrt, RefusedDirectivesNameFileAndLine) {
          "reflectance\" \"c\"\n" +
              std::string(kTriangle),
          "is of class \"marble\"", 7},
-        {"spectrum_file",
+        {"missing_spectrum_file",
          std::string("Material \"conductor\" \"spectrum eta\" \"metal.spd\"\n") + kTriangle,
-         "is not one of pbrt-v4's named spectra", 6},
+         "is neither one of pbrt-v4's named spectra nor a file", 6, 1},
         {"unknown", "Frobnicate 1 2 3\n", "unknown directive 'Frobnicate'", 0, 1},
         {"two_skies", "LightSource \"infinite\"\nLightSource \"infinite\"\n",
          "at most one infinite light"},
@@ -582,6 +582,39 @@ TEST(Pbrt, BlackbodyLightsHavePlanckChromaticityAndUnitLuminance) {
     expect_refused(dir, "blackbody_zero",
                    std::string(kHeader) + "LightSource \"point\" \"blackbody I\" [0]\n",
                    "is not a temperature that emits visible light", 6, 1);
+}
+
+// A "spectrum" parameter naming a file reads pbrt-v4's spectrum file format (wavelength-value
+// pairs separated by white space, '#' comments) relative to the scene's folder: the same colour
+// and index as the same pairs given inline; a file that is not pairs is refused naming it.
+TEST(Pbrt, SpectrumFilesReadAsTheirPairsInline) {
+    const auto dir = test::scratch_dir("pbrt_spd");
+    std::filesystem::create_directories(dir / "spds");
+    const std::string pairs = "400 0.2 500 1.5 600 2.5 700 3";
+    write_file_atomically(dir / "spds" / "eta.spd",
+                          "# a made-up index\n400 0.2\n500\t1.5 # mid\n600 2.5\n700 3\n");
+    write_file_atomically(dir / "spds" / "k.spd", "400 4 700 2\n");
+    write_file_atomically(dir / "spds" / "odd.spd", "400 4 700\n");
+    const std::string triangle = kTriangle;
+    const auto file = dir / "spd.pbrt";
+    write_file_atomically(
+        file, std::string(kHeader) +
+                  "Material \"conductor\" \"spectrum eta\" \"spds/eta.spd\" \"spectrum k\" "
+                  "\"spds/k.spd\"\n" +
+                  triangle + "Material \"conductor\" \"spectrum eta\" [" + pairs +
+                  "] \"spectrum k\" [400 4 700 2]\n" + triangle +
+                  "Material \"dielectric\" \"spectrum eta\" \"spds/eta.spd\"\n" + triangle);
+    const Scene scene = load_scene(file);
+    ASSERT_EQ(scene.shapes.size(), 3u);
+    const auto material = [&](size_t i) { return scene.materials[scene.shapes[i].materials[0]]; };
+    EXPECT_EQ(material(0).eta, material(1).eta);
+    EXPECT_EQ(material(0).k, material(1).k);
+    EXPECT_GT(material(0).eta.r, material(0).eta.b);  // the index rises with the wavelength
+    EXPECT_NEAR(material(2).ior, 1.5f + 1.0f * 50.0f / 100.0f, 1e-5f);
+    expect_refused(dir, "odd_spd",
+                   std::string(kHeader) +
+                       "Material \"conductor\" \"spectrum eta\" \"spds/odd.spd\"\n" + triangle,
+                   "does not hold wavelength-value pairs", 6, 1);
 }
 
 // pbrt-v4's 2D checkerboard: tex1 where floor(uscale u + udelta) + floor(vscale v + vdelta) is
