@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/common.hpp>
 #include <tuple>
 
 #include "scene/pbrt_params.h"
@@ -127,11 +128,68 @@ void PbrtMaterials::define_texture(const PbrtDirective& directive) {
     } else if (type == "checkerboard") {
         entry.texture = bake_checkerboard(params, entry.what);
         params.warn_unused();
+    } else if (type == "scale") {
+        scale_texture(params, entry);
+        params.warn_unused();
     } else {
         entry.refused = "is of class " + in_quotes(type) +
-                        " (imagemap, checkerboard and constant are supported)";
+                        " (imagemap, checkerboard, constant and scale are supported)";
     }
     textures_[name] = entry;
+}
+
+// pbrt-v4's ScaleTexture (textures.h): "tex" (a spectrum texture or value, default 1) times
+// "scale" (a float, default 1), clamped to [0, 1] as pbrt-v4's materials clamp a reflectance: an
+// image texture whose scaled texels stay within 1 keeps its texels under the scale, one that
+// would exceed 1 is baked scaled and clamped (a warning says so).
+void PbrtMaterials::scale_texture(PbrtParams& params, TextureEntry& entry) {
+    if (params.type_of("scale") == "texture") {
+        entry.refused = "has a textured \"scale\" (give a float)";
+        params.ignore("scale");
+        params.ignore("tex");
+        return;
+    }
+    if (params.type_of("tex") == "texture") {
+        const auto inner = textures_.find(params.get_string("tex", ""));
+        if (inner != textures_.end() && !inner->second.refused.empty()) {
+            entry.refused = "scales texture " + in_quotes(params.get_string("tex", "")) +
+                            ", which " + inner->second.refused;
+            return;
+        }
+    }
+    const float scale = params.get_float("scale", 1.0f);
+    if (!(scale >= 0.0f) || !std::isfinite(scale)) {
+        params.fail("\"scale\" must be a finite number >= 0, got " + std::to_string(scale));
+    }
+    int texture = -1;
+    const glm::vec3 value = reflectance(params, "tex", glm::vec3(1.0f), &texture) * scale;
+    const float largest = glm::max(value.x, glm::max(value.y, value.z));
+    const float peak = texture < 0 ? 1.0f : scene_.textures[texture].max_value;
+    if (largest * peak <= 1.0f + 1e-6f) {
+        entry.texture = texture;
+        entry.value = value;
+        return;
+    }
+    log_warning(params.what() + ": the scaled reflectance reaches " +
+                std::to_string(largest * peak) + ": clamped to 1, as pbrt-v4's materials do");
+    if (texture < 0) {
+        entry.value = glm::min(value, glm::vec3(1.0f));
+        return;
+    }
+    Texture baked = scene_.textures[texture];
+    baked.file = entry.what;
+    baked.procedural = true;
+    baked.encoded.clear();
+    baked.max_value = 0.0f;
+    for (glm::vec4& texel : baked.texels) {
+        const glm::vec3 scaled = glm::min(glm::vec3(texel) * value, glm::vec3(1.0f));
+        texel = glm::vec4(scaled, texel.a);
+        baked.max_value =
+            glm::max(baked.max_value, glm::max(scaled.x, glm::max(scaled.y, scaled.z)));
+    }
+    scene_.textures.push_back(std::move(baked));
+    entry.texture = static_cast<int>(scene_.textures.size() - 1);
+    entry.value = glm::vec3(1.0f);
 }
 
 // pbrt-v4's 2D checkerboard (textures.cpp, Checkerboard): tex1 where floor(s) + floor(t) is even,

@@ -55,6 +55,7 @@ class PbrtMaterials {
                           int* texture);
     int load_image(const std::filesystem::path& path, class PbrtParams& params);
     int bake_checkerboard(class PbrtParams& params, const std::string& what);
+    void scale_texture(class PbrtParams& params, TextureEntry& entry);
 
     Scene& scene_;
     const SceneFiles& files_;

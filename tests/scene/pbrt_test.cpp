@@ -656,6 +656,55 @@ TEST(Pbrt, CheckerboardTextureIsBakedAsPbrtV4DefinesIt) {
                    "a checkerboard scale must be a whole number", 6, 2);
 }
 
+// pbrt-v4's "scale" texture: tex x scale, a reflectance clamped to [0, 1] as pbrt-v4's materials
+// clamp it: a scale that keeps the texels within 1 reuses the texture under that scale, one that
+// would exceed 1 bakes the clamped product; a constant is scaled and clamped; a textured scale is
+// refused.
+TEST(Pbrt, ScaleTextureMultipliesAndClampsAsPbrtV4) {
+    const auto dir = test::scratch_dir("pbrt_scale_texture");
+    const auto file = dir / "scale.pbrt";
+    const std::string triangle = kTriangle;
+    write_file_atomically(
+        file,
+        std::string(kHeader) +
+            "Texture \"c\" \"spectrum\" \"checkerboard\" \"rgb tex1\" [0.8 0.4 0.1]\n"
+            "    \"rgb tex2\" [0.1 0.1 0.1]\n"
+            "Texture \"half\" \"spectrum\" \"scale\" \"texture tex\" \"c\" \"float scale\" 0.5\n"
+            "Texture \"double\" \"spectrum\" \"scale\" \"texture tex\" \"c\" \"float scale\" 2\n"
+            "Texture \"k\" \"spectrum\" \"scale\" \"rgb tex\" [0.6 0.3 0.1] \"float scale\" 2\n"
+            "Material \"diffuse\" \"texture reflectance\" \"half\"\n" +
+            triangle + "Material \"diffuse\" \"texture reflectance\" \"double\"\n" + triangle +
+            "Material \"diffuse\" \"texture reflectance\" \"k\"\n" + triangle +
+            "Material \"diffuse\" \"texture reflectance\" \"c\"\n" + triangle);
+    const Scene scene = load_scene(file);
+    ASSERT_EQ(scene.shapes.size(), 4u);
+    const auto material = [&](size_t i) { return scene.materials[scene.shapes[i].materials[0]]; };
+    const Material checks = material(3);
+    ASSERT_GE(checks.diffuse_texture, 0);
+    EXPECT_EQ(material(0).diffuse_texture, checks.diffuse_texture);
+    expect_near(material(0).diffuse, glm::vec3(0.5f), "half");
+    const Material doubled = material(1);
+    ASSERT_GE(doubled.diffuse_texture, 0);
+    ASSERT_NE(doubled.diffuse_texture, checks.diffuse_texture);
+    expect_near(doubled.diffuse, glm::vec3(1.0f), "doubled's factor");
+    const Texture& original = scene.textures[checks.diffuse_texture];
+    const Texture& baked = scene.textures[doubled.diffuse_texture];
+    ASSERT_EQ(baked.texels.size(), original.texels.size());
+    for (size_t i = 0; i < baked.texels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_FLOAT_EQ(baked.texels[i][c], std::min(1.0f, 2.0f * original.texels[i][c]));
+        }
+    }
+    EXPECT_FLOAT_EQ(baked.max_value, 1.0f);
+    EXPECT_LT(material(2).diffuse_texture, 0);
+    expect_near(material(2).diffuse, glm::vec3(1.0f, 0.6f, 0.2f), "scaled constant");
+    expect_refused(dir, "textured_scale",
+                   std::string(kHeader) +
+                       "Texture \"c\" \"spectrum\" \"scale\" \"texture scale\" \"x\"\n" +
+                       "Material \"diffuse\" \"texture reflectance\" \"c\"\n" + triangle,
+                   "has a textured \"scale\"", 7, 2);
+}
+
 TEST(Pbrt, LightsTakePowerIlluminanceAndDirectionAsPbrtV4) {
     const auto dir = test::scratch_dir("pbrt_lights");
     const auto file = dir / "lights.pbrt";
