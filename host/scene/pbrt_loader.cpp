@@ -228,8 +228,11 @@ class PbrtSceneBuilder {
 
     void film(const PbrtDirective& d) {
         const std::string what = d.where() + ": Film " + in_quotes(d.strings[0]);
-        if (d.strings[0] != "rgb" && d.strings[0] != "gbuffer" && d.strings[0] != "spectral") {
-            throw Error(what + " is not one of pbrt-v4's films (rgb, gbuffer, spectral)");
+        // "image" is pbrt-v3's name of the RGB film (pbrt-v4's --upgrade renames it "rgb").
+        if (d.strings[0] != "rgb" && d.strings[0] != "gbuffer" && d.strings[0] != "spectral" &&
+            d.strings[0] != "image") {
+            throw Error(what + " is not one of pbrt-v4's films (rgb, gbuffer, spectral) or " +
+                        "pbrt-v3's image");
         }
         PbrtParams params(d, what);
         for (const char* axis : {"xresolution", "yresolution"}) {

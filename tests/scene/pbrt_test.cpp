@@ -656,6 +656,24 @@ TEST(Pbrt, CheckerboardTextureIsBakedAsPbrtV4DefinesIt) {
                    "a checkerboard scale must be a whole number", 6, 2);
 }
 
+// pbrt-v3's Film "image" is the RGB film (pbrt-v4's --upgrade renames it): its resolution is
+// read as "rgb"'s; another film name is still refused, naming both lists.
+TEST(Pbrt, PbrtV3ImageFilmIsTheRgbFilm) {
+    const auto dir = test::scratch_dir("pbrt_v3_film");
+    const auto file = dir / "v3.pbrt";
+    const std::string rest = std::string("LookAt 0 0 -5  0 0 0  0 1 0\nCamera \"perspective\"\n") +
+                             "WorldBegin\nLightSource \"point\" \"point3 from\" [0 0 -4]\n" +
+                             kTriangle;
+    write_file_atomically(
+        file, "Film \"image\" \"integer xresolution\" 40 \"integer yresolution\" 20\n" + rest);
+    const Scene scene = load_scene(file);
+    EXPECT_EQ(scene.camera.width, 40);
+    EXPECT_EQ(scene.camera.height, 20);
+    expect_refused(dir, "film_foo", "Film \"foo\"\n" + rest,
+                   "is not one of pbrt-v4's films (rgb, gbuffer, spectral) or pbrt-v3's image", 1,
+                   1);
+}
+
 // pbrt-v4's "scale" texture: tex x scale, a reflectance clamped to [0, 1] as pbrt-v4's materials
 // clamp it: a scale that keeps the texels within 1 reuses the texture under that scale, one that
 // would exceed 1 bakes the clamped product; a constant is scaled and clamped; a textured scale is
