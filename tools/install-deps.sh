@@ -15,7 +15,7 @@ packages=(
     build-essential cmake pkg-config
     ocl-icd-opencl-dev opencl-headers pocl-opencl-icd clinfo mesa-opencl-icd
     libembree-dev libopenimageio-dev openimageio-tools libglm-dev nlohmann-json3-dev
-    libtinyobjloader-dev libtinygltf-dev zlib1g-dev libcli11-dev libgtest-dev googletest
+    libtinyobjloader-dev libtinygltf-dev zlib1g-dev libcli11-dev libgtest-dev googletest libosd-dev
     clang libclang-rt-dev
     slurmctld slurmd slurm-client munge
     linux-perf

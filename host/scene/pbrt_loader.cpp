@@ -474,7 +474,7 @@ class PbrtSceneBuilder {
         if (!is_pbrt_shape_supported(type)) {
             throw Error(what +
                             " is not supported (trianglemesh, plymesh, bilinearmesh, sphere, "
-                            "disk, cylinder)",
+                            "disk, cylinder, loopsubdiv)",
                         kExitUnsupported);
         }
         PbrtParams params(d, what);

@@ -8,6 +8,7 @@
 #include "scene/ply_mesh.h"
 #include "scene/shapes/cylinder.h"
 #include "scene/shapes/disk.h"
+#include "scene/shapes/loop_subdivision.h"
 #include "util/error.h"
 #include "util/gzip.h"
 #include "util/log.h"
@@ -17,7 +18,7 @@ namespace rc {
 
 bool is_pbrt_shape_supported(const std::string& type) {
     return type == "trianglemesh" || type == "bilinearmesh" || type == "plymesh" ||
-           type == "sphere" || type == "disk" || type == "cylinder";
+           type == "sphere" || type == "disk" || type == "cylinder" || type == "loopsubdiv";
 }
 
 namespace {
@@ -174,6 +175,20 @@ TriangleMesh cylinder_mesh(PbrtParams& params) {
     return make_cylinder(cylinder);
 }
 
+// pbrt-v4's loopsubdiv: "point3 P", "integer indices" (triangles), "integer levels" (3).
+TriangleMesh loop_subdivision_mesh(PbrtParams& params) {
+    const int levels = params.get_int("levels", 3);
+    if (levels < 0 || levels > 12) {
+        params.fail("levels must lie in [0, 12], got " + std::to_string(levels));
+    }
+    const TriangleMesh control = triangle_mesh(params);
+    try {
+        return make_loop_subdivision(control, levels);
+    } catch (const Error& error) {
+        params.refuse(error.what());
+    }
+}
+
 }  // namespace
 
 TriangleMesh pbrt_shape_mesh(const std::string& type, PbrtParams& params,
@@ -195,6 +210,9 @@ TriangleMesh pbrt_shape_mesh(const std::string& type, PbrtParams& params,
     }
     if (type == "cylinder") {
         return cylinder_mesh(params);
+    }
+    if (type == "loopsubdiv") {
+        return loop_subdivision_mesh(params);
     }
     if (params.has("displacement")) {
         params.refuse("displacement is not supported");
