@@ -59,6 +59,10 @@ shared::Material single_lobe_device(const Material& material) {
     m.texture = -1;
     if (material.kind == MaterialKind::kDiffuseTransmission) {
         m.model = RC_MATERIAL_DIFFUSE_TRANSMISSION;
+        if (material.texture_targets != 0) {
+            m.texture = material.diffuse_texture;
+            m.texture_targets = material.texture_targets;
+        }
         const glm::vec3& t = material.transmittance;
         m.k = {t.r, t.g, t.b, 0.0f};
     } else if (material.kind == MaterialKind::kConductor) {

@@ -34,6 +34,9 @@ struct Material {
     glm::vec3 k{0.0f};               // conductor: its imaginary part
     float ior = 1.5f;                // dielectrics: the index inside over outside
     glm::vec3 transmittance{0.25f};  // diffuse transmission (its reflectance is `specular`)
+    // Diffuse transmission: diffuse_texture scales its reflectance, its transmittance or both
+    // (RC_TEXTURE_SCALES_* bits); 0 for every other model.
+    int texture_targets = 0;
 };
 
 // Whether the material transmits light (the dielectrics, the diffuse transmitter).

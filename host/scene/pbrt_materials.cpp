@@ -354,18 +354,32 @@ void PbrtMaterials::make_diffuse_transmission(PbrtParams& params, Material* mate
     if (!(scale >= 0.0f)) {
         params.fail("scale must not be negative");
     }
-    for (const char* name : {"reflectance", "transmittance"}) {
+    // One texture may scale the reflectance, the transmittance or both (the device material has
+    // one texture slot). Each lobe is its value times the scale (times the texture), clamped to 1
+    // as pbrt-v4 clamps it: a textured lobe through its largest texel.
+    glm::vec3 peak[2];
+    for (int lobe = 0; lobe < 2; ++lobe) {
+        const char* name = lobe == 0 ? "reflectance" : "transmittance";
         int texture = -1;
-        const glm::vec3 value = reflectance(params, name, glm::vec3(0.25f), &texture);
+        glm::vec3 factor = reflectance(params, name, glm::vec3(0.25f), &texture) * scale;
+        float texel_peak = 1.0f;
         if (texture >= 0) {
-            params.refuse(std::string("a textured diffuse-transmission \"") + name +
-                          "\" is not supported");
+            if (material->diffuse_texture >= 0 && material->diffuse_texture != texture) {
+                params.refuse(
+                    "diffuse-transmission \"reflectance\" and \"transmittance\" from two "
+                    "different textures are not supported (one texture may serve both)");
+            }
+            material->diffuse_texture = texture;
+            material->texture_targets |=
+                lobe == 0 ? RC_TEXTURE_SCALES_REFLECTANCE : RC_TEXTURE_SCALES_TRANSMITTANCE;
+            texel_peak = std::max(scene_.textures[texture].max_value, 1e-30f);
         }
-        (name[0] == 'r' ? material->specular : material->transmittance) =
-            glm::clamp(value * scale, 0.0f, 1.0f);
+        factor = glm::clamp(factor * texel_peak, 0.0f, 1.0f) / texel_peak;
+        peak[lobe] = factor * texel_peak;
+        (lobe == 0 ? material->specular : material->transmittance) = factor;
     }
-    const glm::vec3 total = material->specular + material->transmittance;
-    if (glm::any(glm::greaterThan(total, glm::vec3(1.0f)))) {
+    const glm::vec3 total = peak[0] + peak[1];
+    if (glm::any(glm::greaterThan(total, glm::vec3(1.0f + 1e-6f)))) {
         log_warning(params.what() + ": reflectance + transmittance exceeds 1; scaled to 1");
         const float m = std::max({total.r, total.g, total.b});
         material->specular /= m;

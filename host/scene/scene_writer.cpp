@@ -177,6 +177,10 @@ class SceneWriter {
             return {{"type", "diffuse"}, {"reflectance", reflectance_json(material)}};
         }
         if (material.kind == MaterialKind::kDiffuseTransmission) {
+            if (material.texture_targets != 0) {
+                throw Error("convert: material '" + material.name +
+                            "' is a textured diffuse transmitter, which the format cannot hold");
+            }
             return {{"type", "diffusetransmission"},
                     {"reflectance", vec3_json(material.specular)},
                     {"transmittance", vec3_json(material.transmittance)}};

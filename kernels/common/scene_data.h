@@ -104,7 +104,17 @@ RC_FUNC SurfaceMaterial rc_surface_material(const SceneData* scene, const Surfac
     const Material material = scene->materials[sp->material];
     SurfaceMaterial m = rc_surface_material_of(&material);
     if (material.texture >= 0) {
-        m.diffuse *= rc_texture_lookup(scene->texels, scene->textures[material.texture], sp->uv);
+        const float3 texel =
+            rc_texture_lookup(scene->texels, scene->textures[material.texture], sp->uv);
+        if (material.model != RC_MATERIAL_DIFFUSE_TRANSMISSION) {
+            m.diffuse *= texel;
+        }
+        if ((material.texture_targets & RC_TEXTURE_SCALES_REFLECTANCE) != 0) {
+            m.specular *= texel;  // a diffuse transmitter's reflectance
+        }
+        if ((material.texture_targets & RC_TEXTURE_SCALES_TRANSMITTANCE) != 0) {
+            m.k *= texel;  // its transmittance
+        }
     }
     if (material.model == RC_MATERIAL_DIELECTRIC && !sp->front) {
         m.eta.x = 1.0f / m.eta.x;

@@ -141,9 +141,14 @@ typedef struct Material {
     float diffuse_probability;  // probability of sampling the diffuse lobe
     int model;                  // RC_MATERIAL_*
     int texture;                // texture scaling the diffuse reflectance, or -1
-    int pad0;
+    int texture_targets;        // diffuse transmission: which of its lobes the texture scales
+                                // (RC_TEXTURE_SCALES_*); other models: 0, the diffuse one
     int pad1;
 } Material;
+
+// Material.texture_targets of a diffuse transmitter.
+#define RC_TEXTURE_SCALES_REFLECTANCE 1
+#define RC_TEXTURE_SCALES_TRANSMITTANCE 2
 
 // Where a texture's texels (float4, linear RGB, rows top to bottom) lie in the texel array.
 typedef struct TextureInfo {

@@ -674,6 +674,65 @@ TEST(Pbrt, PbrtV3ImageFilmIsTheRgbFilm) {
                    1);
 }
 
+// A textured diffuse transmitter: a texture of texels c on its reflectance, its transmittance or
+// both renders, seen from the lit side and from behind, the image of the same transmitter with c
+// given as constants (pt, the same seed: the same paths, so within float rounding); two different
+// textures on the two lobes are refused.
+TEST(Pbrt, TexturedDiffuseTransmissionScalesItsLobes) {
+    const auto dir = test::scratch_dir("pbrt_textured_transmission");
+    const std::string texture =
+        "Texture \"c\" \"spectrum\" \"checkerboard\" \"rgb tex1\" [0.3 0.4 0.5]\n"
+        "    \"rgb tex2\" [0.3 0.4 0.5]\n";
+    const std::string plane =
+        "Shape \"trianglemesh\" \"point3 P\" [-1 -1 0 1 -1 0 1 1 0 -1 1 0]\n"
+        "    \"integer indices\" [0 1 2 0 2 3] \"point2 uv\" [0 0 1 0 1 1 0 1]\n";
+    const auto scene = [&](const std::string& name, const std::string& eye,
+                           const std::string& material) {
+        const auto file = dir / (name + ".pbrt");
+        write_file_atomically(
+            file, "LookAt " + eye + "  0 0 0  0 1 0\nCamera \"perspective\"\n" +
+                      "WorldBegin\nLightSource \"point\" \"point3 from\" [0.3 0.2 -2]\n" + texture +
+                      "Material \"diffusetransmission\" " + material + "\n" + plane);
+        return render(file, dir / (name + ".exr"), {"--width", "16", "--height", "16"});
+    };
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"\"texture reflectance\" \"c\" \"texture transmittance\" \"c\"",
+         "\"rgb reflectance\" [0.3 0.4 0.5] \"rgb transmittance\" [0.3 0.4 0.5]"},
+        {"\"texture reflectance\" \"c\" \"rgb transmittance\" [0.5 0.4 0.3]",
+         "\"rgb reflectance\" [0.3 0.4 0.5] \"rgb transmittance\" [0.5 0.4 0.3]"},
+        {"\"rgb reflectance\" [0.2 0.2 0.2] \"texture transmittance\" \"c\" \"float scale\" 2",
+         "\"rgb reflectance\" [0.2 0.2 0.2] \"rgb transmittance\" [0.3 0.4 0.5] "
+         "\"float scale\" 2"}};
+    for (size_t i = 0; i < cases.size(); ++i) {
+        for (const char* eye : {"0 0 -3", "0 0 3"}) {
+            const std::string name = "case" + std::to_string(i) + (eye[4] == '-' ? "f" : "b");
+            const Image textured = scene(name + "t", eye, cases[i].first);
+            const Image constant = scene(name + "c", eye, cases[i].second);
+            double largest = 0.0, difference = 0.0;
+            for (int y = 0; y < constant.height; ++y) {
+                for (int x = 0; x < constant.width; ++x) {
+                    for (int c = 0; c < 3; ++c) {
+                        largest = std::max(largest, double(constant.at(x, y, c)));
+                        difference =
+                            std::max(difference,
+                                     std::abs(double(textured.at(x, y, c) - constant.at(x, y, c))));
+                    }
+                }
+            }
+            EXPECT_GT(largest, 0.0) << name;
+            EXPECT_LE(difference, 1e-5 * largest) << name;
+        }
+    }
+    write_file_atomically(dir / "d.png", read_file(data("checker.png")));
+    expect_refused(dir, "two_textures",
+                   std::string(kHeader) + texture +
+                       "Texture \"d\" \"spectrum\" \"imagemap\" \"string filename\" \"d.png\"\n" +
+                       "Material \"diffusetransmission\" \"texture reflectance\" \"c\" "
+                       "\"texture transmittance\" \"d\"\n" +
+                       kTriangle,
+                   "from two different textures are not supported", 9, 2);
+}
+
 // pbrt-v4's "scale" texture: tex x scale, a reflectance clamped to [0, 1] as pbrt-v4's materials
 // clamp it: a scale that keeps the texels within 1 reuses the texture under that scale, one that
 // would exceed 1 bakes the clamped product; a constant is scaled and clamped; a textured scale is
