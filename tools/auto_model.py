@@ -166,10 +166,20 @@ def measure(args):
     print("wrote %s (%d runs)" % (path, len(rows)))
 
 
+def read_json(path, what):
+    """The JSON file at PATH; exits with one line naming it (and WHAT it is) when it cannot be
+    read or is not JSON."""
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError) as error:
+        sys.exit("auto_model.py: %s %s: %s" % (what, path, getattr(error, "strerror", None)
+                                               or error))
+
+
 def repilot(args):
     """The dataset's noise figures replaced by this build's pilot, in place."""
-    with open(args.data) as f:
-        data = json.load(f)
+    data = read_json(args.data, "dataset (tools/auto_model.py measure writes it)")
     scratch = os.path.join(os.path.dirname(os.path.abspath(args.data)), "repilot")
     os.makedirs(scratch, exist_ok=True)
     pilots = {}
@@ -281,10 +291,8 @@ def predicted_cost(r, c):
 
 def fit(args):
     import numpy as np
-    with open(args.data) as f:
-        data = json.load(f)
-    with open(args.write) as f:
-        model = json.load(f)
+    data = read_json(args.data, "dataset (tools/auto_model.py measure writes it)")
+    model = read_json(args.write, "model file")
     print("| scene | method | size | a | R | spp | W / predicted | relMSE | predicted |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     glossy = {scene: has_glossy(scene) for scene in {r["scene"] for r in data["rows"]}}

@@ -3,12 +3,15 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <deque>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <set>
+#include <vector>
 
 #include "app/help_format.h"
 #include "util/error.h"
+#include "util/new_folders.h"
 #include "util/text.h"
 
 namespace rc {
@@ -203,7 +206,22 @@ int run_command(const CommandLine& line, const BoundCommand& bound,
                         "' for '" + command + "' (see " + command + " --help)",
                     kExitUsage);
     }
-    return bound.command->run(parsed_arguments(bound, after_dashes));
+    const ParsedArguments arguments = parsed_arguments(bound, after_dashes);
+    // The folders a --dump-kernels run makes (device_options.cpp makes them before any work)
+    // are removed again, when empty, if the run fails: a refused run leaves no folder.
+    std::vector<std::filesystem::path> made;
+    if (arguments.has("--dump-kernels")) {
+        for (std::filesystem::path folder = arguments.value("--dump-kernels");
+             !folder.empty() && folder != folder.parent_path(); folder = folder.parent_path()) {
+            made.push_back(folder);  // deepest first, as NewFolders removes them in order
+        }
+    }
+    NewFolders folders(made);
+    const int status = bound.command->run(arguments);
+    if (status == 0) {
+        folders.keep();
+    }
+    return status;
 }
 
 }  // namespace

@@ -754,6 +754,23 @@ TEST(Cli, DefinesOverrideRenderDefaultsAndStatsRecordThem) {
     EXPECT_EQ(nlohmann::json::parse(read_file(dir / "stats2.json"))["spp"], 2);
 }
 
+// --dump-kernels makes its folder (and missing parents) before any work; a run refused after
+// that removes them again, a run that renders keeps them with the expanded sources.
+TEST(Cli, DumpKernelsFolderStaysOnlyWhenTheRunDoes) {
+    const auto dir = test::scratch_dir("cli_dump_kernels");
+    const test::CommandResult refused =
+        test::run_radcache({"render", cornell_box(), "-o", (dir / "a.png").string(), "--method",
+                            "nosuch", "--dump-kernels", (dir / "new/kernels").string()});
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "new")) << refused.output;
+    const test::CommandResult rendered = test::run_radcache(
+        {"render", cornell_box(), "-o", (dir / "b.png").string(), "--method", "pt", "--width", "8",
+         "--height", "8", "--spp", "1", "-q", "--dump-kernels", (dir / "kept/kernels").string()});
+    EXPECT_EQ(rendered.exit_code, 0) << rendered.output;
+    ASSERT_TRUE(std::filesystem::is_directory(dir / "kept/kernels"));
+    EXPECT_FALSE(std::filesystem::is_empty(dir / "kept/kernels"));
+}
+
 TEST(Cli, RenderBadInputsFailBeforeWritingAnything) {
     const auto dir = test::scratch_dir("cli_render_bad");
     const std::string out = (dir / "out.png").string();

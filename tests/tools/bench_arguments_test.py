@@ -30,6 +30,8 @@ FILE_CASES = [
     ("check_doc_links.py", [MISSING], 1),
     ("make_large_scene.py", [MISSING], 2),
     ("peers/mitsuba/check_reference.py", [MISSING], 2),
+    ("auto_model.py", ["fit", "--data", MISSING], 1),
+    ("auto_model.py", ["repilot", "--data", MISSING], 1),
 ]
 
 
