@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "glossy_scenes.h"
 #include "image/image.h"
 #include "image/image_io.h"
 #include "test_support.h"
@@ -68,27 +69,14 @@ Rendered render(const std::filesystem::path& scene, const std::string& method) {
             nlohmann::json::parse(read_text(stats))};
 }
 
-void expect_bitwise_equal(const Image& a, const Image& b, const std::string& method) {
-    ASSERT_EQ(a.width, b.width);
-    ASSERT_EQ(a.height, b.height);
-    int differing = 0;
-    for (int y = 0; y < a.height; ++y) {
-        for (int x = 0; x < a.width; ++x) {
-            for (int c = 0; c < 3; ++c) {
-                differing += a.at(x, y, c) != b.at(x, y, c);
-            }
-        }
-    }
-    EXPECT_EQ(differing, 0) << method << ": values that differ from the box without copies";
-}
-
 TEST(RepeatedTriangles, CopiesRenderAsTheShapeWithoutThem) {
     const std::filesystem::path plain = cornell_box("plain", 0);
     const std::filesystem::path copied = cornell_box("copied", 100000);
     for (const std::string method : {"pt", "ivg", "decomposition"}) {
         const Rendered a = render(plain, method);
         const Rendered b = render(copied, method);
-        expect_bitwise_equal(a.beauty, b.beauty, method);
+        EXPECT_TRUE(test::bitwise_equal(a.beauty, b.beauty))
+            << method << ": the image differs from the box without copies";
         EXPECT_EQ(a.stats["dropped_repeated_triangles"], 0) << method;
         EXPECT_EQ(b.stats["dropped_repeated_triangles"], 200002) << method;
         EXPECT_NE(b.output.find("dropped 200002 triangles that repeat an earlier triangle of "
