@@ -16,9 +16,9 @@
 #include "bvh/device_bvh.h"
 #include "device/device_features.h"
 #include "device/device_list.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/grid/irradiance_vector_grid.h"
 #include "methods/radiance_cache/radiance_cache.h"
-#include "methods/records/irradiance_cache.h"
 #include "methods/sdrc/sdrc_cache.h"
 #include "scene/camera.h"
 #include "scene/device_scene.h"
@@ -78,7 +78,7 @@ std::map<std::string, KernelTime> render_glossy_box(Context& context, int width,
     std::map<std::string, KernelTime> before;
     for (int pass = 0; pass < 2; ++pass) {
         before = context.kernel_times();
-        IrradianceCacheOptions ic;
+        PipelineSettings ic;
         ic.width = pass == 0 ? 16 : std::min(width, 128);
         ic.height = pass == 0 ? 16 : std::min(height, 128);
         ic.spp = 2;
@@ -91,8 +91,7 @@ std::map<std::string, KernelTime> render_glossy_box(Context& context, int width,
         options.max_depth = ic.max_depth;
         options.rr_depth = ic.rr_depth;
         const auto cache = std::make_unique<Cache>(frame, options);
-        ic.glossy = cache.get();
-        IrradianceCache(frame).render(ic);
+        CachePipeline(frame, {.lobes = cache.get()}).render(ic);
         keep(*cache);
     }
     return before;
@@ -167,8 +166,8 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
     // Irradiance caching at its defaults, one camera sample per pixel: hemisphere samples (a
     // ray and its path-traced continuation each) of the record kernels, and camera samples of
     // the render pass. A small warm-up render first.
-    IrradianceCache cache({context, scene, rays.device_bvh(), device_scene});
-    IrradianceCacheOptions ic;
+    CachePipeline cache({context, scene, rays.device_bvh(), device_scene});
+    PipelineSettings ic;
     ic.width = std::min(width, 64);
     ic.height = std::min(height, 64);
     ic.spp = 1;
@@ -179,7 +178,7 @@ DeviceResult bench_device(const DeviceInfo& device, ContextOptions context_optio
     auto before = context.kernel_times();
     ic.width = width;
     ic.height = height;
-    IrradianceCacheStats ic_stats;
+    PipelineStats ic_stats;
     cache.render(ic, &ic_stats);
     const double record_seconds =
         kernel_seconds_since(context, before, {"ic_record_cells", "ic_record_reduce"});

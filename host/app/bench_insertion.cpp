@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "methods/records/cache_file.h"
-#include "methods/records/irradiance_cache.h"
-#include "methods/records/irradiance_records.h"
+#include "methods/caching/cache_file.h"
+#include "methods/caching/cache_pipeline.h"
+#include "methods/caching/irradiance_records.h"
 #include "scene/scene_loader.h"
 #include "util/error.h"
 #include "util/file_io.h"
@@ -93,7 +93,7 @@ int bench_insertion(const ParsedArguments& arguments) {
         arguments.has("--scene") ? arguments.value("--scene") : shipped_scene("cornell-box");
     check_bench_files(arguments, {scene_path});
     const float accuracy =
-        static_cast<float>(arguments.number("--accuracy", IrradianceCacheOptions{}.accuracy));
+        static_cast<float>(arguments.number("--accuracy", PipelineSettings{}.accuracy));
     const size_t batch = static_cast<size_t>(arguments.integer("--batch", 1024));
     const int repeats = static_cast<int>(arguments.integer("--repeats", 3));
     const Scene scene = load_scene(scene_path);

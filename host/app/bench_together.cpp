@@ -8,10 +8,10 @@
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "device/device_features.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/frame_scene.h"
 #include "methods/grid/irradiance_vector_grid.h"
 #include "methods/path_tracer/path_tracer.h"
-#include "methods/records/irradiance_cache.h"
 #include "scene/device_scene.h"
 #include "util/error.h"
 #include "util/timing.h"
@@ -54,14 +54,14 @@ std::vector<TogetherCase> together_cases(const Scene& scene, const TogetherSetti
          }},
         {"ic_samples_per_second", "ic render (1 spp), camera samples/s (M)",
          [&scene, settings](const FrameScene& frame, bool warm_up) {
-             IrradianceCacheOptions ic;
+             PipelineSettings ic;
              ic.width = warm_up ? 16 : settings.width;
              ic.height = warm_up ? 16 : settings.height;
              ic.spp = 1;
              ic.max_depth = scene.render.max_depth;
              ic.rr_depth = scene.render.rr_depth;
              ic.records_overlay = false;
-             IrradianceCache(frame).render(ic);
+             CachePipeline(frame).render(ic);
              return static_cast<double>(ic.width) * ic.height;
          }},
         {"photons_per_second", "grid build, photons/s (M)",

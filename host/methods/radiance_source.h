@@ -1,5 +1,5 @@
 // Where a caching method's hemisphere rays read "the radiance beyond the first bounce" (DESIGN.md
-// §2; kernels/records/radiance_source.h): chosen when the method sets up the rays' kernel, whose
+// §2; kernels/caching/radiance_source.h): chosen when the method sets up the rays' kernel, whose
 // program is built with the source's definitions and whose source parameters the source binds
 // (KernelArgumentGroup::set_kernel_args). Implemented by path-traced continuation (here), the
 // irradiance vector grid and a deeper irradiance-cache level, each in its method's folder.

@@ -5,11 +5,11 @@
 // radiosities.
 #pragma once
 
+#include "caching/irradiance_records.h"  // rc_ic_grid_cell: the record grid's cell of a point
 #include "common/path_radiance.h"
 #include "decomposition/decomp_form_factor.h"
 #include "decomposition/decomp_near_set.h"
 #include "decomposition/decomp_sh.h"
-#include "records/ic_records.h"  // rc_ic_grid_cell: the record grid's cell of a point
 
 // The near triangles as the kernels read them: the triangles, the outgoing radiance of each
 // one's front, B(t) / pi (the coarse solution, emission left out), the near set's rule, and a

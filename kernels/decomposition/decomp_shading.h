@@ -4,12 +4,12 @@
 // other lobes by path tracing.
 #pragma once
 
+#include "caching/pipeline_shading.h"
 #include "common/cached_radiance.h"
 #include "common/camera.h"
 #include "common/pixel_sampler.h"
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_near.h"
-#include "records/ic_shading.h"
 
 // The camera ray of sample s of a pixel's pass (the G-buffer and the render pass draw the same
 // one): camera sample params->first_sample + s.

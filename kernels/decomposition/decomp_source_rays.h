@@ -5,10 +5,10 @@
 // program's other headers (see there).
 #pragma once
 
+#include "caching/radiance_source.h"
 #include "decomposition/decomp_far.h"
 #include "decomposition/decomp_radiosity.h"
 #include "decomposition/decomp_radiosity_rays.h"
-#include "records/radiance_source.h"
 
 // Ray r of a cluster: its direction, whether it enters the fit, whether its hit lies inside the
 // cluster's bounding sphere, and the radiance it brings back when kept (the source's: direct

@@ -1,11 +1,11 @@
 // Entry kernel of irradiance caching's hemisphere sampling (host/methods/irradiance_cache/): the
 // radiance arriving through each cell of a batch of records, "the radiance beyond the first
 // bounce" read from the source the program is built for (records/radiance_source.h).
+#include "caching/pipeline_shading.h"
 #include "common/kernel_range.h"
-#include "records/ic_shading.h"
 #include "scene_arguments.h"
 // The source after the method's own headers (see records/radiance_source.h).
-#include "records/radiance_source.h"
+#include "caching/radiance_source.h"
 
 // The ray of item i of a record batch: cell i % (M N) of batch record i / (M N), whose random
 // stream is streams[i / (M N)].

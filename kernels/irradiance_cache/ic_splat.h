@@ -7,7 +7,7 @@
 // the sums a GPU's ordered blending of the records' quads gives, without atomics.
 #pragma once
 
-#include "records/ic_records.h"
+#include "caching/irradiance_records.h"
 
 // Candidate q of a placement pass (params->placement_*), as a G-buffer index: with C candidate
 // columns, stride s and S samples per candidate pixel, camera sample q % S of pixel

@@ -2,9 +2,9 @@
 // G-buffer, the hemisphere hits a deeper level must cover, the reduction of a record's hemisphere
 // samples (the sampling itself: ic_record_cells.cl), record gathering (coverage and
 // interpolation), and the final shading pass.
+#include "caching/pipeline_shading.h"
 #include "common/kernel_range.h"
 #include "irradiance_cache/ic_splat.h"
-#include "records/ic_shading.h"
 #include "scene_arguments.h"
 
 // Entry i = pixel * spp + s: the first hit of that camera sample.

@@ -1,7 +1,7 @@
 // Translational gradients of a radiance record's coefficients (DESIGN.md §6.4; Křivánek,
 // Gautron, Bouatouch, Pattanaik, "Improved Radiance Gradient Computation", SCCG 2005, reprinted
 // in the course, §3 eq. 2-6; the course's "Gradient Computation" slide): Ward and Heckbert's
-// wall-movement argument for the uniform strata of rc_hemisphere.h, with each cell's marginal
+// wall-movement argument for the uniform strata of radiance_hemisphere.h, with each cell's marginal
 // radiance change weighted by the basis function at the cell's direction:
 //   grad lambda_l^m = sum_k [ u_k 2pi/N sum_{j>=1} cos(theta_j-) sin(theta_j-) /
 //                                   min(r_jk, r_j-1,k) (L_jk - L_j-1,k) H(theta_jk, phi_jk)

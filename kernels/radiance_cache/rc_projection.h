@@ -2,10 +2,10 @@
 // the Monte Carlo quadrature of the course's "Incoming Radiance Computation" slide (TVCG 2005
 // §4.2 eq. 4, HSH paper eq. 22),
 //   lambda_l^m = 2 pi / (M N) sum_{j, k} L_{j,k} Y_l^m(theta_j, phi_k),
-// per colour channel, over the uniform strata of rc_hemisphere.h.
+// per colour channel, over the uniform strata of radiance_hemisphere.h.
 #pragma once
 
-#include "records/rc_hemisphere.h"
+#include "caching/radiance_hemisphere.h"
 #include "shared/spherical_harmonics.h"
 
 // Adds weighted.c * Y_i(d) to coefficients[c * order^2 + i] for the channels c = r, g, b.

@@ -5,7 +5,7 @@
 #include "radiance_cache/rc_records.h"
 #include "scene_arguments.h"
 // The source after the method's own headers (see records/radiance_source.h).
-#include "records/radiance_source.h"
+#include "caching/radiance_source.h"
 
 // Item i: cell i % (M N) of batch record i / (M N) (random stream streams[i / (M N)]), the
 // record at sites[i / (M N)]: (L.rgb, distance to the hit) in cells[i], a NaN or infinite

@@ -4,13 +4,13 @@
 // of records at a camera sample.
 #pragma once
 
+#include "caching/glossy_query.h"
+#include "caching/pipeline_shading.h"
 #include "common/record_weight.h"
 #include "radiance_cache/rc_brdf_table.h"
 #include "radiance_cache/rc_gradients.h"
 #include "radiance_cache/rc_interpolation.h"
 #include "radiance_cache/rc_rotation.h"
-#include "records/glossy_query.h"
-#include "records/ic_shading.h"
 #include "shared/radiance_cache.h"
 
 // The key of the records' random streams (rc_grid_stratum_direction's key).

@@ -4,7 +4,7 @@
 // its outgoing radiance.
 #pragma once
 
-#include "records/glossy_query.h"
+#include "caching/glossy_query.h"
 #include "sdrc/sdrc_lobe.h"
 #include "shared/sdrc.h"
 

@@ -8,7 +8,7 @@
 #include "sdrc/sdrc_records.h"
 #include "temporal/tc_reprojection.h"
 // The source after the method's own headers (see records/radiance_source.h).
-#include "records/radiance_source.h"
+#include "caching/radiance_source.h"
 
 // The light along a ray from `origin` in direction w (NaN or infinite radiance stored as black),
 // its hit distance in w; rays counted into *rays.

@@ -1,5 +1,5 @@
 // The radiance sources a caching method's hemisphere rays can read "the radiance beyond the first
-// bounce" from (kernels/records/radiance_source.h; host/methods/radiance_source.h). The program
+// bounce" from (kernels/caching/radiance_source.h; host/methods/radiance_source.h). The program
 // holding the rays' kernel is built with -DRC_RADIANCE_SOURCE=<one of these>.
 #pragma once
 

@@ -229,7 +229,7 @@ typedef struct GBufferSample {
     int served;       // 1 when the cache serves it (a hit with a diffuse lobe)
 } GBufferSample;
 
-// Random-number domain of irradiance-record sampling (kernels/records/ic_records.h),
+// Random-number domain of irradiance-record sampling (kernels/caching/irradiance_records.h),
 // kept apart from camera samples.
 #define RC_IC_RNG_DOMAIN 0x49434331u
 

@@ -6,8 +6,8 @@
 // cells none arrives in (the holes).
 #pragma once
 
-#include "records/ic_shading.h"
-#include "records/rc_hemisphere.h"
+#include "caching/pipeline_shading.h"
+#include "caching/radiance_hemisphere.h"
 #include "shared/temporal.h"
 #include "temporal/tc_unshadowed.h"
 
@@ -21,8 +21,9 @@ typedef struct MovedTriangles {
 // Where local direction d (unit, z along the record normal) passes through the cells of an
 // M x N record hemisphere of `layout` (shared/temporal.h), in continuous cell units: (row, column)
 // = (M sin^2 theta, N phi / 2 pi) for irradiance caching's cosine-weighted cells
-// (ic_records.h, rc_ic_cell_direction), (M (1 - cos theta), N phi / 2 pi) for radiance caching's
-// uniform ones (records/rc_hemisphere.h); cell (j, k) holds [j, j + 1) x [k, k + 1).
+// (irradiance_records.h, rc_ic_cell_direction), (M (1 - cos theta), N phi / 2 pi) for radiance
+// caching's uniform ones (caching/radiance_hemisphere.h); cell (j, k) holds [j, j + 1) x [k, k +
+// 1).
 RC_FUNC float2 rc_tc_cell_position(float3 d, int m, int n, int layout) {
     const float row = layout == RC_TC_CELLS_UNIFORM ? 1.0f - d.z : fmax(0.0f, 1.0f - d.z * d.z);
     float phi = atan2(d.y, d.x);

@@ -65,7 +65,7 @@ std::string other_value(const OptionInfo& info, const std::filesystem::path& dir
     if (info.type == "resolution") {
         return "8x4x2";
     }
-    if (info.spec.name == "--glossy") {  // text in its own grammar (methods/glossy_spec.h)
+    if (info.spec.name == "--glossy") {  // text in its own grammar (methods/caching/glossy_spec.h)
         return "copper=rc,*=sdrc";
     }
     return "";

@@ -12,7 +12,7 @@
 
 #include "methods/auto/auto_materials.h"
 #include "methods/auto/auto_model.h"
-#include "methods/glossy_spec.h"
+#include "methods/caching/glossy_spec.h"
 #include "util/error.h"
 
 namespace rc {

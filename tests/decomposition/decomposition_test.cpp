@@ -22,11 +22,11 @@
 #include "glossy_scenes.h"  // test::bitwise_equal
 #include "image/image_error.h"
 #include "image_options.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/decomposition/near_grid.h"
 #include "methods/decomposition/triangle_split.h"
 #include "methods/grid/irradiance_vector_grid.h"
 #include "methods/radiance_source.h"
-#include "methods/records/irradiance_cache.h"
 #include "methods/scene_arguments.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
@@ -977,10 +977,9 @@ TEST(DecompositionLimits, AlphaZeroIsInterpolatedFinalGatheringBesideIc) {
     const Image image = decomposition.render(options, &stats);
     EXPECT_EQ(stats.near_triangles, 0u);
     EXPECT_TRUE(all_zero(image, "near-field"));
-    IrradianceCache cache(f.device.frame());
-    auto ic = test::image_options<IrradianceCacheOptions>(32, 32, 2, 5);
+    CachePipeline cache(f.device.frame(), {.beyond = &f.grid});
+    auto ic = test::image_options<PipelineSettings>(32, 32, 2, 5);
     ic.records_overlay = false;
-    ic.source = &f.grid;
     ic.bounces = 1;
     const ImageError decomposed = cornell_indirect_error(image);
     const ImageError cached = cornell_indirect_error(cache.render(ic));

@@ -7,8 +7,8 @@
 #include <cstring>
 
 #include "fuzz_targets.h"
-#include "methods/records/cache_file.h"
-#include "methods/records/record_grid.h"
+#include "methods/caching/cache_file.h"
+#include "methods/caching/record_grid.h"
 #include "util/error.h"
 
 namespace rc::fuzz {

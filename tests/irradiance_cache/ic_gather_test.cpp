@@ -4,7 +4,7 @@
 //   Ward et al. 1988 eq. 5 (course "Generalized Error Estimate"): the error estimate
 //     eps_i(p) = |p - p_i| / R_i + sqrt(1 - n . n_i), the set S = {i : 1 / eps_i > 1/a};
 //   course "Weighting Function Revisited", third form: w_i = 1 / eps_i - 1/a (zero at the border),
-//     capped near the record (kIrradianceCacheMaxWeight, where eps_i -> 0);
+//     capped near the record (kRecordMaxWeight, where eps_i -> 0);
 //   Ward et al. 1988 eq. 6 (course "Additional Constraint"): records in front of p are left out,
 //     d_i(p) = (p - p_i) . (n + n_i) / 2 < 0;
 //   DESIGN.md §6.2 step 4-5 and the cache's own rule: a record whose nearest hit lies to the side
@@ -28,8 +28,8 @@
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
 #include "image_options.h"
-#include "methods/records/irradiance_cache.h"
-#include "methods/records/irradiance_records.h"
+#include "methods/caching/cache_pipeline.h"
+#include "methods/caching/irradiance_records.h"
 #include "scene/device_scene.h"
 #include "test_support.h"
 
@@ -61,7 +61,7 @@ std::vector<glm::dvec4> device_gather(const std::vector<PaperRecord>& records,
     static const Bvh bvh = build_bvh(scene.mesh, context.bvh_layout());
     static const DeviceBvh device_bvh(context, bvh);
     static const DeviceScene device_scene(context, scene);
-    IrradianceCache cache({context, scene, device_bvh, device_scene});
+    CachePipeline cache({context, scene, device_bvh, device_scene});
     std::vector<shared::Record> stored;
     std::vector<RecordHostData> host;
     std::vector<std::byte> payloads(records.size() * sizeof(shared::IrradiancePayload));
@@ -106,7 +106,7 @@ std::vector<glm::dvec4> device_gather(const std::vector<PaperRecord>& records,
     return sums;
 }
 
-constexpr double kMaxWeight = kIrradianceCacheMaxWeight;
+constexpr double kMaxWeight = kRecordMaxWeight;
 
 glm::dvec3 d3(glm::vec3 v) { return glm::dvec3(v); }
 
@@ -285,8 +285,8 @@ TEST(IcGather, EqualsTheCoursesWeightedSumOverEveryRecord) {
 // placement left no sample the cache serves without weight (Algorithm 2, step 4).
 TEST(IcSplat, SplatBufferEqualsTheCoursesWeightedSumAndTheGather) {
     test::DeviceFrame cornell(test::load_cornell_box());
-    IrradianceCache cache(cornell.frame());
-    auto options = test::image_options<IrradianceCacheOptions>(48, 40, 2);
+    CachePipeline cache(cornell.frame());
+    auto options = test::image_options<PipelineSettings>(48, 40, 2);
     options.rays = 64;
     options.accuracy = 0.4f;
     options.bounces = 1;

@@ -1,4 +1,4 @@
-// The record kernels (kernels/records/ic_records.h, rc_ic_reduce) against analytic
+// The record kernels (kernels/caching/irradiance_records.h, rc_ic_reduce) against analytic
 // answers: a constant sky, and a tilted emitting rectangle whose irradiance at any point and
 // orientation Lambert's polygon formula gives exactly, so finite differences of it are the oracle
 // for the translational and rotational gradients.
@@ -13,7 +13,7 @@
 
 #include "bvh/bvh.h"
 #include "bvh/device_bvh.h"
-#include "methods/records/irradiance_cache.h"
+#include "methods/caching/cache_pipeline.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
 #include "shared/rng.h"
@@ -26,7 +26,7 @@ namespace {
 struct CacheFixture {
     explicit CacheFixture(const Scene& s) : device(s), cache(device.frame()) {}
     test::DeviceFrame device;
-    IrradianceCache cache;
+    CachePipeline cache;
 };
 
 Scene scene_from_json(const std::string& name, const std::string& json) {
@@ -90,8 +90,8 @@ TEST(IcRecord, ConstantSkyGivesPiLAndNoGradients) {
 
 // The first record index, from `first`, one of whose pole strata (j = 0, cell k < n) the
 // generator jitters onto the pole itself (zeta = 0: the top 24 bits of its word are zero, once
-// in 2^24), for records of cache level 0 sampled with `seed` (ic_records.h: words 0 and 1 of the
-// stream (seed_lo ^ RC_IC_RNG_DOMAIN, seed_hi; record, cell) are the cell's jitter).
+// in 2^24), for records of cache level 0 sampled with `seed` (irradiance_records.h: words 0 and 1
+// of the stream (seed_lo ^ RC_IC_RNG_DOMAIN, seed_hi; record, cell) are the cell's jitter).
 uint32_t record_with_a_pole_sample(uint64_t seed, int n, uint32_t first) {
     const auto lo = static_cast<uint32_t>(seed) ^ RC_IC_RNG_DOMAIN;
     const auto hi = static_cast<uint32_t>(seed >> 32);

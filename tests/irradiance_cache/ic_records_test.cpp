@@ -9,7 +9,7 @@
 #include <glm/geometric.hpp>
 #include <random>
 
-#include "methods/records/irradiance_records.h"
+#include "methods/caching/irradiance_records.h"
 #include "test_support.h"
 
 namespace rc {

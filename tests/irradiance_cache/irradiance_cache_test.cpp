@@ -1,8 +1,6 @@
 // Irradiance caching as a method (host/methods/irradiance_cache.cpp): coverage after placement,
 // determinism, accuracy against the white furnace's analytic radiance and the Cornell box's
 // path-traced reference, and cache files.
-#include "methods/records/irradiance_cache.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,8 +13,9 @@
 #include "image/image_error.h"
 #include "image/image_io.h"
 #include "image_options.h"
-#include "methods/records/cache_file.h"
-#include "methods/records/irradiance_records.h"
+#include "methods/caching/cache_file.h"
+#include "methods/caching/cache_pipeline.h"
+#include "methods/caching/irradiance_records.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
@@ -28,20 +27,20 @@ namespace {
 
 struct Render {
     Image image;
-    IrradianceCacheStats stats;
+    PipelineStats stats;
     RecordStore records = irradiance_store(0.0f);  // first level
 };
 
-Render render(const Scene& scene, const IrradianceCacheOptions& options, Context& context) {
+Render render(const Scene& scene, const PipelineSettings& options, Context& context) {
     test::DeviceFrame device(scene, context);
-    IrradianceCache cache(device.frame());
+    CachePipeline cache(device.frame());
     Render r;
     r.image = cache.render(options, &r.stats);
     r.records = cache.store(0);
     return r;
 }
 
-Render render(const Scene& scene, const IrradianceCacheOptions& options) {
+Render render(const Scene& scene, const PipelineSettings& options) {
     return render(scene, options, test::shared_context());
 }
 
@@ -81,8 +80,8 @@ bool same_records(const RecordStore& a, const RecordStore& b) {
                        a.size() * sizeof(RecordHostData)) == 0;
 }
 
-IrradianceCacheOptions small_cornell_options() {
-    auto options = test::image_options<IrradianceCacheOptions>(96, 96, 3, 9);
+PipelineSettings small_cornell_options() {
+    auto options = test::image_options<PipelineSettings>(96, 96, 3, 9);
     options.rays = 256;
     return options;
 }
@@ -90,10 +89,10 @@ IrradianceCacheOptions small_cornell_options() {
 // After placement every camera sample the cache serves has a positive weight sum: the coverage
 // layer (the smallest sum over a pixel's served samples) is positive wherever a pixel shows a
 // surface (the Cornell box is all diffuse), with one and with two cache levels.
-TEST(IrradianceCache, PlacementCoversEveryCameraSample) {
+TEST(CachePipeline, PlacementCoversEveryCameraSample) {
     const Scene scene = test::load_cornell_box();
     for (int bounces : {1, 2}) {
-        IrradianceCacheOptions options = small_cornell_options();
+        PipelineSettings options = small_cornell_options();
         options.bounces = bounces;
         const Render r = render(scene, options);
         ASSERT_GT(r.stats.records, 0u);
@@ -128,9 +127,9 @@ TEST(IrradianceCache, PlacementCoversEveryCameraSample) {
 
 // The same options give the same records and bitwise the same image, whatever the work-group
 // size and launch chunking; another seed gives another image.
-TEST(IrradianceCache, SameSeedGivesTheSameRecordsAndImageWhateverTheChunking) {
+TEST(CachePipeline, SameSeedGivesTheSameRecordsAndImageWhateverTheChunking) {
     const Scene scene = test::load_cornell_box();
-    IrradianceCacheOptions options = small_cornell_options();
+    PipelineSettings options = small_cornell_options();
     options.bounces = 2;
     const Render a = render(scene, options);
     const Render b = render(scene, options);
@@ -148,11 +147,11 @@ TEST(IrradianceCache, SameSeedGivesTheSameRecordsAndImageWhateverTheChunking) {
 // indirect light and the direct light add up without counting emission twice, with one or two
 // cache levels; with at most 3 bounces it shows Le (1 + rho + rho^2 + rho^3), as the path tracer
 // does. Within 2%.
-TEST(IrradianceCache, FurnaceMeanIsWithinTwoPercent) {
+TEST(CachePipeline, FurnaceMeanIsWithinTwoPercent) {
     const Scene scene = furnace();
     for (int bounces : {1, 2}) {
         for (int depth : {1000, 3}) {
-            auto options = test::image_options<IrradianceCacheOptions>(32, 32, 4);
+            auto options = test::image_options<PipelineSettings>(32, 32, 4);
             options.rays = 256;
             options.max_depth = depth;
             options.bounces = bounces;
@@ -170,8 +169,8 @@ TEST(IrradianceCache, FurnaceMeanIsWithinTwoPercent) {
 }
 
 // With at most one bounce there is no indirect light and no record is made.
-TEST(IrradianceCache, OneBounceHasNoIndirectLight) {
-    IrradianceCacheOptions options = small_cornell_options();
+TEST(CachePipeline, OneBounceHasNoIndirectLight) {
+    PipelineSettings options = small_cornell_options();
     options.max_depth = 1;
     const Render r = render(test::load_cornell_box(), options);
     EXPECT_EQ(r.stats.records, 0u);
@@ -181,8 +180,8 @@ TEST(IrradianceCache, OneBounceHasNoIndirectLight) {
 
 // The method's defaults at 256 x 256, without the records overlay: what the Cornell box's
 // reference is compared with.
-IrradianceCacheOptions default_options_at_256() {
-    IrradianceCacheOptions options;
+PipelineSettings default_options_at_256() {
+    PipelineSettings options;
     options.width = 256;
     options.height = 256;
     options.records_overlay = false;
@@ -193,9 +192,9 @@ IrradianceCacheOptions default_options_at_256() {
 // indirect light on the Cornell box is within relMSE 2e-4 of the 65 536-spp reference box filtered
 // to that size, whose own noise is negligible (measured 6.5e-5, 4032 first-level records), and
 // its mean within 1%.
-TEST(IrradianceCache, CornellBoxIndirectIsCloseToTheReference) {
+TEST(CachePipeline, CornellBoxIndirectIsCloseToTheReference) {
     const Scene scene = test::load_cornell_box();
-    IrradianceCacheOptions options = default_options_at_256();
+    PipelineSettings options = default_options_at_256();
     const Render r = render(scene, options);
     const Image indirect = select_layers(r.image, {"indirect"});
     const ImageError e = image_error(indirect, test::cornell_reference("indirect", 256));
@@ -211,9 +210,9 @@ TEST(IrradianceCache, CornellBoxIndirectIsCloseToTheReference) {
 // (reported), which cuts the rays the records trace; the indirect light against the reference stays
 // within 25% of its error with as many rays at every level (measured at 256²: 6.5e-5 against
 // 6.3e-5 with 0.44 of the record rays).
-TEST(IrradianceCache, DeeperLevelsUseFewerRaysAtLittleCost) {
+TEST(CachePipeline, DeeperLevelsUseFewerRaysAtLittleCost) {
     const Scene scene = test::load_cornell_box();
-    IrradianceCacheOptions options = default_options_at_256();
+    PipelineSettings options = default_options_at_256();
     const Render fewer = render(scene, options);
     options.deeper_rays = options.rays;
     const Render same = render(scene, options);
@@ -236,15 +235,15 @@ TEST(IrradianceCache, DeeperLevelsUseFewerRaysAtLittleCost) {
 
 // A cache file holds every level's records exactly; loading it for the same view makes no new
 // record and renders bitwise the same image.
-TEST(IrradianceCache, CacheFileRoundTripsExactlyAndIsReused) {
+TEST(CachePipeline, CacheFileRoundTripsExactlyAndIsReused) {
     const Scene scene = test::load_cornell_box();
     const auto dir = test::scratch_dir("ic_cache_file");
-    IrradianceCacheOptions options = small_cornell_options();
+    PipelineSettings options = small_cornell_options();
     options.bounces = 2;
     options.cache_out = dir / "cornell.rcc";
     test::DeviceFrame device(scene);
-    IrradianceCache cache(device.frame());
-    IrradianceCacheStats stats;
+    CachePipeline cache(device.frame());
+    PipelineStats stats;
     const Image first = cache.render(options, &stats);
     const std::vector<RecordStore> levels =
         read_cache_file(options.cache_out, irradiance_cache_key(scene, options.accuracy));
@@ -253,10 +252,10 @@ TEST(IrradianceCache, CacheFileRoundTripsExactlyAndIsReused) {
     EXPECT_TRUE(same_records(levels[1], cache.store(1)));
     EXPECT_GT(levels[1].size(), 0u);
 
-    IrradianceCacheOptions reuse = options;
+    PipelineSettings reuse = options;
     reuse.cache_in = options.cache_out;
     reuse.cache_out.clear();
-    IrradianceCacheStats reused;
+    PipelineStats reused;
     const Image second = cache.render(reuse, &reused);
     EXPECT_EQ(reused.loaded_records, levels[0].size() + levels[1].size());
     EXPECT_EQ(reused.records, levels[0].size());
@@ -275,11 +274,11 @@ void expect_refused(const std::filesystem::path& file, const Scene& scene, float
 }
 
 // Corrupt, truncated, foreign and mismatched files are refused with an error naming the file.
-TEST(IrradianceCache, CorruptAndMismatchedCacheFilesAreRefused) {
+TEST(CachePipeline, CorruptAndMismatchedCacheFilesAreRefused) {
     const Scene scene = test::load_cornell_box();
     const auto dir = test::scratch_dir("ic_cache_refused");
     const std::filesystem::path good = dir / "good.rcc";
-    IrradianceCacheOptions options = small_cornell_options();
+    PipelineSettings options = small_cornell_options();
     options.width = 32;
     options.height = 32;
     options.cache_out = good;

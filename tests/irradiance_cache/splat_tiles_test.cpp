@@ -1,8 +1,8 @@
-// Radiance cache splatting's screen tiles (host/methods/records/splat_tiles.h) against
+// Radiance cache splatting's screen tiles (host/methods/caching/splat_tiles.h) against
 // brute force: every sub-pixel camera ray (the camera's own definition in
 // kernels/shared/types.h: direction top_left + right x / W + down y / H) that meets a record's
 // influence sphere must fall in a tile that lists the record.
-#include "methods/records/splat_tiles.h"
+#include "methods/caching/splat_tiles.h"
 
 #include <gtest/gtest.h>
 

@@ -17,9 +17,9 @@
 #include "image/image_error.h"
 #include "image/image_io.h"
 #include "image_options.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/grid/irradiance_vector_grid_file.h"
 #include "methods/irradiance_vector_grid/ivg_method.h"
-#include "methods/records/irradiance_cache.h"
 #include "scene/device_scene.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
@@ -175,10 +175,10 @@ TEST(IrradianceVectorGrid, IrradianceCacheWithTheGridIsCloseToTheReference) {
     IvgOptions grid_options;
     grid_options.seed = 1;
     s.grid.build(grid_options);
-    IrradianceCache cache({test::shared_context(), s.scene, s.device_bvh, s.device_scene});
-    IrradianceCacheOptions options;
+    CachePipeline cache({test::shared_context(), s.scene, s.device_bvh, s.device_scene},
+                        {.beyond = &s.grid});
+    PipelineSettings options;
     options.records_overlay = false;
-    options.source = &s.grid;
     options.bounces = 1;  // the grid serves the hemisphere rays' hits
     const Image image = cache.render(options);
     const ImageError e =

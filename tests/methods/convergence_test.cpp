@@ -11,9 +11,9 @@
 
 #include "image/image_error.h"
 #include "image_options.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/grid/irradiance_vector_grid.h"
 #include "methods/irradiance_vector_grid/ivg_method.h"
-#include "methods/records/irradiance_cache.h"
 #include "test_support.h"
 
 namespace rc {
@@ -36,8 +36,8 @@ double indirect_relmse(const Image& image, const char* what) {
 // carries no camera noise: every camera sample reads the cache).
 double ic_error(float accuracy, int rays, float min_spacing_pixels, const char* what) {
     test::DeviceFrame device(test::load_cornell_box());
-    IrradianceCache cache(device.frame());
-    auto options = test::image_options<IrradianceCacheOptions>(kSize, kSize, 4, 21);
+    CachePipeline cache(device.frame());
+    auto options = test::image_options<PipelineSettings>(kSize, kSize, 4, 21);
     options.accuracy = accuracy;
     options.rays = rays;
     options.min_spacing = {min_spacing_pixels, false};

@@ -1,10 +1,11 @@
 // Materials of one scene served by different glossy caches in one render (`--method ic --glossy`,
-// host/methods/glossy_mix.h, glossy_spec.h) on a scene of two Phong spheres, exponent 16 and 200:
+// host/methods/caching/glossy_mix.h, glossy_spec.h) on a scene of two Phong spheres, exponent 16
+// and 200:
 // `--glossy rc` and `--glossy sdrc` give --method rc's and sdrc's images bit for bit; a mix gives
 // each sphere's pixels exactly the image of its cache alone, its caches' layers only on their
 // sphere, and each cache counts only its material's camera samples; its image agrees with the
 // path tracer's; it is deterministic over runs and over SDRC's batch sizes.
-#include "methods/glossy_mix.h"
+#include "methods/caching/glossy_mix.h"
 
 #include <gtest/gtest.h>
 
@@ -20,8 +21,8 @@
 #include "glossy_scenes.h"
 #include "image/image.h"
 #include "image/image_io.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/radiance_cache/radiance_cache.h"
-#include "methods/records/irradiance_cache.h"
 #include "methods/sdrc/sdrc_cache.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
@@ -294,7 +295,7 @@ TEST(GlossyMix, SdrcBatchSizesDoNotChangeTheMixedImage) {
     ASSERT_EQ(std::count(phong16.begin(), phong16.end(), 1), 1);
     ASSERT_EQ(std::count(phong200.begin(), phong200.end(), 1), 1);
     const auto render_mix = [&](size_t batch) {
-        const IrradianceCacheOptions ic = test::glossy_ic_options(kSize, 2, 9, 64);
+        const PipelineSettings ic = test::glossy_ic_options(kSize, 2, 9, 64);
         RadianceCacheOptions rc;
         rc.seed = ic.seed;
         rc.materials = phong16;
@@ -307,9 +308,7 @@ TEST(GlossyMix, SdrcBatchSizesDoNotChangeTheMixedImage) {
         members.push_back({"radiance_cache", std::make_unique<RadianceCache>(device.frame(), rc)});
         members.push_back({"sdrc", std::make_unique<SdrcCache>(device.frame(), sdrc)});
         GlossyMix mix(device.context, std::move(members));
-        IrradianceCacheOptions options = ic;
-        options.glossy = &mix;
-        return IrradianceCache(device.frame()).render(options);
+        return CachePipeline(device.frame(), {.lobes = &mix}).render(ic);
     };
     const Image defaults = render_mix(0);
     const Image small = render_mix(7);

@@ -1,7 +1,7 @@
-// The --glossy SPEC of `--method ic` (host/methods/glossy_spec.h): what it reads and writes back,
-// the plan's SPEC (glossy_spec_of) resolving to the plan again, and bad values refused on the
+// The --glossy SPEC of `--method ic` (host/methods/caching/glossy_spec.h): what it reads and writes
+// back, the plan's SPEC (glossy_spec_of) resolving to the plan again, and bad values refused on the
 // command line with one error line naming the value, exit status 2, before rendering.
-#include "methods/glossy_spec.h"
+#include "methods/caching/glossy_spec.h"
 
 #include <gtest/gtest.h>
 

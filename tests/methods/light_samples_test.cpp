@@ -1,5 +1,5 @@
 // The caching methods' render passes with several light samples at the camera's hit
-// (--light-samples; IrradianceCacheOptions::light_samples, IvgRenderOptions::light_samples): the
+// (--light-samples; PipelineSettings::light_samples, IvgRenderOptions::light_samples): the
 // same seed gives the same image bit for bit whatever the launch chunking; the direct layer keeps
 // its expectation (a per-pixel paired test against one light sample) and loses noise (its squared
 // error against the Cornell box's reference).
@@ -11,9 +11,9 @@
 
 #include "image/image_io.h"
 #include "image_options.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/grid/irradiance_vector_grid.h"
 #include "methods/irradiance_vector_grid/ivg_method.h"
-#include "methods/records/irradiance_cache.h"
 #include "test_support.h"
 #include "util/error.h"
 
@@ -25,8 +25,8 @@ constexpr int kSpp = 2;
 
 Image render_ic(Context& context, int light_samples, uint64_t seed) {
     test::DeviceFrame device(test::load_cornell_box(), context);
-    IrradianceCache cache(device.frame());
-    auto options = test::image_options<IrradianceCacheOptions>(kSize, kSize, kSpp, seed);
+    CachePipeline cache(device.frame());
+    auto options = test::image_options<PipelineSettings>(kSize, kSize, kSpp, seed);
     options.rays = 64;
     options.light_samples = light_samples;
     return cache.render(options);

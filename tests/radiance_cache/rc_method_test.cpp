@@ -9,8 +9,8 @@
 #include "glossy_render.h"
 #include "glossy_scenes.h"
 #include "image/image_error.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/radiance_cache/radiance_cache.h"
-#include "methods/records/irradiance_cache.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
 #include "util/error.h"
@@ -60,7 +60,7 @@ TEST(RadianceCacheMethod, GlossyBoxIndirectIsCloseToTheReference) {
         e.test_means[2], e.reference_means[0], e.reference_means[1], e.reference_means[2]);
     const Image order = select_layers(r.image, {"rc-order"});
     const Image ic_image =
-        IrradianceCache(device.frame()).render(test::glossy_ic_options(kSize, 4, 7, 256));
+        CachePipeline(device.frame()).render(test::glossy_ic_options(kSize, 4, 7, 256));
     size_t pixels = 0;
     const double rc_satin =
         test::masked_relmse(select_layers(r.image, {"indirect"}), reference, order, &pixels);
@@ -129,7 +129,7 @@ TEST(RadianceCacheMethod, SharpLobesFallBackWithoutLosingToMonteCarlo) {
     for (int exponent : {4, 16, 64, 256}) {
         test::DeviceFrame device(test::phong_sphere_scene(exponent, "rc"));
         const Image reference = test::path_traced_indirect(device, kSize);
-        const IrradianceCacheOptions ic = test::glossy_ic_options(kSize, 8, 5, 256);
+        const PipelineSettings ic = test::glossy_ic_options(kSize, 8, 5, 256);
         RadianceCacheOptions rc;
         rc.rays = 1024;
         const RcRender r = render_rc(device, ic, rc);
@@ -178,7 +178,7 @@ TEST(RadianceCacheMethod, ImageIsBitwiseIdenticalAcrossRunsChunksAndWorkGroups) 
 TEST(RadianceCacheMethod, CacheFilesRoundTripTheRadianceRecords) {
     const auto dir = test::scratch_dir("rc_cache_files");
     test::DeviceFrame device(test::phong_sphere_scene(8, "rc"));
-    const IrradianceCacheOptions ic = test::glossy_ic_options(24, 2, 17, 128);
+    const PipelineSettings ic = test::glossy_ic_options(24, 2, 17, 128);
     RadianceCacheOptions rc;
     rc.rays = 256;
     rc.cache_out = dir / "rc.rcc";

@@ -11,7 +11,7 @@
 
 #include "image/image.h"
 #include "image/image_io.h"
-#include "methods/records/placement_passes.h"
+#include "methods/caching/placement_passes.h"
 #include "test_support.h"
 
 namespace rc {

@@ -10,7 +10,7 @@
 #include "glossy_render.h"
 #include "glossy_scenes.h"
 #include "image/image_error.h"
-#include "methods/records/irradiance_cache.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/sdrc/sdrc_cache.h"
 #include "scene/scene_loader.h"
 #include "test_support.h"
@@ -81,7 +81,7 @@ TEST(SdrcMethod, SharpLobesBeatMonteCarloAtTheSameSamples) {
     for (int exponent : {16, 64, 256}) {
         test::DeviceFrame device(test::phong_sphere_scene(exponent, "sdrc"));
         const Image reference = test::path_traced_indirect(device, kSize);
-        const IrradianceCacheOptions ic = test::glossy_ic_options(kSize, 8, 5);
+        const PipelineSettings ic = test::glossy_ic_options(kSize, 8, 5);
         const SdrcRender r = render_sdrc(device, ic);
         const test::SphereErrors e = test::sphere_errors(device, ic, r.image, reference);
         const double hit_rate =
@@ -128,11 +128,11 @@ TEST(SdrcMethod, GlossyBoxIndirectIsCloseToTheReference) {
 TEST(SdrcMethod, KettleIndirectBeatsMonteCarloAgainstTheReference) {
     constexpr int kSize = 64;
     test::DeviceFrame device(load_scene(test::source_dir() / "scenes/kettle/scene.json"));
-    const IrradianceCacheOptions ic = test::glossy_ic_options(kSize, 4, 13);
+    const PipelineSettings ic = test::glossy_ic_options(kSize, 4, 13);
     SdrcOptions sdrc;
     sdrc.interp = 4;
     const SdrcRender r = render_sdrc(device, ic, sdrc);
-    const Image mc = IrradianceCache(device.frame()).render(ic);
+    const Image mc = CachePipeline(device.frame()).render(ic);
     const Image reference = test::scene_reference("kettle", "indirect", kSize);
     const Image mask = select_layers(r.image, {"sdrc-hits"});
     size_t pixels = 0;

@@ -10,11 +10,10 @@ namespace rc::test {
 namespace {
 
 template <class Cache, class Options>
-GlossyRender<Cache> render_glossy(DeviceFrame& device, IrradianceCacheOptions ic, Options options) {
+GlossyRender<Cache> render_glossy(DeviceFrame& device, PipelineSettings ic, Options options) {
     options.seed = ic.seed;
     Cache glossy(device.frame(), options);
-    ic.glossy = &glossy;
-    IrradianceCache cache(device.frame());
+    CachePipeline cache(device.frame(), {.lobes = &glossy});
     GlossyRender<Cache> r;
     r.image = cache.render(ic);
     r.stats = glossy.stats();
@@ -23,19 +22,19 @@ GlossyRender<Cache> render_glossy(DeviceFrame& device, IrradianceCacheOptions ic
 
 }  // namespace
 
-IrradianceCacheOptions glossy_ic_options(int size, int spp, uint64_t seed, int rays) {
-    auto ic = image_options<IrradianceCacheOptions>(size, size, spp, seed);
+PipelineSettings glossy_ic_options(int size, int spp, uint64_t seed, int rays) {
+    auto ic = image_options<PipelineSettings>(size, size, spp, seed);
     ic.rays = rays;
     ic.bounces = 1;
     ic.records_overlay = false;
     return ic;
 }
 
-RcRender render_rc(DeviceFrame& device, IrradianceCacheOptions ic, RadianceCacheOptions options) {
+RcRender render_rc(DeviceFrame& device, PipelineSettings ic, RadianceCacheOptions options) {
     return render_glossy<RadianceCache>(device, std::move(ic), std::move(options));
 }
 
-SdrcRender render_sdrc(DeviceFrame& device, IrradianceCacheOptions ic, SdrcOptions options) {
+SdrcRender render_sdrc(DeviceFrame& device, PipelineSettings ic, SdrcOptions options) {
     return render_glossy<SdrcCache>(device, std::move(ic), std::move(options));
 }
 
@@ -48,9 +47,9 @@ Image path_traced_indirect(DeviceFrame& device, int size) {
     return select_layers(PathTracer(device.frame()).render(pt), {"indirect"});
 }
 
-SphereErrors sphere_errors(DeviceFrame& device, const IrradianceCacheOptions& ic,
+SphereErrors sphere_errors(DeviceFrame& device, const PipelineSettings& ic,
                            const Image& glossy_image, const Image& reference) {
-    const Image mc = IrradianceCache(device.frame()).render(ic);
+    const Image mc = CachePipeline(device.frame()).render(ic);
     const Image mask = sphere_mask(select_layers(glossy_image, {"albedo"}));
     SphereErrors errors;
     errors.glossy =

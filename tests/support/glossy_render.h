@@ -8,8 +8,8 @@
 #include <utility>
 
 #include "image/image.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/radiance_cache/radiance_cache.h"
-#include "methods/records/irradiance_cache.h"
 #include "methods/sdrc/sdrc_cache.h"
 #include "test_support.h"
 
@@ -17,7 +17,7 @@ namespace rc::test {
 
 // Irradiance caching's options for a size x size image, one cache level of `rays` hemisphere rays
 // (the diffuse records are not what these tests measure), no records overlay.
-IrradianceCacheOptions glossy_ic_options(int size, int spp, uint64_t seed, int rays = 256);
+PipelineSettings glossy_ic_options(int size, int spp, uint64_t seed, int rays = 256);
 
 // The indirect layer of `device`'s scene path traced at size x size, 1024 samples per pixel (seed
 // 11): the reference the glossy caches and the path-traced lobe are measured against.
@@ -32,10 +32,9 @@ struct GlossyRender {
 // The image of irradiance caching `ic` whose glossy buffer a radiance cache (rc) or an SDRC cache
 // of `options` (its seed ic's) fills, and that cache's stats.
 using RcRender = GlossyRender<RadianceCache>;
-RcRender render_rc(DeviceFrame& device, IrradianceCacheOptions ic,
-                   RadianceCacheOptions options = {});
+RcRender render_rc(DeviceFrame& device, PipelineSettings ic, RadianceCacheOptions options = {});
 using SdrcRender = GlossyRender<SdrcCache>;
-SdrcRender render_sdrc(DeviceFrame& device, IrradianceCacheOptions ic, SdrcOptions options = {});
+SdrcRender render_sdrc(DeviceFrame& device, PipelineSettings ic, SdrcOptions options = {});
 
 // The indirect light on the Phong sphere (phong_sphere_scene's, sphere_mask of the albedo layer of
 // `glossy_image`) against `reference`: relMSE of `glossy_image`, rendered with a glossy cache, and
@@ -45,7 +44,7 @@ struct SphereErrors {
     double monte_carlo = 0.0;
     size_t pixels = 0;  // the sphere's
 };
-SphereErrors sphere_errors(DeviceFrame& device, const IrradianceCacheOptions& ic,
+SphereErrors sphere_errors(DeviceFrame& device, const PipelineSettings& ic,
                            const Image& glossy_image, const Image& reference);
 
 }  // namespace rc::test

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "methods/records/irradiance_cache.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/temporal/tc_reprojection.h"
 
 namespace rc {
@@ -13,14 +13,13 @@ namespace rc {
 // The payloads of records computed at `sites` of `frame`, in order; with `next`, their estimates
 // reprojected to it in *carried.
 inline std::vector<shared::IrradiancePayload> records_at_sites(
-    const FrameScene& frame, const std::vector<RecordSite>& sites, IrradianceCacheOptions options,
+    const FrameScene& frame, const std::vector<RecordSite>& sites, PipelineSettings options,
     const Scene* next = nullptr, std::vector<CarriedRecord>* carried = nullptr) {
-    IrradianceCache cache(frame);
     std::unique_ptr<TemporalReprojection> reprojection;
     if (next != nullptr) {
         reprojection = std::make_unique<TemporalReprojection>(frame, *next, 4);
-        options.observer = reprojection.get();
     }
+    CachePipeline cache(frame, {.observer = reprojection.get()});
     cache.begin(options);
     cache.add_records(sites);
     if (carried != nullptr) {

@@ -190,8 +190,8 @@ TEST(TemporalKernels, DistantLightGivesIrradianceTimesCosine) {
 }
 
 // The cell a direction passes through holds it: column k with 2 pi k / N <= phi < 2 pi (k+1)/N
-// and, for irradiance records' cosine-weighted cells (ic_records.h), row j with
-// j/M <= sin^2 theta < (j+1)/M; for radiance records' uniform cells (rc_hemisphere.h)
+// and, for irradiance records' cosine-weighted cells (irradiance_records.h), row j with
+// j/M <= sin^2 theta < (j+1)/M; for radiance records' uniform cells (radiance_hemisphere.h)
 // j/M <= 1 - cos theta < (j+1)/M; -1 below.
 void check_cell_of_direction(int layout) {
     const int m = 18;

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "image_options.h"
-#include "methods/records/irradiance_cache.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/temporal/tc_reprojection.h"
 #include "methods/temporal/temporal_cache.h"
 #include "methods/temporal/temporal_record.h"
@@ -96,8 +96,8 @@ class MovingSphereFrames {
 constexpr float kBallRadius = 70.0f;
 constexpr int kAhead[] = {2, 4, 8};  // reprojection horizons tried besides one frame
 
-IrradianceCacheOptions render_options(const StudySize& size, const Scene& scene) {
-    auto o = test::image_options<IrradianceCacheOptions>(size.width, size.height, size.spp);
+PipelineSettings render_options(const StudySize& size, const Scene& scene) {
+    auto o = test::image_options<PipelineSettings>(size.width, size.height, size.spp);
     o.rays = size.rays;
     o.seed = 0;
     o.max_depth = scene.render.max_depth;
@@ -110,7 +110,7 @@ IrradianceCacheOptions render_options(const StudySize& size, const Scene& scene)
 // beyond the hemisphere hits, so that nothing but the scene differs between frames); with `next`,
 // their reprojected estimates at the next frame in *carried.
 std::vector<shared::IrradiancePayload> fresh_records(
-    const FrameScene& frame, const std::vector<RecordSite>& sites, IrradianceCacheOptions options,
+    const FrameScene& frame, const std::vector<RecordSite>& sites, PipelineSettings options,
     const Scene* next = nullptr, std::vector<CarriedRecord>* carried = nullptr) {
     options.width = 4;
     options.height = 4;
@@ -180,7 +180,7 @@ RecordSite riding_site(const RecordSite& site, const Scene& from, const Scene& t
 // its lifespan + 1 and until its change exceeds a^t (or delta t_max, or the clip ends).
 // With `ride`, the sites move with their triangles (riding_site) rather than stay in place.
 void measure_truth(MovingSphereFrames& frames, int t0, int last_frame,
-                   const IrradianceCacheOptions& options, const TemporalOptions& temporal,
+                   const PipelineSettings& options, const TemporalOptions& temporal,
                    const std::vector<RecordSite>& sites,
                    const std::vector<shared::IrradiancePayload>& e0, std::vector<Studied>* out,
                    bool ride = false) {
@@ -506,17 +506,17 @@ void print_departure_table(const std::vector<Studied>& studied, const std::vecto
 // estimates h frames ahead, a fresh one-frame change at the render's rays and the oracle's under
 // other streams, then their true changes (measure_truth).
 void estimate_and_measure(MovingSphereFrames& frames, int t0, const StudySize& size,
-                          const IrradianceCacheOptions& ic, const TemporalOptions& temporal,
+                          const PipelineSettings& ic, const TemporalOptions& temporal,
                           const std::vector<RecordSite>& sites, std::vector<Studied>* studied) {
     const Scene next = frames.posed(t0 + 1);
     std::vector<CarriedRecord> carried;
     const auto e0 = fresh_records(frames.at(t0), sites, ic, &next, &carried);
-    IrradianceCacheOptions oracle = ic;
+    PipelineSettings oracle = ic;
     oracle.rays = size.oracle_rays;
     const auto oracle0 = fresh_records(frames.at(t0), sites, oracle);
     const auto own1 = fresh_records(frames.at(t0 + 1), sites, ic);
     // The oracle's own noise: its one-frame change under other random streams.
-    IrradianceCacheOptions other_seed = oracle;
+    PipelineSettings other_seed = oracle;
     other_seed.seed = oracle.seed + 1;
     const auto other0 = fresh_records(frames.at(t0), sites, other_seed);
     const auto other1 = fresh_records(frames.at(t0 + 1), sites, other_seed);
@@ -562,7 +562,7 @@ void estimate_and_measure(MovingSphereFrames& frames, int t0, const StudySize& s
 // Records at `on_ball` (on the ball at t0) riding it: their true changes. A riding site stays on
 // the ball's surface at the next frame, its normal outwards.
 std::vector<Studied> study_riding(MovingSphereFrames& frames, int t0, const StudySize& size,
-                                  const IrradianceCacheOptions& ic, const TemporalOptions& temporal,
+                                  const PipelineSettings& ic, const TemporalOptions& temporal,
                                   const std::vector<RecordSite>& on_ball) {
     const glm::vec3 centre1 = frames.ball_centre(t0 + 1);
     const Scene posed0 = frames.posed(t0);
@@ -572,7 +572,7 @@ std::vector<Studied> study_riding(MovingSphereFrames& frames, int t0, const Stud
         EXPECT_NEAR(glm::length(moved.position - centre1), kBallRadius, 0.01f * kBallRadius);
         EXPECT_GT(glm::dot(moved.normal, glm::normalize(moved.position - centre1)), 0.95f);
     }
-    IrradianceCacheOptions oracle = ic;
+    PipelineSettings oracle = ic;
     oracle.rays = size.oracle_rays;
     std::vector<Studied> riding(on_ball.size());
     const auto ball0 = fresh_records(frames.at(t0), on_ball, oracle);
@@ -586,9 +586,8 @@ std::vector<Studied> study_riding(MovingSphereFrames& frames, int t0, const Stud
 // The records `cache` created at t0: those off the ball (at frame 0 every frame0_stride-th)
 // studied into *still, those on it riding it into *riding.
 void study_frame(MovingSphereFrames& frames, const TemporalIrradianceCache& cache, int t0,
-                 const StudySize& size, const IrradianceCacheOptions& ic,
-                 const TemporalOptions& temporal, std::vector<Studied>* still,
-                 std::vector<Studied>* riding) {
+                 const StudySize& size, const PipelineSettings& ic, const TemporalOptions& temporal,
+                 std::vector<Studied>* still, std::vector<Studied>* riding) {
     std::vector<RecordSite> sites;
     std::vector<RecordSite> on_ball;
     std::vector<Studied> studied;
@@ -672,7 +671,7 @@ void print_study(const std::vector<Studied>& all, const std::vector<Studied>& ri
 TEST(TemporalLifespan, EstimateAgainstFreshRecordsOnTheMovingSphere) {
     const StudySize size = study_size();
     MovingSphereFrames frames;
-    const IrradianceCacheOptions ic = render_options(size, frames.posed(0));
+    const PipelineSettings ic = render_options(size, frames.posed(0));
     TemporalOptions temporal;
     temporal.enabled = true;
     TemporalIrradianceCache cache(ic, temporal, 0, size.clip_end + 1);

@@ -52,7 +52,7 @@ std::filesystem::path rolling_ball_scene(int slowdown) {
 // frame's statistics count those on the ball.
 std::vector<TemporalRecord> records_at_frame_0(int slowdown) {
     test::PosedFrames frames(load_scene(rolling_ball_scene(slowdown)));
-    auto ic = test::image_options<IrradianceCacheOptions>(16, 16, 1, 5);
+    auto ic = test::image_options<PipelineSettings>(16, 16, 1, 5);
     ic.rays = 256;
     ic.bounces = 1;
     ic.max_depth = 8;

@@ -20,7 +20,7 @@
 #include "box_walls.h"
 #include "image/image_error.h"
 #include "image/image_io.h"
-#include "methods/records/irradiance_cache.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/temporal/tc_reprojection.h"
 #include "methods/temporal/temporal_record.h"
 #include "scene/scene_loader.h"
@@ -56,8 +56,8 @@ std::vector<RecordSite> floor_sites(const std::vector<std::pair<float, float>>& 
     return sites;
 }
 
-IrradianceCacheOptions record_options(int rays, uint64_t seed, int max_depth) {
-    IrradianceCacheOptions o;
+PipelineSettings record_options(int rays, uint64_t seed, int max_depth) {
+    PipelineSettings o;
     o.max_depth = max_depth;
     o.width = 4;
     o.height = 4;

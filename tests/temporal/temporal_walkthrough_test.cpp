@@ -79,7 +79,7 @@ struct Walk {
 
 // Frames first..last of the walkthrough at 24 x 24 pixels, 1 sample, 128 rays, two cache levels.
 Walk walk(WalkthroughFrames& frames, int first, int last, const TemporalOptions& temporal) {
-    auto ic = test::image_options<IrradianceCacheOptions>(24, 24, 1);
+    auto ic = test::image_options<PipelineSettings>(24, 24, 1);
     ic.rays = 128;
     ic.max_depth = frames.scene().render.max_depth;
     ic.records_overlay = false;
@@ -119,7 +119,7 @@ TEST(TemporalWalkthrough, RecordsLiveTheClipAndNewOnesLieWhereNoneCovers) {
         later += i > 0 ? w.stats[i]["created"].get<size_t>() : 0u;
     }
     const std::vector<TemporalRecord>& records = w.cache->records(0);
-    const float accuracy = IrradianceCacheOptions{}.accuracy;
+    const float accuracy = PipelineSettings{}.accuracy;
     size_t created_later = 0;
     for (const TemporalRecord& r : records) {
         if (r.created == kFirst) {
@@ -179,7 +179,7 @@ TEST(TemporalWalkthrough, SlowerMotionGivesSmallerEstimatedChanges) {
         sites.push_back(s);
     }
     const float accuracy = TemporalOptions{}.accuracy;
-    IrradianceCacheOptions options = test::image_options<IrradianceCacheOptions>(4, 4, 1, 11);
+    PipelineSettings options = test::image_options<PipelineSettings>(4, 4, 1, 11);
     options.max_depth = 8;
     options.rays = 1024;
     options.bounces = 1;
@@ -226,7 +226,7 @@ TEST(TemporalWalkthrough, StillRecordsExpireWhenSomethingStartsMoving) {
                 {"frame": 6, "translate": [0.2, -0.75, 0]}]}]})");
     test::PosedFrames frames(load_scene(path));
     auto at = [&](int frame) { return frames.at(frame); };
-    auto ic = test::image_options<IrradianceCacheOptions>(16, 16, 1);
+    auto ic = test::image_options<PipelineSettings>(16, 16, 1);
     ic.rays = 128;
     ic.records_overlay = false;
     TemporalOptions temporal;

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "methods/glossy_spec.h"
+#include "methods/caching/glossy_spec.h"
 #include "util/error.h"
 
 namespace rc {

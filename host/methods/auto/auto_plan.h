@@ -69,7 +69,7 @@ AutoPlan choose_plan(const PlanInputs& inputs);
 
 // The caching method that serves `choices` (one per material of `materials`): ic when no glossy
 // lobe is cached, rc or sdrc when one of them serves every glossy lobe, else ic with the
-// per-material --glossy list (methods/glossy_spec.h).
+// per-material --glossy list (methods/caching/glossy_spec.h).
 MethodRun caching_run(const std::vector<MaterialChoice>& choices,
                       const std::vector<Material>& materials);
 

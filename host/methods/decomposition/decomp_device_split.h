@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "device/buffer.h"
+#include "methods/caching/record_grid.h"
 #include "methods/frame_scene.h"
-#include "methods/records/record_grid.h"
 #include "shared/decomposition.h"
 #include "shared/types.h"
 

@@ -8,13 +8,13 @@
 #include <string>
 
 #include "image/film.h"
+#include "methods/caching/record_store.h"
 #include "methods/decomposition/clusters.h"
 #include "methods/decomposition/decomp_cluster_split.h"
 #include "methods/decomposition/decomp_device_split.h"
 #include "methods/decomposition/decomp_radiosity_split.h"
 #include "methods/decomposition/near_grid.h"
 #include "methods/decomposition/triangle_split.h"
-#include "methods/records/record_store.h"
 #include "methods/scene_arguments.h"
 #include "methods/shared_settings.h"
 #include "scene/camera.h"

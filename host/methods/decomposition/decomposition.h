@@ -22,11 +22,11 @@
 
 #include "device/buffer.h"
 #include "image/image.h"
+#include "methods/caching/record_grid.h"
 #include "methods/decomposition/decomp_device_split.h"
 #include "methods/decomposition/decomp_radiosity_split.h"
 #include "methods/frame_scene.h"
 #include "methods/radiance_source.h"
-#include "methods/records/record_grid.h"
 #include "methods/shared_settings.h"
 #include "shared/decomposition.h"
 #include "shared/types.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <glm/geometric.hpp>
 
-#include "methods/records/record_store.h"
+#include "methods/caching/record_store.h"
 #include "util/glm_helpers.h"
 
 namespace rc {

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "methods/records/record_grid.h"
+#include "methods/caching/record_grid.h"
 #include "shared/decomposition.h"
 
 namespace rc {

@@ -1,20 +1,20 @@
 // `--method ic`: irradiance caching (DESIGN.md §6.2) as a registered method: its options, its
 // statistics per frame, (with --ic-ivg) the irradiance vector grid as the radiance its
 // hemisphere rays read beyond their hits, and (with --glossy) the glossy caches serving the
-// specular lobes of the materials it names (methods/glossy_plan.h).
+// specular lobes of the materials it names (methods/caching/glossy_plan.h).
 #include <memory>
 
-#include "methods/glossy_caches.h"
-#include "methods/glossy_method.h"
-#include "methods/glossy_plan.h"
+#include "methods/caching/cache_pipeline.h"
+#include "methods/caching/glossy_caches.h"
+#include "methods/caching/glossy_method.h"
+#include "methods/caching/glossy_plan.h"
+#include "methods/caching/pipeline_memory.h"
+#include "methods/caching/pipeline_options.h"
+#include "methods/caching/pipeline_stats.h"
+#include "methods/caching/record_passes.h"
 #include "methods/grid/ivg_options.h"
 #include "methods/light_samples.h"
 #include "methods/method.h"
-#include "methods/records/ic_memory.h"
-#include "methods/records/ic_options.h"
-#include "methods/records/ic_stats.h"
-#include "methods/records/irradiance_cache.h"
-#include "methods/records/record_passes.h"
 #include "methods/temporal/temporal_cache.h"
 #include "methods/temporal/temporal_options.h"
 #include "util/error.h"
@@ -26,7 +26,7 @@ namespace {
 
 // ic's options: the irradiance records', the grid's (with --ic-ivg) and temporal caching's.
 struct IrradianceCachingOptions {
-    IrradianceCacheOptions records = irradiance_record_defaults();
+    PipelineSettings records = pipeline_defaults();
     bool with_grid = false;  // --ic-ivg
     IvgOptions grid;
     TemporalOptions temporal;
@@ -36,7 +36,7 @@ struct IrradianceCachingOptions {
 OptionTable<IrradianceCachingOptions> irradiance_caching_table() {
     using O = IrradianceCachingOptions;
     OptionTable<O> table;
-    table.include(irradiance_record_option_table(), &O::records)
+    table.include(pipeline_option_table(), &O::records)
         .flag("--ic-ivg", &O::with_grid,
               "hemisphere rays read the irradiance vector grid at their hits instead of path "
               "tracing beyond them (the grid's options apply)")
@@ -56,7 +56,7 @@ OptionTable<IrradianceCachingOptions> irradiance_caching_table() {
 // default), the temporal ones --temporal, which excludes the grid and cache files.
 void finish_irradiance_caching(IrradianceCachingOptions& options,
                                const ParsedArguments& arguments) {
-    finish_irradiance_record_options(options.records);
+    finish_pipeline_settings(options.records);
     check_temporal_options(options.temporal, arguments);
     if (options.with_grid) {
         finish_ivg_options(options.grid, arguments);
@@ -86,7 +86,7 @@ void finish_irradiance_caching(IrradianceCachingOptions& options,
 class IrradianceCaching final : public Method {
    public:
     IrradianceCaching(const IrradianceCachingOptions& options, const MethodSettings& settings)
-        : options_(irradiance_record_options(options.records, settings)),
+        : options_(pipeline_settings(options.records, settings)),
           with_grid_(options.with_grid),
           glossy_(options.glossy),
           time_(settings.time) {
@@ -120,11 +120,9 @@ class IrradianceCaching final : public Method {
             grid = build_frame_grid(frame, grid_options_, hooks, &grid_result);
         }
         const double time = time_ > 0.0 ? std::max(time_ - seconds_since(start), 1e-9) : 0.0;
-        IrradianceCache cache(frame);
-        IrradianceCacheOptions options = options_;
-        options.source = grid.get();
-        IrradianceCacheStats stats;
-        FrameResult result = render_record_passes(cache, options, time, hooks, nullptr, &stats);
+        CachePipeline cache(frame, {.beyond = grid.get()});
+        PipelineStats stats;
+        FrameResult result = render_record_passes(cache, options_, time, hooks, nullptr, &stats);
         result.rays += grid_result.rays;
         result.stats.update(grid_result.stats);
         log_note(std::to_string(stats.records) + " irradiance records");
@@ -138,7 +136,7 @@ class IrradianceCaching final : public Method {
 
     std::vector<ProgramRequest> programs() const override {
         std::vector<ProgramRequest> programs =
-            irradiance_cache_programs(options_, with_grid_ ? RC_RADIANCE_GRID : RC_RADIANCE_PATH);
+            cache_pipeline_programs(options_, with_grid_ ? RC_RADIANCE_GRID : RC_RADIANCE_PATH);
         if (with_grid_) {
             programs.push_back({"irradiance_vector_grid/irradiance_vector_grid.cl", ""});
         }
@@ -155,7 +153,7 @@ class IrradianceCaching final : public Method {
         check_glossy_spec(glossy_, scene);
         std::string excludes;
         const GlossySampleBytes glossy = glossy_sample_bytes(glossy_, &excludes);
-        DeviceMemoryNeed cache = irradiance_cache_device_need(options_, scene, glossy);
+        DeviceMemoryNeed cache = cache_pipeline_device_need(options_, scene, glossy);
         cache.excludes += excludes;
         if (temporal_) {
             cache.excludes += ", their reprojection and the look-ahead frames' scenes and BVHs";
@@ -166,13 +164,13 @@ class IrradianceCaching final : public Method {
 
    private:
     // A frame with the glossy caches of --glossy serving the specular lobes of their materials
-    // (methods/glossy_method.h, as --method rc and sdrc render theirs).
+    // (methods/caching/glossy_method.h, as --method rc and sdrc render theirs).
     FrameResult render_glossy_frame(const FrameScene& frame, const FrameHooks& hooks) {
         const std::unique_ptr<GlossyMix> glossy = make_glossy_mix(frame, options_, glossy_);
-        IrradianceCacheStats stats;
+        PipelineStats stats;
         FrameResult result = render_with_glossy_cache(
             frame, options_, *glossy, time_, hooks,
-            [&](FrameResult& pass, const IrradianceCacheStats&) {
+            [&](FrameResult& pass, const PipelineStats&) {
                 pass.stats.update(glossy->statistics());
             },
             &stats);
@@ -181,7 +179,7 @@ class IrradianceCaching final : public Method {
         return result;
     }
 
-    IrradianceCacheOptions options_;
+    PipelineSettings options_;
     bool with_grid_;
     GlossySpec glossy_;
     double time_;  // --time (0: --spp)
@@ -195,12 +193,12 @@ MethodEntry irradiance_cache_method_entry() {
     return method_entry<IrradianceCachingOptions>(
         {.name = "ic",
          .summary = "irradiance caching: records with gradients, neighbor clamping, interpolated",
-         .aovs = {std::begin(kIrradianceCacheAovs), std::end(kIrradianceCacheAovs)},
+         .aovs = {std::begin(kCachePipelineAovs), std::end(kCachePipelineAovs)},
          .table = irradiance_caching_table(),
          .finish = finish_irradiance_caching,
          .check =
              [](const IrradianceCachingOptions& options, const MethodSettings& settings) {
-                 irradiance_record_options(options.records, settings);
+                 pipeline_settings(options.records, settings);
                  refuse_time_with_temporal(options.temporal, settings.time);
                  if (options.with_grid) {
                      ivg_options(options.grid, settings);

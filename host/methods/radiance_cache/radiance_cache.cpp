@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "methods/glossy_mix.h"
+#include "methods/caching/cache_file.h"
+#include "methods/caching/glossy_mix.h"
+#include "methods/caching/record_grid.h"
 #include "methods/radiance_cache/radiance_records.h"
-#include "methods/records/cache_file.h"
-#include "methods/records/record_grid.h"
 #include "methods/scene_arguments.h"
 #include "methods/shared_settings.h"
 #include "shared/sh_rotation_zxz.h"
@@ -137,7 +137,7 @@ shared::RcParams RadianceCache::record_params() const {
     params.strata_n = strata_n_;
     set_kernel_path_settings(options_, &params);
     params.accuracy = options_.accuracy;
-    params.max_weight = kIrradianceCacheMaxWeight;
+    params.max_weight = kRecordMaxWeight;
     params.count_emission = options_.count_emission ? 1 : 0;
     return params;
 }

@@ -1,8 +1,8 @@
 // Radiance caching (DESIGN.md §6.4) as an entry of the glossy-cache registry
-// (methods/glossy_caches.h): `--method ic --glossy rc`, its options --method rc's defaults with the
-// irradiance records' shared settings (share_record_settings), as --method rc makes them.
-#include "methods/glossy_caches.h"
-#include "methods/glossy_method.h"
+// (methods/caching/glossy_caches.h): `--method ic --glossy rc`, its options --method rc's defaults
+// with the irradiance records' shared settings (share_record_settings), as --method rc makes them.
+#include "methods/caching/glossy_caches.h"
+#include "methods/caching/glossy_method.h"
 #include "methods/radiance_cache/radiance_cache.h"
 #include "shared/sh_rotation_zxz.h"
 
@@ -18,7 +18,7 @@ GlossyCacheEntry radiance_cache_glossy_entry() {
         {"radiance_cache/radiance_cache.cl", ""},
         {"radiance_cache/rc_cache.cl", ""},
         {"radiance_cache/rc_record_cells.cl", radiance_source_define(RC_RADIANCE_RECORDS)},
-        {"records/glossy_placement.cl", ""}};
+        {"caching/glossy_placement.cl", ""}};
     // RadianceCache::glossy_samples: the queries and glossy samples, with the splat's x90 table
     // and counter.
     entry.bytes = {

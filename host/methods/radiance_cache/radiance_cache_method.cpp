@@ -4,12 +4,12 @@
 // with its options, whose first level the radiance records' hemisphere rays read at their hits.
 #include <memory>
 
-#include "methods/glossy_method.h"
+#include "methods/caching/glossy_method.h"
+#include "methods/caching/pipeline_memory.h"
+#include "methods/caching/pipeline_options.h"
 #include "methods/method.h"
 #include "methods/radiance_cache/radiance_cache.h"
 #include "methods/radiance_cache/temporal_radiance_cache.h"
-#include "methods/records/ic_memory.h"
-#include "methods/records/ic_options.h"
 #include "methods/temporal/temporal_glossy_method.h"
 #include "methods/temporal/temporal_options.h"
 #include "shared/radiance_cache.h"
@@ -24,7 +24,7 @@ namespace {
 // rc's options: its own, the irradiance records' for the diffuse lobes and temporal caching's.
 struct RadianceCachingOptions {
     RadianceCacheOptions radiance;
-    IrradianceCacheOptions records = irradiance_record_defaults();
+    PipelineSettings records = pipeline_defaults();
     TemporalOptions temporal;
 };
 
@@ -49,7 +49,7 @@ OptionTable<RadianceCachingOptions> radiance_caching_table() {
               "order)");
     OptionTable<RadianceCachingOptions> table;
     table.include(own, &RadianceCachingOptions::radiance)
-        .include(irradiance_record_option_table(), &RadianceCachingOptions::records)
+        .include(pipeline_option_table(), &RadianceCachingOptions::records)
         .include(temporal_option_table(), &RadianceCachingOptions::temporal);
     return table;
 }
@@ -57,12 +57,12 @@ OptionTable<RadianceCachingOptions> radiance_caching_table() {
 // The rules between rc's options: --rc-cache-out's folder writable; with --temporal, no cache
 // files and lifespans by change.
 void finish_radiance_caching(RadianceCachingOptions& options, const ParsedArguments& arguments) {
-    finish_irradiance_record_options(options.records);
+    finish_pipeline_settings(options.records);
     if (!options.radiance.cache_out.empty()) {
         check_writable_parent(options.radiance.cache_out, "--rc-cache-out");
     }
     check_radiance_cache_options(options.radiance);
-    const IrradianceCacheOptions& ic = options.records;
+    const PipelineSettings& ic = options.records;
     const RadianceCacheOptions& rc = options.radiance;
     check_glossy_temporal_options(options.temporal, arguments,
                                   !ic.cache_in.empty() || !ic.cache_out.empty() ||
@@ -72,8 +72,7 @@ void finish_radiance_caching(RadianceCachingOptions& options, const ParsedArgume
 
 // The radiance records' options with the irradiance records' they share (a, the spacing) and
 // the shared settings; Error (exit status 2) for cache files with several frames.
-RadianceCacheOptions radiance_record_options(RadianceCacheOptions rc,
-                                             const IrradianceCacheOptions& ic,
+RadianceCacheOptions radiance_record_options(RadianceCacheOptions rc, const PipelineSettings& ic,
                                              const MethodSettings& settings) {
     share_record_settings(ic, &rc);
     if (settings.frame_count > 1 && (!rc.cache_in.empty() || !rc.cache_out.empty())) {
@@ -85,7 +84,7 @@ RadianceCacheOptions radiance_record_options(RadianceCacheOptions rc,
 class RadianceCaching final : public Method {
    public:
     RadianceCaching(const RadianceCachingOptions& options, const MethodSettings& settings)
-        : ic_(irradiance_record_options(options.records, settings)),
+        : ic_(pipeline_settings(options.records, settings)),
           rc_(radiance_record_options(options.radiance, ic_, settings)),
           time_(settings.time),
           temporal_(temporal_glossy_render<TemporalRadianceCache>(rc_, ic_, options.temporal,
@@ -98,10 +97,10 @@ class RadianceCaching final : public Method {
         // The materials are the same at every frame: their BRDF tables are built once.
         RadianceCache glossy(frame, rc_, tables_);
         tables_ = glossy.tables();
-        IrradianceCacheStats stats;
+        PipelineStats stats;
         FrameResult result = render_with_glossy_cache(
             frame, ic_, glossy, time_, hooks,
-            [&](FrameResult& pass, const IrradianceCacheStats&) {
+            [&](FrameResult& pass, const PipelineStats&) {
                 pass.stats["radiance_cache"] = glossy.statistics();
             },
             &stats);
@@ -112,17 +111,17 @@ class RadianceCaching final : public Method {
         return result;
     }
 
-    // The diffuse records' batches and the final pass (irradiance_cache.h); the radiance
+    // The diffuse records' batches and the final pass (cache_pipeline.h); the radiance
     // records and the glossy buffer stay on the first device. Temporal caching renders on one.
     bool splits_across_devices() const override { return true; }
 
     std::vector<ProgramRequest> programs() const override {
-        std::vector<ProgramRequest> programs = irradiance_cache_programs(ic_, RC_RADIANCE_PATH);
+        std::vector<ProgramRequest> programs = cache_pipeline_programs(ic_, RC_RADIANCE_PATH);
         programs.push_back({"radiance_cache/radiance_cache.cl", ""});
         programs.push_back({"radiance_cache/rc_cache.cl", ""});
         programs.push_back(
             {"radiance_cache/rc_record_cells.cl", radiance_source_define(RC_RADIANCE_RECORDS)});
-        programs.push_back({"records/glossy_placement.cl", ""});
+        programs.push_back({"caching/glossy_placement.cl", ""});
         if (temporal_) {
             programs.push_back({"temporal/temporal.cl", ""});
         }
@@ -135,13 +134,13 @@ class RadianceCaching final : public Method {
         const GlossySampleBytes glossy = {
             sizeof(shared::RcQuery), sizeof(shared::RcGlossySample),
             buffer_bytes(RC_SH_X90_TABLE_SIZE, sizeof(float)) + buffer_bytes(1, sizeof(unsigned))};
-        DeviceMemoryNeed need = irradiance_cache_device_need(ic_, scene, glossy);
+        DeviceMemoryNeed need = cache_pipeline_device_need(ic_, scene, glossy);
         need.excludes += ", the radiance records, their batches and the BRDF tables";
         return need;
     }
 
    private:
-    IrradianceCacheOptions ic_;
+    PipelineSettings ic_;
     RadianceCacheOptions rc_;
     double time_;                                     // --time (0: --spp)
     std::shared_ptr<const BrdfTables> tables_;        // built at the first frame
@@ -161,8 +160,7 @@ MethodEntry radiance_cache_method_entry() {
          .check =
              [](const RadianceCachingOptions& options, const MethodSettings& settings) {
                  radiance_record_options(options.radiance,
-                                         irradiance_record_options(options.records, settings),
-                                         settings);
+                                         pipeline_settings(options.records, settings), settings);
                  refuse_time_with_temporal(options.temporal, settings.time);
              },
          .create =

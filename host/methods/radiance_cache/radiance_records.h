@@ -1,4 +1,4 @@
-// Radiance caching's records in the shared record store (host/methods/records/; DESIGN.md §6.4):
+// Radiance caching's records in the shared record store (host/methods/caching/; DESIGN.md §6.4):
 // the payload of 9 n^2 floats (kernels/shared/records.h: the r, g, b coefficient vectors of
 // order n, then their x and y translational gradients per channel), the radius limit its
 // gradients set, and the payloads as the kernels read them.
@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "methods/records/cache_file.h"
-#include "methods/records/record_store.h"
+#include "methods/caching/cache_file.h"
+#include "methods/caching/record_store.h"
 #include "scene/scene.h"
 
 namespace rc {

@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "methods/caching/glossy_cache.h"
 #include "methods/frame_scene.h"
-#include "methods/glossy_cache.h"
 #include "methods/radiance_cache/radiance_cache.h"
 #include "methods/radiance_cache/tc_radiance_reprojection.h"
 #include "methods/radiance_cache/temporal_radiance_record.h"

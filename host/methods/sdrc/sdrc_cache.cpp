@@ -4,8 +4,8 @@
 #include <cmath>
 #include <thread>
 
-#include "methods/glossy_mix.h"
-#include "methods/records/record_grid.h"
+#include "methods/caching/glossy_mix.h"
+#include "methods/caching/record_grid.h"
 #include "methods/scene_arguments.h"
 #include "methods/shared_settings.h"
 #include "util/error.h"
@@ -100,7 +100,7 @@ shared::SdrcParams SdrcCache::kernel_params(const shared::IcParams& params) cons
     p.max_radius = options_.max_radius;
     set_kernel_path_settings(options_, &p);
     p.accuracy = options_.accuracy;
-    p.max_weight = kIrradianceCacheMaxWeight;
+    p.max_weight = kRecordMaxWeight;
     p.count_emission = options_.count_emission ? 1 : 0;
     return p;
 }

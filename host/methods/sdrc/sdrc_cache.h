@@ -17,11 +17,11 @@
 #include <string>
 #include <vector>
 
+#include "methods/caching/cache_pipeline.h"
+#include "methods/caching/glossy_cache.h"
+#include "methods/caching/glossy_placement.h"
+#include "methods/caching/record_store.h"
 #include "methods/frame_scene.h"
-#include "methods/glossy_cache.h"
-#include "methods/glossy_placement.h"
-#include "methods/records/irradiance_cache.h"
-#include "methods/records/record_store.h"
 #include "methods/sdrc/ltree.h"
 #include "methods/shared_settings.h"
 #include "shared/sdrc.h"

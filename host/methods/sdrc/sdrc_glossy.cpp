@@ -1,10 +1,10 @@
-// SDRC (DESIGN.md §6.5) as an entry of the glossy-cache registry (methods/glossy_caches.h):
+// SDRC (DESIGN.md §6.5) as an entry of the glossy-cache registry (methods/caching/glossy_caches.h):
 // `--method ic --glossy sdrc`, its options --method sdrc's defaults with the irradiance records'
 // shared settings (share_record_settings), as --method sdrc makes them.
 #include <memory>
 
-#include "methods/glossy_caches.h"
-#include "methods/glossy_method.h"
+#include "methods/caching/glossy_caches.h"
+#include "methods/caching/glossy_method.h"
 #include "methods/sdrc/sdrc_cache.h"
 
 namespace rc {
@@ -17,7 +17,7 @@ GlossyCacheEntry sdrc_glossy_entry() {
     entry.create = make_glossy_cache<SdrcCache, SdrcOptions>;
     entry.programs = {{"sdrc/sdrc.cl", ""},
                       {"sdrc/sdrc_trace.cl", radiance_source_define(RC_RADIANCE_RECORDS)},
-                      {"records/glossy_placement.cl", ""}};
+                      {"caching/glossy_placement.cl", ""}};
     // SdrcCache::glossy_samples: the queries and glossy samples.
     entry.bytes = {sizeof(shared::RcQuery), sizeof(shared::RcGlossySample), 0};
     entry.excludes = "the SDRC records, their batches and their L-trees";

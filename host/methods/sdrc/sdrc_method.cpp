@@ -5,10 +5,10 @@
 // across frames (TemporalSdrcCache driven by TemporalIrradianceCache, as `rc --temporal`).
 #include <memory>
 
-#include "methods/glossy_method.h"
+#include "methods/caching/glossy_method.h"
+#include "methods/caching/pipeline_memory.h"
+#include "methods/caching/pipeline_options.h"
 #include "methods/method.h"
-#include "methods/records/ic_memory.h"
-#include "methods/records/ic_options.h"
 #include "methods/sdrc/sdrc_cache.h"
 #include "methods/sdrc/temporal_sdrc_cache.h"
 #include "methods/temporal/temporal_glossy_method.h"
@@ -23,7 +23,7 @@ namespace {
 // sdrc's options: its own, the irradiance records' for the diffuse lobes and temporal caching's.
 struct SdrcMethodOptions {
     SdrcOptions sdrc;
-    IrradianceCacheOptions records = irradiance_record_defaults();
+    PipelineSettings records = pipeline_defaults();
     TemporalOptions temporal;
 };
 
@@ -46,15 +46,15 @@ OptionTable<SdrcMethodOptions> sdrc_option_table() {
         .unit("MiB");
     OptionTable<SdrcMethodOptions> table;
     table.include(own, &SdrcMethodOptions::sdrc)
-        .include(irradiance_record_option_table(), &SdrcMethodOptions::records)
+        .include(pipeline_option_table(), &SdrcMethodOptions::records)
         .include(temporal_option_table(), &SdrcMethodOptions::temporal);
     return table;
 }
 
 // The rules between sdrc's options: with --temporal, no cache files and lifespans by change.
 void finish_sdrc(SdrcMethodOptions& options, const ParsedArguments& arguments) {
-    finish_irradiance_record_options(options.records);
-    const IrradianceCacheOptions& ic = options.records;
+    finish_pipeline_settings(options.records);
+    const PipelineSettings& ic = options.records;
     check_glossy_temporal_options(options.temporal, arguments,
                                   !ic.cache_in.empty() || !ic.cache_out.empty(),
                                   "--cache-in/--cache-out");
@@ -62,7 +62,7 @@ void finish_sdrc(SdrcMethodOptions& options, const ParsedArguments& arguments) {
 
 // SDRC's options with the irradiance records' they share (a, the spacing) and the shared
 // settings.
-SdrcOptions sdrc_options(SdrcOptions sdrc, const IrradianceCacheOptions& ic) {
+SdrcOptions sdrc_options(SdrcOptions sdrc, const PipelineSettings& ic) {
     share_record_settings(ic, &sdrc);
     return sdrc;
 }
@@ -71,7 +71,7 @@ class SpatialDirectionalRadianceCaching final : public Method {
    public:
     SpatialDirectionalRadianceCaching(const SdrcMethodOptions& options,
                                       const MethodSettings& settings)
-        : ic_(irradiance_record_options(options.records, settings)),
+        : ic_(pipeline_settings(options.records, settings)),
           sdrc_(sdrc_options(options.sdrc, ic_)),
           time_(settings.time),
           temporal_(
@@ -82,10 +82,10 @@ class SpatialDirectionalRadianceCaching final : public Method {
             return temporal_->render_frame(frame, hooks, "SDRC");
         }
         SdrcCache glossy(frame, sdrc_);
-        IrradianceCacheStats stats;
+        PipelineStats stats;
         FrameResult result = render_with_glossy_cache(
             frame, ic_, glossy, time_, hooks,
-            [&](FrameResult& pass, const IrradianceCacheStats&) {
+            [&](FrameResult& pass, const PipelineStats&) {
                 pass.stats["sdrc"] = glossy.statistics();
             },
             &stats);
@@ -100,15 +100,15 @@ class SpatialDirectionalRadianceCaching final : public Method {
         return result;
     }
 
-    // The diffuse records' batches and the final pass (irradiance_cache.h); the SDRC records,
+    // The diffuse records' batches and the final pass (cache_pipeline.h); the SDRC records,
     // L-trees and the glossy buffer stay on the first device.
     bool splits_across_devices() const override { return true; }
 
     std::vector<ProgramRequest> programs() const override {
-        std::vector<ProgramRequest> programs = irradiance_cache_programs(ic_, RC_RADIANCE_PATH);
+        std::vector<ProgramRequest> programs = cache_pipeline_programs(ic_, RC_RADIANCE_PATH);
         programs.push_back({"sdrc/sdrc.cl", ""});
         programs.push_back({"sdrc/sdrc_trace.cl", radiance_source_define(RC_RADIANCE_RECORDS)});
-        programs.push_back({"records/glossy_placement.cl", ""});
+        programs.push_back({"caching/glossy_placement.cl", ""});
         if (temporal_) {
             programs.push_back({"temporal/temporal.cl", ""});
         }
@@ -119,13 +119,13 @@ class SpatialDirectionalRadianceCaching final : public Method {
         // SdrcCache::glossy_samples: the queries and glossy samples.
         const GlossySampleBytes glossy = {sizeof(shared::RcQuery), sizeof(shared::RcGlossySample),
                                           0};
-        DeviceMemoryNeed need = irradiance_cache_device_need(ic_, scene, glossy);
+        DeviceMemoryNeed need = cache_pipeline_device_need(ic_, scene, glossy);
         need.excludes += ", the SDRC records, their batches and their L-trees";
         return need;
     }
 
    private:
-    IrradianceCacheOptions ic_;
+    PipelineSettings ic_;
     SdrcOptions sdrc_;
     double time_;                                     // --time (0: --spp)
     std::unique_ptr<TemporalGlossyRender> temporal_;  // with --temporal
@@ -144,7 +144,7 @@ MethodEntry sdrc_method_entry() {
          .finish = finish_sdrc,
          .check =
              [](const SdrcMethodOptions& options, const MethodSettings& settings) {
-                 irradiance_record_options(options.records, settings);
+                 pipeline_settings(options.records, settings);
                  refuse_time_with_temporal(options.temporal, settings.time);
              },
          .create =

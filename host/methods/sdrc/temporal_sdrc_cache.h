@@ -14,8 +14,8 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "methods/caching/glossy_cache.h"
 #include "methods/frame_scene.h"
-#include "methods/glossy_cache.h"
 #include "methods/sdrc/sdrc_cache.h"
 #include "methods/temporal/tc_motion.h"
 #include "methods/temporal/temporal_glossy.h"

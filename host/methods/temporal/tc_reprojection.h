@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "device/buffer.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/frame_scene.h"
-#include "methods/records/irradiance_cache.h"
 #include "methods/temporal/tc_cells.h"
 #include "methods/temporal/tc_motion.h"
 #include "shared/temporal.h"

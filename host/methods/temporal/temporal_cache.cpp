@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
-#include "methods/records/ic_stats.h"
-#include "methods/records/record_level_source.h"
+#include "methods/caching/pipeline_stats.h"
+#include "methods/caching/record_level_source.h"
 #include "util/error.h"
 #include "util/timing.h"
 
@@ -49,9 +49,8 @@ class ReprojectionPair final : public RecordBatchObserver {
 
 }  // namespace
 
-TemporalIrradianceCache::TemporalIrradianceCache(IrradianceCacheOptions ic,
-                                                 TemporalOptions temporal, int first_frame,
-                                                 int frame_count)
+TemporalIrradianceCache::TemporalIrradianceCache(PipelineSettings ic, TemporalOptions temporal,
+                                                 int first_frame, int frame_count)
     : ic_(std::move(ic)),
       temporal_(temporal),
       first_frame_(first_frame),
@@ -85,7 +84,7 @@ RecordStore TemporalIrradianceCache::serving_store(int level, int frame,
         std::move(host));
 }
 
-std::vector<size_t> TemporalIrradianceCache::still_used(IrradianceCache& cache,
+std::vector<size_t> TemporalIrradianceCache::still_used(CachePipeline& cache,
                                                         const std::vector<size_t>& expired) {
     const std::vector<TemporalRecord>& records = levels_[0].records;
     std::vector<size_t> candidates;
@@ -218,20 +217,21 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
     next_->set_frame(static_cast<double>(t) + 1.0);
     TemporalReprojection reprojection(frame, *next_, temporal_.hole_passes);
     stats.moving_primitives = reprojection.moving_primitives();
-    IrradianceCache cache(frame);
-    IrradianceCacheOptions options = ic_;
+    PipelineSettings options = ic_;
     const std::unique_ptr<TemporalReprojection> two_frames = two_frames_ahead(frame);
     ReprojectionPair observers(reprojection, two_frames.get());
-    options.observer = &observers;
+    PipelinePlugins plugins;
+    plugins.observer = &observers;
     std::vector<uint8_t> moving = moving_into_or_out(reprojection);
     const bool still = reprojection.still();
     if (!still) {
         end_still_records(t);
     }
     if (!temporal_.cache_moving_hits) {
-        options.uncached_primitives = std::move(moving);
+        plugins.uncached_primitives = std::move(moving);
     }
     options.records_overlay = false;
+    CachePipeline cache(frame, std::move(plugins));
     cache.begin(options);
 
     // Every level's serving records stay. An expired first-level record is computed again in
@@ -297,7 +297,7 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
         now.push_back({id, placed.records()[i], placed.host_data()[i]});
     }
     stats.records = now.size();
-    const IrradianceCacheStats placement = cache.current_stats();
+    const PipelineStats placement = cache.current_stats();
     stats.record_rays = placement.record_rays;
     stats.placement = placement;
     stats.placement_seconds = seconds_since(start);
@@ -307,8 +307,7 @@ void TemporalIrradianceCache::place_frame(const FrameScene& frame) {
     frame_stats_.push_back(stats);
     // The glossy lobes' radiance records, whose hemisphere rays read this frame's first level.
     if (glossy_ != nullptr) {
-        const RecordLevelSource first_level(frame.context, cache.store(0),
-                                            kIrradianceCacheMaxWeight);
+        const RecordLevelSource first_level(frame.context, cache.store(0), kRecordMaxWeight);
         glossy_->place_frame(frame, reprojection.motion(), cache.first_level_params(),
                              cache.camera(), first_level);
     }
@@ -352,21 +351,20 @@ FrameResult TemporalIrradianceCache::shade_frame(const FrameScene& frame) {
             return temporal_payload(r, successor, t, gradients);
         },
         std::move(shared_parts), std::move(host));
-    IrradianceCacheOptions options = ic_;
+    PipelineSettings options = ic_;
     std::unique_ptr<GlossyCache> glossy;
     if (glossy_ != nullptr) {
         glossy = glossy_->shading(frame);
-        options.glossy = glossy.get();
     }
-    IrradianceCache cache(frame);
+    CachePipeline cache(frame, {.lobes = glossy.get()});
     cache.begin(options);
     cache.set_records(0, std::move(store), 0);
-    IrradianceCacheStats stats;
+    PipelineStats stats;
     FrameResult result;
     result.image = cache.finish(options, &stats);
     result.spp = ic_.spp;
     const TemporalFrameStats& placed = frame_stats_[static_cast<size_t>(t - first_frame_)];
-    IrradianceCacheStats combined = placed.placement;
+    PipelineStats combined = placed.placement;
     combined.gbuffer_seconds += stats.gbuffer_seconds;
     combined.splatting_seconds = stats.splatting_seconds;
     combined.shading_seconds = stats.shading_seconds;

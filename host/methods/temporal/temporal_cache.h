@@ -15,8 +15,8 @@
 #include <optional>
 #include <vector>
 
+#include "methods/caching/cache_pipeline.h"
 #include "methods/method.h"
-#include "methods/records/irradiance_cache.h"
 #include "methods/temporal/tc_reprojection.h"
 #include "methods/temporal/temporal_glossy.h"
 #include "methods/temporal/temporal_options.h"
@@ -47,14 +47,14 @@ struct TemporalFrameStats {
     double placement_seconds = 0.0;          // pass 1: G-buffer, reprojection, placement, records
     double reprojection_seconds = 0.0;       // of which the reprojections (both with departure)
     double usage_seconds = 0.0;              // of which the test of expired records' use
-    IrradianceCacheStats placement;          // irradiance caching's figures of pass 1
+    PipelineStats placement;                 // irradiance caching's figures of pass 1
     std::vector<TemporalLevelStats> deeper;  // levels 1, 2, ...
 };
 
 class TemporalIrradianceCache {
    public:
     // Frames first_frame .. first_frame + frame_count - 1 will be asked for, in order.
-    TemporalIrradianceCache(IrradianceCacheOptions ic, TemporalOptions temporal, int first_frame,
+    TemporalIrradianceCache(PipelineSettings ic, TemporalOptions temporal, int first_frame,
                             int frame_count);
     // With `glossy` (`--method rc --temporal`), the glossy lobes come from its radiance records:
     // placed in pass 1 after each frame's irradiance records, read in pass 2.
@@ -95,7 +95,7 @@ class TemporalIrradianceCache {
     RecordStore serving_store(int level, int frame, std::vector<size_t>* serving,
                               std::vector<size_t>* expired) const;
     // The first level's expired records that still serve the image of `cache`'s G-buffer.
-    std::vector<size_t> still_used(IrradianceCache& cache, const std::vector<size_t>& expired);
+    std::vector<size_t> still_used(CachePipeline& cache, const std::vector<size_t>& expired);
     // After placement at `frame`: `level`'s serving records as neighbor clamping left them in
     // `placed` (its first serving.size() records), and its new records (the rest, observed as
     // `carried`) with their lifespans; the new records from `replaced.size()` on are
@@ -117,7 +117,7 @@ class TemporalIrradianceCache {
     // Pass 2 at one frame: the image from the records serving it, their values at that frame.
     FrameResult shade_frame(const FrameScene& frame);
 
-    IrradianceCacheOptions ic_;
+    PipelineSettings ic_;
     TemporalOptions temporal_;
     int first_frame_;
     int last_frame_;

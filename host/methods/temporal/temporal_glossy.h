@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "methods/caching/glossy_cache.h"
 #include "methods/frame_scene.h"
-#include "methods/glossy_cache.h"
 #include "methods/radiance_source.h"
 #include "methods/temporal/tc_motion.h"
 #include "shared/types.h"

@@ -29,7 +29,7 @@ int temporal_last_frame(const MethodSettings& settings) {
 }
 
 TemporalGlossyRender::TemporalGlossyRender(std::unique_ptr<TemporalGlossyRecords> glossy,
-                                           const IrradianceCacheOptions& ic,
+                                           const PipelineSettings& ic,
                                            const TemporalOptions& temporal,
                                            const MethodSettings& settings)
     : glossy_(std::move(glossy)), cache_(ic, temporal, settings.first_frame, settings.frame_count) {

@@ -6,8 +6,8 @@
 #include <memory>
 #include <string>
 
+#include "methods/caching/cache_pipeline.h"
 #include "methods/method.h"
-#include "methods/records/irradiance_cache.h"
 #include "methods/temporal/temporal_cache.h"
 #include "methods/temporal/temporal_glossy.h"
 #include "methods/temporal/temporal_options.h"
@@ -28,9 +28,8 @@ int temporal_last_frame(const MethodSettings& settings);
 // Temporal irradiance caching with `glossy`'s records serving the specular lobes.
 class TemporalGlossyRender {
    public:
-    TemporalGlossyRender(std::unique_ptr<TemporalGlossyRecords> glossy,
-                         const IrradianceCacheOptions& ic, const TemporalOptions& temporal,
-                         const MethodSettings& settings);
+    TemporalGlossyRender(std::unique_ptr<TemporalGlossyRecords> glossy, const PipelineSettings& ic,
+                         const TemporalOptions& temporal, const MethodSettings& settings);
 
     // One frame (in order; on one device), its records' counts logged, the glossy records
     // named `records` ("radiance", "SDRC").
@@ -47,7 +46,7 @@ class TemporalGlossyRender {
 // frame)); else null.
 template <class Records, class GlossyOptions>
 std::unique_ptr<TemporalGlossyRender> temporal_glossy_render(const GlossyOptions& glossy,
-                                                             const IrradianceCacheOptions& ic,
+                                                             const PipelineSettings& ic,
                                                              const TemporalOptions& temporal,
                                                              const MethodSettings& settings) {
     if (!temporal.enabled) {

@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "methods/records/record_store.h"
+#include "methods/caching/record_store.h"
 #include "methods/temporal/temporal_options.h"
 #include "shared/radiance_cache.h"
 

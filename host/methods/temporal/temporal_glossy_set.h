@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "methods/records/record_store.h"
+#include "methods/caching/record_store.h"
 #include "methods/temporal/temporal_glossy.h"
 #include "methods/temporal/temporal_glossy_record.h"
 #include "methods/temporal/temporal_options.h"

@@ -4,8 +4,8 @@
 // from which its value at any frame it serves follows (temporal gradients).
 #pragma once
 
-#include "methods/records/irradiance_cache.h"
-#include "methods/records/irradiance_records.h"
+#include "methods/caching/cache_pipeline.h"
+#include "methods/caching/irradiance_records.h"
 #include "methods/temporal/temporal_lifespan.h"
 #include "methods/temporal/temporal_options.h"
 
