@@ -8,7 +8,7 @@
 
 typedef RecordCache RadianceSource;
 
-// As host/methods/records/record_level_source.h binds them.
+// As host/methods/caching/record_level_source.h binds them.
 #define RC_RADIANCE_SOURCE_PARAMETERS                                                   \
     RecordGrid level_grid, RC_GLOBAL const int *level_cell_start,                       \
         RC_GLOBAL const int *level_cell_records, RC_GLOBAL const Record *level_records, \

@@ -1,7 +1,7 @@
 // Radiance cache splatting (course, "Radiance Cache Splatting", §4.1 Algorithm 1 and §4.2
 // Algorithm 2) as the camera samples read it: the host splats every record's influence sphere
 // (radius a R, eq. 4) onto the image as the bounding rectangle of its projection, into the screen
-// tiles it covers, in record order (host/methods/records/splat_tiles.h); a camera sample
+// tiles it covers, in record order (host/methods/caching/splat_tiles.h); a camera sample
 // accumulates the weighted contribution w E' (eqs. 2 and 8, with the "Weighting Function
 // Revisited" shift) of its tile's records in that order into the splat buffer (sum w E', sum w):
 // the sums a GPU's ordered blending of the records' quads gives, without atomics.

@@ -1,4 +1,4 @@
-// Entry kernels of irradiance caching (host/methods/records/irradiance_cache.cpp): the
+// Entry kernels of irradiance caching (host/methods/caching/cache_pipeline.cpp): the
 // G-buffer, the hemisphere hits a deeper level must cover, the reduction of a record's hemisphere
 // samples (the sampling itself: ic_record_cells.cl), record gathering (coverage and
 // interpolation), and the final shading pass.

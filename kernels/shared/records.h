@@ -1,7 +1,7 @@
 // The records of the caching methods (DESIGN.md §2, §6.2-6.5) as the host and the kernels share
 // them. A record has two parts, kept in two arrays with the same index:
 //   - Record, the part every caching method shares: where the record is, its normal and how far
-//     it reaches (the validity radius R). The record store (host/methods/records/), its record
+//     it reaches (the validity radius R). The record store (host/methods/caching/), its record
 //     grid and its cache file see only this part and the payload's size.
 //   - the method's payload, what the record knows about the light: record i's payload is entry i
 //     of the method's payload array. A fixed-size payload is a struct (IrradiancePayload, an
@@ -52,7 +52,7 @@ typedef struct RecordGrid {
 // Pixels per side of radiance cache splatting's screen tiles.
 #define RC_SPLAT_TILE_SIZE 8
 
-// Radiance cache splatting's screen tiles (host/methods/records/splat_tiles.h): the
+// Radiance cache splatting's screen tiles (host/methods/caching/splat_tiles.h): the
 // image in tiles of tile_size pixels, tile (tx, ty) listing the records whose influence sphere's
 // projection touches it as tile_records[tile_start[t] .. tile_start[t + 1]), t = ty tiles_x + tx.
 typedef struct SplatTileGrid {
