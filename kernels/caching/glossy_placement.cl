@@ -1,8 +1,8 @@
 // Entry kernels of the glossy caches' record placement (host/methods/glossy_placement.h): which
 // camera samples a glossy cache serves, and which of them no record covers yet. Shared by
 // radiance caching and SDRC (DESIGN.md §6.4, §6.5). Item index: begin + get_global_id(0).
-#include "common/kernel_range.h"
 #include "caching/irradiance_records.h"
+#include "common/kernel_range.h"
 #include "shared/radiance_cache.h"
 
 // Item i: query i appended to `served` (counted in counts[0], in any order) when its order is

@@ -3,11 +3,11 @@
 // hit comes from a cache level.
 #pragma once
 
+#include "caching/irradiance_records.h"
 #include "common/cached_radiance.h"
 #include "common/camera.h"
 #include "common/camera_film.h"
 #include "common/pixel_sampler.h"
-#include "caching/irradiance_records.h"
 #include "shared/radiance_cache.h"
 
 // World size of a pixel at distance t along the camera ray through pixel (x, y).

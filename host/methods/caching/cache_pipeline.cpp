@@ -28,7 +28,7 @@
 namespace rc {
 
 const char* const kCachePipelineAovs[7] = {"beauty", "direct",   "indirect", "albedo",
-                                             "normal", "coverage", "records"};
+                                           "normal", "coverage", "records"};
 
 namespace {
 
@@ -132,9 +132,9 @@ shared::IcParams CachePipeline::level_params(int level) const {
 }
 
 std::vector<ComputedRecord> CachePipeline::compute_records(const std::vector<RecordSite>& sites,
-                                                             uint32_t first_index,
-                                                             const RecordSampling& sampling,
-                                                             uint64_t* rays) {
+                                                           uint32_t first_index,
+                                                           const RecordSampling& sampling,
+                                                           uint64_t* rays) {
     reset(sampling);
     next_streams_[0] = first_index;
     std::vector<ComputedRecord> computed = compute_level(0, sites);
@@ -145,7 +145,7 @@ std::vector<ComputedRecord> CachePipeline::compute_records(const std::vector<Rec
 }
 
 std::vector<ComputedRecord> CachePipeline::compute_level(int level,
-                                                           const std::vector<RecordSite>& sites) {
+                                                         const std::vector<RecordSite>& sites) {
     std::vector<ComputedRecord> computed;
     computed.reserve(sites.size());
     const bool cached = level + 1 < sampling_.levels;
@@ -171,8 +171,8 @@ std::vector<ComputedRecord> CachePipeline::compute_level(int level,
         }
         const RecordBatchInput batch{params, records, origins, streams};
         const RecordStore* next = cached ? &stores_[static_cast<size_t>(level) + 1] : nullptr;
-        const bool shared_batch =
-            split_ && plugins_.observer == nullptr && (next != nullptr || sampling_.source == nullptr);
+        const bool shared_batch = split_ && plugins_.observer == nullptr &&
+                                  (next != nullptr || sampling_.source == nullptr);
         // The batch on the first device: for its hits, or for all of it.
         std::optional<BatchBuffers> here;
         if (cached || !shared_batch) {
@@ -219,8 +219,8 @@ CachePipeline::BatchBuffers::BatchBuffers(Context& context, const RecordBatchInp
       streams(context, batch.streams, "ic_batch_streams") {}
 
 RecordBatchOutput CachePipeline::compute_batch(const RecordBatchInput& batch,
-                                                 const BatchBuffers& buffers,
-                                                 const RecordStore* next, const RecordSite* sites) {
+                                               const BatchBuffers& buffers, const RecordStore* next,
+                                               const RecordSite* sites) {
     const size_t count = batch.records.size();
     const size_t per_record = static_cast<size_t>(batch.params.strata_m) * batch.params.strata_n;
     const Buffer<shared::Record>& record_buffer = buffers.records;
@@ -245,8 +245,9 @@ RecordBatchOutput CachePipeline::compute_batch(const RecordBatchInput& batch,
     context_.launch(reduce_kernel_, count, batch.params, cells, record_buffer, stream_buffer,
                     payload_buffer, distances);
     if (plugins_.observer != nullptr) {
-        plugins_.observer->observe({batch.params, record_buffer, batch.records.data(), origin_buffer,
-                            stream_buffer, batch.streams.data(), cells, sites, count});
+        plugins_.observer->observe({batch.params, record_buffer, batch.records.data(),
+                                    origin_buffer, stream_buffer, batch.streams.data(), cells,
+                                    sites, count});
     }
     RecordBatchOutput out;
     out.payloads = payload_buffer.download();
@@ -271,11 +272,11 @@ shared::IcParams CachePipeline::candidate_params(int level, Candidates placement
 }
 
 Buffer<shared::float4> CachePipeline::weighted_sums(const RecordStore& store,
-                                                      const DeviceRecords& records,
-                                                      const Buffer<shared::GBufferSample>& samples,
-                                                      const shared::IcParams& params,
-                                                      size_t candidates,
-                                                      const shared::CameraParams* camera) {
+                                                    const DeviceRecords& records,
+                                                    const Buffer<shared::GBufferSample>& samples,
+                                                    const shared::IcParams& params,
+                                                    size_t candidates,
+                                                    const shared::CameraParams* camera) {
     Buffer<shared::float4> sums(context_, candidates, "ic_sums");
     if (camera != nullptr) {
         const DeviceSplat splat(context_, store, *camera, &tile_depths_);
@@ -289,8 +290,8 @@ Buffer<shared::float4> CachePipeline::weighted_sums(const RecordStore& store,
 }
 
 void CachePipeline::measure_tile_depths(const Buffer<shared::GBufferSample>& samples,
-                                          const shared::IcParams& params,
-                                          const shared::CameraParams& camera) {
+                                        const shared::IcParams& params,
+                                        const shared::CameraParams& camera) {
     const shared::SplatTileGrid tiles = {
         RC_SPLAT_TILE_SIZE, (params.width + RC_SPLAT_TILE_SIZE - 1) / RC_SPLAT_TILE_SIZE,
         (params.height + RC_SPLAT_TILE_SIZE - 1) / RC_SPLAT_TILE_SIZE, 0};
@@ -305,7 +306,8 @@ void CachePipeline::drop_uncached(std::vector<shared::GBufferSample>* hits) cons
         return;
     }
     const auto uncached = [&](const shared::GBufferSample& g) {
-        return g.primitive >= 0 && static_cast<size_t>(g.primitive) < plugins_.uncached_primitives.size() &&
+        return g.primitive >= 0 &&
+               static_cast<size_t>(g.primitive) < plugins_.uncached_primitives.size() &&
                plugins_.uncached_primitives[static_cast<size_t>(g.primitive)] != 0;
     };
     hits->erase(std::remove_if(hits->begin(), hits->end(), uncached), hits->end());
@@ -365,7 +367,7 @@ std::vector<shared::GBufferSample> CachePipeline::uncovered_samples(
 }
 
 void CachePipeline::cover(int level, const Buffer<shared::GBufferSample>& samples,
-                            Candidates placement, size_t candidates, bool until_covered) {
+                          Candidates placement, size_t candidates, bool until_covered) {
     const shared::IcParams params = candidate_params(level, placement);
     const float a = sampling_.accuracy;
     const bool timed = level == 0;
@@ -455,8 +457,7 @@ namespace {
 
 // Error (exit status 2) for options render() cannot honour; `samples` camera samples in all.
 // `beyond`: the plug-in the last level's hemisphere rays read.
-void check_options(const PipelineSettings& options, const RadianceSource* beyond,
-                   size_t samples) {
+void check_options(const PipelineSettings& options, const RadianceSource* beyond, size_t samples) {
     if (options.spp < 1) {
         throw Error("irradiance caching needs at least one camera sample per pixel", kExitUsage);
     }
@@ -488,7 +489,7 @@ void check_options(const PipelineSettings& options, const RadianceSource* beyond
 }  // namespace
 
 std::vector<ProgramRequest> cache_pipeline_programs(const PipelineSettings& options,
-                                                      int last_source) {
+                                                    int last_source) {
     std::vector<ProgramRequest> programs = {{"irradiance_cache/irradiance_cache.cl", ""}};
     if (options.bounces > 1) {
         programs.push_back(
@@ -577,8 +578,8 @@ void CachePipeline::place() {
 }
 
 std::vector<shared::float4> CachePipeline::shade(const shared::IcParams& params,
-                                                   bool records_overlay,
-                                                   const Buffer<shared::RcGlossySample>& glossy) {
+                                                 bool records_overlay,
+                                                 const Buffer<shared::RcGlossySample>& glossy) {
     const size_t pixels = static_cast<size_t>(width_) * height_;
     const size_t samples = pixels * static_cast<size_t>(camera_spp_);
     // The splat buffer: every record splatted over every camera sample. The records go to the
@@ -634,7 +635,7 @@ void CachePipeline::begin(const PipelineSettings& options) {
 }
 
 void CachePipeline::sample_camera(const PipelineSettings& options,
-                                    const std::function<void()>& checked) {
+                                  const std::function<void()>& checked) {
     width_ = options.width > 0 ? options.width : scene_.camera.width;
     height_ = options.height > 0 ? options.height : scene_.camera.height;
     const size_t samples = static_cast<size_t>(width_) * height_ * std::max(options.spp, 0);
@@ -706,8 +707,7 @@ Image CachePipeline::finish(PipelineSettings options, PipelineStats* stats) {
     return image;
 }
 
-Image CachePipeline::render_more(const PipelineSettings& options,
-                                   PipelineStats* stats) {
+Image CachePipeline::render_more(const PipelineSettings& options, PipelineStats* stats) {
     restart_stats();
     sample_camera(options);
     place();

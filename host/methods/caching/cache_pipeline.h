@@ -14,12 +14,12 @@
 #include <vector>
 
 #include "image/image.h"
-#include "methods/frame_scene.h"
 #include "methods/caching/glossy_cache.h"
-#include "methods/radiance_source.h"
-#include "methods/caching/pipeline_device_split.h"
 #include "methods/caching/irradiance_records.h"
+#include "methods/caching/pipeline_device_split.h"
 #include "methods/caching/pipeline_plugins.h"
+#include "methods/frame_scene.h"
+#include "methods/radiance_source.h"
 #include "methods/shared_settings.h"
 
 namespace rc {
@@ -69,9 +69,9 @@ struct PlacementPass {
 struct PipelineStats {
     std::vector<PlacementPass> passes;
     std::vector<PipelineDeviceShare> devices;  // with peers: per device, its share of the work
-    std::vector<size_t> level_records;   // in each level's cache at the end (loaded ones included)
-    size_t records = 0;                  // in the first level at the end
-    size_t loaded_records = 0;           // all levels
+    std::vector<size_t> level_records;  // in each level's cache at the end (loaded ones included)
+    size_t records = 0;                 // in the first level at the end
+    size_t loaded_records = 0;          // all levels
     int strata_m = 0;
     int strata_n = 0;
     int deeper_strata_m = 0;  // of the deeper levels' records
@@ -160,7 +160,7 @@ struct RecordSampling {
 // sampling's for each level's source (the next level's records; at the last level `last_source`,
 // RC_RADIANCE_PATH, or RC_RADIANCE_GRID with --ic-ivg).
 std::vector<ProgramRequest> cache_pipeline_programs(const PipelineSettings& options,
-                                                      int last_source);
+                                                    int last_source);
 
 // M x N strata with N ~ pi M and M N close to `rays`, at every level.
 RecordSampling strata_for(int rays);
@@ -171,11 +171,10 @@ class CachePipeline : private FrameBound {
    public:
     // With the frame's peers (several devices), the record batches' hemisphere sampling (but
     // where the hemisphere rays read PipelinePlugins::beyond, or an observer sees the
-    // batches) and the final pass are shared among the devices (pipeline_device_split.h); placement and
-    // insertion stay on the first device and the host. The image is bitwise the one-device image
-    // on identical devices.
-    // `plugins`: what the pipeline reads beyond its records and who sees its batches, for
-    // every frame this pipeline renders.
+    // batches) and the final pass are shared among the devices (pipeline_device_split.h); placement
+    // and insertion stay on the first device and the host. The image is bitwise the one-device
+    // image on identical devices. `plugins`: what the pipeline reads beyond its records and who
+    // sees its batches, for every frame this pipeline renders.
     explicit CachePipeline(const FrameScene& frame, PipelinePlugins plugins = {});
 
     // begin(), the placement (from options.cache_in's records when given; saved to
@@ -302,8 +301,8 @@ class CachePipeline : private FrameBound {
         Buffer<unsigned> streams;
     };
     // A batch's payloads and distances computed on the first device (`buffers`: the batch
-    // there; shown to plugins_.observer with its `sites`); `next`: the level below, read at the hits
-    // (null: sampling_.source or path-traced continuation).
+    // there; shown to plugins_.observer with its `sites`); `next`: the level below, read at the
+    // hits (null: sampling_.source or path-traced continuation).
     RecordBatchOutput compute_batch(const RecordBatchInput& batch, const BatchBuffers& buffers,
                                     const RecordStore* next, const RecordSite* sites);
     shared::IcParams level_params(int level) const;

@@ -1,8 +1,8 @@
 // The glossy caches a render by irradiance caching can serve specular lobes with (`--method ic
-// --glossy`, methods/caching/glossy_spec.h; the caches of `--method rc` and `--method sdrc`), listed in one
-// place, glossy_caches.cpp; each entry is defined in its method's folder. A cache is made per
-// frame from the irradiance records' options (its own at their defaults, with the record settings
-// it shares, share_record_settings) and the set of materials it serves.
+// --glossy`, methods/caching/glossy_spec.h; the caches of `--method rc` and `--method sdrc`),
+// listed in one place, glossy_caches.cpp; each entry is defined in its method's folder. A cache is
+// made per frame from the irradiance records' options (its own at their defaults, with the record
+// settings it shares, share_record_settings) and the set of materials it serves.
 #pragma once
 
 #include <functional>
@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "device/program.h"
-#include "methods/frame_scene.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/caching/glossy_cache.h"
 #include "methods/caching/pipeline_memory.h"
-#include "methods/caching/cache_pipeline.h"
+#include "methods/frame_scene.h"
 
 namespace rc {
 
@@ -24,8 +24,8 @@ struct GlossyCacheEntry {
     std::string stats_key;  // its statistics' key in a frame's statistics
     // Its cache for `frame`, serving the materials `served` marks (per scene material; empty:
     // every material with a specular lobe), its options the defaults with those `ic` shares.
-    std::function<std::unique_ptr<GlossyCache>(
-        const FrameScene& frame, const PipelineSettings& ic, const ServedMaterials& served)>
+    std::function<std::unique_ptr<GlossyCache>(const FrameScene& frame, const PipelineSettings& ic,
+                                               const ServedMaterials& served)>
         create;
     std::vector<ProgramRequest> programs;  // beyond irradiance caching's (Method::programs)
     GlossySampleBytes bytes;               // its per-sample buffers (Method::device_memory_need)

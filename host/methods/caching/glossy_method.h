@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "methods/caching/glossy_cache.h"
-#include "methods/method.h"
 #include "methods/caching/cache_pipeline.h"
+#include "methods/caching/glossy_cache.h"
 #include "methods/caching/record_passes.h"
+#include "methods/method.h"
 
 namespace rc {
 
@@ -26,12 +26,11 @@ void share_record_settings(const PipelineSettings& ic, GlossyOptions* glossy) {
     glossy->share(ic);
 }
 
-// A glossy cache of type Cache for `frame` (GlossyCacheEntry::create, methods/caching/glossy_caches.h):
-// its options `Options` at their defaults with the settings it takes from the irradiance
-// records' (share_record_settings), serving the materials `served` marks.
+// A glossy cache of type Cache for `frame` (GlossyCacheEntry::create,
+// methods/caching/glossy_caches.h): its options `Options` at their defaults with the settings it
+// takes from the irradiance records' (share_record_settings), serving the materials `served` marks.
 template <class Cache, class Options>
-std::unique_ptr<GlossyCache> make_glossy_cache(const FrameScene& frame,
-                                               const PipelineSettings& ic,
+std::unique_ptr<GlossyCache> make_glossy_cache(const FrameScene& frame, const PipelineSettings& ic,
                                                const ServedMaterials& served) {
     Options options;
     share_record_settings(ic, &options);

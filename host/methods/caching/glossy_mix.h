@@ -1,6 +1,6 @@
 // Several glossy caches serving the materials of one scene in one render by irradiance caching
-// (`--method ic --glossy`, methods/caching/glossy_spec.h): each cache serves its set of materials (its
-// camera samples on the others are left alone, so it places no records for them), and the mix
+// (`--method ic --glossy`, methods/caching/glossy_spec.h): each cache serves its set of materials
+// (its camera samples on the others are left alone, so it places no records for them), and the mix
 // merges their glossy buffers into the one the render pass reads, each camera sample's entry from
 // the cache that serves its material (kernels/caching/glossy_mix.cl). Deterministic: the merge
 // writes each entry from at most one cache.

@@ -48,8 +48,8 @@ std::vector<uint8_t> GlossyPlacement::records_used(const Buffer<shared::RcQuery>
     const Buffer<int> cell_records(context_, data.cell_records, "glossy_used_cell_records");
     Buffer<unsigned> used(context_, store.size(), "glossy_records_used");
     used.fill_zero();
-    context_.launch(used_kernel_, queries.size(), store.accuracy(), kRecordMaxWeight,
-                    data.grid, cell_start, cell_records, records, queries, used);
+    context_.launch(used_kernel_, queries.size(), store.accuracy(), kRecordMaxWeight, data.grid,
+                    cell_start, cell_records, records, queries, used);
     const std::vector<unsigned> flags = used.download();
     return std::vector<uint8_t>(flags.begin(), flags.end());
 }
@@ -92,9 +92,9 @@ std::vector<uint32_t> GlossyPlacement::uncovered(const Buffer<shared::RcQuery>& 
     Buffer<unsigned> out(context_, candidates.size(), "glossy_uncovered");
     Buffer<unsigned> count(context_, 1, "glossy_uncovered_count");
     count.fill_zero();
-    context_.launch(uncovered_kernel_, candidates.size(), store.accuracy(),
-                    kRecordMaxWeight, data.grid, cell_start, cell_records, records,
-                    queries, candidate_buffer, out, count);
+    context_.launch(uncovered_kernel_, candidates.size(), store.accuracy(), kRecordMaxWeight,
+                    data.grid, cell_start, cell_records, records, queries, candidate_buffer, out,
+                    count);
     std::vector<uint32_t> indices(count.download()[0]);
     if (!indices.empty()) {
         out.read(indices.data(), indices.size() * sizeof(uint32_t));

@@ -10,8 +10,7 @@ void check_glossy_spec(const GlossySpec& spec, const Scene& scene) {
     resolve_glossy_spec(spec, scene.materials);
 }
 
-std::unique_ptr<GlossyMix> make_glossy_mix(const FrameScene& frame,
-                                           const PipelineSettings& ic,
+std::unique_ptr<GlossyMix> make_glossy_mix(const FrameScene& frame, const PipelineSettings& ic,
                                            const GlossySpec& spec) {
     const std::vector<std::string> caches = spec.caches();
     if (caches.empty()) {

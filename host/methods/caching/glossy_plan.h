@@ -1,6 +1,6 @@
-// What a --glossy SPEC (methods/caching/glossy_spec.h) makes of a render by irradiance caching: per frame
-// the glossy caches it names, each serving its materials, in a GlossyMix; the programs they build
-// and the device memory they hold beside irradiance caching's.
+// What a --glossy SPEC (methods/caching/glossy_spec.h) makes of a render by irradiance caching: per
+// frame the glossy caches it names, each serving its materials, in a GlossyMix; the programs they
+// build and the device memory they hold beside irradiance caching's.
 #pragma once
 
 #include <memory>
@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "device/program.h"
-#include "methods/frame_scene.h"
+#include "methods/caching/cache_pipeline.h"
 #include "methods/caching/glossy_mix.h"
 #include "methods/caching/glossy_spec.h"
 #include "methods/caching/pipeline_memory.h"
-#include "methods/caching/cache_pipeline.h"
+#include "methods/frame_scene.h"
 
 namespace rc {
 
@@ -22,8 +22,7 @@ void check_glossy_spec(const GlossySpec& spec, const Scene& scene);
 // The caches of `spec` for `frame` in the registry's order, each serving the materials `spec`
 // gives it (every one with a specular lobe when `spec` names no material), their options the
 // defaults with those `ic` shares; nullptr when `spec` names no cache (every lobe path traced).
-std::unique_ptr<GlossyMix> make_glossy_mix(const FrameScene& frame,
-                                           const PipelineSettings& ic,
+std::unique_ptr<GlossyMix> make_glossy_mix(const FrameScene& frame, const PipelineSettings& ic,
                                            const GlossySpec& spec);
 
 // The programs the caches of `spec` build beyond irradiance caching's (without duplicates).

@@ -1,9 +1,9 @@
 // Which glossy cache serves each material's specular lobe in a render by irradiance caching
 // (`--method ic --glossy SPEC`, docs/irradiance-caching.md "Glossy lobes"): path tracing (`path`,
-// irradiance caching's own), or a cache of the glossy-cache registry (methods/caching/glossy_caches.h:
-// `rc`, radiance caching, DESIGN.md §6.4; `sdrc`, §6.5). SPEC is a comma-separated list of
-// NAME=CACHE (the scene's material NAME) and at most one *=CACHE for the materials not named; a
-// bare CACHE is *=CACHE. The materials no item names are path traced.
+// irradiance caching's own), or a cache of the glossy-cache registry
+// (methods/caching/glossy_caches.h: `rc`, radiance caching, DESIGN.md §6.4; `sdrc`, §6.5). SPEC is
+// a comma-separated list of NAME=CACHE (the scene's material NAME) and at most one *=CACHE for the
+// materials not named; a bare CACHE is *=CACHE. The materials no item names are path traced.
 #pragma once
 
 #include <string>

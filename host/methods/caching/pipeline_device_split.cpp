@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
+#include "methods/caching/device_splat.h"
 #include "methods/device_shares.h"
 #include "methods/device_split.h"
 #include "methods/radiance_source.h"
-#include "methods/caching/device_splat.h"
 #include "methods/scene_arguments.h"
 #include "shared/film.h"
 #include "shared/radiance_cache.h"
@@ -118,7 +118,7 @@ PipelineDeviceSplit::PipelineDeviceSplit(const FrameScene& frame) {
 PipelineDeviceSplit::~PipelineDeviceSplit() = default;
 
 RecordBatchOutput PipelineDeviceSplit::compute_batch(const RecordBatchInput& batch,
-                                               const HostRecords* next_level) {
+                                                     const HostRecords* next_level) {
     const size_t count = batch.records.size();
     const size_t per_record = static_cast<size_t>(batch.params.strata_m) * batch.params.strata_n;
     const ItemRanges ranges(count, devices_.size(), kRangesPerDevice,

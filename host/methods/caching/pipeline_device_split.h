@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "device/buffer.h"
-#include "methods/frame_scene.h"
 #include "methods/caching/record_level_source.h"
 #include "methods/caching/splat_tiles.h"
+#include "methods/frame_scene.h"
 #include "shared/radiance_cache.h"
 #include "shared/types.h"
 

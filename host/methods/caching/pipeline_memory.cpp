@@ -8,8 +8,8 @@
 
 namespace rc {
 
-DeviceMemoryNeed cache_pipeline_device_need(const PipelineSettings& options,
-                                              const Scene& scene, GlossySampleBytes glossy) {
+DeviceMemoryNeed cache_pipeline_device_need(const PipelineSettings& options, const Scene& scene,
+                                            GlossySampleBytes glossy) {
     const size_t pixels = image_pixels(options.width, options.height, scene);
     const size_t samples = pixels * static_cast<size_t>(std::max(options.spp, 1));
     const uint64_t gbuffer = buffer_bytes(samples, sizeof(shared::GBufferSample));

@@ -19,7 +19,7 @@ struct GlossySampleBytes {
     size_t fixed = 0;  // the buffers of its splat that do not grow with the samples
 };
 
-DeviceMemoryNeed cache_pipeline_device_need(const PipelineSettings& options,
-                                              const Scene& scene, GlossySampleBytes glossy = {});
+DeviceMemoryNeed cache_pipeline_device_need(const PipelineSettings& options, const Scene& scene,
+                                            GlossySampleBytes glossy = {});
 
 }  // namespace rc

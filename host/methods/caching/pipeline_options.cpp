@@ -69,8 +69,7 @@ void finish_pipeline_settings(const PipelineSettings& options) {
     }
 }
 
-PipelineSettings pipeline_settings(PipelineSettings options,
-                                                 const MethodSettings& settings) {
+PipelineSettings pipeline_settings(PipelineSettings options, const MethodSettings& settings) {
     if (settings.frame_count > 1 && (!options.cache_in.empty() || !options.cache_out.empty())) {
         throw Error("--cache-in/--cache-out take one frame", kExitUsage);
     }

@@ -2,8 +2,8 @@
 // `--method rc` and `--method sdrc`): their table over PipelineSettings.
 #pragma once
 
-#include "methods/method.h"
 #include "methods/caching/cache_pipeline.h"
+#include "methods/method.h"
 
 namespace rc {
 
@@ -19,7 +19,6 @@ void finish_pipeline_settings(const PipelineSettings& options);
 
 // The options with the shared settings applied (and the `records` layer drawn when it is
 // written); Error (exit status 2) for cache files with several frames.
-PipelineSettings pipeline_settings(PipelineSettings options,
-                                                 const MethodSettings& settings);
+PipelineSettings pipeline_settings(PipelineSettings options, const MethodSettings& settings);
 
 }  // namespace rc

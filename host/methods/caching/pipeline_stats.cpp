@@ -3,8 +3,8 @@
 #include "methods/device_shares.h"
 namespace rc {
 
-void add_irradiance_cache_stats(const PipelineStats& stats,
-                                const PipelineSettings& options, nlohmann::json* out) {
+void add_irradiance_cache_stats(const PipelineStats& stats, const PipelineSettings& options,
+                                nlohmann::json* out) {
     nlohmann::json passes = nlohmann::json::array();
     for (const PlacementPass& pass : stats.passes) {
         passes.push_back({{"level", pass.level},

@@ -9,7 +9,7 @@
 namespace rc {
 
 // Placement passes, records per level, rays, cache bytes and phase times into *out.
-void add_irradiance_cache_stats(const PipelineStats& stats,
-                                const PipelineSettings& options, nlohmann::json* out);
+void add_irradiance_cache_stats(const PipelineStats& stats, const PipelineSettings& options,
+                                nlohmann::json* out);
 
 }  // namespace rc

@@ -5,9 +5,9 @@
 
 #include "device/buffer.h"
 #include "device/context.h"
-#include "methods/radiance_source.h"
 #include "methods/caching/irradiance_records.h"
 #include "methods/caching/record_grid.h"
+#include "methods/radiance_source.h"
 #include "shared/types.h"
 
 namespace rc {

@@ -5,9 +5,9 @@
 
 namespace rc {
 
-FrameResult render_record_passes(CachePipeline& cache, const PipelineSettings& options,
-                                 double time, const FrameHooks& hooks,
-                                 const RecordPassFinish& finish, PipelineStats* last) {
+FrameResult render_record_passes(CachePipeline& cache, const PipelineSettings& options, double time,
+                                 const FrameHooks& hooks, const RecordPassFinish& finish,
+                                 PipelineStats* last) {
     const auto pass = [&](const SamplePass& samples) {
         PipelineSettings pass_options = options;
         pass_options.first_sample = samples.first;

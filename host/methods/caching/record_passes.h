@@ -5,8 +5,8 @@
 
 #include <functional>
 
-#include "methods/method.h"
 #include "methods/caching/cache_pipeline.h"
+#include "methods/method.h"
 
 namespace rc {
 
@@ -20,8 +20,8 @@ using RecordPassFinish = std::function<void(FrameResult& result, const PipelineS
 // options.spp. The result holds the image, samples, rays, non-finite samples and irradiance
 // caching's statistics (pipeline_stats.h) of the first pass, `finish` having added its own; *last:
 // the statistics of the last pass.
-FrameResult render_record_passes(CachePipeline& cache, const PipelineSettings& options,
-                                 double time, const FrameHooks& hooks,
-                                 const RecordPassFinish& finish, PipelineStats* last);
+FrameResult render_record_passes(CachePipeline& cache, const PipelineSettings& options, double time,
+                                 const FrameHooks& hooks, const RecordPassFinish& finish,
+                                 PipelineStats* last);
 
 }  // namespace rc
