@@ -35,13 +35,12 @@ import os
 import subprocess
 import sys
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-sys.path.insert(0, os.path.join(ROOT, "tools", "bench"))
-import references  # noqa: E402
-from arg_types import positive_int  # noqa: E402
-from radcache_process import compared_relmse, run  # noqa: E402
-from references import shipped_scene_json as scene_json  # noqa: E402
+from radcache_tools import ROOT, references
+from radcache_tools.arguments import positive_int
+from radcache_tools.error import relmse_of
+from radcache_tools.error import relmse as compared_relmse
+from radcache_tools.radcache import run
+from radcache_tools.references import shipped_scene_json as scene_json
 
 MODEL = os.path.join(ROOT, "host", "methods", "auto", "auto_model.json")
 GLOSSY_METHODS = ["ic", "rc", "sdrc"]
@@ -71,8 +70,7 @@ def relmse(image, reference):
     path = image + ".compare.json"
     if os.path.exists(path):  # from an earlier measurement
         with open(path) as f:
-            c = json.load(f)
-        return c["relmse_net"] if c.get("relmse_net") is not None else c["relmse"]
+            return relmse_of(json.load(f))
     return compared_relmse(image, reference, path)
 
 

@@ -24,12 +24,10 @@ import argparse
 import json
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
+from radcache_tools import radcache
 FRAMES_FORM = re.compile(r"^(-?\d+):(-?\d+)$")
 
 
@@ -55,13 +53,13 @@ def compare_sequence(label, pattern, args, json_path):
     if not args.reference or not args.frames:
         raise ChartError("sequence '%s': a TEST#### pattern needs --reference and --frames" %
                          label)
-    command = [RADCACHE, "compare", "--frames", args.frames, pattern, args.reference,
+    command = ["compare", "--frames", args.frames, pattern, args.reference,
                "--aov", args.aov, "--json", json_path]
     if args.mask:
         command += ["--mask", args.mask]
     if args.reference_spp:
         command += ["--reference-spp", str(args.reference_spp)]
-    result = subprocess.run(command, capture_output=True, text=True)
+    result = radcache.attempt(command)
     if result.returncode != 0:
         lines = (result.stderr or result.stdout).strip().splitlines()
         raise ChartError("sequence '%s': %s" % (label, lines[-1] if lines else "compare failed"),
@@ -240,9 +238,9 @@ def load_sequences(args, scratch):
 def main(argv):
     try:
         args = parse_arguments(argv)
-        if not os.access(RADCACHE, os.X_OK) and any(
+        if not os.access(radcache.executable(), os.X_OK) and any(
                 not parse_sequence(s)[1].endswith(".json") for s in args.sequences):
-            raise ChartError("build radcache first: %s is missing" % RADCACHE, 1)
+            raise ChartError("build radcache first: %s is missing" % radcache.executable(), 1)
         if args.keep:
             os.makedirs(args.keep, exist_ok=True)
         with tempfile.TemporaryDirectory() as scratch:

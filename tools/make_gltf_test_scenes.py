@@ -22,7 +22,7 @@ import struct
 import sys
 import zlib
 
-from scene_files import load_json_with_comments, read_obj
+from radcache_tools.scene_files import load_json_with_comments, read_obj
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 

@@ -9,7 +9,7 @@ import argparse
 import json
 import math
 
-from arg_types import positive_int
+from radcache_tools.arguments import positive_int
 
 TRIANGLES_PER_SPHERE = 9024  # make_uv_sphere(rings 48, segments 96) once loaded
 

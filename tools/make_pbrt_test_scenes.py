@@ -18,7 +18,7 @@ import pathlib
 import sys
 
 from make_gltf_test_scenes import png_2x2
-from scene_files import load_json_with_comments, read_obj
+from radcache_tools.scene_files import load_json_with_comments, read_obj
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 

@@ -26,16 +26,13 @@ Usage: tools/phong_sweep.py [--methods rc sdrc] [--exponents 8 16 24 32 64] [--s
 
 import argparse
 import csv
-import functools
-import json
 import os
 import sys
 
-from echoed_run import echoed_run
-from extra_options import parse_with_extra
+from radcache_tools import ROOT, radcache
+from radcache_tools.arguments import parse_with_extra
+from radcache_tools.error import relmse as compared_relmse
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 METHODS = ["rc", "sdrc"]
 PER_METHOD = ["records", "seconds", "pt_spp", "indirect_relmse", "pt_indirect_relmse", "relmse",
               "pt_relmse"]
@@ -76,21 +73,13 @@ SCENE = """{
 """
 
 
-run = functools.partial(echoed_run, "phong_sweep")
-
-
 def render(scene, image, options):
-    stats_path = image[:-len(".exr")] + ".stats.json"
-    run([RADCACHE, "render", scene, "-o", image, "--stats", stats_path, "--quiet"] + options)
-    with open(stats_path) as f:
-        return json.load(f)
+    return radcache.render(scene, image, options, tool="phong_sweep", echo=True)
 
 
 def relmse(image, reference, aov):
-    figures = image[:-len(".exr")] + "." + aov + ".compare.json"
-    run([RADCACHE, "compare", image, reference, "--aov", aov, "--json", figures])
-    with open(figures) as f:
-        return json.load(f)["relmse"]
+    return compared_relmse(image, reference, image[:-len(".exr")] + "." + aov + ".compare.json",
+                           aov, tool="phong_sweep", echo=True)
 
 
 def method_figures(method, stats):

@@ -31,7 +31,6 @@ scene is swept at its first frame.
 """
 
 import argparse
-import functools
 
 from winners import winners_lines, winners_section
 import json
@@ -40,11 +39,9 @@ import shlex
 import shutil
 import sys
 
-from echoed_run import echoed_run
-from extra_options import parse_with_extra
+from radcache_tools import ROOT, radcache
+from radcache_tools.arguments import parse_with_extra
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 DOCS = os.path.join(ROOT, "docs")
 # tools/sweep.py's knobs under --quick.
 QUICK = ["--pt-spp", "1", "2", "4", "8", "16", "32", "64", "128", "256", "--ic-rays", "1024",
@@ -58,7 +55,9 @@ TINY = ["--pt-spp", "1", "4", "16", "64", "--ic-accuracy", "0.6", "--ic-rays", "
 TINY_MITSUBA = ["4", "16"]
 
 
-run = functools.partial(echoed_run, "results")
+def run(command):
+    """COMMAND (a list) echoed; its stdout; exits naming it when it fails."""
+    return radcache.run_command(command, "results", echo=True)
 
 
 def out_folder(out):
@@ -260,8 +259,8 @@ def main(argv):
         with open(bench_text) as f:
             table = f.read()
     else:
-        table = run([RADCACHE, "bench", "all", "--json",
-                     os.path.join(args.out, "bench-all.json")] + bench_device)
+        table = radcache.run(["bench", "all", "--json", os.path.join(args.out, "bench-all.json")]
+                             + bench_device, "results", echo=True)
         with open(bench_text, "w") as f:
             f.write(table)
 

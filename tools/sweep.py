@@ -135,17 +135,14 @@ import shutil
 import statistics
 import subprocess
 import sys
-import time
 
-from arg_types import positive_int
-import references
+from radcache_tools import ROOT, radcache, references
+from radcache_tools.arguments import parse_with_extra, positive_int
+from radcache_tools.error import compare, has_layer
 import sweep_knobs
 import sweep_peers
 import sweep_report
-from extra_options import parse_with_extra
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
 TIMES = ["wall_seconds", "render_seconds", "kernel_seconds"]
 COLUMNS = ["scene", "frame", "method", "curve", "setting", "spp", "accuracy", "ic_rays",
            "ic_min_spacing", "rc_rays", "sdrc_interp", "photons", "grid", "gather_rays", "repeats"] + [
@@ -170,28 +167,6 @@ MITSUBA_SPP = [4, 16, 64, 256]
 
 def fail(message):
     sys.exit("sweep: " + message)
-
-
-def run_radcache(args):
-    result = subprocess.run([RADCACHE] + args, capture_output=True, text=True)
-    if result.returncode != 0:
-        fail("radcache %s failed:\n%s%s" % (" ".join(args), result.stdout, result.stderr))
-    return result.stdout
-
-
-def compare(image, reference, aov, json_path, error_image=None):
-    args = ["compare", image, reference, "--aov", aov, "--json", json_path]
-    if error_image:
-        args += ["--error-image", error_image]
-    run_radcache(args)
-    with open(json_path) as f:
-        return json.load(f)
-
-
-def has_layer(image, layer):
-    result = subprocess.run([RADCACHE, "compare", image, image, "--aov", layer],
-                            capture_output=True, text=True)
-    return result.returncode == 0
 
 
 def flip_available():
@@ -261,12 +236,7 @@ def scene_paths(scene, reference, frame):
 
 def render(scene, image, options):
     """One timed `radcache render`; returns the wall seconds and the --stats JSON."""
-    stats_path = os.path.splitext(image)[0] + ".stats.json"
-    start = time.perf_counter()
-    run_radcache(["render", scene, "-o", image, "--stats", stats_path, "--quiet"] + options)
-    wall = time.perf_counter() - start
-    with open(stats_path) as f:
-        return wall, json.load(f)
+    return radcache.timed_render(scene, image, options, tool="sweep")
 
 
 def grid_option(grid, auto_cells):
@@ -575,8 +545,8 @@ def time_columns(results):
 def measure(row, image, reference, out, name):
     """Fills the error columns of a row; writes OUT/NAME.error.png."""
     error_png = os.path.join(out, name + ".error.png")
-    beauty = compare(image, reference, "beauty", os.path.join(out, name + ".compare.json"),
-                     error_png)
+    beauty = compare(image, reference, os.path.join(out, name + ".compare.json"),
+                     options=["--error-image", error_png], tool="sweep")
     row["rmse"] = beauty["rmse"]
     row["relmse"] = beauty["relmse"]
     # Net of the reference's noise: null in compare's JSON when it is not known.
@@ -585,8 +555,8 @@ def measure(row, image, reference, out, name):
     row["flip"] = flip_error(image, reference)
     row["indirect_relmse"] = ""
     if has_layer(image, "indirect") and has_layer(reference, "indirect"):
-        indirect = compare(image, reference, "indirect",
-                           os.path.join(out, name + ".indirect.json"))
+        indirect = compare(image, reference, os.path.join(out, name + ".indirect.json"),
+                           "indirect", tool="sweep")
         row["indirect_relmse"] = indirect["relmse"]
     row["image"] = os.path.relpath(image, out)
 
@@ -779,9 +749,8 @@ def parse_arguments(argv):
 
 def radcache_tables():
     """radcache's option tables, once, the curated curves checked against them."""
-    if not os.access(RADCACHE, os.X_OK):
-        fail("build radcache first (see README): %s is missing" % RADCACHE)
-    tables = sweep_knobs.read_tables(run_radcache)
+    radcache.require_built("sweep")
+    tables = sweep_knobs.read_tables(lambda args: radcache.run(args, "sweep"))
     try:
         check_curated(tables)
     except sweep_knobs.KnobError as e:
@@ -847,7 +816,7 @@ def main(argv):
     options += args.extra
     ladder_spp = ["--spp", str(args.ladder_spp)] if args.ladder_spp else []
     try:
-        sweep_knobs.check_values(ladders, RADCACHE, ladder_spp + options)
+        sweep_knobs.check_values(ladders, ladder_spp + options)
     except sweep_knobs.KnobError as e:
         fail(str(e))
     os.makedirs(out, exist_ok=True)

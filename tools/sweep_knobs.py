@@ -10,8 +10,9 @@ import json
 import math
 import os
 import re
-import subprocess
 import tempfile
+
+from radcache_tools import radcache
 
 # Values of a generated ladder: the default and 3 steps towards accuracy.
 LADDER_STEPS = 4
@@ -153,7 +154,7 @@ def generated_ladders(name, method, flags, tables):
             for option, knob in tables.knobs[method].items() if not refusal(knob)]
 
 
-def check_values(ladders, radcache, options):
+def check_values(ladders, options):
     """radcache's own parser checks each ladder's values (ranges, forms, the rules between
     options) before anything renders: `render` of a scene that does not exist parses and checks
     the whole command line first and exits 2 on a bad one (docs/option-tables.md, "Errors"). An
@@ -163,10 +164,9 @@ def check_values(ladders, radcache, options):
         for one in ladders:
             for value in one.values:
                 parsed = "auto" if AUTO_GRID.match(value) else value
-                result = subprocess.run(
-                    [radcache, "render", scene, "-o", os.path.join(folder, "no-image.exr"),
-                     "--method", one.method] + one.flags + [one.option, parsed] + options,
-                    capture_output=True, text=True)
+                result = radcache.attempt(
+                    ["render", scene, "-o", os.path.join(folder, "no-image.exr"), "--method",
+                     one.method] + one.flags + [one.option, parsed] + options)
                 if result.returncode == 2:
                     line = (result.stderr.strip().splitlines() or ["exit status 2"])[-1]
                     raise KnobError("--ladder %s: radcache refuses %s %s: %s" % (

@@ -64,7 +64,7 @@ class Reading(unittest.TestCase):
         self.assertEqual(len(shares), 2)
 
 
-@unittest.skipUnless(os.path.exists(kernel_profile.RADCACHE), "radcache is not built")
+@unittest.skipUnless(os.path.exists(kernel_profile.radcache.executable()), "radcache is not built")
 class EndToEnd(unittest.TestCase):
     @classmethod
     def setUpClass(cls):

@@ -13,7 +13,7 @@ import unittest
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
-import references  # noqa: E402
+from radcache_tools import references  # noqa: E402
 
 SCRIPT = os.path.join(ROOT, "tools", "render-references.sh")
 RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")

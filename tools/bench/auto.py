@@ -19,47 +19,23 @@ Writes OUT/auto.json (every run), OUT/auto.md (the tables) and OUT/auto-SCENE.pn
 the budget, a line per method; with matplotlib), and prints the tables.
 """
 
-import argparse
 import json
 import os
 import sys
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-import references  # noqa: E402
-from arg_types import positive_int, positive_seconds  # noqa: E402
-from extra_options import parse_with_extra  # noqa: E402
-from radcache_process import compared_relmse, run  # noqa: E402
-from references import shipped_scene_json as scene_json  # noqa: E402
+from radcache_tools import ROOT, equal_time, references
+from radcache_tools.error import relmse
 
-DEFAULT_METHODS = ["pt", "ic", "rc", "sdrc", "ivg-gather", "decomposition"]
 TARGET_OVER_PT_AT_30 = {"cornell-box": 20.0, "two-rooms": 50.0, "glossy-box": 4.0}
 
 
 def measure(scene, method, budget, size, extra, out):
-    name = "%s-%s-%gs" % (scene, method, budget)
-    image = os.path.join(out, name + ".exr")
-    stats_path = os.path.join(out, name + ".stats.json")
-    run(["render", scene_json(scene), "-o", image, "--stats", stats_path, "--quiet", "--method",
-         method, "--time", "%g" % budget, "--width", str(size[0]), "--height", str(size[1])] +
-        extra)
-    with open(stats_path) as f:
-        stats = json.load(f)
-    frame = stats["frames"][0]
+    name, image, frame, row = equal_time.render_by_time(scene, method, budget, size, extra, out)
     reference = references.best_reference_path(os.path.join(ROOT, "scenes", scene))
-    row = {"scene": scene, "method": method, "budget": budget,
-           "seconds": stats["seconds"]["render"], "spp": frame["spp"],
-           "relmse": compared_relmse(image, reference, os.path.join(out, name + ".compare.json"))}
+    row["relmse"] = relmse(image, reference, os.path.join(out, name + ".compare.json"))
     if "auto" in frame:
         row["plan"] = frame["auto"]["line"]
     return row
-
-
-def warm_up(scenes, methods, extra, out):
-    for scene in scenes:
-        for method in methods:
-            run(["render", scene_json(scene), "-o", os.path.join(out, "warm.exr"), "--quiet",
-                 "--method", method, "--spp", "1", "--width", "8", "--height", "8"] + extra)
 
 
 def table(rows, scene, budget):
@@ -111,24 +87,17 @@ def chart(rows, scene, path):
 
 
 def main(argv):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--scenes", nargs="+", default=["cornell-box", "two-rooms", "glossy-box"])
-    parser.add_argument("--budgets", nargs="+", type=positive_seconds, default=[10, 30, 100])
-    parser.add_argument("--methods", nargs="+", default=DEFAULT_METHODS)
-    parser.add_argument("--width", type=positive_int, default=256)
-    parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "auto"))
-    args, extra = parse_with_extra(parser, argv)
-    references.require_references(parser, args.scenes)
-    os.makedirs(args.out, exist_ok=True)
-    warm_up(args.scenes, ["auto"] + args.methods, extra, args.out)
-    rows = []
-    for scene in args.scenes:
-        size = references.camera_size(scene_json(scene), args.width)
-        for budget in args.budgets:
-            for method in ["auto"] + args.methods:
-                rows.append(measure(scene, method, budget, size, extra, args.out))
-                print("%s %s %gs: %.3e in %.1f s" % (scene, method, budget, rows[-1]["relmse"],
-                                                    rows[-1]["seconds"]), flush=True)
+    args, extra = equal_time.parse_arguments(__doc__, argv,
+                                             ["cornell-box", "two-rooms", "glossy-box"],
+                                             [10, 30, 100], 256, "auto")
+    equal_time.warm_up(args.scenes, ["auto"] + args.methods, extra, args.out)
+    sizes = {scene: references.camera_size(references.shipped_scene_json(scene), args.width)
+             for scene in args.scenes}
+    rows = equal_time.measure_all(
+        args, ["auto"] + args.methods,
+        lambda s, m, b: measure(s, m, b, sizes[s], extra, args.out),
+        lambda r: "%s %s %gs: %.3e in %.1f s" % (r["scene"], r["method"], r["budget"],
+                                                 r["relmse"], r["seconds"]))
     text = "\n".join(table(rows, s, b) for s in args.scenes for b in args.budgets)
     with open(os.path.join(args.out, "auto.json"), "w") as f:
         json.dump(rows, f, indent=1)

@@ -28,9 +28,9 @@ import subprocess
 import sys
 import time
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-from arg_types import positive_int, positive_seconds  # noqa: E402
+from radcache_tools import ROOT
+from radcache_tools import radcache
+from radcache_tools.arguments import parse_with_extra, positive_int, positive_seconds
 
 # What a render says of a file it lacks (host/scene/texture.cpp, pbrt_shapes.cpp, gltf_loader).
 MISSING = [re.compile(r'image file "([^"]+)" not found'),
@@ -44,20 +44,16 @@ PLY_STAND_IN = ("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nprop
 
 
 def parse_arguments(argv):
-    extra = []
-    if "--" in argv:
-        extra = argv[argv.index("--") + 1:]
-        argv = argv[:argv.index("--")]
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("folder")
     parser.add_argument("--methods", nargs="+", default=["pt", "auto"])
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "collection"))
-    parser.add_argument("--radcache", default=os.path.join(ROOT, "build", "radcache"))
+    parser.add_argument("--radcache", default=radcache.executable(),
+                        help="the radcache to run (default: $RADCACHE, else build/radcache)")
     parser.add_argument("--timeout", type=positive_seconds, default=300.0)
     parser.add_argument("--size", type=positive_int, default=8)
     parser.add_argument("--spp", type=positive_int, default=1)
-    arguments = parser.parse_args(argv)
-    arguments.extra = extra
+    arguments, arguments.extra = parse_with_extra(parser, argv)
     return arguments
 
 

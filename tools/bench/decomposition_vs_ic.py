@@ -43,27 +43,12 @@ import os
 import statistics
 import sys
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-import references  # noqa: E402
-from extra_options import parse_with_extra  # noqa: E402
-from radcache_process import RADCACHE, run  # noqa: E402
-
-
-def render(scene, output, options):
-    stats_path = os.path.splitext(output)[0] + ".stats.json"
-    run(["render", scene, "-o", output, "--stats", stats_path, "--quiet"] + options)
-    with open(stats_path) as f:
-        return json.load(f)
-
-
-def relmse(image, reference, aov, json_path, error_image=None):
-    args = ["compare", image, reference, "--aov", aov, "--json", json_path]
-    if error_image:
-        args += ["--error-image", error_image]
-    run(args)
-    with open(json_path) as f:
-        return json.load(f)["relmse"]
+from radcache_tools import ROOT
+from radcache_tools import references
+from radcache_tools.arguments import parse_with_extra
+from radcache_tools import radcache
+from radcache_tools.error import relmse
+from radcache_tools.radcache import render
 
 
 def indirect_rays(method, frame):
@@ -135,10 +120,10 @@ def measure_scene(name, args, extra):
             "seconds": statistics.median(seconds[i]), "seconds_all": seconds[i],
             "rays": first[i]["rays"], "indirect_rays": indirect_rays(method, frame),
             "records": frame.get("records", ""),
-            "relmse": relmse(image, reference, "beauty", image + ".beauty.json",
-                             image + ".error.png"),
-            "indirect_relmse": relmse(image, reference, "indirect", image + ".indirect.json",
-                                      image + ".indirect-error.png"),
+            "relmse": relmse(image, reference, image + ".beauty.json", "beauty",
+                             ["--error-image", image + ".error.png"]),
+            "indirect_relmse": relmse(image, reference, image + ".indirect.json", "indirect",
+                                      ["--error-image", image + ".indirect-error.png"]),
             "device": first[i]["device"]})
     return rows
 
@@ -220,8 +205,7 @@ def main():
                              "the beauty's is mostly the direct light's noise, the same in both)")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "decomposition"))
     args, extra = parse_with_extra(parser, sys.argv[1:])
-    if not os.access(RADCACHE, os.X_OK):
-        sys.exit("build radcache first (see README): %s is missing" % RADCACHE)
+    radcache.require_built()
     if args.repeats < 1 or args.spp < 1:
         sys.exit("--repeats and --spp must be at least 1")
     os.makedirs(args.out, exist_ok=True)

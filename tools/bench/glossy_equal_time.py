@@ -38,11 +38,11 @@ import os
 import shlex
 import sys
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-import references  # noqa: E402
-from extra_options import parse_with_extra  # noqa: E402
-from radcache_process import cpu_seconds, run  # noqa: E402
+from radcache_tools import ROOT
+from radcache_tools import references
+from radcache_tools.arguments import parse_with_extra
+from radcache_tools.error import compare
+from radcache_tools.radcache import cpu_seconds, run
 
 
 def render(scene, output, options):
@@ -60,13 +60,9 @@ def render(scene, output, options):
 def errors(image, reference, mask, out):
     """Image relMSE (and net of the reference's noise) and the masked indirect relMSE."""
     base = os.path.splitext(image)[0]
-    run(["compare", image, reference, "--json", base + ".beauty.json"])
-    run(["compare", image, reference, "--aov", "indirect", "--mask", mask, "--mask-aov",
-         "sdrc-hits", "--json", base + ".glossy.json"])
-    with open(base + ".beauty.json") as f:
-        beauty = json.load(f)
-    with open(base + ".glossy.json") as f:
-        glossy = json.load(f)
+    beauty = compare(image, reference, base + ".beauty.json")
+    glossy = compare(image, reference, base + ".glossy.json", "indirect",
+                     ["--mask", mask, "--mask-aov", "sdrc-hits"])
     return {"relmse": beauty["relmse"], "relmse_net": beauty["relmse_net"],
             "glossy_indirect_relmse": glossy["relmse"], "glossy_pixels": glossy["pixels"]}
 

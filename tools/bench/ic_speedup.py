@@ -22,22 +22,11 @@ import math
 import os
 import sys
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-import references  # noqa: E402
-from radcache_process import RADCACHE, run  # noqa: E402
-
-
-def render(scene, output, stats, options):
-    run(["render", scene, "-o", output, "--stats", stats, "--quiet"] + options)
-    with open(stats) as f:
-        return json.load(f)
-
-
-def relmse(image, reference, aov, json_path):
-    run(["compare", image, reference, "--aov", aov, "--json", json_path])
-    with open(json_path) as f:
-        return json.load(f)["relmse"]
+from radcache_tools import ROOT
+from radcache_tools import references
+from radcache_tools import radcache
+from radcache_tools.error import relmse
+from radcache_tools.radcache import run
 
 
 def spp_for(target, curve):
@@ -62,8 +51,7 @@ def main():
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "ic"))
     parser.add_argument("extra", nargs="*", help="more radcache render options (after --)")
     args = parser.parse_args()
-    if not os.access(RADCACHE, os.X_OK):
-        sys.exit("build radcache first (see README): %s is missing" % RADCACHE)
+    radcache.require_built()
     if args.pt_spp & (args.pt_spp - 1):
         sys.exit("--pt-spp must be a power of two")
     os.makedirs(args.out, exist_ok=True)
@@ -77,14 +65,14 @@ def main():
         os.makedirs(out, exist_ok=True)
         # Warm the kernel binary cache for both methods.
         for method in ("pt", "ic"):
-            render(scene, os.path.join(out, "warm.exr"), os.path.join(out, "warm.json"),
-                   ["--method", method, "--width", "16", "--height", "16", "--spp", "1"] +
-                   args.extra)
+            radcache.render(scene, os.path.join(out, "warm.exr"),
+                            ["--method", method, "--width", "16", "--height", "16", "--spp", "1"]
+                            + args.extra, os.path.join(out, "warm.json"))
 
         pt_image = os.path.join(out, "pt.exr")
-        pt_stats = render(scene, pt_image, os.path.join(out, "pt.json"),
-                          ["--method", "pt", "--spp", str(args.pt_spp), "--save-every-pow2"] +
-                          args.extra)
+        pt_stats = radcache.render(scene, pt_image, ["--method", "pt", "--spp", str(args.pt_spp),
+                                                     "--save-every-pow2"] + args.extra,
+                                   os.path.join(out, "pt.json"))
         pt_seconds = pt_stats["seconds"]["render"]
         curves = {"beauty": [], "indirect": []}
         n = 1
@@ -92,19 +80,19 @@ def main():
             image = pt_image if n == args.pt_spp else os.path.join(out, "pt.spp%d.exr" % n)
             for aov in curves:
                 curves[aov].append(
-                    (n, relmse(image, reference, aov, os.path.join(out, "pt-%d-%s.json" % (n, aov)))))
+                    (n, relmse(image, reference, os.path.join(out, "pt-%d-%s.json" % (n, aov)), aov)))
             n *= 2
 
         for spp in args.ic_spp:
             image = os.path.join(out, "ic-%d.exr" % spp)
-            stats = render(scene, image, os.path.join(out, "ic-%d.json" % spp),
-                           ["--method", "ic", "--spp", str(spp)] + args.extra)
+            stats = radcache.render(scene, image, ["--method", "ic", "--spp", str(spp)] +
+                                    args.extra, os.path.join(out, "ic-%d.json" % spp))
             ic_seconds = stats["seconds"]["render"]
             row = {"scene": name, "ic_spp": spp, "ic_seconds": ic_seconds,
                    "records": stats["frames"][0]["records"], "pt_seconds_per_spp":
                    pt_seconds / args.pt_spp}
             for aov, curve in curves.items():
-                error = relmse(image, reference, aov, os.path.join(out, "ic-%d-%s.json" % (spp, aov)))
+                error = relmse(image, reference, os.path.join(out, "ic-%d-%s.json" % (spp, aov)), aov)
                 needed = spp_for(error, curve)
                 row[aov] = {
                     "ic_relmse": error,

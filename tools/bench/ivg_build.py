@@ -14,12 +14,12 @@ Usage: tools/bench/ivg_build.py [--scenes cornell-box two-rooms] [--grids 16x16x
 import argparse
 import json
 import os
-import sys
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-import references  # noqa: E402
-from radcache_process import RADCACHE, run  # noqa: E402
+from radcache_tools import ROOT
+from radcache_tools import references
+from radcache_tools import radcache
+from radcache_tools.error import relmse
+from radcache_tools.radcache import run
 
 
 def main():
@@ -31,8 +31,7 @@ def main():
                         help="also render 512 x 512 and measure the indirect relMSE")
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "bench", "ivg"))
     args = parser.parse_args()
-    if not os.access(RADCACHE, os.X_OK):
-        sys.exit("build radcache first (see README): %s is missing" % RADCACHE)
+    radcache.require_built()
     os.makedirs(args.out, exist_ok=True)
     rows = []
     for scene_name in args.scenes:
@@ -57,14 +56,11 @@ def main():
                        "crossings_per_photon": g["crossings"] / max(g["photons"], 1),
                        "grid_mib": g["grid_bytes"] / 2.0 ** 20}
                 if args.accuracy:
-                    compare_json = image + ".compare.json"
                     # The reference of the frame a render without --frames shows.
                     reference = references.reference_path(os.path.join(ROOT, "scenes",
                                                                        scene_name))
-                    run(["compare", image, reference, "--aov", "indirect", "--json",
-                         compare_json])
-                    with open(compare_json) as f:
-                        row["indirect_relmse"] = json.load(f)["relmse"]
+                    row["indirect_relmse"] = relmse(image, reference, image + ".compare.json",
+                                                    "indirect")
                 rows.append(row)
                 print(json.dumps(row), flush=True)
     with open(os.path.join(args.out, "ivg_build.json"), "w") as f:

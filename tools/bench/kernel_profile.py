@@ -24,9 +24,7 @@ import subprocess
 import sys
 import tempfile
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
-RADCACHE = os.environ.get("RADCACHE") or os.path.join(ROOT, "build", "radcache")
+from radcache_tools import radcache
 
 # `perf report` rows: "  54.27%  path_trace_pass.so  [.] rc_path_radiance".
 REPORT_ROW = re.compile(r"^\s*([0-9.]+)%\s+(\S+)\s+\[\.\]\s+(\S+)")
@@ -93,7 +91,7 @@ def profile(command, data_path):
     """Records COMMAND (radcache arguments) into DATA_PATH; returns {function: % of all kernel
     samples}."""
     env = dict(os.environ, POCL_EXTRA_BUILD_FLAGS="-g")
-    record = ["perf", "record", "-q", "-o", data_path, RADCACHE] + command + ["--no-kernel-cache"]
+    record = ["perf", "record", "-q", "-o", data_path, radcache.executable()] + command + ["--no-kernel-cache"]
     result = subprocess.run(record, env=env, capture_output=True, text=True)
     if result.returncode != 0:
         sys.exit("kernel_profile: %s failed:\n%s%s" % (" ".join(record), result.stdout,

@@ -68,12 +68,11 @@ import shlex
 import subprocess
 import sys
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-import references  # noqa: E402
-from arg_types import frame_range  # noqa: E402
-from extra_options import parse_with_extra  # noqa: E402
-from radcache_process import cpu_seconds, run  # noqa: E402
+from radcache_tools import ROOT
+from radcache_tools import references
+from radcache_tools.arguments import frame_range
+from radcache_tools.arguments import parse_with_extra
+from radcache_tools.radcache import cpu_seconds, run
 
 
 def render(scene, pattern, options, clock):

@@ -24,8 +24,8 @@ import sys
 import numpy
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", ".."))
-from arg_types import positive_int  # noqa: E402
+from radcache_tools import error
+from radcache_tools.arguments import positive_int
 
 
 def layer(bitmap_path, prefix):
@@ -51,10 +51,11 @@ def render(scene, image, spp, seed):
 
 def figures(a, b, reference, stddev, spp_ref):
     m = 0.5 * (a + b)
-    weight = 1.0 / (reference ** 2 + 0.01)
-    relmse = float(numpy.mean((m - reference) ** 2 * weight))
-    reference_noise = float(numpy.mean(stddev ** 2 / spp_ref * weight))
-    own_noise = float(numpy.mean((a - b) ** 2 / 4.0 * weight))
+    relmse = error.relmse_of_arrays(m, reference)
+    reference_noise = error.noise_of_arrays(reference, stddev, spp_ref)
+    # The variance of the mean of two independent images, (A - B)^2 / 4: a standard deviation
+    # |A - B| / 2 of one "sample".
+    own_noise = error.noise_of_arrays(reference, numpy.abs(a - b) / 2.0, 1)
     means = m.reshape(-1, 3).mean(axis=0)
     ref_means = reference.reshape(-1, 3).mean(axis=0)
     return {"means": means.tolist(), "reference_means": ref_means.tolist(),

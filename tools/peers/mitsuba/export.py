@@ -36,12 +36,10 @@ with one line naming it. The mapping (docs/peers.md):
 
 import math
 import os
-import sys
 
 import numpy
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-from scene_files import load_json_with_comments  # noqa: E402
+from radcache_tools.scene_files import load_json_with_comments
 
 RENDER_DEFAULTS = {"spp": 16, "max_depth": 64, "rr_depth": 3}
 

@@ -21,8 +21,7 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", ".."))
-from arg_types import positive_int  # noqa: E402
+from radcache_tools.arguments import positive_int
 
 COLUMNS = ["setting", "spp", "wall_seconds", "render_seconds", "load_seconds", "variant",
            "threads", "mitsuba", "image"]

@@ -19,9 +19,8 @@ import os
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-from arg_types import positive_int  # noqa: E402
-import export  # noqa: E402
+from radcache_tools.arguments import positive_int
+import export
 
 VARIANTS = ["scalar_rgb", "llvm_ad_rgb"]
 

@@ -26,11 +26,9 @@ Usage: tools/peers/povray/make-scene.py [--scene DIR] [-o FILE]
 import argparse
 import math
 import os
-import sys
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-from scene_files import load_json_with_comments, read_obj  # noqa: E402
+from radcache_tools import ROOT
+from radcache_tools.scene_files import load_json_with_comments, read_obj
 
 
 def fmt(x):

@@ -1,5 +1,6 @@
-"""Argument types the tools share (a library, not a command): argparse refuses a value of the
-wrong kind with one line naming the option, and exit status 2."""
+"""The tools' command lines: argument types (argparse refuses a value of the wrong kind with one
+line naming the option, and exit status 2), and what stands after `--`, passed to every radcache
+render as it is."""
 
 import argparse
 
@@ -36,3 +37,11 @@ def frame_range(text):
     if last < first:
         raise argparse.ArgumentTypeError("%r ends before it starts" % text)
     return text
+
+
+def parse_with_extra(parser, argv):
+    """(parser's arguments from argv before `--`, the list of what follows `--`, [] without)."""
+    if "--" not in argv:
+        return parser.parse_args(argv), []
+    split = argv.index("--")
+    return parser.parse_args(argv[:split]), argv[split + 1:]
